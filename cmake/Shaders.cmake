@@ -1,0 +1,31 @@
+# vkpt_compile_shader(<out_var> <source.comp> <symbol> [DEFINES A=1 ...])
+#
+# Compiles a GLSL compute shader to SPIR-V at build time and wraps it in a C header
+# `<symbol>.h` holding `const uint32_t <symbol>[]`, so binaries embed it and read
+# nothing from disk at run time. glslangValidator's depfile makes edits to included
+# headers (shaders/shared/*.h) trigger a rebuild, and spirv-val checks the module:
+# any shader error fails the build. The header's path is returned in <out_var>.
+function(vkpt_compile_shader out_var source symbol)
+  cmake_parse_arguments(ARG "" "" "DEFINES" ${ARGN})
+  set(out_dir "${CMAKE_BINARY_DIR}/generated/shaders")
+  set(header "${out_dir}/${symbol}.h")
+  set(spv "${out_dir}/${symbol}.spv")
+  set(defines "")
+  foreach(d IN LISTS ARG_DEFINES)
+    list(APPEND defines "-D${d}")
+  endforeach()
+  get_filename_component(source "${source}" ABSOLUTE)
+  add_custom_command(
+    OUTPUT "${header}" "${spv}"
+    COMMAND "${CMAKE_COMMAND}" -E make_directory "${out_dir}"
+    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 ${defines}
+            --depfile "${out_dir}/${symbol}.d" -o "${spv}" "${source}"
+    COMMAND "${SPIRV_VAL}" --target-env vulkan1.2 "${spv}"
+    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 ${defines}
+            --vn "${symbol}" -o "${header}" "${source}"
+    MAIN_DEPENDENCY "${source}"
+    DEPFILE "${out_dir}/${symbol}.d"
+    COMMENT "glslang: ${symbol} <- ${source}"
+    VERBATIM)
+  set(${out_var} "${header}" PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,146 @@
+// vkpt: command-line front end. Data flows one way:
+//   glTF file → Scene (host/scene) → BVH + RenderScene (host/bvh, host/render)
+//   → renderer (host/cpu) → Image (host/image) → file.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "app/options.h"
+#include "cpu/path_tracer.h"
+#include "image/image.h"
+#include "render/render_scene.h"
+#include "scene/gltf_loader.h"
+#include "util/error.h"
+
+#ifndef VKPT_VERSION
+#define VKPT_VERSION "0.0.0"
+#endif
+
+namespace vkpt {
+namespace {
+
+void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& cam, uint32_t camIndex) {
+  std::printf("scene: %s\n", scene.path.c_str());
+  std::printf("  triangles: %zu, materials: %zu (incl. default), emissive triangles: %zu\n", scene.triangles.size(),
+              scene.materials.size(), rs.emitters.size());
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    std::printf("  material %zu \"%s\": baseColor (%.4g, %.4g, %.4g) emission (%.6g, %.6g, %.6g)%s\n", i,
+                scene.materialNames[i].c_str(), m.baseColor.x, m.baseColor.y, m.baseColor.z, m.emission.x,
+                m.emission.y, m.emission.z, (m.flags & shader::kMaterialDoubleSided) ? " double-sided" : "");
+  }
+  std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", scene.bounds.lo.x, scene.bounds.lo.y,
+              scene.bounds.lo.z, scene.bounds.hi.x, scene.bounds.hi.y, scene.bounds.hi.z);
+  std::printf("  cameras: %zu; using %s \"%s\" at (%.6g, %.6g, %.6g) looking (%.4g, %.4g, %.4g), %s %.4g\n",
+              scene.cameras.size(), scene.cameras.empty() ? "default" : ("#" + std::to_string(camIndex)).c_str(),
+              cam.name.c_str(), cam.position.x, cam.position.y, cam.position.z, cam.forward.x, cam.forward.y,
+              cam.forward.z, cam.orthographic ? "orthographic ymag" : "perspective yfov(deg)",
+              cam.orthographic ? cam.ymag : cam.yfov * 180.0 / M_PI);
+  for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
+  for (const std::string& f : scene.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
+}
+
+int Run(const Options& o) {
+  FormatFromPath(o.out);  // fail before a long render, not after
+  if (o.backend == Backend::Vulkan)
+    throw Error("the Vulkan backend is not available in this build; use --backend cpu");
+
+  Scene scene = LoadGltf(o.scene);
+  BvhBuildOptions bvhOptions;
+  bvhOptions.maxLeafSize = o.leafSize;
+  RenderScene rs = PrepareRenderScene(scene, bvhOptions);
+
+  uint32_t camIndex = o.camera.value_or(0);
+  Camera cam;
+  if (scene.cameras.empty()) {
+    if (o.camera) throw Error(o.scene + ": --camera " + std::to_string(*o.camera) + " given, but the scene has no cameras");
+    cam = DefaultCamera(scene.bounds);
+  } else {
+    if (camIndex >= scene.cameras.size())
+      throw Error(o.scene + ": --camera " + std::to_string(camIndex) + " is out of range; the scene has " +
+                  std::to_string(scene.cameras.size()) + " camera(s)");
+    cam = scene.cameras[camIndex];
+  }
+  // Resolution: what the user said; the missing side follows the camera's aspect ratio.
+  float aspect = cam.aspectRatio > 0.0f ? cam.aspectRatio : 1.0f;
+  uint32_t width = o.width.value_or(o.height ? uint32_t(std::lround(*o.height * aspect)) : 512u);
+  uint32_t height = o.height.value_or(uint32_t(std::lround(width / aspect)));
+  width = std::max(1u, std::min(width, 16384u));
+  height = std::max(1u, std::min(height, 16384u));
+
+  if (o.verbose) PrintLoadReport(scene, rs, cam, camIndex);
+
+  shader::FrameParams params = MakeFrameParams(cam, width, height);
+  params.seed = o.seed;
+  params.sampleBegin = 0;
+  params.sampleCount = o.spp;
+  params.maxDepth = o.maxDepth;
+  params.rrDepth = o.rrDepth;
+  params.emitterCount = uint32_t(rs.emitters.size());
+  params.nodeCount = uint32_t(rs.nodes.size());
+  params.triangleCount = uint32_t(rs.triangles.size());
+  if (rs.emitters.empty())
+    std::fprintf(stderr, "vkpt: warning: %s: no emissive triangles; the image will be black\n", o.scene.c_str());
+
+  CpuRenderOptions cpuOptions;
+  cpuOptions.threads = o.threads;
+  const bool tty = isatty(STDERR_FILENO);
+  if (tty)
+    cpuOptions.progress = [](double f) { std::fprintf(stderr, "\rrendering: %5.1f%%", 100.0 * f); };
+  CpuRenderResult r = RenderCpu(rs, params, cpuOptions);
+  if (tty) std::fprintf(stderr, "\r%*s\r", 20, "");
+
+  WriteImage(r.image, o.out, o.exposure);
+
+  const double samples = double(width) * height * o.spp;
+  glm::dvec3 mean(0.0);
+  for (const glm::vec3& p : r.image.pixels) mean += glm::dvec3(p);
+  mean /= double(r.image.pixels.size());
+  std::printf("vkpt: %s -> %s: %ux%u, %u spp, cpu (%u threads)\n", o.scene.c_str(), o.out.c_str(), width, height,
+              o.spp, r.threads);
+  std::printf("  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", r.seconds,
+              samples / r.seconds * 1e-6, double(r.stats.rays) / r.seconds * 1e-6, mean.x, mean.y, mean.z);
+  std::printf("  scene: %zu triangles, %zu emissive; BVH: %u nodes, %u leaves, depth %u, SAH cost %.3f, built in %.2f ms\n",
+              scene.triangles.size(), rs.emitters.size(), rs.bvhStats.nodes, rs.bvhStats.leaves, rs.bvhStats.depth,
+              rs.bvhStats.sahCost, rs.bvhStats.buildMs);
+  if (r.stats.nonFinite)
+    std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.stats.nonFinite);
+  return 0;
+}
+
+}  // namespace
+}  // namespace vkpt
+
+int main(int argc, char** argv) {
+  using namespace vkpt;
+  Options o;
+  try {
+    o = ParseOptions(argc, argv);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "vkpt: usage error: %s\n", e.what());
+    return 2;
+  }
+  if (o.help) {
+    std::fputs(HelpText().c_str(), stdout);
+    return 0;
+  }
+  if (o.version) {
+    std::printf("vkpt %s\n", VKPT_VERSION);
+    return 0;
+  }
+  try {
+    return Run(o);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vkpt: error: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "vkpt: error: %s: out of memory\n", o.scene.c_str());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "vkpt: error: %s: %s\n", o.scene.c_str(), e.what());
+    return 1;
+  }
+}

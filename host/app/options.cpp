@@ -1,0 +1,111 @@
+#include "app/options.h"
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <map>
+
+namespace vkpt {
+namespace {
+
+template <class T>
+T ParseNumber(const std::string& opt, const std::string& text, T lo, T hi) {
+  T v{};
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size())
+    throw UsageError(opt + " expects a number, got \"" + text + "\"");
+  if (!(v >= lo && v <= hi))
+    throw UsageError(opt + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + text);
+  return v;
+}
+
+}  // namespace
+
+std::string HelpText() {
+  return R"(usage: vkpt --scene FILE [options]
+
+Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
+
+  --scene FILE       glTF scene to render (required)
+  --out FILE         output image; .png (8-bit sRGB), .pfm or .exr (linear float)
+                     [default: <scene name>.png]
+  --width N          image width in pixels   [default: 512]
+  --height N         image height in pixels  [default: from the camera's aspect ratio, else 512]
+  --spp N            samples per pixel [default: 64]
+  --seed N           random seed; same seed and device give a bit-identical image [default: 0]
+  --max-depth N      maximum number of bounces [default: 32]
+  --rr-depth N       bounces before Russian roulette starts [default: 3]
+  --backend NAME     cpu (reference path tracer) [default: cpu]
+  --threads N        CPU threads [default: all cores]
+  --camera N         index of the glTF camera to render from, in scene order [default: 0;
+                     a scene without cameras gets one that frames it]
+  --exposure STOPS   PNG only: scale radiance by 2^STOPS before sRGB encoding [default: 0]
+  --leaf-size N      maximum triangles per BVH leaf, 1..15 [default: 4]
+  -v, --verbose      print what was loaded and which glTF features were ignored
+  -h, --help         print this help and exit
+  --version          print the version and exit
+
+Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error.
+)";
+}
+
+Options ParseOptions(int argc, const char* const* argv) {
+  Options o;
+  using Handler = std::function<void(const std::string& opt, const std::string& value)>;
+  auto u32 = [](uint32_t& dst, uint32_t lo, uint32_t hi) {
+    return Handler([&dst, lo, hi](const std::string& opt, const std::string& v) { dst = ParseNumber(opt, v, lo, hi); });
+  };
+  auto optU32 = [](std::optional<uint32_t>& dst, uint32_t lo, uint32_t hi) {
+    return Handler([&dst, lo, hi](const std::string& opt, const std::string& v) { dst = ParseNumber(opt, v, lo, hi); });
+  };
+  const std::map<std::string, Handler> withValue = {
+      {"--scene", [&](const std::string&, const std::string& v) { o.scene = v; }},
+      {"--out", [&](const std::string&, const std::string& v) { o.out = v; }},
+      {"--width", optU32(o.width, 1, 16384)},
+      {"--height", optU32(o.height, 1, 16384)},
+      {"--spp", u32(o.spp, 1, 1u << 30)},
+      {"--seed", u32(o.seed, 0, 0xFFFFFFFFu)},
+      {"--max-depth", u32(o.maxDepth, 0, 1024)},
+      {"--rr-depth", u32(o.rrDepth, 0, 1024)},
+      {"--threads", [&](const std::string& opt, const std::string& v) { o.threads = ParseNumber(opt, v, 1u, 1024u); }},
+      {"--camera", optU32(o.camera, 0, 1u << 20)},
+      {"--leaf-size", u32(o.leafSize, 1, 15)},
+      {"--exposure",
+       [&](const std::string& opt, const std::string& v) { o.exposure = ParseNumber(opt, v, -64.0f, 64.0f); }},
+      {"--backend",
+       [&](const std::string&, const std::string& v) {
+         if (v == "cpu") o.backend = Backend::Cpu;
+         else if (v == "vulkan") o.backend = Backend::Vulkan;
+         else throw UsageError("--backend must be cpu or vulkan, got \"" + v + "\"");
+       }},
+  };
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    std::string value;
+    bool inlineValue = false;
+    if (size_t eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      inlineValue = true;
+    }
+    if (arg == "-h" || arg == "--help") { o.help = true; continue; }
+    if (arg == "--version") { o.version = true; continue; }
+    if (arg == "-v" || arg == "--verbose") { o.verbose = true; continue; }
+    auto it = withValue.find(arg);
+    if (it == withValue.end()) throw UsageError("unknown option \"" + arg + "\" (see --help)");
+    if (!inlineValue) {
+      if (i + 1 >= argc) throw UsageError(arg + " needs a value");
+      value = argv[++i];
+    }
+    it->second(arg, value);
+  }
+  if (o.help || o.version) return o;
+  if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
+  if (o.out.empty()) {
+    std::string base = o.scene.substr(o.scene.find_last_of('/') + 1);
+    o.out = base.substr(0, base.find_last_of('.')) + ".png";
+  }
+  return o;
+}
+
+}  // namespace vkpt

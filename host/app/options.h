@@ -1,0 +1,40 @@
+// Command-line options of `vkpt`.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace vkpt {
+
+enum class Backend { Cpu, Vulkan };
+
+struct Options {
+  std::string scene;
+  std::string out;  // default: <scene name>.png in the current directory
+  std::optional<uint32_t> width, height;
+  uint32_t spp = 64;
+  uint32_t seed = 0;
+  uint32_t maxDepth = 32;
+  uint32_t rrDepth = 3;
+  Backend backend = Backend::Cpu;
+  unsigned threads = 0;  // 0: all cores
+  std::optional<uint32_t> camera;
+  float exposure = 0.0f;
+  uint32_t leafSize = 4;
+  bool verbose = false;
+  bool help = false;
+  bool version = false;
+};
+
+// Throws UsageError for anything malformed; the message says which option and why.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+Options ParseOptions(int argc, const char* const* argv);
+std::string HelpText();
+
+}  // namespace vkpt

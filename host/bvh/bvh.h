@@ -1,0 +1,51 @@
+// Bounding volume hierarchy over triangles: a binned-SAH builder (bvh_builder.cpp) and the
+// flattened depth-first layout with skip links that both renderers traverse
+// (see shader::BvhNode in shaders/shared/layout.h).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "shared/layout.h"
+#include "util/bounds.h"
+
+namespace vkpt {
+
+struct BvhBuildOptions {
+  uint32_t maxLeafSize = 4;  // 1..shader::kMaxLeafSize
+  uint32_t bins = 16;        // SAH candidate planes per axis = bins - 1
+  float traversalCost = 1.0f;
+  float intersectionCost = 1.0f;
+};
+
+struct BvhStats {
+  uint32_t nodes = 0;
+  uint32_t leaves = 0;
+  uint32_t depth = 0;         // edges on the longest root-to-leaf path
+  uint32_t maxLeafPrims = 0;
+  double sahCost = 0.0;       // Σ inner SA/SA_root·Ct + Σ leaf SA/SA_root·n·Ci
+  double buildMs = 0.0;
+};
+
+struct Bvh {
+  std::vector<shader::BvhNode> nodes;  // depth-first; nodes[0] is the root
+  std::vector<uint32_t> primOrder;     // leaf order → index of the input primitive
+  BvhStats stats;
+};
+
+// Builds over primitive bounding boxes (one per triangle). Degenerate boxes (zero area,
+// zero extent) are fine. Throws vkpt::Error for an empty input or bad options.
+Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& options = {});
+
+// Children of inner node `i` in the flattened layout: the first child is the next node,
+// and the second is where the first child's subtree ends, i.e. the first child's skip.
+inline uint32_t FirstChild(uint32_t i) { return i + 1; }
+inline uint32_t SecondChild(const std::vector<shader::BvhNode>& nodes, uint32_t i) {
+  return nodes[i + 1].skip;
+}
+inline bool IsLeaf(const shader::BvhNode& n) { return n.leaf != 0u; }
+inline uint32_t LeafFirst(const shader::BvhNode& n) { return n.leaf >> 4; }
+inline uint32_t LeafCount(const shader::BvhNode& n) { return n.leaf & 15u; }
+
+}  // namespace vkpt

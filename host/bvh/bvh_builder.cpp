@@ -1,0 +1,221 @@
+// Binned SAH builder (Wald 2007, "On fast Construction of SAH-based Bounding Volume
+// Hierarchies"): primitives are binned by centroid along each axis, the split plane with
+// the lowest surface-area-heuristic cost wins, and a node becomes a leaf when splitting
+// would not pay. The tree is built into a temporary array and then flattened into the
+// depth-first skip-link layout; the builder is iterative, so a pathological input
+// cannot overflow the call stack.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <limits>
+
+#include "bvh/bvh.h"
+#include "util/error.h"
+
+namespace vkpt {
+namespace {
+
+struct BuildPrim {
+  Bounds3f box;
+  glm::vec3 centroid;
+  uint32_t index;
+};
+
+struct BuildNode {
+  Bounds3f box;
+  uint32_t first = 0, count = 0;          // leaf: primitive range in `prims`
+  uint32_t child[2] = {0, 0};             // inner: indices into the BuildNode array
+  uint32_t depth = 0;
+  bool leaf = false;
+};
+
+struct Bin {
+  Bounds3f box;
+  uint32_t count = 0;
+};
+
+struct Split {
+  int axis = -1;
+  uint32_t bin = 0;  // primitives with bin index < `bin` go left
+  float cost = std::numeric_limits<float>::infinity();
+};
+
+class Builder {
+ public:
+  Builder(std::span<const Bounds3f> bounds, const BvhBuildOptions& o) : opt_(o) {
+    prims_.reserve(bounds.size());
+    for (uint32_t i = 0; i < bounds.size(); ++i)
+      prims_.push_back({bounds[i], bounds[i].Center(), i});
+  }
+
+  Bvh Build() {
+    nodes_.reserve(2 * prims_.size() / std::max(1u, opt_.maxLeafSize) + 1);
+    nodes_.push_back({});
+    nodes_[0].count = uint32_t(prims_.size());
+    std::vector<uint32_t> work{0};
+    while (!work.empty()) {
+      uint32_t n = work.back();
+      work.pop_back();
+      Subdivide(n, work);
+    }
+    return Flatten();
+  }
+
+ private:
+  void Subdivide(uint32_t ni, std::vector<uint32_t>& work) {
+    BuildNode node = nodes_[ni];
+    Bounds3f centroids;
+    for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+      node.box.Extend(prims_[i].box);
+      centroids.Extend(prims_[i].centroid);
+    }
+    nodes_[ni].box = node.box;
+    auto makeLeaf = [&] { nodes_[ni].leaf = true; };
+    if (node.count == 1) return makeLeaf();
+
+    Split best = FindSplit(node, centroids);
+    const float leafCost = opt_.intersectionCost * float(node.count);
+    if (node.count <= opt_.maxLeafSize && !(best.cost < leafCost)) return makeLeaf();
+
+    uint32_t mid = node.first;
+    if (best.axis >= 0) {
+      const int a = best.axis;
+      const float lo = centroids.lo[a];
+      const float scale = float(opt_.bins) / (centroids.hi[a] - lo);
+      auto it = std::partition(prims_.begin() + node.first, prims_.begin() + node.first + node.count,
+                               [&](const BuildPrim& p) { return BinOf(p.centroid[a], lo, scale) < best.bin; });
+      mid = uint32_t(it - prims_.begin());
+    }
+    if (mid == node.first || mid == node.first + node.count) {
+      // No usable plane (all centroids coincide, or there are only a few primitives
+      // too large for a leaf): split at the median along the widest centroid axis, which
+      // always makes progress and keeps leaves within maxLeafSize.
+      glm::vec3 d = centroids.Diagonal();
+      int a = d.x >= d.y && d.x >= d.z ? 0 : (d.y >= d.z ? 1 : 2);
+      mid = node.first + node.count / 2;
+      std::nth_element(prims_.begin() + node.first, prims_.begin() + mid, prims_.begin() + node.first + node.count,
+                       [&](const BuildPrim& p, const BuildPrim& q) { return p.centroid[a] < q.centroid[a]; });
+    }
+    uint32_t left = uint32_t(nodes_.size());
+    BuildNode l, r;
+    l.first = node.first;
+    l.count = mid - node.first;
+    r.first = mid;
+    r.count = node.first + node.count - mid;
+    l.depth = r.depth = node.depth + 1;
+    nodes_.push_back(l);
+    nodes_.push_back(r);
+    nodes_[ni].child[0] = left;
+    nodes_[ni].child[1] = left + 1;
+    work.push_back(left + 1);
+    work.push_back(left);
+  }
+
+  uint32_t BinOf(float c, float lo, float scale) const {
+    return std::min(opt_.bins - 1, uint32_t(std::max(0.0f, (c - lo) * scale)));
+  }
+
+  Split FindSplit(const BuildNode& node, const Bounds3f& centroids) const {
+    Split best;
+    const float parentArea = node.box.SurfaceArea();
+    std::vector<Bin> bins(opt_.bins);
+    std::vector<float> rightCost(opt_.bins);
+    for (int a = 0; a < 3; ++a) {
+      const float extent = centroids.hi[a] - centroids.lo[a];
+      if (!(extent > 0.0f)) continue;
+      std::fill(bins.begin(), bins.end(), Bin{});
+      const float scale = float(opt_.bins) / extent;
+      for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+        Bin& b = bins[BinOf(prims_[i].centroid[a], centroids.lo[a], scale)];
+        b.box.Extend(prims_[i].box);
+        ++b.count;
+      }
+      // Sweep from the right to get the cost of every right side, then from the left.
+      Bounds3f acc;
+      uint32_t count = 0;
+      for (uint32_t b = opt_.bins - 1; b > 0; --b) {
+        acc.Extend(bins[b].box);
+        count += bins[b].count;
+        rightCost[b] = acc.SurfaceArea() * float(count);
+      }
+      acc = Bounds3f{};
+      count = 0;
+      for (uint32_t b = 1; b < opt_.bins; ++b) {
+        acc.Extend(bins[b - 1].box);
+        count += bins[b - 1].count;
+        if (count == 0 || count == node.count) continue;
+        float cost = opt_.traversalCost +
+                     opt_.intersectionCost * (acc.SurfaceArea() * float(count) + rightCost[b]) / parentArea;
+        if (cost < best.cost) best = {a, b, cost};
+      }
+    }
+    // A flat parent (zero area) makes every cost NaN or ∞: fall back to the median split.
+    if (!(parentArea > 0.0f)) best.axis = -1, best.cost = std::numeric_limits<float>::infinity();
+    return best;
+  }
+
+  Bvh Flatten() const {
+    // Subtree sizes, bottom-up: children always come after their parent in nodes_.
+    std::vector<uint32_t> size(nodes_.size(), 1);
+    for (size_t i = nodes_.size(); i-- > 0;)
+      if (!nodes_[i].leaf) size[i] = 1 + size[nodes_[i].child[0]] + size[nodes_[i].child[1]];
+
+    Bvh bvh;
+    bvh.nodes.resize(nodes_.size());
+    bvh.primOrder.reserve(prims_.size());
+    BvhStats& st = bvh.stats;
+    const float rootArea = nodes_[0].box.SurfaceArea();
+    // (build node, flat index, skip target)
+    struct Item { uint32_t node, flat, skip; };
+    std::vector<Item> stack{{0, 0, shader::kInvalidIndex}};
+    while (!stack.empty()) {
+      Item it = stack.back();
+      stack.pop_back();
+      const BuildNode& n = nodes_[it.node];
+      shader::BvhNode& out = bvh.nodes[it.flat];
+      out.lo = n.box.lo;
+      out.hi = n.box.hi;
+      out.skip = it.skip;
+      // Relative area; a flat scene (root area 0) counts every node as 1.
+      double rel = rootArea > 0.0f ? double(n.box.SurfaceArea()) / rootArea : 1.0;
+      st.depth = std::max(st.depth, n.depth);
+      if (n.leaf) {
+        out.leaf = (uint32_t(bvh.primOrder.size()) << 4) | n.count;
+        for (uint32_t i = n.first; i < n.first + n.count; ++i) bvh.primOrder.push_back(prims_[i].index);
+        ++st.leaves;
+        st.maxLeafPrims = std::max(st.maxLeafPrims, n.count);
+        st.sahCost += rel * opt_.intersectionCost * n.count;
+      } else {
+        out.leaf = 0;
+        st.sahCost += rel * opt_.traversalCost;
+        uint32_t second = it.flat + 1 + size[n.child[0]];
+        // Push the second child first so the first child's subtree is emitted first and
+        // primitives land in depth-first leaf order.
+        stack.push_back({n.child[1], second, it.skip});
+        stack.push_back({n.child[0], it.flat + 1, second});
+      }
+    }
+    st.nodes = uint32_t(bvh.nodes.size());
+    return bvh;
+  }
+
+  BvhBuildOptions opt_;
+  std::vector<BuildPrim> prims_;
+  std::vector<BuildNode> nodes_;
+};
+
+}  // namespace
+
+Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& options) {
+  if (primBounds.empty()) throw Error("cannot build a BVH over zero primitives");
+  if (options.maxLeafSize < 1 || options.maxLeafSize > shader::kMaxLeafSize)
+    throw Error("BVH leaf size must be in [1, " + std::to_string(shader::kMaxLeafSize) + "]");
+  if (options.bins < 2 || options.bins > 256) throw Error("BVH bin count must be in [2, 256]");
+  if (primBounds.size() >= (1u << 28)) throw Error("too many triangles for the BVH layout (limit 2^28)");
+  auto t0 = std::chrono::steady_clock::now();
+  Bvh bvh = Builder(primBounds, options).Build();
+  bvh.stats.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return bvh;
+}
+
+}  // namespace vkpt

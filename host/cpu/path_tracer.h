@@ -1,0 +1,41 @@
+// The CPU reference path tracer: the estimator every other backend is checked against.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "image/image.h"
+#include "render/render_scene.h"
+
+namespace vkpt {
+
+struct SampleStats {
+  uint64_t rays = 0;       // closest-hit + shadow rays
+  uint64_t nonFinite = 0;  // samples discarded because they were NaN/Inf (a bug if > 0)
+};
+
+// Radiance carried by sample `sampleIndex` of pixel (px, py) — one path. Uses the RNG
+// streams (params.seed, pixel, sampleIndex, dimension) shared with the GPU.
+glm::vec3 SampleRadiance(const RenderScene& scene, const shader::FrameParams& params, uint32_t px, uint32_t py,
+                         uint32_t sampleIndex, SampleStats& stats);
+
+struct CpuRenderOptions {
+  unsigned threads = 0;  // 0: all hardware threads
+  // Called from the calling thread about every 100 ms with the finished fraction.
+  std::function<void(double)> progress;
+};
+
+struct CpuRenderResult {
+  Image image;  // mean and variance of the mean per pixel
+  SampleStats stats;
+  double seconds = 0.0;
+  unsigned threads = 0;
+};
+
+// Renders samples [params.sampleBegin, params.sampleBegin + params.sampleCount) of every
+// pixel. Each pixel's samples are summed in a fixed order, so the image is bit-identical
+// for any thread count.
+CpuRenderResult RenderCpu(const RenderScene& scene, const shader::FrameParams& params,
+                          const CpuRenderOptions& options = {});
+
+}  // namespace vkpt

@@ -1,0 +1,40 @@
+// A linear RGB float image with optional per-pixel variance of the mean, and writers for
+// .png (8-bit sRGB), .pfm (linear float) and .exr (linear float).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace vkpt {
+
+struct Image {
+  uint32_t width = 0, height = 0;
+  std::vector<glm::vec3> pixels;    // mean radiance, row 0 at the top
+  std::vector<glm::vec3> variance;  // variance of the mean per pixel (may be empty)
+
+  Image() = default;
+  Image(uint32_t w, uint32_t h) : width(w), height(h), pixels(size_t(w) * h, glm::vec3(0.0f)) {}
+  glm::vec3& At(uint32_t x, uint32_t y) { return pixels[size_t(y) * width + x]; }
+  const glm::vec3& At(uint32_t x, uint32_t y) const { return pixels[size_t(y) * width + x]; }
+};
+
+enum class ImageFormat { Png, Pfm, Exr };
+
+// Format from the file extension (case-insensitive); throws vkpt::Error for others.
+ImageFormat FormatFromPath(const std::string& path);
+
+// Writes atomically: to a temporary file beside `path`, renamed over it only when
+// complete, so an error never leaves a partial file that looks like a result.
+// `exposure` (stops) applies to PNG only; float formats stay linear and unscaled.
+void WriteImage(const Image& image, const std::string& path, float exposure = 0.0f);
+
+// Reads a .pfm written by WriteImage (or any 3-channel little/big-endian PFM).
+Image ReadPfm(const std::string& path);
+
+// Linear → 8-bit sRGB (IEC 61966-2-1 transfer curve), clamped to [0, 1].
+uint8_t LinearToSrgb8(float linear);
+
+}  // namespace vkpt

@@ -1,0 +1,80 @@
+#include "render/render_scene.h"
+
+#include <cmath>
+
+#include "shared/sampling.h"
+
+namespace vkpt {
+
+RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options) {
+  std::vector<Bounds3f> bounds(scene.triangles.size());
+  for (size_t i = 0; i < bounds.size(); ++i) {
+    const SceneTriangle& t = scene.triangles[i];
+    bounds[i].Extend(t.v0);
+    bounds[i].Extend(t.v1);
+    bounds[i].Extend(t.v2);
+  }
+  Bvh bvh = BuildBvh(bounds, options);
+
+  RenderScene rs;
+  rs.nodes = std::move(bvh.nodes);
+  rs.bvhStats = bvh.stats;
+  rs.materials = scene.materials;
+  rs.triangles.reserve(bvh.primOrder.size());
+  for (uint32_t src : bvh.primOrder) {
+    const SceneTriangle& t = scene.triangles[src];
+    shader::Triangle g{};
+    g.v0 = t.v0;
+    g.e1 = t.v1 - t.v0;
+    g.e2 = t.v2 - t.v0;
+    g.material = t.material;
+    g.sourceIndex = src;
+    rs.triangles.push_back(g);
+  }
+
+  // Emitter table: every emissive triangle with non-zero area, chosen with probability
+  // proportional to its emitted power (area × luminance, doubled when it emits from both
+  // faces), so bright large lights get most samples.
+  std::vector<double> weight;
+  for (uint32_t i = 0; i < rs.triangles.size(); ++i) {
+    const shader::Triangle& t = rs.triangles[i];
+    const shader::Material& m = rs.materials[t.material];
+    double area = 0.5 * glm::length(glm::dvec3(glm::cross(t.e1, t.e2)));
+    double lum = shader::Luminance(m.emission);
+    if (!(area > 0.0) || !(lum > 0.0)) continue;
+    double w = area * lum * ((m.flags & shader::kMaterialDoubleSided) ? 2.0 : 1.0);
+    rs.emitters.push_back({i, 0.0f, 0.0f, float(area)});
+    weight.push_back(w);
+  }
+  double total = 0.0;
+  for (double w : weight) total += w;
+  rs.totalEmittedPower = total * shader::kPi;
+  double running = 0.0;
+  float prevCdf = 0.0f;
+  for (size_t k = 0; k < rs.emitters.size(); ++k) {
+    running += weight[k];
+    float cdf = k + 1 == rs.emitters.size() ? 1.0f : float(running / total);
+    rs.emitters[k].cdf = cdf;
+    // The probability a uniform u ∈ [0,1) really lands in [prevCdf, cdf): what the
+    // estimator must divide by.
+    rs.emitters[k].pmf = cdf - prevCdf;
+    prevCdf = cdf;
+  }
+  return rs;
+}
+
+shader::FrameParams MakeFrameParams(const Camera& camera, uint32_t width, uint32_t height) {
+  shader::FrameParams p{};
+  p.origin = camera.position;
+  p.forward = camera.forward;
+  p.up = camera.up;
+  p.right = camera.right;
+  p.width = width;
+  p.height = height;
+  p.aspect = float(width) / float(height);
+  p.orthographic = camera.orthographic ? 1u : 0u;
+  p.tanHalfFovY = camera.orthographic ? camera.ymag : std::tan(0.5f * camera.yfov);
+  return p;
+}
+
+}  // namespace vkpt

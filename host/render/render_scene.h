@@ -1,0 +1,28 @@
+// What a renderer consumes: the Scene's triangles in BVH leaf order as shader::Triangle,
+// the flattened BVH, materials and the emitter table for light sampling. These vectors
+// are uploaded verbatim by the Vulkan backend, and read directly by the CPU reference.
+#pragma once
+
+#include <vector>
+
+#include "bvh/bvh.h"
+#include "scene/scene.h"
+#include "shared/layout.h"
+
+namespace vkpt {
+
+struct RenderScene {
+  std::vector<shader::Triangle> triangles;  // BVH leaf order
+  std::vector<shader::BvhNode> nodes;
+  std::vector<shader::Material> materials;
+  std::vector<shader::Emitter> emitters;  // empty: the scene is dark
+  BvhStats bvhStats;
+  double totalEmittedPower = 0.0;  // Σ π · area · luminance(Le) (×2 for two-sided)
+};
+
+RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {});
+
+// The frame constants for a camera and an image size (sample range and seed left 0).
+shader::FrameParams MakeFrameParams(const Camera& camera, uint32_t width, uint32_t height);
+
+}  // namespace vkpt

@@ -1,0 +1,37 @@
+// Compile-time proof that the C++ view of every GPU struct in shaders/shared/layout.h
+// has the std430 layout the shaders read. A failing assert here means a struct was
+// edited in a way GLSL would pad differently.
+#include <cstddef>
+
+#include "shared/layout.h"
+
+namespace vkpt::shader {
+
+static_assert(sizeof(vec3) == 12 && alignof(vec3) == 4, "glm::vec3 must be 3 packed floats");
+
+static_assert(sizeof(Triangle) == 48);
+static_assert(offsetof(Triangle, v0) == 0 && offsetof(Triangle, material) == 12);
+static_assert(offsetof(Triangle, e1) == 16 && offsetof(Triangle, sourceIndex) == 28);
+static_assert(offsetof(Triangle, e2) == 32 && offsetof(Triangle, pad0) == 44);
+
+static_assert(sizeof(BvhNode) == 32);
+static_assert(offsetof(BvhNode, lo) == 0 && offsetof(BvhNode, skip) == 12);
+static_assert(offsetof(BvhNode, hi) == 16 && offsetof(BvhNode, leaf) == 28);
+
+static_assert(sizeof(Material) == 48);
+static_assert(offsetof(Material, baseColor) == 0 && offsetof(Material, metallic) == 12);
+static_assert(offsetof(Material, emission) == 16 && offsetof(Material, roughness) == 28);
+static_assert(offsetof(Material, flags) == 32);
+
+static_assert(sizeof(Emitter) == 16);
+static_assert(offsetof(Emitter, cdf) == 4 && offsetof(Emitter, pmf) == 8 && offsetof(Emitter, area) == 12);
+
+static_assert(sizeof(FrameParams) == 112);
+static_assert(offsetof(FrameParams, origin) == 0 && offsetof(FrameParams, tanHalfFovY) == 12);
+static_assert(offsetof(FrameParams, right) == 16 && offsetof(FrameParams, aspect) == 28);
+static_assert(offsetof(FrameParams, up) == 32 && offsetof(FrameParams, width) == 44);
+static_assert(offsetof(FrameParams, forward) == 48 && offsetof(FrameParams, height) == 60);
+static_assert(offsetof(FrameParams, seed) == 64 && offsetof(FrameParams, triangleCount) == 92);
+static_assert(offsetof(FrameParams, orthographic) == 96);
+
+}  // namespace vkpt::shader

@@ -1,0 +1,252 @@
+#!/usr/bin/env python3
+"""Generate vkpt's glTF 2.0 test scenes (standard library only).
+
+  cornell.gltf/.bin  - the GAMES101 homework-7 Cornell box (models/cornellbox/*.obj)
+  furnace.gltf/.bin  - closed emissive+diffuse cube with an analytic answer
+
+Usage: python3 make_scenes.py [--out DIR]   (default: this script's directory)
+
+Winding is load-bearing: vkpt emits light only from a triangle's front face
+(glTF CCW, normal = (v1-v0) x (v2-v0)), so every quad is oriented by an explicit
+rule below and asserted, rather than trusting the order the vertices are listed in.
+"""
+import argparse
+import json
+import math
+import os
+import struct
+
+FLOAT, UNSIGNED_SHORT = 5126, 5123
+ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
+TRIANGLES = 4
+
+
+def sub(a, b): return tuple(x - y for x, y in zip(a, b))
+def dot(a, b): return sum(x * y for x, y in zip(a, b))
+def centroid(pts): return tuple(sum(c) / len(pts) for c in zip(*pts))
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def tri_normal(a, b, c):
+    n = cross(sub(b, a), sub(c, a))
+    length = math.sqrt(dot(n, n))
+    return tuple(x / length for x in n)
+
+
+def tri_area(a, b, c):
+    n = cross(sub(b, a), sub(c, a))
+    return 0.5 * math.sqrt(dot(n, n))
+
+
+def f32(x):
+    # Round-trip through float32 so accessor min/max equal the stored data exactly.
+    # (+ 0.0 turns -0.0 into 0.0 so normals print cleanly.)
+    return struct.unpack('<f', struct.pack('<f', x))[0] + 0.0
+
+
+def orient_quads(quads, facing):
+    """Split quads into triangles whose front face points along facing(point).
+
+    A quad is reversed as a whole (a,b,c,d -> a,d,c,b) so both halves keep the
+    same a-c diagonal; that matters for the slightly non-planar red wall."""
+    tris = []
+    for q in quads:
+        a, b, c, d = q
+        if dot(tri_normal(a, b, c), facing(centroid(q))) < 0:
+            a, b, c, d = a, d, c, b
+        for t in ((a, b, c), (a, c, d)):
+            assert dot(tri_normal(*t), facing(centroid(t))) > 0, ('bad winding', t)
+            tris.append(t)
+    return tris
+
+
+class Gltf:
+    """Minimal glTF builder: one .bin buffer, one indexed primitive per mesh."""
+
+    def __init__(self, extras=None):
+        asset = {'version': '2.0', 'generator': 'vkpt scenes/make_scenes.py'}
+        if extras:
+            asset['extras'] = extras
+        self.doc = {'asset': asset, 'scene': 0, 'scenes': [{'nodes': []}], 'nodes': [],
+                    'meshes': [], 'materials': [], 'accessors': [], 'bufferViews': []}
+        self.bin = bytearray()
+
+    def _add(self, key, obj):
+        self.doc.setdefault(key, []).append(obj)
+        return len(self.doc[key]) - 1
+
+    def _node(self, node):
+        self.doc['scenes'][0]['nodes'].append(self._add('nodes', node))
+
+    def _accessor(self, data, target, component, count, type_, **extra):
+        self.bin += b'\0' * (-len(self.bin) % 4)  # every view starts 4-byte aligned
+        view = self._add('bufferViews', {'buffer': 0, 'byteOffset': len(self.bin),
+                                         'byteLength': len(data), 'target': target})
+        self.bin += data
+        return self._add('accessors', dict(bufferView=view, componentType=component,
+                                           count=count, type=type_, **extra))
+
+    def material(self, name, base, emissive=None, strength=None):
+        mat = {'name': name, 'doubleSided': False,
+               'pbrMetallicRoughness': {'baseColorFactor': list(base) + [1.0],
+                                        'metallicFactor': 0.0, 'roughnessFactor': 1.0}}
+        if emissive:
+            mat['emissiveFactor'] = list(emissive)
+        if strength is not None:
+            ext = 'KHR_materials_emissive_strength'
+            mat['extensions'] = {ext: {'emissiveStrength': strength}}
+            if ext not in self.doc.setdefault('extensionsUsed', []):
+                self.doc['extensionsUsed'].append(ext)
+        return self._add('materials', mat)
+
+    def mesh(self, name, tris, material):
+        # Flat shading: vertices are shared only where position AND face normal
+        # agree, so planar quads give 4 vertices and non-planar ones 6.
+        verts, index_of, indices = [], {}, []
+        for t in tris:
+            n = tuple(f32(x) for x in tri_normal(*t))
+            for p in t:
+                key = (tuple(f32(x) for x in p), n)
+                if key not in index_of:
+                    index_of[key] = len(verts)
+                    verts.append(key)
+                indices.append(index_of[key])
+        assert len(verts) < 65536, 'too many vertices for UNSIGNED_SHORT indices'
+        pos = [v[0] for v in verts]
+        attrs = {
+            'POSITION': self._accessor(
+                b''.join(struct.pack('<3f', *p) for p in pos), ARRAY_BUFFER, FLOAT,
+                len(verts), 'VEC3', min=[min(c) for c in zip(*pos)],
+                max=[max(c) for c in zip(*pos)]),
+            'NORMAL': self._accessor(
+                b''.join(struct.pack('<3f', *v[1]) for v in verts), ARRAY_BUFFER,
+                FLOAT, len(verts), 'VEC3'),
+        }
+        idx = self._accessor(struct.pack('<%dH' % len(indices), *indices),
+                             ELEMENT_ARRAY_BUFFER, UNSIGNED_SHORT, len(indices), 'SCALAR')
+        prim = {'attributes': attrs, 'indices': idx, 'material': material, 'mode': TRIANGLES}
+        self._node({'name': name, 'mesh': self._add('meshes', {'name': name,
+                                                                'primitives': [prim]})})
+
+    def camera(self, yfov, translation=None, rotation=None):
+        cam = self._add('cameras', {'type': 'perspective', 'perspective': {
+            'yfov': yfov, 'aspectRatio': 1.0, 'znear': 0.1}})
+        node = {'name': 'camera', 'camera': cam}
+        if translation:
+            node['translation'] = list(translation)
+        if rotation:
+            node['rotation'] = list(rotation)
+        self._node(node)
+
+    def save(self, out_dir, stem):
+        self.bin += b'\0' * (-len(self.bin) % 4)
+        self.doc['buffers'] = [{'uri': stem + '.bin', 'byteLength': len(self.bin)}]
+        with open(os.path.join(out_dir, stem + '.bin'), 'wb') as f:
+            f.write(self.bin)
+        with open(os.path.join(out_dir, stem + '.gltf'), 'w') as f:
+            json.dump(self.doc, f, indent=1)
+            f.write('\n')
+
+
+def cornell(out_dir):
+    g = Gltf()
+    white = g.material('white', (0.725, 0.71, 0.68))
+    red = g.material('red', (0.63, 0.065, 0.05))
+    green = g.material('green', (0.14, 0.45, 0.091))
+    # GAMES101 main.cpp builds the light's radiance from three blackbody-ish
+    # lobes; glTF caps emissiveFactor at 1, so the peak goes into the strength.
+    radiance = [round(8.0 * a + 15.6 * b + 18.4 * c, 6) for a, b, c in zip(
+        (0.747 + 0.058, 0.747 + 0.258, 0.747),
+        (0.740 + 0.287, 0.740 + 0.160, 0.740),
+        (0.737 + 0.642, 0.737 + 0.159, 0.737))]  # (47.8348, 38.5664, 31.0808)
+    strength = max(radiance)
+    light = g.material('light', (0.65, 0.65, 0.65),
+                       emissive=[round(r / strength, 6) for r in radiance],
+                       strength=strength)
+
+    # Vertex data as in GAMES101 models/cornellbox/*.obj. GAMES101 calls the red
+    # wall (x~555) "left" because its camera puts it on the image's left.
+    room = {
+        'floor': (white, [(552.8, 0, 0), (0, 0, 0), (0, 0, 559.2), (549.6, 0, 559.2)]),
+        'ceiling': (white, [(556, 548.8, 0), (556, 548.8, 559.2), (0, 548.8, 559.2),
+                            (0, 548.8, 0)]),
+        'backWall': (white, [(549.6, 0, 559.2), (0, 0, 559.2), (0, 548.8, 559.2),
+                             (556, 548.8, 559.2)]),
+        'leftWall': (red, [(552.8, 0, 0), (549.6, 0, 559.2), (556, 548.8, 559.2),
+                           (556, 548.8, 0)]),
+        'rightWall': (green, [(0, 0, 559.2), (0, 0, 0), (0, 548.8, 0), (0, 548.8, 559.2)]),
+    }
+    room_centre = (278.0, 274.0, 280.0)
+    for name, (mat, quad) in room.items():
+        g.mesh(name, orient_quads([quad], lambda p: sub(room_centre, p)), mat)
+
+    # Sits 0.1 below the ceiling; must face down or it lights nothing.
+    light_quad = [(343, 548.7, 227), (343, 548.7, 332), (213, 548.7, 332), (213, 548.7, 227)]
+    light_tris = orient_quads([light_quad], lambda p: (0.0, -1.0, 0.0))
+    assert abs(sum(tri_area(*t) for t in light_tris) - 130 * 105) < 1e-6
+    g.mesh('light', light_tris, light)
+
+    # Blocks have no bottom face (as in GAMES101); faces point away from the block centre.
+    blocks = {
+        'shortBox': [
+            [(130, 165, 65), (82, 165, 225), (240, 165, 272), (290, 165, 114)],
+            [(290, 0, 114), (290, 165, 114), (240, 165, 272), (240, 0, 272)],
+            [(130, 0, 65), (130, 165, 65), (290, 165, 114), (290, 0, 114)],
+            [(82, 0, 225), (82, 165, 225), (130, 165, 65), (130, 0, 65)],
+            [(240, 0, 272), (240, 165, 272), (82, 165, 225), (82, 0, 225)]],
+        'tallBox': [
+            [(423, 330, 247), (265, 330, 296), (314, 330, 456), (472, 330, 406)],
+            [(423, 0, 247), (423, 330, 247), (472, 330, 406), (472, 0, 406)],
+            [(472, 0, 406), (472, 330, 406), (314, 330, 456), (314, 0, 456)],
+            [(314, 0, 456), (314, 330, 456), (265, 330, 296), (265, 0, 296)],
+            [(265, 0, 296), (265, 330, 296), (423, 330, 247), (423, 0, 247)]],
+    }
+    for name, quads in blocks.items():
+        centre = centroid([p for q in quads for p in q])
+        g.mesh(name, orient_quads(quads, lambda p, c=centre: sub(p, c)), white)
+
+    # GAMES101: eye (278,273,-800), 40 deg vertical fov, looking down +Z.
+    # glTF cameras look down local -Z, hence the 180 deg turn about Y.
+    g.camera(math.radians(40.0), translation=(278.0, 273.0, -800.0), rotation=(0.0, 1.0, 0.0, 0.0))
+    g.save(out_dir, 'cornell')
+
+
+def furnace(out_dir):
+    # Inside a closed cube of one material with emission Le and albedo rho,
+    # L = Le + rho*L everywhere, so L = Le / (1 - rho) exactly.
+    albedo, emission = (0.3, 0.5, 0.8), (0.5, 0.5, 0.5)
+    expected = [round(e / (1.0 - a), 9) for e, a in zip(emission, albedo)]
+    g = Gltf(extras={'expectedRadiance': expected, 'albedo': list(albedo),
+                     'emission': list(emission)})
+    mat = g.material('furnace', albedo, emissive=emission)
+    quads = []
+    for axis in range(3):
+        u, v = (axis + 1) % 3, (axis + 2) % 3
+        for side in (-1.0, 1.0):
+            quad = []
+            for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+                p = [0.0, 0.0, 0.0]
+                p[axis], p[u], p[v] = side, float(a), float(b)
+                quad.append(tuple(p))
+            quads.append(quad)
+    inward = orient_quads(quads, lambda p: tuple(-x for x in p))
+    g.mesh('enclosure', inward, mat)
+    g.camera(1.2)
+    g.save(out_dir, 'furnace')
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument('--out', default=os.path.dirname(os.path.abspath(__file__)),
+                    help='output directory (default: next to this script)')
+    out_dir = ap.parse_args().out
+    os.makedirs(out_dir, exist_ok=True)
+    cornell(out_dir)
+    furnace(out_dir)
+
+
+if __name__ == '__main__':
+    main()

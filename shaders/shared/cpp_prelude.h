@@ -1,0 +1,21 @@
+// C++ side of the GLSL/C++ shared headers. Included only when __cplusplus is defined.
+//
+// The headers in shaders/shared/ are written in the common subset of GLSL 4.60 and
+// C++20 so that the CPU reference tracer and the compute shader run the *same* RNG,
+// sampling and intersection code. GLM mirrors GLSL's types and built-ins (vec3, dot,
+// floatBitsToInt, ...), so on the C++ side all that is needed is to bring them into scope.
+#pragma once
+
+#include <cstdint>
+#include <cmath>
+#include <glm/glm.hpp>
+
+namespace vkpt::shader {
+using namespace glm;
+using uint = std::uint32_t;
+}  // namespace vkpt::shader
+
+// Free functions in shared headers are `VKPT_FN`: inline in C++, plain in GLSL.
+#define VKPT_FN inline
+#define VKPT_BEGIN_NAMESPACE namespace vkpt::shader {
+#define VKPT_END_NAMESPACE }

@@ -1,0 +1,7 @@
+// GLSL side of the shared headers: the macros cpp_prelude.h defines for C++.
+#ifndef VKPT_GLSL_PRELUDE_H
+#define VKPT_GLSL_PRELUDE_H
+#define VKPT_FN
+#define VKPT_BEGIN_NAMESPACE
+#define VKPT_END_NAMESPACE
+#endif

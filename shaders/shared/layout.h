@@ -1,0 +1,103 @@
+// Every GPU-visible struct and binding index, shared by C++ and GLSL.
+//
+// All structs follow std430 rules and are built only from 4-byte scalars and
+// (vec3, 4-byte scalar) pairs, so the C++ layout (glm::vec3 = 12 bytes, align 4)
+// equals the GLSL one (vec3 aligned to 16). Never put a vec3 after a vec3: GLSL
+// would insert 4 bytes of padding that C++ does not. host/scene/gpu_layout.cpp
+// static_asserts every size and offset below.
+#ifndef VKPT_LAYOUT_H
+#define VKPT_LAYOUT_H
+#include "prelude.h"
+
+VKPT_BEGIN_NAMESPACE
+
+// Descriptor bindings of the path-tracing pipeline (set 0).
+const uint kBindingParams = 0u;     // uniform FrameParams
+const uint kBindingTriangles = 1u;  // readonly buffer Triangle[]
+const uint kBindingNodes = 2u;      // readonly buffer BvhNode[]
+const uint kBindingMaterials = 3u;  // readonly buffer Material[]
+const uint kBindingEmitters = 4u;   // readonly buffer Emitter[]
+const uint kBindingAccum = 5u;      // buffer vec4[] (sum, sum of squares) per pixel
+
+const uint kInvalidIndex = 0xFFFFFFFFu;
+
+// A triangle in leaf order, stored as v0 and two edges: exactly what the
+// Möller–Trumbore test consumes, so the hot loop loads 36 bytes and computes nothing
+// it could have precomputed.
+struct Triangle {
+  vec3 v0;
+  uint material;
+  vec3 e1;  // v1 - v0
+  uint sourceIndex;  // index of the triangle in the Scene (before BVH reordering)
+  vec3 e2;  // v2 - v0
+  uint pad0;
+};
+
+// A flattened BVH node (32 bytes) in depth-first order with skip links.
+//   skip: index of the node to visit when this node's box is missed or its leaf is
+//         done (kInvalidIndex: traversal ends). For an inner node the first child is
+//         the next node (index + 1) and the second child is nodes[index + 1].skip.
+//   leaf: 0 for an inner node; for a leaf (first << 4) | count with 1 <= count <= 15.
+struct BvhNode {
+  vec3 lo;
+  uint skip;
+  vec3 hi;
+  uint leaf;
+};
+
+const uint kMaxLeafSize = 15u;
+
+const uint kMaterialDoubleSided = 1u;
+
+// Lambertian reflectance plus emission. metallic/roughness are carried for the
+// BSDFs to come; the current estimator reads baseColor and emission only.
+struct Material {
+  vec3 baseColor;
+  float metallic;
+  vec3 emission;  // emitted radiance Le = emissiveFactor * emissiveStrength
+  float roughness;
+  uint flags;  // kMaterialDoubleSided
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// One emissive triangle of the light-sampling distribution (next-event estimation).
+// Triangles are chosen with probability pmf ∝ area * luminance(Le); cdf is the
+// inclusive running sum (the last one is exactly 1).
+struct Emitter {
+  uint triangle;  // index into the leaf-ordered Triangle array
+  float cdf;
+  float pmf;
+  float area;
+};
+
+// Per-render constants. The camera ray through film point (sx, sy) ∈ [-1,1]² has the
+// direction forward + sx * tanHalfFovY * aspect * right + sy * tanHalfFovY * up
+// (see GenerateCameraRay in estimator.h).
+struct FrameParams {
+  vec3 origin;
+  float tanHalfFovY;
+  vec3 right;
+  float aspect;
+  vec3 up;
+  uint width;
+  vec3 forward;
+  uint height;
+  uint seed;
+  uint sampleBegin;  // first sample index of this dispatch
+  uint sampleCount;  // samples per pixel in this dispatch
+  uint maxDepth;
+  uint rrDepth;
+  uint emitterCount;
+  uint nodeCount;
+  uint triangleCount;
+  uint orthographic;  // 1: parallel rays; tanHalfFovY then holds the half view height
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+VKPT_END_NAMESPACE
+
+#endif

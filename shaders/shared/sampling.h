@@ -1,0 +1,57 @@
+// Sampling routines and their densities, shared by the CPU and GPU renderers.
+#ifndef VKPT_SAMPLING_H
+#define VKPT_SAMPLING_H
+#include "prelude.h"
+
+VKPT_BEGIN_NAMESPACE
+
+const float kPi = 3.14159265358979323846f;
+const float kInvPi = 0.31830988618379067154f;
+
+// Orthonormal basis around unit vector n (Duff et al. 2017, "Building an Orthonormal
+// Basis, Revisited", JCGT 6(1)): branch-free and without the singularity at n.z = -1.
+struct Frame {
+  vec3 t;
+  vec3 b;
+  vec3 n;
+};
+
+VKPT_FN Frame FrameFromNormal(vec3 n) {
+  float s = n.z >= 0.0f ? 1.0f : -1.0f;
+  float a = -1.0f / (s + n.z);
+  float c = n.x * n.y * a;
+  Frame f;
+  f.t = vec3(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
+  f.b = vec3(c, s + n.y * n.y * a, -n.y);
+  f.n = n;
+  return f;
+}
+
+VKPT_FN vec3 FrameToWorld(Frame f, vec3 v) { return f.t * v.x + f.b * v.y + f.n * v.z; }
+
+// Cosine-weighted direction on the hemisphere around +z (Malley's method: uniform on
+// the unit disk, projected up). pdf(ω) = cos θ / π, so for a Lambertian BRDF ρ/π the
+// Monte Carlo weight f cos θ / pdf is exactly ρ.
+VKPT_FN vec3 SampleCosineHemisphere(float u1, float u2) {
+  float r = sqrt(u1);
+  float phi = 2.0f * kPi * u2;
+  return vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0f, 1.0f - u1)));
+}
+
+VKPT_FN float CosineHemispherePdf(float cosTheta) { return max(cosTheta, 0.0f) * kInvPi; }
+
+// Uniform point on a triangle as barycentrics (b1, b2) of v1 and v2 (pbrt-v3 §13.6.5:
+// the square-root warp). The area density is 1 / area.
+VKPT_FN vec2 SampleUniformTriangle(float u1, float u2) {
+  float su = sqrt(u1);
+  return vec2(u2 * su, 1.0f - su);
+}
+
+// Radiance-to-weight helper: the relative luminance used to build the light CDF and
+// (as its maximum component) Russian roulette.
+VKPT_FN float MaxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
+VKPT_FN float Luminance(vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+VKPT_END_NAMESPACE
+
+#endif
