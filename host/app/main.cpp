@@ -13,6 +13,7 @@
 #include "image/image.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
+#include "shared/sampling.h"
 #include "util/error.h"
 
 #ifndef VKPT_VERSION
@@ -21,6 +22,8 @@
 
 namespace vkpt {
 namespace {
+
+using shader::MaxComponent;
 
 void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& cam, uint32_t camIndex) {
   std::printf("scene: %s\n", scene.path.c_str());
@@ -82,8 +85,15 @@ int Run(const Options& o) {
   params.emitterCount = uint32_t(rs.emitters.size());
   params.nodeCount = uint32_t(rs.nodes.size());
   params.triangleCount = uint32_t(rs.triangles.size());
-  if (rs.emitters.empty())
-    std::fprintf(stderr, "vkpt: warning: %s: no emissive triangles; the image will be black\n", o.scene.c_str());
+  if (o.background) {
+    params.background = glm::vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]);
+  } else if (rs.emitters.empty()) {
+    params.background = glm::vec3(1.0f);
+    if (o.verbose) std::printf("  no emissive triangles: lit by a white environment (see --background)\n");
+  }
+  if (rs.emitters.empty() && MaxComponent(params.background) <= 0.0f)
+    std::fprintf(stderr, "vkpt: warning: %s: no emissive triangles and a black background; the image will be black\n",
+                 o.scene.c_str());
 
   CpuRenderOptions cpuOptions;
   cpuOptions.threads = o.threads;

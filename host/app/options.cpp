@@ -1,5 +1,6 @@
 #include "app/options.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -39,6 +40,9 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --threads N        CPU threads [default: all cores]
   --camera N         index of the glTF camera to render from, in scene order [default: 0;
                      a scene without cameras gets one that frames it]
+  --background R,G,B constant environment radiance seen by rays that leave the scene
+                     (one number for grey) [default: 1 if the scene has no emissive
+                     triangles, so any model is lit; else 0]
   --exposure STOPS   PNG only: scale radiance by 2^STOPS before sRGB encoding [default: 0]
   --leaf-size N      maximum triangles per BVH leaf, 1..15 [default: 4]
   -v, --verbose      print what was loaded and which glTF features were ignored
@@ -72,6 +76,23 @@ Options ParseOptions(int argc, const char* const* argv) {
       {"--leaf-size", u32(o.leafSize, 1, 15)},
       {"--exposure",
        [&](const std::string& opt, const std::string& v) { o.exposure = ParseNumber(opt, v, -64.0f, 64.0f); }},
+      {"--background",
+       [&](const std::string& opt, const std::string& v) {
+         std::array<float, 3> c{};
+         size_t start = 0;
+         int n = 0;
+         for (; n < 3 && start <= v.size(); ++n) {
+           size_t comma = v.find(',', start);
+           std::string part = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+           c[n] = ParseNumber(opt, part, 0.0f, 1e30f);
+           if (comma == std::string::npos) { ++n; break; }
+           start = comma + 1;
+         }
+         if (n == 1) c[1] = c[2] = c[0];
+         else if (n != 3 || v.find(',', v.rfind(',') + 1) != std::string::npos || std::count(v.begin(), v.end(), ',') != 2)
+           throw UsageError(opt + " expects R,G,B or one number, got \"" + v + "\"");
+         o.background = c;
+       }},
       {"--backend",
        [&](const std::string&, const std::string& v) {
          if (v == "cpu") o.backend = Backend::Cpu;

@@ -1,6 +1,7 @@
 // Command-line options of `vkpt`.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -22,6 +23,9 @@ struct Options {
   unsigned threads = 0;  // 0: all cores
   std::optional<uint32_t> camera;
   float exposure = 0.0f;
+  // Constant environment radiance; absent: white (1,1,1) for a scene without emissive
+  // triangles (so any model is visible), black otherwise.
+  std::optional<std::array<float, 3>> background;
   uint32_t leafSize = 4;
   bool verbose = false;
   bool help = false;

@@ -3,7 +3,8 @@
 // sampling a point on an emissive triangle (area sampling, dω = cos θ' dA / r²) and the
 // path continues along a cosine-weighted direction. Emission is added only where the
 // camera ray hits an emitter directly; light reaching later vertices is counted by the
-// light samples, so nothing is counted twice. All surfaces are Lambertian, f = ρ/π.
+// light samples, so nothing is counted twice. Rays that escape collect the constant
+// environment radiance (FrameParams::background). All surfaces are Lambertian, f = ρ/π.
 #include "cpu/path_tracer.h"
 
 #include <atomic>
@@ -52,14 +53,20 @@ glm::vec3 SampleRadiance(const RenderScene& scene, const FrameParams& params, ui
   for (uint32_t bounce = 0;; ++bounce) {
     ++stats.rays;
     Hit hit = IntersectClosest(scene.nodes, scene.triangles, ray.origin, ray.dir, kInfinity);
-    if (!hit.Valid()) break;  // glTF scenes have no environment light: black background
+    if (!hit.Valid()) {
+      // Escaped: light from the constant environment. It is never light-sampled, so
+      // counting it here on every bounce counts it exactly once.
+      radiance += throughput * params.background;
+      break;
+    }
     const Triangle& tri = scene.triangles[hit.triangle];
     const Material& mat = scene.materials[tri.material];
     const vec3 ng = GeometricNormal(tri);
     const bool frontFace = dot(ng, ray.dir) < 0.0f;
     if (bounce == 0 && (frontFace || (mat.flags & kMaterialDoubleSided)))
       radiance += throughput * mat.emission;
-    // Paths have at most maxDepth bounces; the light sample at vertex k makes k + 1.
+    // Paths have at most maxDepth bounces: the light sample at vertex k, and the ray
+    // leaving it (which may escape to the environment), make k + 1.
     if (bounce >= params.maxDepth) break;
 
     // Surfaces reflect on both sides: shade with the normal facing the incoming ray.
@@ -86,7 +93,6 @@ glm::vec3 SampleRadiance(const RenderScene& scene, const FrameParams& params, ui
           radiance += throughput * brdf * lm.emission * w;
       }
     }
-    if (bounce + 1 >= params.maxDepth) break;
 
     // Cosine-weighted bounce: f·cos θ / pdf = (ρ/π)·cos θ / (cos θ/π) = ρ.
     throughput *= mat.baseColor;

@@ -16,6 +16,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/glb_header.h"
+#include "scene/gltf_schema.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -636,6 +637,7 @@ Scene LoadGltf(const std::string& path) {
   }
   if (json.size() >= 3 && std::memcmp(json.data(), "\xEF\xBB\xBF", 3) == 0)
     throw Error(path + ": the JSON starts with a UTF-8 byte-order mark, which glTF forbids");
+  CheckGltfSchema(path, json);
 
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(KeepImageUndecoded, nullptr);

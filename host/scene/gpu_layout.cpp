@@ -32,6 +32,6 @@ static_assert(offsetof(FrameParams, right) == 16 && offsetof(FrameParams, aspect
 static_assert(offsetof(FrameParams, up) == 32 && offsetof(FrameParams, width) == 44);
 static_assert(offsetof(FrameParams, forward) == 48 && offsetof(FrameParams, height) == 60);
 static_assert(offsetof(FrameParams, seed) == 64 && offsetof(FrameParams, triangleCount) == 92);
-static_assert(offsetof(FrameParams, orthographic) == 96);
+static_assert(offsetof(FrameParams, background) == 96 && offsetof(FrameParams, orthographic) == 108);
 
 }  // namespace vkpt::shader

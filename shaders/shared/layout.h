@@ -92,10 +92,8 @@ struct FrameParams {
   uint emitterCount;
   uint nodeCount;
   uint triangleCount;
+  vec3 background;    // radiance arriving from every direction no triangle blocks
   uint orthographic;  // 1: parallel rays; tanHalfFovY then holds the half view height
-  uint pad0;
-  uint pad1;
-  uint pad2;
 };
 
 VKPT_END_NAMESPACE

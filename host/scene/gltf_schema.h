@@ -1,0 +1,14 @@
+// Checks of the glTF JSON that tinygltf does not make: it silently maps an index of -1
+// to "absent" and skips a non-array where an array is required, so a file with
+// `"index": -1` or `"primitives": {}` would load as something its author did not write.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace vkpt {
+
+// Throws vkpt::Error naming `path` and the JSON location of the first violation.
+void CheckGltfSchema(const std::string& path, std::string_view json);
+
+}  // namespace vkpt
