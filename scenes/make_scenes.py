@@ -2,7 +2,7 @@
 """Generate vkpt's glTF 2.0 test scenes (standard library only).
 
   cornell.gltf/.bin  - the GAMES101 homework-7 Cornell box (models/cornellbox/*.obj)
-  furnace.gltf/.bin  - closed emissive+diffuse cube with an analytic answer
+  furnace.gltf/.bin  - closed emissive+diffuse sphere with an analytic answer
 
 Usage: python3 make_scenes.py [--out DIR]   (default: this script's directory)
 
@@ -214,25 +214,46 @@ def cornell(out_dir):
     g.save(out_dir, 'cornell')
 
 
+def icosphere(levels):
+    """Unit icosphere: an icosahedron with every triangle split in four `levels`
+    times and the new vertices pushed onto the sphere."""
+    t = (1.0 + math.sqrt(5.0)) / 2.0
+    verts = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t),
+             (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    unit = lambda p: tuple(c / math.sqrt(dot(p, p)) for c in p)
+    tris = [tuple(unit(verts[i]) for i in f) for f in (
+        (0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+        (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+        (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1))]
+    for _ in range(levels):
+        finer = []
+        for a, b, c in tris:
+            ab, bc, ca = (unit(centroid([p, q])) for p, q in ((a, b), (b, c), (c, a)))
+            finer += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        tris = finer
+    return tris
+
+
 def furnace(out_dir):
-    # Inside a closed cube of one material with emission Le and albedo rho,
+    # Inside a closed enclosure of one material with emission Le and albedo rho,
     # L = Le + rho*L everywhere, so L = Le / (1 - rho) exactly.
+    # The enclosure is a sphere (a 1280-triangle icosphere), not a cube: inside a
+    # sphere the light-sampling weight cos(theta) cos(theta') / r^2 is the constant
+    # 1 / (4 R^2), so next-event estimation has finite variance and a z-test on the
+    # render's own variance is valid. In a cube's concave edges that weight is
+    # unbounded (infinite variance), and sample means converge slowly from below.
     albedo, emission = (0.3, 0.5, 0.8), (0.5, 0.5, 0.5)
     expected = [round(e / (1.0 - a), 9) for e, a in zip(emission, albedo)]
     g = Gltf(extras={'expectedRadiance': expected, 'albedo': list(albedo),
                      'emission': list(emission)})
     mat = g.material('furnace', albedo, emissive=emission)
-    quads = []
-    for axis in range(3):
-        u, v = (axis + 1) % 3, (axis + 2) % 3
-        for side in (-1.0, 1.0):
-            quad = []
-            for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
-                p = [0.0, 0.0, 0.0]
-                p[axis], p[u], p[v] = side, float(a), float(b)
-                quad.append(tuple(p))
-            quads.append(quad)
-    inward = orient_quads(quads, lambda p: tuple(-x for x in p))
+    inward = []
+    for tri in icosphere(3):
+        # Front faces point at the centre.
+        if dot(tri_normal(*tri), centroid(tri)) > 0:
+            tri = (tri[0], tri[2], tri[1])
+        assert dot(tri_normal(*tri), centroid(tri)) < 0
+        inward.append(tri)
     g.mesh('enclosure', inward, mat)
     g.camera(1.2)
     g.save(out_dir, 'furnace')

@@ -113,8 +113,8 @@ int Run(const Options& o) {
               o.spp, r.threads);
   std::printf("  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", r.seconds,
               samples / r.seconds * 1e-6, double(r.stats.rays) / r.seconds * 1e-6, mean.x, mean.y, mean.z);
-  std::printf("  scene: %zu triangles, %zu emissive; BVH: %u nodes, %u leaves, depth %u, SAH cost %.3f, built in %.2f ms\n",
-              scene.triangles.size(), rs.emitters.size(), rs.bvhStats.nodes, rs.bvhStats.leaves, rs.bvhStats.depth,
+  std::printf("  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %u nodes, %u leaves, depth %u, SAH cost %.3f, built in %.2f ms\n",
+              scene.triangles.size(), rs.degenerateTriangles, rs.emitters.size(), rs.bvhStats.nodes, rs.bvhStats.leaves, rs.bvhStats.depth,
               rs.bvhStats.sahCost, rs.bvhStats.buildMs);
   if (r.stats.nonFinite)
     std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.stats.nonFinite);

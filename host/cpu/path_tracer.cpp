@@ -25,17 +25,6 @@ using namespace shader;
 
 namespace {
 
-// Smallest k with u < cdf[k]: the emitter whose CDF interval holds u.
-uint32_t PickEmitter(const std::vector<Emitter>& emitters, float u) {
-  uint32_t lo = 0, hi = uint32_t(emitters.size()) - 1;
-  while (lo < hi) {
-    uint32_t mid = (lo + hi) / 2;
-    if (u < emitters[mid].cdf) hi = mid;
-    else lo = mid + 1;
-  }
-  return lo;
-}
-
 glm::vec3 GeometricNormal(const Triangle& t) { return glm::normalize(glm::cross(t.e1, t.e2)); }
 
 }  // namespace

@@ -3,25 +3,48 @@
 #include <cmath>
 
 #include "shared/sampling.h"
+#include "util/error.h"
 
 namespace vkpt {
 
+bool IsDegenerate(const SceneTriangle& t) {
+  glm::vec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
+  // |e1 × e2| = |e1||e2| sin(angle): degenerate when the angle is below ~1e-6 rad.
+  return !(glm::length(glm::cross(e1, e2)) > 1e-6f * glm::length(e1) * glm::length(e2));
+}
+
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options) {
-  std::vector<Bounds3f> bounds(scene.triangles.size());
-  for (size_t i = 0; i < bounds.size(); ++i) {
+  RenderScene rs;
+  std::vector<Bounds3f> bounds;
+  std::vector<uint32_t> kept;
+  bounds.reserve(scene.triangles.size());
+  kept.reserve(scene.triangles.size());
+  for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
     const SceneTriangle& t = scene.triangles[i];
-    bounds[i].Extend(t.v0);
-    bounds[i].Extend(t.v1);
-    bounds[i].Extend(t.v2);
+    if (IsDegenerate(t)) {
+      ++rs.degenerateTriangles;
+      continue;
+    }
+    // The box also holds v0 + e1 and v0 + e2 as stored for the GPU (they can differ
+    // from v1, v2 in the last bit), so no rounding puts a triangle outside its leaf.
+    Bounds3f b;
+    b.Extend(t.v0);
+    b.Extend(t.v1);
+    b.Extend(t.v2);
+    b.Extend(t.v0 + (t.v1 - t.v0));
+    b.Extend(t.v0 + (t.v2 - t.v0));
+    bounds.push_back(b);
+    kept.push_back(i);
   }
+  if (kept.empty()) throw Error(scene.path + ": every triangle of the scene is degenerate (zero area)");
   Bvh bvh = BuildBvh(bounds, options);
 
-  RenderScene rs;
   rs.nodes = std::move(bvh.nodes);
   rs.bvhStats = bvh.stats;
   rs.materials = scene.materials;
   rs.triangles.reserve(bvh.primOrder.size());
-  for (uint32_t src : bvh.primOrder) {
+  for (uint32_t k : bvh.primOrder) {
+    const uint32_t src = kept[k];
     const SceneTriangle& t = scene.triangles[src];
     shader::Triangle g{};
     g.v0 = t.v0;
@@ -61,6 +84,16 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
     prevCdf = cdf;
   }
   return rs;
+}
+
+uint32_t PickEmitter(const std::vector<shader::Emitter>& emitters, float u) {
+  uint32_t lo = 0, hi = uint32_t(emitters.size()) - 1;
+  while (lo < hi) {
+    uint32_t mid = (lo + hi) / 2;
+    if (u < emitters[mid].cdf) hi = mid;
+    else lo = mid + 1;
+  }
+  return lo;
 }
 
 shader::FrameParams MakeFrameParams(const Camera& camera, uint32_t width, uint32_t height) {

@@ -17,8 +17,17 @@ struct RenderScene {
   std::vector<shader::Material> materials;
   std::vector<shader::Emitter> emitters;  // empty: the scene is dark
   BvhStats bvhStats;
+  uint32_t degenerateTriangles = 0;  // dropped: zero area (see IsDegenerate)
   double totalEmittedPower = 0.0;  // Σ π · area · luminance(Le) (×2 for two-sided)
 };
+
+// A triangle whose edges are parallel to float precision has no area to hit or emit
+// from, but a ray test on it can report a spurious hit far from its vertices; such
+// triangles are left out of the RenderScene.
+bool IsDegenerate(const SceneTriangle& t);
+
+// The emitter whose CDF interval holds u ∈ [0,1): smallest k with u < cdf[k].
+uint32_t PickEmitter(const std::vector<shader::Emitter>& emitters, float u);
 
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {});
 

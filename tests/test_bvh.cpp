@@ -1,0 +1,207 @@
+// BVH invariants and closest-hit traversal against brute force.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "bvh/bvh.h"
+#include "cpu/traversal.h"
+#include "render/render_scene.h"
+#include "scene/gltf_loader.h"
+#include "shared/estimator.h"
+#include "shared/intersect.h"
+#include "test_util.h"
+
+namespace vkpt {
+namespace {
+
+// A random soup with the cases that break naive builders: zero-area triangles
+// (repeated and collinear vertices), huge and tiny triangles, many identical triangles.
+std::vector<SceneTriangle> RandomSoup(uint32_t count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  auto point = [&] { return glm::vec3(u(rng), u(rng), u(rng)) * 10.0f; };
+  std::vector<SceneTriangle> tris;
+  for (uint32_t i = 0; i < count; ++i) {
+    glm::vec3 c = point();
+    float size = std::pow(10.0f, u(rng) * 3.0f - 1.0f) * 0.1f;  // 1e-5 .. 10
+    SceneTriangle t{c, c + glm::vec3(u(rng), u(rng), u(rng)) * size, c + glm::vec3(u(rng), u(rng), u(rng)) * size, 0};
+    switch ((i + 7) % 23) {
+      case 0: t.v1 = t.v0; break;                                  // repeated vertex
+      case 1: t.v2 = t.v0 + 2.0f * (t.v1 - t.v0); break;            // collinear
+      case 2: t.v1 = t.v2 = t.v0; break;                            // a point
+      case 3: t.v1 = t.v0 + glm::vec3(40, 0, 0); t.v2 = t.v0 + glm::vec3(0, 40, 3); break;  // huge
+      case 4: if (i > 23) t = tris[i - 23]; break;                  // duplicate
+      case 5: t.v2 = t.v0 + (t.v1 - t.v0) * 0.37f; break;           // collinear after rounding
+      default: break;
+    }
+    tris.push_back(t);
+  }
+  return tris;
+}
+
+RenderScene Prepare(const std::vector<SceneTriangle>& tris, uint32_t leafSize = 4) {
+  Material m{};
+  m.baseColor = glm::vec3(0.5f);
+  BvhBuildOptions o;
+  o.maxLeafSize = leafSize;
+  return PrepareRenderScene(test::MakeScene(tris, {m}), o);
+}
+
+Bounds3f TriBounds(const shader::Triangle& t) {
+  Bounds3f b;
+  b.Extend(t.v0);
+  b.Extend(t.v0 + t.e1);
+  b.Extend(t.v0 + t.e2);
+  return b;
+}
+
+// Checks every structural invariant of the flattened layout; returns the subtree end.
+uint32_t CheckSubtree(const RenderScene& rs, uint32_t i, uint32_t skip, uint32_t maxLeaf, std::vector<int>& seen,
+                      uint32_t& nextPrim) {
+  const shader::BvhNode& n = rs.nodes[i];
+  EXPECT_EQ(n.skip, skip) << "node " << i;
+  Bounds3f box{n.lo, n.hi};
+  if (IsLeaf(n)) {
+    EXPECT_GE(LeafCount(n), 1u);
+    EXPECT_LE(LeafCount(n), maxLeaf);
+    EXPECT_EQ(LeafFirst(n), nextPrim) << "leaves must cover triangles in depth-first order";
+    for (uint32_t k = LeafFirst(n); k < LeafFirst(n) + LeafCount(n); ++k) {
+      EXPECT_TRUE(box.Contains(TriBounds(rs.triangles[k]))) << "leaf " << i << " triangle " << k;
+      ++seen[rs.triangles[k].sourceIndex];
+    }
+    nextPrim = LeafFirst(n) + LeafCount(n);
+    return i + 1;
+  }
+  uint32_t a = FirstChild(i);
+  uint32_t b = SecondChild(rs.nodes, i);
+  EXPECT_TRUE(box.Contains(Bounds3f{rs.nodes[a].lo, rs.nodes[a].hi})) << "node " << i;
+  EXPECT_TRUE(box.Contains(Bounds3f{rs.nodes[b].lo, rs.nodes[b].hi})) << "node " << i;
+  uint32_t endA = CheckSubtree(rs, a, b, maxLeaf, seen, nextPrim);
+  EXPECT_EQ(endA, b);
+  return CheckSubtree(rs, b, skip, maxLeaf, seen, nextPrim);
+}
+
+void CheckInvariants(const RenderScene& rs, const std::vector<SceneTriangle>& input, uint32_t maxLeaf) {
+  const uint32_t triangleCount = uint32_t(input.size());
+  std::vector<int> seen(triangleCount, 0);
+  uint32_t nextPrim = 0;
+  uint32_t end = CheckSubtree(rs, 0, shader::kInvalidIndex, maxLeaf, seen, nextPrim);
+  EXPECT_EQ(end, rs.nodes.size()) << "every node is reachable from the root";
+  EXPECT_EQ(nextPrim, rs.triangles.size());
+  EXPECT_EQ(rs.triangles.size() + rs.degenerateTriangles, triangleCount);
+  for (uint32_t i = 0; i < triangleCount; ++i)
+    ASSERT_EQ(seen[i], IsDegenerate(input[i]) ? 0 : 1) << "triangle " << i << " must appear once unless degenerate";
+}
+
+TEST(Bvh, InvariantsOnRandomSoups) {
+  for (uint32_t leaf : {1u, 4u, 15u}) {
+    for (uint32_t count : {1u, 2u, 5u, 100u, 5000u}) {
+      SCOPED_TRACE("leaf " + std::to_string(leaf) + ", " + std::to_string(count) + " triangles");
+      std::vector<SceneTriangle> soup = RandomSoup(count, count * 7 + leaf);
+      RenderScene rs = Prepare(soup, leaf);
+      CheckInvariants(rs, soup, leaf);
+      EXPECT_LE(rs.bvhStats.maxLeafPrims, leaf);
+    }
+  }
+}
+
+TEST(Bvh, IdenticalTrianglesStillRespectLeafSize) {
+  // 1000 copies of one triangle: no SAH plane separates them, the median split must.
+  std::vector<SceneTriangle> tris(1000, SceneTriangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0});
+  RenderScene rs = Prepare(tris, 4);
+  CheckInvariants(rs, tris, 4);
+  std::printf("1000 identical triangles: %u nodes, depth %u\n", rs.bvhStats.nodes, rs.bvhStats.depth);
+}
+
+TEST(Bvh, SahBeatsMedianOnClusteredInput) {
+  // Two far-apart clusters of very different sizes: the SAH cost must be close to the
+  // cost of the two clusters traversed separately, far below a single leaf's.
+  std::vector<SceneTriangle> tris = RandomSoup(4000, 3);
+  RenderScene rs = Prepare(tris, 4);
+  std::printf("SAH cost %.3f for 4000 random triangles (%u nodes, depth %u)\n", rs.bvhStats.sahCost,
+              rs.bvhStats.nodes, rs.bvhStats.depth);
+  EXPECT_LT(rs.bvhStats.sahCost, 4000.0 / 10.0);
+  EXPECT_GT(rs.bvhStats.sahCost, 1.0);
+}
+
+struct BruteHit {
+  float t = -1.0f;
+  uint32_t tri = shader::kInvalidIndex;
+};
+
+BruteHit BruteForce(const RenderScene& rs, glm::vec3 o, glm::vec3 d) {
+  BruteHit best;
+  float tMax = shader::kInfinity;
+  for (uint32_t i = 0; i < rs.triangles.size(); ++i) {
+    const shader::Triangle& t = rs.triangles[i];
+    glm::vec3 r = shader::IntersectTriangle(t.v0, t.e1, t.e2, o, d, tMax);
+    if (r.x >= 0.0f) {
+      best = {r.x, i};
+      tMax = r.x;
+    }
+  }
+  return best;
+}
+
+// Traversal must find exactly the brute-force closest hit; a different triangle is
+// accepted only on a true tie (the same t).
+void CompareWithBruteForce(const RenderScene& rs, uint32_t rays, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  Bounds3f b{rs.nodes[0].lo, rs.nodes[0].hi};
+  glm::vec3 ext = b.Diagonal();
+  uint32_t hits = 0, ties = 0, mismatches = 0, occlusionMismatches = 0;
+  for (uint32_t i = 0; i < rays; ++i) {
+    glm::vec3 o = b.lo - 0.25f * ext + 1.5f * ext * glm::vec3(u(rng), u(rng), u(rng));
+    glm::vec3 d;
+    if (i % 2) {
+      // Aim at a random point of a random triangle, so most rays hit something.
+      const shader::Triangle& t = rs.triangles[std::min<size_t>(size_t(u(rng) * rs.triangles.size()), rs.triangles.size() - 1)];
+      glm::vec3 target = t.v0 + u(rng) * 0.5f * t.e1 + u(rng) * 0.5f * t.e2;
+      d = target - o;
+    } else {
+      d = glm::vec3(u(rng), u(rng), u(rng)) * 2.0f - 1.0f;
+    }
+    if (i % 17 == 0) d.x = 0.0f;  // axis-parallel directions exercise the slab test
+    if (i % 19 == 0) d.y = d.z = 0.0f;
+    if (glm::length(d) == 0.0f) continue;
+    d = glm::normalize(d);
+    BruteHit ref = BruteForce(rs, o, d);
+    Hit h = IntersectClosest(rs.nodes, rs.triangles, o, d, shader::kInfinity);
+    if (ref.t >= 0.0f) ++hits;
+    if (h.t != ref.t) {
+      ++mismatches;
+      if (mismatches <= 5)
+        ADD_FAILURE() << "ray " << i << ": traversal t=" << h.t << " tri " << h.triangle << ", brute force t=" << ref.t
+                      << " tri " << ref.tri;
+    } else if (h.triangle != ref.tri) {
+      ++ties;
+    }
+    // Any-hit must agree with the closest hit about whether something is in the way.
+    float tMax = ref.t >= 0.0f ? ref.t * 1.5f : 100.0f;
+    bool expectOccluded = ref.t >= 0.0f;
+    if (Occluded(rs.nodes, rs.triangles, o, d, tMax) != expectOccluded) ++occlusionMismatches;
+  }
+  std::printf("%u rays: %u hits, %u ties, %u mismatches, %u occlusion mismatches\n", rays, hits, ties, mismatches,
+              occlusionMismatches);
+  EXPECT_EQ(mismatches, 0u);
+  EXPECT_EQ(occlusionMismatches, 0u);
+  EXPECT_GT(hits, rays / 4) << "the test must exercise hits, not only misses";
+}
+
+TEST(Bvh, TraversalMatchesBruteForceOnRandomSoups) {
+  // 2 soups × 60k rays = 120k rays.
+  CompareWithBruteForce(Prepare(RandomSoup(600, 11), 4), 60000, 1);
+  CompareWithBruteForce(Prepare(RandomSoup(300, 12), 15), 60000, 2);
+}
+
+TEST(Bvh, TraversalMatchesBruteForceOnCorpusModel) {
+  Scene scene = LoadGltf(test::CorpusPath("valid/Duck/glTF-Binary/Duck.glb"));
+  RenderScene rs = PrepareRenderScene(scene);
+  CheckInvariants(rs, scene.triangles, 4);
+  CompareWithBruteForce(rs, 8000, 3);
+}
+
+}  // namespace
+}  // namespace vkpt

@@ -1,0 +1,173 @@
+// The CPU reference estimator against analytic answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/epsilon.hpp>
+
+#include "cpu/path_tracer.h"
+#include "render/render_scene.h"
+#include "scene/gltf_loader.h"
+#include "test_util.h"
+
+namespace vkpt {
+namespace {
+
+shader::FrameParams Params(const Scene& scene, uint32_t w, uint32_t h, uint32_t spp, uint32_t maxDepth,
+                           uint32_t rrDepth, uint32_t seed = 1) {
+  shader::FrameParams p = MakeFrameParams(scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0], w, h);
+  p.seed = seed;
+  p.sampleCount = spp;
+  p.maxDepth = maxDepth;
+  p.rrDepth = rrDepth;
+  return p;
+}
+
+struct ZTest {
+  glm::dvec3 mean, stderr_, z;
+};
+
+// Image mean and its standard error from the per-pixel variances of the mean: pixels are
+// independent, so Var(mean) = Σ Var(pixel mean) / N².
+ZTest MeanAndError(const Image& img, glm::dvec3 expected) {
+  glm::dvec3 sum(0.0), var(0.0);
+  for (size_t i = 0; i < img.pixels.size(); ++i) {
+    sum += glm::dvec3(img.pixels[i]);
+    var += glm::dvec3(img.variance[i]);
+  }
+  double n = double(img.pixels.size());
+  ZTest t;
+  t.mean = sum / n;
+  t.stderr_ = glm::sqrt(var) / n;
+  t.z = (t.mean - expected) / t.stderr_;
+  return t;
+}
+
+// Passes when the difference is explained by noise (|z| below the Šidák-corrected critical
+// value) or is within a relative margin too small to matter (float rounding in 1e6 paths).
+bool Agrees(const ZTest& t, glm::dvec3 expected, double margin, const char* what) {
+  // Two-sided α = 0.0014 per channel: family α = 1 − (1 − 0.0014)³ ≈ 0.004 (Šidák).
+  const double zCrit = 3.2;
+  bool ok = true;
+  for (int c = 0; c < 3; ++c) {
+    bool pass = std::abs(t.z[c]) < zCrit || std::abs(t.mean[c] - expected[c]) <= margin * expected[c];
+    std::printf("%s channel %d: mean %.6f expected %.6f stderr %.2e z %.2f (|z| < %.1f or rel err <= %.0e) %s\n", what,
+                c, t.mean[c], expected[c], t.stderr_[c], t.z[c], zCrit, margin, pass ? "ok" : "FAIL");
+    ok &= pass;
+  }
+  return ok;
+}
+
+// A closed enclosure of albedo ρ and emission Le everywhere has radiance Le/(1−ρ); with
+// paths capped at D bounces, Le(1−ρ^(D+1))/(1−ρ) (geometric series of the rendering
+// equation's Neumann expansion L = E + KE + K²E + …).
+glm::dvec3 FurnaceExpected(const Scene& s, int maxDepth) {
+  glm::dvec3 rho(s.materials[0].baseColor), le(s.materials[0].emission);
+  return le * (1.0 - glm::pow(rho, glm::dvec3(maxDepth + 1))) / (1.0 - rho);
+}
+
+TEST(Render, FurnaceMatchesClosedForm) {
+  Scene scene = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
+  RenderScene rs = PrepareRenderScene(scene);
+  CpuRenderResult r = RenderCpu(rs, Params(scene, 32, 32, 256, 200, 3));
+  EXPECT_EQ(r.stats.nonFinite, 0u);
+  glm::dvec3 expected = FurnaceExpected(scene, 200);
+  EXPECT_NEAR(expected.y, 1.0, 1e-9);  // the scene's own statement: (0.5/0.7, 1, 2.5)
+  EXPECT_TRUE(Agrees(MeanAndError(r.image, expected), expected, 1e-3, "furnace"));
+}
+
+TEST(Render, FurnaceHonoursDepthCapWithoutRoulette) {
+  // D = 2 and roulette off: exactly Le(1 + ρ + ρ²) — pins down what --max-depth counts.
+  Scene scene = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
+  RenderScene rs = PrepareRenderScene(scene);
+  CpuRenderResult r = RenderCpu(rs, Params(scene, 16, 16, 64, 2, 1000));
+  glm::dvec3 expected = FurnaceExpected(scene, 2);
+  EXPECT_TRUE(Agrees(MeanAndError(r.image, expected), expected, 1e-3, "furnace D=2"));
+  CpuRenderResult r0 = RenderCpu(rs, Params(scene, 8, 8, 4, 0, 1000));
+  for (const glm::vec3& p : r0.image.pixels) EXPECT_EQ(p, scene.materials[0].emission) << "D = 0: emission only";
+}
+
+// Proof of teeth: the same test must reject an estimator that is 2 % off. Rendering
+// with albedo scaled by 0.98 while expecting the true answer must fail the check.
+TEST(Render, FurnaceTestDetectsATwoPercentError) {
+  Scene scene = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
+  glm::dvec3 expected = FurnaceExpected(scene, 200);
+  scene.materials[0].baseColor *= 0.98f;
+  RenderScene rs = PrepareRenderScene(scene);
+  CpuRenderResult r = RenderCpu(rs, Params(scene, 32, 32, 256, 200, 3));
+  EXPECT_FALSE(Agrees(MeanAndError(r.image, expected), expected, 1e-3, "furnace with wrong albedo (must fail)"));
+}
+
+TEST(Render, ConvexObjectInUniformEnvironmentReflectsRhoTimesE) {
+  // White-furnace test of the environment: a point on a convex object sees the
+  // environment E over its whole hemisphere, so it reflects exactly ρE — zero variance.
+  std::vector<SceneTriangle> tris;
+  glm::vec3 c[8];
+  for (int i = 0; i < 8; ++i) c[i] = glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+  int faces[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+  for (auto& f : faces) {
+    tris.push_back({c[f[0]], c[f[1]], c[f[2]], 0});
+    tris.push_back({c[f[0]], c[f[2]], c[f[3]], 0});
+  }
+  Material m{};
+  m.baseColor = glm::vec3(0.25f, 0.5f, 0.75f);
+  Scene scene = test::MakeScene(tris, {m});
+  RenderScene rs = PrepareRenderScene(scene);
+  shader::FrameParams p = Params(scene, 24, 24, 8, 5, 3);
+  p.background = glm::vec3(2.0f, 1.0f, 0.5f);
+  CpuRenderResult r = RenderCpu(rs, p);
+  glm::vec3 onObject = m.baseColor * p.background;
+  int object = 0, env = 0;
+  for (const glm::vec3& px : r.image.pixels) {
+    if (glm::all(glm::epsilonEqual(px, onObject, 1e-5f))) ++object;
+    else if (glm::all(glm::epsilonEqual(px, p.background, 1e-5f))) ++env;
+    else if (glm::all(glm::lessThanEqual(glm::min(onObject, p.background), px + 1e-5f)) &&
+             glm::all(glm::lessThanEqual(px, glm::max(onObject, p.background) + 1e-5f))) ++env;  // silhouette mix
+    else ADD_FAILURE() << "pixel (" << px.x << ", " << px.y << ", " << px.z << ") is neither ρE nor E";
+  }
+  std::printf("object pixels %d, environment/edge pixels %d\n", object, env);
+  EXPECT_GT(object, 100);
+  EXPECT_GT(env, 100);
+}
+
+TEST(Render, CornellBoxLooksLikeTheCornellBox) {
+  Scene scene = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  RenderScene rs = PrepareRenderScene(scene);
+  ASSERT_EQ(rs.emitters.size(), 2u);
+  EXPECT_NEAR(rs.emitters[0].area + rs.emitters[1].area, 13650.0, 1e-2);
+  CpuRenderResult r = RenderCpu(rs, Params(scene, 64, 64, 16, 32, 3));
+  EXPECT_EQ(r.stats.nonFinite, 0u);
+  // Mean of the left and right image columns: red wall left, green wall right.
+  glm::dvec3 left(0.0), right(0.0);
+  float brightest = 0.0f;
+  for (uint32_t y = 0; y < 64; ++y) {
+    left += glm::dvec3(r.image.At(2, y));
+    right += glm::dvec3(r.image.At(61, y));
+    for (uint32_t x = 0; x < 64; ++x) brightest = std::max(brightest, r.image.At(x, y).x);
+  }
+  std::printf("left column mean (%.3f %.3f %.3f), right (%.3f %.3f %.3f), brightest %.2f\n", left.x / 64, left.y / 64,
+              left.z / 64, right.x / 64, right.y / 64, right.z / 64, brightest);
+  EXPECT_GT(left.x, 2.0 * left.y) << "red wall on the left";
+  EXPECT_GT(right.y, 1.5 * right.x) << "green wall on the right";
+  EXPECT_GE(brightest, 47.8f) << "the light itself is visible with radiance ≥ Le";
+}
+
+TEST(Render, ImageIsIdenticalForAnyThreadCount) {
+  Scene scene = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  RenderScene rs = PrepareRenderScene(scene);
+  shader::FrameParams p = Params(scene, 40, 30, 4, 32, 3, 77);
+  CpuRenderOptions one, three;
+  one.threads = 1;
+  three.threads = 3;
+  Image a = RenderCpu(rs, p, one).image;
+  Image b = RenderCpu(rs, p, three).image;
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  EXPECT_EQ(0, std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(glm::vec3)));
+  p.seed = 78;
+  Image c = RenderCpu(rs, p, one).image;
+  EXPECT_NE(0, std::memcmp(a.pixels.data(), c.pixels.data(), a.pixels.size() * sizeof(glm::vec3)));
+}
+
+}  // namespace
+}  // namespace vkpt

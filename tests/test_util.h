@@ -1,0 +1,45 @@
+// Shared test helpers: running the vkpt binary as a subprocess, statistics for Monte
+// Carlo tests, paths to the scenes and the corpus.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/render_scene.h"
+#include "scene/scene.h"
+
+namespace vkpt::test {
+
+std::string SourcePath(const std::string& relative);  // <repo>/relative
+std::string CorpusPath(const std::string& relative);  // ../shared/gltf-corpus/relative
+std::string TempPath(const std::string& name);        // unique per test process
+
+struct ProcessResult {
+  int exitCode = -1;     // valid when !signaled && !timedOut
+  int signal = 0;        // the terminating signal, if any
+  bool timedOut = false;
+  std::string out, err;
+  bool ExitedWith(int code) const { return !timedOut && signal == 0 && exitCode == code; }
+  std::string Describe() const;  // for failure messages
+};
+
+// Runs `build/vkpt args...`, killing it after timeoutSeconds. A non-empty `cwd` is the
+// child's working directory (for relative paths and the default output name).
+ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds = 120.0,
+                      const std::string& cwd = "");
+
+// Statistics.
+double ChiSquareSurvival(double statistic, double dof);  // P(X >= statistic), X ~ χ²(dof)
+double NormalSurvivalTwoSided(double z);                 // P(|Z| >= z)
+double SidakAlpha(double familyAlpha, int tests);        // per-test α for a family of tests
+
+// Pearson χ² test of observed counts against expected counts. Cells with expected
+// count < 5 are pooled (in order) so the χ² approximation holds. Returns the p-value
+// and fills the statistic and degrees of freedom.
+double ChiSquareTest(const std::vector<double>& observed, const std::vector<double>& expected, double* statistic,
+                     int* dof);
+
+// A scene built in code (tests that need geometry no file has).
+Scene MakeScene(const std::vector<SceneTriangle>& triangles, const std::vector<Material>& materials);
+
+}  // namespace vkpt::test
