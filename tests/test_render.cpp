@@ -14,9 +14,9 @@
 namespace vkpt {
 namespace {
 
-shader::FrameParams Params(const Scene& scene, uint32_t w, uint32_t h, uint32_t spp, uint32_t maxDepth,
+shader::FrameParams Params(const Scene& scene, const RenderScene& rs, uint32_t w, uint32_t h, uint32_t spp, uint32_t maxDepth,
                            uint32_t rrDepth, uint32_t seed = 1) {
-  shader::FrameParams p = MakeFrameParams(scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0], w, h);
+  shader::FrameParams p = MakeFrameParams(rs, scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0], w, h);
   p.seed = seed;
   p.sampleCount = spp;
   p.maxDepth = maxDepth;
@@ -70,7 +70,7 @@ glm::dvec3 FurnaceExpected(const Scene& s, int maxDepth) {
 TEST(Render, FurnaceMatchesClosedForm) {
   Scene scene = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
   RenderScene rs = PrepareRenderScene(scene);
-  CpuRenderResult r = RenderCpu(rs, Params(scene, 32, 32, 256, 200, 3));
+  CpuRenderResult r = RenderCpu(rs, Params(scene, rs, 32, 32, 256, 200, 3));
   EXPECT_EQ(r.stats.nonFinite, 0u);
   glm::dvec3 expected = FurnaceExpected(scene, 200);
   EXPECT_NEAR(expected.y, 1.0, 1e-9);  // the scene's own statement: (0.5/0.7, 1, 2.5)
@@ -81,10 +81,10 @@ TEST(Render, FurnaceHonoursDepthCapWithoutRoulette) {
   // D = 2 and roulette off: exactly Le(1 + ρ + ρ²) — pins down what --max-depth counts.
   Scene scene = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
   RenderScene rs = PrepareRenderScene(scene);
-  CpuRenderResult r = RenderCpu(rs, Params(scene, 16, 16, 64, 2, 1000));
+  CpuRenderResult r = RenderCpu(rs, Params(scene, rs, 16, 16, 64, 2, 1000));
   glm::dvec3 expected = FurnaceExpected(scene, 2);
   EXPECT_TRUE(Agrees(MeanAndError(r.image, expected), expected, 1e-3, "furnace D=2"));
-  CpuRenderResult r0 = RenderCpu(rs, Params(scene, 8, 8, 4, 0, 1000));
+  CpuRenderResult r0 = RenderCpu(rs, Params(scene, rs, 8, 8, 4, 0, 1000));
   for (const glm::vec3& p : r0.image.pixels) EXPECT_EQ(p, scene.materials[0].emission) << "D = 0: emission only";
 }
 
@@ -95,7 +95,7 @@ TEST(Render, FurnaceTestDetectsATwoPercentError) {
   glm::dvec3 expected = FurnaceExpected(scene, 200);
   scene.materials[0].baseColor *= 0.98f;
   RenderScene rs = PrepareRenderScene(scene);
-  CpuRenderResult r = RenderCpu(rs, Params(scene, 32, 32, 256, 200, 3));
+  CpuRenderResult r = RenderCpu(rs, Params(scene, rs, 32, 32, 256, 200, 3));
   EXPECT_FALSE(Agrees(MeanAndError(r.image, expected), expected, 1e-3, "furnace with wrong albedo (must fail)"));
 }
 
@@ -114,7 +114,7 @@ TEST(Render, ConvexObjectInUniformEnvironmentReflectsRhoTimesE) {
   m.baseColor = glm::vec3(0.25f, 0.5f, 0.75f);
   Scene scene = test::MakeScene(tris, {m});
   RenderScene rs = PrepareRenderScene(scene);
-  shader::FrameParams p = Params(scene, 24, 24, 8, 5, 3);
+  shader::FrameParams p = Params(scene, rs, 24, 24, 8, 5, 3);
   p.background = glm::vec3(2.0f, 1.0f, 0.5f);
   CpuRenderResult r = RenderCpu(rs, p);
   glm::vec3 onObject = m.baseColor * p.background;
@@ -136,7 +136,7 @@ TEST(Render, CornellBoxLooksLikeTheCornellBox) {
   RenderScene rs = PrepareRenderScene(scene);
   ASSERT_EQ(rs.emitters.size(), 2u);
   EXPECT_NEAR(rs.emitters[0].area + rs.emitters[1].area, 13650.0, 1e-2);
-  CpuRenderResult r = RenderCpu(rs, Params(scene, 64, 64, 16, 32, 3));
+  CpuRenderResult r = RenderCpu(rs, Params(scene, rs, 64, 64, 16, 32, 3));
   EXPECT_EQ(r.stats.nonFinite, 0u);
   // Mean of the left and right image columns: red wall left, green wall right.
   glm::dvec3 left(0.0), right(0.0);
@@ -156,7 +156,7 @@ TEST(Render, CornellBoxLooksLikeTheCornellBox) {
 TEST(Render, ImageIsIdenticalForAnyThreadCount) {
   Scene scene = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
   RenderScene rs = PrepareRenderScene(scene);
-  shader::FrameParams p = Params(scene, 40, 30, 4, 32, 3, 77);
+  shader::FrameParams p = Params(scene, rs, 40, 30, 4, 32, 3, 77);
   CpuRenderOptions one, three;
   one.threads = 1;
   three.threads = 3;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "render/render_scene.h"
+#include "cpu/cpu_path.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
 #include "test_util.h"
@@ -129,7 +129,7 @@ TEST(Sampling, EmitterSelectionFollowsPower) {
     expected.push_back(kSamples * double(rs.emitters[k].pmf));
   }
   EXPECT_EQ(rs.emitters.back().cdf, 1.0f);
-  for (uint32_t i = 0; i < kSamples; ++i) observed[PickEmitter(rs.emitters, Random4(1u, i, 0u, 1u).x)] += 1.0;
+  for (uint32_t i = 0; i < kSamples; ++i) observed[PickEmitter(rs, uint32_t(rs.emitters.size()), Random4(1u, i, 0u, 1u).x)] += 1.0;
   double stat;
   int dof;
   double p = test::ChiSquareTest(observed, expected, &stat, &dof);

@@ -76,15 +76,12 @@ int Run(const Options& o) {
 
   if (o.verbose) PrintLoadReport(scene, rs, cam, camIndex);
 
-  shader::FrameParams params = MakeFrameParams(cam, width, height);
+  shader::FrameParams params = MakeFrameParams(rs, cam, width, height);
   params.seed = o.seed;
   params.sampleBegin = 0;
   params.sampleCount = o.spp;
   params.maxDepth = o.maxDepth;
   params.rrDepth = o.rrDepth;
-  params.emitterCount = uint32_t(rs.emitters.size());
-  params.nodeCount = uint32_t(rs.nodes.size());
-  params.triangleCount = uint32_t(rs.triangles.size());
   if (o.background) {
     params.background = glm::vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]);
   } else if (rs.emitters.empty()) {

@@ -1,10 +1,5 @@
-// Path tracing with next-event estimation and Russian roulette (GAMES101 lecture 16,
-// `shade(p, wo)`; Kajiya 1986): at every path vertex, direct light is estimated by
-// sampling a point on an emissive triangle (area sampling, dω = cos θ' dA / r²) and the
-// path continues along a cosine-weighted direction. Emission is added only where the
-// camera ray hits an emitter directly; light reaching later vertices is counted by the
-// light samples, so nothing is counted twice. Rays that escape collect the constant
-// environment radiance (FrameParams::background). All surfaces are Lambertian, f = ρ/π.
+// The CPU reference renderer: runs the shared estimator (shaders/shared/path.h) over
+// all pixels on a pool of threads.
 #include "cpu/path_tracer.h"
 
 #include <atomic>
@@ -13,90 +8,17 @@
 #include <thread>
 #include <vector>
 
-#include "cpu/traversal.h"
-#include "shared/estimator.h"
-#include "shared/intersect.h"
-#include "shared/rng.h"
-#include "shared/sampling.h"
+#include "cpu/cpu_path.h"
 
 namespace vkpt {
 
 using namespace shader;
 
-namespace {
-
-glm::vec3 GeometricNormal(const Triangle& t) { return glm::normalize(glm::cross(t.e1, t.e2)); }
-
-}  // namespace
-
 glm::vec3 SampleRadiance(const RenderScene& scene, const FrameParams& params, uint32_t px, uint32_t py,
                          uint32_t sampleIndex, SampleStats& stats) {
-  const uint32_t pixel = py * params.width + px;
-  const auto rand = [&](uint32_t group) { return Random4(params.seed, pixel, sampleIndex, group); };
-
-  vec4 uc = rand(kGroupCamera);
-  Ray ray = GenerateCameraRay(params, px, py, uc.x, uc.y);
-  vec3 radiance(0.0f);
-  vec3 throughput(1.0f);
-
-  for (uint32_t bounce = 0;; ++bounce) {
-    ++stats.rays;
-    Hit hit = IntersectClosest(scene.nodes, scene.triangles, ray.origin, ray.dir, kInfinity);
-    if (!hit.Valid()) {
-      // Escaped: light from the constant environment. It is never light-sampled, so
-      // counting it here on every bounce counts it exactly once.
-      radiance += throughput * params.background;
-      break;
-    }
-    const Triangle& tri = scene.triangles[hit.triangle];
-    const Material& mat = scene.materials[tri.material];
-    const vec3 ng = GeometricNormal(tri);
-    const bool frontFace = dot(ng, ray.dir) < 0.0f;
-    if (bounce == 0 && (frontFace || (mat.flags & kMaterialDoubleSided)))
-      radiance += throughput * mat.emission;
-    // Paths have at most maxDepth bounces: the light sample at vertex k, and the ray
-    // leaving it (which may escape to the environment), make k + 1.
-    if (bounce >= params.maxDepth) break;
-
-    // Surfaces reflect on both sides: shade with the normal facing the incoming ray.
-    const vec3 n = frontFace ? ng : -ng;
-    const vec3 p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
-    const vec3 brdf = mat.baseColor * kInvPi;
-    const vec3 origin = OffsetRayOrigin(p, n);
-
-    vec4 ul = rand(LightGroup(bounce));
-    if (!scene.emitters.empty() && MaxComponent(mat.baseColor) > 0.0f) {
-      const Emitter& e = scene.emitters[PickEmitter(scene.emitters, ul.x)];
-      const Triangle& light = scene.triangles[e.triangle];
-      const Material& lm = scene.materials[light.material];
-      vec2 b = SampleUniformTriangle(ul.y, ul.z);
-      vec3 x = light.v0 + b.x * light.e1 + b.y * light.e2;
-      vec3 nl = GeometricNormal(light);
-      float w = LightSampleWeight(p, n, x, nl, (lm.flags & kMaterialDoubleSided) != 0u, e.pmf, e.area);
-      if (w > 0.0f) {
-        // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
-        // unnormalised direction: the emitter itself then lies beyond tMax.
-        vec3 target = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl);
-        ++stats.rays;
-        if (!Occluded(scene.nodes, scene.triangles, origin, target - origin, 1.0f))
-          radiance += throughput * brdf * lm.emission * w;
-      }
-    }
-
-    // Cosine-weighted bounce: f·cos θ / pdf = (ρ/π)·cos θ / (cos θ/π) = ρ.
-    throughput *= mat.baseColor;
-    // Russian roulette (GAMES101: continue with probability P, divide by P): survival
-    // follows the throughput, so dim paths end early and bright ones rarely.
-    if (bounce >= params.rrDepth) {
-      float survive = min(1.0f, MaxComponent(throughput));
-      if (!(ul.w < survive)) break;
-      throughput /= survive;
-    }
-    vec4 ub = rand(BsdfGroup(bounce));
-    ray.origin = origin;
-    ray.dir = FrameToWorld(FrameFromNormal(n), SampleCosineHemisphere(ub.x, ub.y));
-  }
-  return radiance;
+  PathSample s = TracePath(scene, params, px, py, sampleIndex);
+  stats.rays += s.rays;
+  return s.radiance;
 }
 
 CpuRenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, const CpuRenderOptions& options) {

@@ -86,18 +86,11 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   return rs;
 }
 
-uint32_t PickEmitter(const std::vector<shader::Emitter>& emitters, float u) {
-  uint32_t lo = 0, hi = uint32_t(emitters.size()) - 1;
-  while (lo < hi) {
-    uint32_t mid = (lo + hi) / 2;
-    if (u < emitters[mid].cdf) hi = mid;
-    else lo = mid + 1;
-  }
-  return lo;
-}
-
-shader::FrameParams MakeFrameParams(const Camera& camera, uint32_t width, uint32_t height) {
+shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height) {
   shader::FrameParams p{};
+  p.emitterCount = uint32_t(scene.emitters.size());
+  p.nodeCount = uint32_t(scene.nodes.size());
+  p.triangleCount = uint32_t(scene.triangles.size());
   p.origin = camera.position;
   p.forward = camera.forward;
   p.up = camera.up;

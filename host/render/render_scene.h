@@ -26,12 +26,10 @@ struct RenderScene {
 // triangles are left out of the RenderScene.
 bool IsDegenerate(const SceneTriangle& t);
 
-// The emitter whose CDF interval holds u ∈ [0,1): smallest k with u < cdf[k].
-uint32_t PickEmitter(const std::vector<shader::Emitter>& emitters, float u);
-
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {});
 
-// The frame constants for a camera and an image size (sample range and seed left 0).
-shader::FrameParams MakeFrameParams(const Camera& camera, uint32_t width, uint32_t height);
+// The frame constants for a scene, camera and image size; seed, sample range, depths and
+// background are left 0 for the caller.
+shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height);
 
 }  // namespace vkpt

@@ -17,6 +17,14 @@ struct Ray {
   vec3 dir;
 };
 
+// Closest hit: t < 0 for none; (b1, b2) barycentrics; triangle in leaf order.
+struct HitRecord {
+  float t;
+  float b1;
+  float b2;
+  uint triangle;
+};
+
 // Ray through pixel (px, py) at sub-pixel offset (jx, jy) ∈ [0,1)²; row 0 is the top
 // of the image. A box filter of one pixel: every sample has weight 1.
 VKPT_FN Ray GenerateCameraRay(FrameParams p, uint px, uint py, float jx, float jy) {
@@ -51,6 +59,10 @@ VKPT_FN float LightSampleWeight(vec3 p, vec3 n, vec3 x, vec3 nl, bool twoSided, 
   float cosSurface = dot(n, wi);
   float cosLight = -dot(nl, wi);
   if (twoSided) cosLight = abs(cosLight);
+#ifdef VKPT_MUTANT_NO_LIGHT_COSINE
+  // Deliberately wrong (test builds only): forgets cos θ' at the emitter.
+  if (cosLight > 0.0f) cosLight = 1.0f;
+#endif
   if (cosSurface <= 0.0f || cosLight <= 0.0f) return 0.0f;
   return cosSurface * cosLight * area / (dist2 * pmf);
 }

@@ -17,7 +17,8 @@ const uint kBindingTriangles = 1u;  // readonly buffer Triangle[]
 const uint kBindingNodes = 2u;      // readonly buffer BvhNode[]
 const uint kBindingMaterials = 3u;  // readonly buffer Material[]
 const uint kBindingEmitters = 4u;   // readonly buffer Emitter[]
-const uint kBindingAccum = 5u;      // buffer vec4[] (sum, sum of squares) per pixel
+const uint kBindingAccum = 5u;      // buffer vec4[2 per pixel]: Σ L, Σ L²
+const uint kBindingCounters = 6u;   // buffer uvec2[] per pixel: rays, non-finite samples
 
 const uint kInvalidIndex = 0xFFFFFFFFu;
 

@@ -1,0 +1,28 @@
+// The shared estimator (shaders/shared/path.h) instantiated for the CPU: scene access
+// goes through a RenderScene, traversal through the CPU's own ordered BVH walk.
+#pragma once
+
+#include "cpu/traversal.h"
+#include "render/render_scene.h"
+#include "shared/estimator.h"
+
+#define VKPT_SCENE_PARAM const ::vkpt::RenderScene &scene,
+#define VKPT_SCENE_ARG scene,
+#define VKPT_TRIANGLE(i) scene.triangles[i]
+#define VKPT_MATERIAL(i) scene.materials[i]
+#define VKPT_EMITTER(i) scene.emitters[i]
+
+namespace vkpt::shader {
+
+inline HitRecord TraceClosest(const RenderScene& scene, vec3 origin, vec3 dir, float tMax) {
+  Hit h = IntersectClosest(scene.nodes, scene.triangles, origin, dir, tMax);
+  return HitRecord{h.t, h.b1, h.b2, h.triangle};
+}
+
+inline bool TraceOccluded(const RenderScene& scene, vec3 origin, vec3 dir, float tMax) {
+  return Occluded(scene.nodes, scene.triangles, origin, dir, tMax);
+}
+
+}  // namespace vkpt::shader
+
+#include "shared/path.h"

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs vkpt's build and test dependencies from Debian 12 (bookworm) packages.
+# Needs root (or sudo). Safe to run again: apt-get skips what is installed.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config      # compiler and build
+  libvulkan-dev mesa-vulkan-drivers     # Vulkan loader + lavapipe (software Vulkan on the CPU)
+  vulkan-validationlayers vulkan-tools  # validation layer for tests, vulkaninfo
+  glslang-tools spirv-tools             # GLSL -> SPIR-V at build time, spirv-val
+  libglm-dev                            # vector math shared by C++ and GLSL headers
+  libtinygltf-dev nlohmann-json3-dev    # glTF loading and schema checks
+  libstb-dev libtinyexr-dev             # PNG and EXR writers
+  libgtest-dev libbenchmark-dev         # tests and benchmarks
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages are installed"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,121 @@
+// The path-tracing estimator, one source for both renderers.
+//
+// Path tracing with next-event estimation and Russian roulette (GAMES101 lecture 16,
+// `shade(p, wo)`; Kajiya 1986). At every path vertex, direct light is estimated by
+// sampling a point on an emissive triangle (area sampling, dω = cos θ' dA / r²), and
+// the path continues along a cosine-weighted direction. Emission is added only where
+// the camera ray hits an emitter directly; light reaching later vertices is counted by
+// the light samples, so nothing is counted twice. Rays that escape collect the constant
+// environment radiance (FrameParams::background), which is never light-sampled. All
+// surfaces are Lambertian, f = ρ/π.
+//
+// Each side supplies scene access before including this file, so that traversal stays
+// separate (the CPU walks the BVH with an ordered stack, the shader stackless):
+//   VKPT_SCENE_PARAM          a leading parameter declaration ("" in GLSL)
+//   VKPT_SCENE_ARG            the matching leading argument ("" in GLSL)
+//   VKPT_TRIANGLE(i), VKPT_MATERIAL(i), VKPT_EMITTER(i)   element access
+//   HitRecord TraceClosest(VKPT_SCENE_PARAM vec3 origin, vec3 dir, float tMax)
+//   bool TraceOccluded(VKPT_SCENE_PARAM vec3 origin, vec3 dir, float tMax)
+#ifndef VKPT_PATH_H
+#define VKPT_PATH_H
+#include "prelude.h"
+#include "layout.h"
+#include "rng.h"
+#include "sampling.h"
+#include "intersect.h"
+#include "estimator.h"
+
+VKPT_BEGIN_NAMESPACE
+
+// The emitter whose CDF interval holds u ∈ [0,1): smallest k with u < cdf[k].
+VKPT_FN uint PickEmitter(VKPT_SCENE_PARAM uint count, float u) {
+  uint lo = 0u;
+  uint hi = count - 1u;
+  while (lo < hi) {
+    uint mid = (lo + hi) / 2u;
+    if (u < VKPT_EMITTER(mid).cdf) hi = mid;
+    else lo = mid + 1u;
+  }
+  return lo;
+}
+
+VKPT_FN vec3 GeometricNormal(Triangle t) { return normalize(cross(t.e1, t.e2)); }
+
+struct PathSample {
+  vec3 radiance;
+  uint rays;  // closest-hit plus shadow rays traced
+};
+
+// Radiance carried by sample `sampleIndex` of pixel (px, py): one path. Its random
+// numbers come from the streams (params.seed, pixel, sampleIndex, dimension).
+VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint py, uint sampleIndex) {
+  uint pixel = py * params.width + px;
+  vec4 uc = Random4(params.seed, pixel, sampleIndex, kGroupCamera);
+  Ray ray = GenerateCameraRay(params, px, py, uc.x, uc.y);
+  PathSample result;
+  result.radiance = vec3(0.0f);
+  result.rays = 0u;
+  vec3 throughput = vec3(1.0f);
+
+  for (uint bounce = 0u;; ++bounce) {
+    result.rays += 1u;
+    HitRecord hit = TraceClosest(VKPT_SCENE_ARG ray.origin, ray.dir, kInfinity);
+    if (hit.t < 0.0f) {
+      result.radiance += throughput * params.background;
+      break;
+    }
+    Triangle tri = VKPT_TRIANGLE(hit.triangle);
+    Material mat = VKPT_MATERIAL(tri.material);
+    vec3 ng = GeometricNormal(tri);
+    bool frontFace = dot(ng, ray.dir) < 0.0f;
+    if (bounce == 0u && (frontFace || (mat.flags & kMaterialDoubleSided) != 0u))
+      result.radiance += throughput * mat.emission;
+    // Paths have at most maxDepth bounces: the light sample at vertex k, and the ray
+    // leaving it (which may escape to the environment), make k + 1.
+    if (bounce >= params.maxDepth) break;
+
+    // Surfaces reflect on both sides: shade with the normal facing the incoming ray.
+    vec3 n = frontFace ? ng : -ng;
+    vec3 p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
+    vec3 origin = OffsetRayOrigin(p, n);
+
+    vec4 ul = Random4(params.seed, pixel, sampleIndex, LightGroup(bounce));
+    if (params.emitterCount > 0u && MaxComponent(mat.baseColor) > 0.0f) {
+      Emitter e = VKPT_EMITTER(PickEmitter(VKPT_SCENE_ARG params.emitterCount, ul.x));
+      Triangle light = VKPT_TRIANGLE(e.triangle);
+      Material lm = VKPT_MATERIAL(light.material);
+      vec2 b = SampleUniformTriangle(ul.y, ul.z);
+      vec3 x = light.v0 + b.x * light.e1 + b.y * light.e2;
+      vec3 nl = GeometricNormal(light);
+      float w = LightSampleWeight(p, n, x, nl, (lm.flags & kMaterialDoubleSided) != 0u, e.pmf, e.area);
+      if (w > 0.0f) {
+        // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
+        // unnormalised direction: the emitter itself then lies beyond tMax.
+        vec3 target = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl);
+        result.rays += 1u;
+        if (!TraceOccluded(VKPT_SCENE_ARG origin, target - origin, 1.0f))
+          result.radiance += throughput * (mat.baseColor * kInvPi) * lm.emission * w;
+      }
+    }
+
+    // Cosine-weighted bounce: f·cos θ / pdf = (ρ/π)·cos θ / (cos θ/π) = ρ.
+    throughput *= mat.baseColor;
+    // Russian roulette (GAMES101: continue with probability P, divide by P): survival
+    // follows the throughput, so dim paths end early and bright ones rarely.
+    if (bounce >= params.rrDepth) {
+      float survive = min(1.0f, MaxComponent(throughput));
+      if (!(ul.w < survive)) break;
+#ifndef VKPT_MUTANT_ROULETTE_WITHOUT_DIVISION
+      throughput /= survive;
+#endif
+    }
+    vec4 ub = Random4(params.seed, pixel, sampleIndex, BsdfGroup(bounce));
+    ray.origin = origin;
+    ray.dir = FrameToWorld(FrameFromNormal(n), SampleCosineHemisphere(ub.x, ub.y));
+  }
+  return result;
+}
+
+VKPT_END_NAMESPACE
+
+#endif
