@@ -1,11 +1,13 @@
 // vkpt: command-line front end. Data flows one way:
 //   glTF file → Scene (host/scene) → BVH + RenderScene (host/bvh, host/render)
-//   → renderer (host/cpu) → Image (host/image) → file.
+//   → renderer (host/cpu or host/vk) → Image (host/image) → file.
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "app/options.h"
@@ -15,6 +17,8 @@
 #include "scene/gltf_loader.h"
 #include "shared/sampling.h"
 #include "util/error.h"
+#include "vk/context.h"
+#include "vk/vk_renderer.h"
 
 #ifndef VKPT_VERSION
 #define VKPT_VERSION "0.0.0"
@@ -46,10 +50,75 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
   for (const std::string& f : scene.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
 }
 
+struct Rendered {
+  Image image;
+  double seconds = 0.0;
+  uint64_t rays = 0, nonFinite = 0;
+  std::string engine;  // "cpu (2 threads)" or "vulkan: <device>"
+  uint32_t validationMessages = 0;
+};
+
+std::function<void(double)> ProgressLine() {
+  if (!isatty(STDERR_FILENO)) return {};
+  return [](double f) { std::fprintf(stderr, "\rrendering: %5.1f%%", 100.0 * f); };
+}
+
+void EndProgressLine() {
+  if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r%*s\r", 20, "");
+}
+
+Rendered RenderOnCpu(const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
+  CpuRenderOptions cpu;
+  cpu.threads = o.threads;
+  cpu.progress = ProgressLine();
+  CpuRenderResult r = RenderCpu(rs, params, cpu);
+  EndProgressLine();
+  return {std::move(r.image), r.seconds, r.stats.rays, r.stats.nonFinite, "cpu (" + std::to_string(r.threads) + " threads)", 0};
+}
+
+Rendered RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
+  vk::GpuRenderer renderer(ctx, rs);
+  vk::GpuRenderOptions gpu;
+  gpu.batch = o.batch;
+  gpu.progress = ProgressLine();
+  vk::GpuRenderResult r = renderer.Render(params, gpu);
+  EndProgressLine();
+  return {std::move(r.image), r.seconds, r.rays, r.nonFinite, "vulkan: " + ctx.DeviceName(), 0};
+}
+
+int ListDevices() {
+  std::vector<vk::DeviceInfo> devices = vk::ListDevices();
+  if (devices.empty()) {
+    std::printf("no Vulkan devices (install mesa-vulkan-drivers for lavapipe, a software device)\n");
+    return 0;
+  }
+  for (const vk::DeviceInfo& d : devices)
+    std::printf("%u: %s (%s, Vulkan %u.%u)%s\n", d.index, d.name.c_str(), d.TypeName(), VK_API_VERSION_MAJOR(d.apiVersion),
+                VK_API_VERSION_MINOR(d.apiVersion), d.hasComputeQueue ? "" : " [no compute queue]");
+  return 0;
+}
+
+// The Vulkan context for --backend vulkan (errors are fatal) or auto (no device: the
+// CPU renders, after saying why).
+std::unique_ptr<vk::Context> OpenVulkan(const Options& o) {
+  if (o.backend == Backend::Cpu) return nullptr;
+  // lavapipe reads LP_NUM_THREADS when the device is created: --threads applies to it too.
+  if (o.threads) setenv("LP_NUM_THREADS", std::to_string(o.threads).c_str(), 1);
+  vk::ContextOptions opt;
+  opt.validation = o.validation;
+  opt.device = o.device;
+  if (o.backend == Backend::Vulkan || !o.device.empty() || o.validation) return std::make_unique<vk::Context>(opt);
+  try {
+    return std::make_unique<vk::Context>(opt);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vkpt: %s\nvkpt: rendering on the CPU instead\n", e.what());
+    return nullptr;
+  }
+}
+
 int Run(const Options& o) {
+  if (o.listDevices) return ListDevices();
   FormatFromPath(o.out);  // fail before a long render, not after
-  if (o.backend == Backend::Vulkan)
-    throw Error("the Vulkan backend is not available in this build; use --backend cpu");
 
   Scene scene = LoadGltf(o.scene);
   BvhBuildOptions bvhOptions;
@@ -92,13 +161,9 @@ int Run(const Options& o) {
     std::fprintf(stderr, "vkpt: warning: %s: no emissive triangles and a black background; the image will be black\n",
                  o.scene.c_str());
 
-  CpuRenderOptions cpuOptions;
-  cpuOptions.threads = o.threads;
-  const bool tty = isatty(STDERR_FILENO);
-  if (tty)
-    cpuOptions.progress = [](double f) { std::fprintf(stderr, "\rrendering: %5.1f%%", 100.0 * f); };
-  CpuRenderResult r = RenderCpu(rs, params, cpuOptions);
-  if (tty) std::fprintf(stderr, "\r%*s\r", 20, "");
+  std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
+  Rendered r = ctx ? RenderOnVulkan(*ctx, rs, params, o) : RenderOnCpu(rs, params, o);
+  if (ctx) r.validationMessages = ctx->ValidationMessages();
 
   WriteImage(r.image, o.out, o.exposure);
 
@@ -106,15 +171,19 @@ int Run(const Options& o) {
   glm::dvec3 mean(0.0);
   for (const glm::vec3& p : r.image.pixels) mean += glm::dvec3(p);
   mean /= double(r.image.pixels.size());
-  std::printf("vkpt: %s -> %s: %ux%u, %u spp, cpu (%u threads)\n", o.scene.c_str(), o.out.c_str(), width, height,
-              o.spp, r.threads);
+  std::printf("vkpt: %s -> %s: %ux%u, %u spp, %s\n", o.scene.c_str(), o.out.c_str(), width, height, o.spp,
+              r.engine.c_str());
   std::printf("  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", r.seconds,
-              samples / r.seconds * 1e-6, double(r.stats.rays) / r.seconds * 1e-6, mean.x, mean.y, mean.z);
+              samples / r.seconds * 1e-6, double(r.rays) / r.seconds * 1e-6, mean.x, mean.y, mean.z);
   std::printf("  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %u nodes, %u leaves, depth %u, SAH cost %.3f, built in %.2f ms\n",
-              scene.triangles.size(), rs.degenerateTriangles, rs.emitters.size(), rs.bvhStats.nodes, rs.bvhStats.leaves, rs.bvhStats.depth,
-              rs.bvhStats.sahCost, rs.bvhStats.buildMs);
-  if (r.stats.nonFinite)
-    std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.stats.nonFinite);
+              scene.triangles.size(), rs.degenerateTriangles, rs.emitters.size(), rs.bvhStats.nodes,
+              rs.bvhStats.leaves, rs.bvhStats.depth, rs.bvhStats.sahCost, rs.bvhStats.buildMs);
+  if (r.nonFinite)
+    std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.nonFinite);
+  if (r.validationMessages) {
+    std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", r.validationMessages);
+    return 3;
+  }
   return 0;
 }
 

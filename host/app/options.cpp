@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <map>
 
@@ -36,8 +37,15 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --seed N           random seed; same seed and device give a bit-identical image [default: 0]
   --max-depth N      maximum number of bounces [default: 32]
   --rr-depth N       bounces before Russian roulette starts [default: 3]
-  --backend NAME     cpu (reference path tracer) [default: cpu]
-  --threads N        CPU threads [default: all cores]
+  --backend NAME     vulkan (compute shader on a Vulkan device) or cpu (reference path
+                     tracer) [default: vulkan if a device exists, else cpu]
+  --device N|NAME    Vulkan device by index or name substring [default: discrete GPU >
+                     integrated > virtual > CPU (lavapipe)]
+  --list-devices     list Vulkan devices and exit
+  --validation       enable the Vulkan validation layer (also VKPT_VALIDATION=1); any
+                     validation message makes vkpt exit with status 3
+  --batch N          Vulkan: samples per pixel per submission [default: ~1M paths each]
+  --threads N        CPU threads; also LP_NUM_THREADS for lavapipe [default: all cores]
   --camera N         index of the glTF camera to render from, in scene order [default: 0;
                      a scene without cameras gets one that frames it]
   --background R,G,B constant environment radiance seen by rays that leave the scene
@@ -49,7 +57,8 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   -h, --help         print this help and exit
   --version          print the version and exit
 
-Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error.
+Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error,
+3 Vulkan validation messages were reported.
 )";
 }
 
@@ -74,6 +83,11 @@ Options ParseOptions(int argc, const char* const* argv) {
       {"--threads", [&](const std::string& opt, const std::string& v) { o.threads = ParseNumber(opt, v, 1u, 1024u); }},
       {"--camera", optU32(o.camera, 0, 1u << 20)},
       {"--leaf-size", u32(o.leafSize, 1, 15)},
+      {"--batch", u32(o.batch, 1, 1u << 30)},
+      {"--device", [&](const std::string& opt, const std::string& v) {
+         if (v.empty()) throw UsageError(opt + " needs a device index or name");
+         o.device = v;
+       }},
       {"--exposure",
        [&](const std::string& opt, const std::string& v) { o.exposure = ParseNumber(opt, v, -64.0f, 64.0f); }},
       {"--background",
@@ -112,6 +126,8 @@ Options ParseOptions(int argc, const char* const* argv) {
     if (arg == "-h" || arg == "--help") { o.help = true; continue; }
     if (arg == "--version") { o.version = true; continue; }
     if (arg == "-v" || arg == "--verbose") { o.verbose = true; continue; }
+    if (arg == "--list-devices") { o.listDevices = true; continue; }
+    if (arg == "--validation") { o.validation = true; continue; }
     auto it = withValue.find(arg);
     if (it == withValue.end()) throw UsageError("unknown option \"" + arg + "\" (see --help)");
     if (!inlineValue) {
@@ -120,7 +136,8 @@ Options ParseOptions(int argc, const char* const* argv) {
     }
     it->second(arg, value);
   }
-  if (o.help || o.version) return o;
+  if (const char* env = std::getenv("VKPT_VALIDATION"); env && std::string(env) == "1") o.validation = true;
+  if (o.help || o.version || o.listDevices) return o;
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
   if (o.out.empty()) {
     std::string base = o.scene.substr(o.scene.find_last_of('/') + 1);

@@ -9,7 +9,7 @@
 
 namespace vkpt {
 
-enum class Backend { Cpu, Vulkan };
+enum class Backend { Auto, Cpu, Vulkan };
 
 struct Options {
   std::string scene;
@@ -19,7 +19,11 @@ struct Options {
   uint32_t seed = 0;
   uint32_t maxDepth = 32;
   uint32_t rrDepth = 3;
-  Backend backend = Backend::Cpu;
+  Backend backend = Backend::Auto;  // Vulkan when a device exists, else the CPU
+  std::string device;               // --device N|substring
+  bool listDevices = false;
+  bool validation = false;          // --validation or VKPT_VALIDATION=1
+  uint32_t batch = 0;               // samples per pixel per GPU submission; 0 = auto
   unsigned threads = 0;  // 0: all cores
   std::optional<uint32_t> camera;
   float exposure = 0.0f;

@@ -1,0 +1,96 @@
+#include "vk/buffer.h"
+
+#include <cstring>
+#include <utility>
+
+#include "util/error.h"
+#include "vk/vk_check.h"
+
+namespace vkpt::vk {
+namespace {
+
+std::string MiB(VkDeviceSize bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
+
+uint32_t FindMemoryType(const Context& ctx, uint32_t typeBits, VkMemoryPropertyFlags want, const std::string& what) {
+  const VkPhysicalDeviceMemoryProperties& mp = ctx.MemoryProperties();
+  for (uint32_t i = 0; i < mp.memoryTypeCount; ++i)
+    if ((typeBits & (1u << i)) && (mp.memoryTypes[i].propertyFlags & want) == want) return i;
+  throw Error("Vulkan: no memory type for the " + what + " buffer on " + ctx.DeviceName());
+}
+
+}  // namespace
+
+Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, VkMemoryPropertyFlags memory,
+               const std::string& what)
+    : ctx_(&ctx), size_(size) {
+  try {
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VKPT_VK_CHECK(vkCreateBuffer(ctx.Device(), &info, nullptr, &buffer_));
+    ctx.Name(VK_OBJECT_TYPE_BUFFER, uint64_t(buffer_), what.c_str());
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(ctx.Device(), buffer_, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = FindMemoryType(ctx, req.memoryTypeBits, memory, what);
+    VkResult r = vkAllocateMemory(ctx.Device(), &alloc, nullptr, &memory_);
+    if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY)
+      throw Error("Vulkan: out of memory allocating the " + what + " buffer (" + MiB(size) + ") on " + ctx.DeviceName());
+    VKPT_VK_CHECK(r);
+    VKPT_VK_CHECK(vkBindBufferMemory(ctx.Device(), buffer_, memory_, 0));
+    if (memory & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+      VKPT_VK_CHECK(vkMapMemory(ctx.Device(), memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+  } catch (...) {
+    Release();
+    throw;
+  }
+}
+
+Buffer::~Buffer() { Release(); }
+
+Buffer::Buffer(Buffer&& o) noexcept { *this = std::move(o); }
+
+Buffer& Buffer::operator=(Buffer&& o) noexcept {
+  if (this != &o) {
+    Release();
+    ctx_ = std::exchange(o.ctx_, nullptr);
+    buffer_ = std::exchange(o.buffer_, VK_NULL_HANDLE);
+    memory_ = std::exchange(o.memory_, VK_NULL_HANDLE);
+    size_ = std::exchange(o.size_, 0);
+    mapped_ = std::exchange(o.mapped_, nullptr);
+  }
+  return *this;
+}
+
+void Buffer::Release() {
+  if (!ctx_) return;
+  if (buffer_) vkDestroyBuffer(ctx_->Device(), buffer_, nullptr);
+  if (memory_) vkFreeMemory(ctx_->Device(), memory_, nullptr);  // unmaps implicitly
+  buffer_ = VK_NULL_HANDLE;
+  memory_ = VK_NULL_HANDLE;
+  mapped_ = nullptr;
+}
+
+Buffer UploadStorage(const Context& ctx, const void* data, size_t bytes, const std::string& what) {
+  const VkDeviceSize size = std::max<VkDeviceSize>(bytes, 4);
+  const VkPhysicalDeviceLimits& limits = ctx.Properties().limits;
+  if (size > limits.maxStorageBufferRange)
+    throw Error("the scene's " + what + " buffer needs " + MiB(size) + ", but " + ctx.DeviceName() +
+                " allows at most " + MiB(limits.maxStorageBufferRange) +
+                " per storage buffer (maxStorageBufferRange); render this scene with --backend cpu");
+  Buffer staging(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what + " (staging)");
+  std::memset(staging.Mapped(), 0, size);
+  if (bytes) std::memcpy(staging.Mapped(), data, bytes);
+  Buffer device(ctx, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+  ctx.Submit([&](VkCommandBuffer cb) {
+    VkBufferCopy region{0, 0, size};
+    vkCmdCopyBuffer(cb, staging.Handle(), device.Handle(), 1, &region);
+  });
+  return device;
+}
+
+}  // namespace vkpt::vk

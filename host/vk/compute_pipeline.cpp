@@ -1,0 +1,105 @@
+#include "vk/compute_pipeline.h"
+
+#include "vk/vk_check.h"
+
+namespace vkpt::vk {
+
+ComputePipeline::ComputePipeline(const Context& ctx, const uint32_t* spirv, size_t spirvBytes,
+                                 const std::vector<BufferBinding>& bindings, const std::string& name)
+    : ctx_(ctx) {
+  VkDevice dev = ctx.Device();
+  try {
+    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    moduleInfo.codeSize = spirvBytes;
+    moduleInfo.pCode = spirv;
+    VKPT_VK_CHECK(vkCreateShaderModule(dev, &moduleInfo, nullptr, &module_));
+    ctx.Name(VK_OBJECT_TYPE_SHADER_MODULE, uint64_t(module_), name.c_str());
+
+    std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
+    uint32_t storage = 0, uniform = 0;
+    for (const BufferBinding& b : bindings) {
+      layoutBindings.push_back({b.binding, b.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+      (b.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER ? uniform : storage)++;
+    }
+    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setInfo.bindingCount = uint32_t(layoutBindings.size());
+    setInfo.pBindings = layoutBindings.data();
+    VKPT_VK_CHECK(vkCreateDescriptorSetLayout(dev, &setInfo, nullptr, &setLayout_));
+
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &setLayout_;
+    VKPT_VK_CHECK(vkCreatePipelineLayout(dev, &layoutInfo, nullptr, &layout_));
+
+    VkComputePipelineCreateInfo pipeInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    pipeInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    pipeInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipeInfo.stage.module = module_;
+    pipeInfo.stage.pName = "main";
+    pipeInfo.layout = layout_;
+    VKPT_VK_CHECK(vkCreateComputePipelines(dev, VK_NULL_HANDLE, 1, &pipeInfo, nullptr, &pipeline_));
+    ctx.Name(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline_), name.c_str());
+
+    std::vector<VkDescriptorPoolSize> sizes;
+    if (storage) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storage});
+    if (uniform) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniform});
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = uint32_t(sizes.size());
+    poolInfo.pPoolSizes = sizes.data();
+    VKPT_VK_CHECK(vkCreateDescriptorPool(dev, &poolInfo, nullptr, &pool_));
+    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocInfo.descriptorPool = pool_;
+    allocInfo.descriptorSetCount = 1;
+    allocInfo.pSetLayouts = &setLayout_;
+    VKPT_VK_CHECK(vkAllocateDescriptorSets(dev, &allocInfo, &set_));
+
+    std::vector<VkDescriptorBufferInfo> infos(bindings.size());
+    std::vector<VkWriteDescriptorSet> writes(bindings.size());
+    for (size_t i = 0; i < bindings.size(); ++i) {
+      infos[i] = {bindings[i].buffer, 0, VK_WHOLE_SIZE};
+      writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+      writes[i].dstSet = set_;
+      writes[i].dstBinding = bindings[i].binding;
+      writes[i].descriptorCount = 1;
+      writes[i].descriptorType = bindings[i].type;
+      writes[i].pBufferInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(dev, uint32_t(writes.size()), writes.data(), 0, nullptr);
+  } catch (...) {
+    Destroy();
+    throw;
+  }
+}
+
+ComputePipeline::~ComputePipeline() { Destroy(); }
+
+void ComputePipeline::Destroy() {
+  VkDevice dev = ctx_.Device();
+  if (pool_) vkDestroyDescriptorPool(dev, pool_, nullptr);  // frees set_
+  if (pipeline_) vkDestroyPipeline(dev, pipeline_, nullptr);
+  if (layout_) vkDestroyPipelineLayout(dev, layout_, nullptr);
+  if (setLayout_) vkDestroyDescriptorSetLayout(dev, setLayout_, nullptr);
+  if (module_) vkDestroyShaderModule(dev, module_, nullptr);
+  pool_ = VK_NULL_HANDLE;
+  pipeline_ = VK_NULL_HANDLE;
+  layout_ = VK_NULL_HANDLE;
+  setLayout_ = VK_NULL_HANDLE;
+  module_ = VK_NULL_HANDLE;
+}
+
+void ComputePipeline::Dispatch(VkCommandBuffer cb, uint32_t x, uint32_t y, uint32_t z) const {
+  vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);
+  vkCmdDispatch(cb, x, y, z);
+}
+
+void ComputeBarrier(VkCommandBuffer cb) {
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+  vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+}  // namespace vkpt::vk

@@ -1,0 +1,122 @@
+#include "vk/vk_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+#include "kPathTraceSpirv.h"
+#include "util/error.h"
+#include "vk/compute_pipeline.h"
+#include "vk/vk_check.h"
+
+namespace vkpt::vk {
+namespace {
+
+constexpr uint32_t kWorkgroup = 8;  // pathtrace.comp: local_size 8×8
+
+template <class T>
+Buffer Upload(const Context& ctx, const std::vector<T>& v, const char* what) {
+  return UploadStorage(ctx, v.data(), v.size() * sizeof(T), what);
+}
+
+Buffer Storage(const Context& ctx, VkDeviceSize size, const char* what) {
+  const VkDeviceSize limit = ctx.Properties().limits.maxStorageBufferRange;
+  if (size > limit)
+    throw Error("the image needs a " + std::to_string(size >> 20) + " MiB " + what + " buffer, but " + ctx.DeviceName() +
+                " allows at most " + std::to_string(limit >> 20) +
+                " MiB per storage buffer (maxStorageBufferRange); use a smaller --width/--height or --backend cpu");
+  return Buffer(ctx, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+}
+
+Buffer Readback(const Context& ctx, VkDeviceSize size, const char* what) {
+  return Buffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what);
+}
+
+}  // namespace
+
+GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv, size_t spirvBytes)
+    : ctx_(ctx),
+      spirv_(spirv ? spirv : kPathTraceSpirv),
+      spirvBytes_(spirv ? spirvBytes : sizeof(kPathTraceSpirv)),
+      triangles_(Upload(ctx, scene.triangles, "triangles")),
+      nodes_(Upload(ctx, scene.nodes, "BVH nodes")),
+      materials_(Upload(ctx, scene.materials, "materials")),
+      emitters_(Upload(ctx, scene.emitters, "emitters")) {}
+
+GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {
+  const uint64_t pixels = uint64_t(frame.width) * frame.height;
+  Buffer accum = Storage(ctx_, pixels * 2 * sizeof(glm::vec4), "accumulation");
+  Buffer counters = Storage(ctx_, pixels * sizeof(glm::uvec2), "counter");
+  Buffer params(ctx_, sizeof(shader::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "frame params");
+  ComputePipeline pipeline(ctx_, spirv_, spirvBytes_,
+                           {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.Handle()},
+                            {shader::kBindingTriangles, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, triangles_.Handle()},
+                            {shader::kBindingNodes, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nodes_.Handle()},
+                            {shader::kBindingMaterials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, materials_.Handle()},
+                            {shader::kBindingEmitters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, emitters_.Handle()},
+                            {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, accum.Handle()},
+                            {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counters.Handle()}},
+                           "pathtrace");
+  ctx_.Submit([&](VkCommandBuffer cb) {
+    vkCmdFillBuffer(cb, accum.Handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cb, counters.Handle(), 0, VK_WHOLE_SIZE, 0);
+  });
+
+  const uint32_t batch = options.batch ? std::min(options.batch, frame.sampleCount)
+                                       : uint32_t(std::clamp<uint64_t>((1u << 20) / std::max<uint64_t>(pixels, 1), 1,
+                                                                        std::max(frame.sampleCount, 1u)));
+  GpuRenderResult result;
+  auto t0 = std::chrono::steady_clock::now();
+  for (uint32_t done = 0; done < frame.sampleCount; done += batch) {
+    shader::FrameParams p = frame;
+    p.sampleBegin = frame.sampleBegin + done;
+    p.sampleCount = std::min(batch, frame.sampleCount - done);
+    std::memcpy(params.Mapped(), &p, sizeof p);  // the previous batch has finished: safe to overwrite
+    ctx_.Submit([&](VkCommandBuffer cb) {
+      ComputeBarrier(cb);
+      pipeline.Dispatch(cb, (frame.width + kWorkgroup - 1) / kWorkgroup, (frame.height + kWorkgroup - 1) / kWorkgroup, 1);
+    });
+    ++result.batches;
+    if (options.progress) options.progress(double(done + p.sampleCount) / frame.sampleCount);
+  }
+
+  Buffer accumHost = Readback(ctx_, accum.Size(), "accumulation readback");
+  Buffer countersHost = Readback(ctx_, counters.Size(), "counter readback");
+  ctx_.Submit([&](VkCommandBuffer cb) {
+    VkMemoryBarrier toTransfer{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toTransfer.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    toTransfer.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &toTransfer, 0, nullptr, 0, nullptr);
+    VkBufferCopy a{0, 0, accum.Size()}, c{0, 0, counters.Size()};
+    vkCmdCopyBuffer(cb, accum.Handle(), accumHost.Handle(), 1, &a);
+    vkCmdCopyBuffer(cb, counters.Handle(), countersHost.Handle(), 1, &c);
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
+                         nullptr);
+  });
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  const auto* sums = static_cast<const glm::vec4*>(accumHost.Mapped());
+  const auto* count = static_cast<const glm::uvec2*>(countersHost.Mapped());
+  result.image = Image(frame.width, frame.height);
+  result.image.variance.assign(pixels, glm::vec3(0.0f));
+  const double n = frame.sampleCount;
+  for (uint64_t i = 0; i < pixels; ++i) {
+    glm::dvec3 mean = glm::dvec3(glm::vec3(sums[2 * i])) / n;
+    glm::dvec3 meanSq = glm::dvec3(glm::vec3(sums[2 * i + 1])) / n;
+    result.image.pixels[i] = glm::vec3(mean);
+    // As on the CPU: the unbiased sample variance over n, i.e. the variance of the mean.
+    if (n > 1) result.image.variance[i] = glm::vec3(glm::max(meanSq - mean * mean, 0.0) / (n - 1.0));
+    result.rays += count[i].x;
+    result.nonFinite += count[i].y;
+  }
+  return result;
+}
+
+}  // namespace vkpt::vk
