@@ -18,10 +18,10 @@ function(vkpt_compile_shader out_var source symbol)
   add_custom_command(
     OUTPUT "${header}" "${spv}"
     COMMAND "${CMAKE_COMMAND}" -E make_directory "${out_dir}"
-    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 ${defines}
+    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 "-I${PROJECT_SOURCE_DIR}/shaders" ${defines}
             --depfile "${out_dir}/${symbol}.d" -o "${spv}" "${source}"
     COMMAND "${SPIRV_VAL}" --target-env vulkan1.2 "${spv}"
-    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 ${defines}
+    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 "-I${PROJECT_SOURCE_DIR}/shaders" ${defines}
             --vn "${symbol}" -o "${header}" "${source}"
     MAIN_DEPENDENCY "${source}"
     DEPFILE "${out_dir}/${symbol}.d"

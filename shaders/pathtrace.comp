@@ -1,7 +1,11 @@
 #version 460
-// vkpt's path tracer on a Vulkan compute device: one invocation per pixel, the estimator
-// of shared/path.h (the very code the CPU reference runs), and a stackless BVH walk.
+// vkpt's path tracer on a Vulkan compute device: one invocation per pixel and sample,
+// the estimator of shared/path.h (the very code the CPU reference runs), and a stackless
+// BVH walk. One sample per invocation keeps each invocation's loop count small (see
+// traverse.glsl on lavapipe's loop limit); a submission holds several dispatches.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 
 #include "shared/layout.h"
 
@@ -14,8 +18,10 @@ layout(std430, binding = kBindingMaterials) readonly buffer Materials { Material
 layout(std430, binding = kBindingEmitters) readonly buffer Emitters { Emitter emitters[]; };
 // Per pixel: [2i] = (Σ L, unused), [2i + 1] = (Σ L², unused), over all samples so far.
 layout(std430, binding = kBindingAccum) buffer Accum { vec4 accum[]; };
-// Per pixel: (rays traced, non-finite samples discarded).
-layout(std430, binding = kBindingCounters) buffer Counters { uvec2 counters[]; };
+// Per pixel: (rays traced, non-finite samples discarded, samples possibly cut short, 0).
+layout(std430, binding = kBindingCounters) buffer Counters { uvec4 counters[]; };
+// Which sample of the batch this dispatch computes: params.sampleBegin + sampleInBatch.
+layout(push_constant) uniform Push { uint sampleInBatch; };
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -23,95 +29,35 @@ layout(std430, binding = kBindingCounters) buffer Counters { uvec2 counters[]; }
 #define VKPT_MATERIAL(i) materials[i]
 #define VKPT_EMITTER(i) emitters[i]
 
-#include "shared/estimator.h"
-#include "shared/intersect.h"
-
-// Stackless traversal over the depth-first skip-link layout (Smits 1998, "Efficiency
-// Issues for Ray Tracing"): a node whose box is hit (within the closest hit so far) is
-// entered by going to the next node; a missed box or a finished leaf jumps to its skip
-// link. No stack means no per-invocation memory and no divergence in stack depth.
-HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
-  HitRecord hit;
-  hit.t = -1.0f;
-  hit.b1 = 0.0f;
-  hit.b2 = 0.0f;
-  hit.triangle = kInvalidIndex;
-  vec3 invDir = SafeInverse(dir);
-  uint i = 0u;
-  while (i != kInvalidIndex) {
-    BvhNode node = nodes[i];
-    if (IntersectBox(node.lo, node.hi, origin, invDir, tMax) < 0.0f) {
-      i = node.skip;
-      continue;
-    }
-    if (node.leaf == 0u) {
-      i = i + 1u;
-      continue;
-    }
-    uint first = node.leaf >> 4u;
-    uint end = first + (node.leaf & 15u);
-    for (uint k = first; k < end; ++k) {
-      Triangle t = triangles[k];
-      vec3 r = IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax);
-      if (r.x >= 0.0f) {
-        tMax = r.x;
-        hit.t = r.x;
-        hit.b1 = r.y;
-        hit.b2 = r.z;
-        hit.triangle = k;
-      }
-    }
-    i = node.skip;
-  }
-  return hit;
-}
-
-bool TraceOccluded(vec3 origin, vec3 dir, float tMax) {
-  vec3 invDir = SafeInverse(dir);
-  uint i = 0u;
-  while (i != kInvalidIndex) {
-    BvhNode node = nodes[i];
-    if (IntersectBox(node.lo, node.hi, origin, invDir, tMax) < 0.0f) {
-      i = node.skip;
-      continue;
-    }
-    if (node.leaf == 0u) {
-      i = i + 1u;
-      continue;
-    }
-    uint first = node.leaf >> 4u;
-    uint end = first + (node.leaf & 15u);
-    for (uint k = first; k < end; ++k) {
-      Triangle t = triangles[k];
-      if (IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax).x >= 0.0f) return true;
-    }
-    i = node.skip;
-  }
-  return false;
-}
+#include "traverse.glsl"
 
 #include "shared/path.h"
 
+// lavapipe ends a shader once its SIMD group has run 65535 loop iterations in total;
+// stay clear of it by a margin for the small loops not counted exactly.
+const uint kLoopBudget = 65535u - 256u;
+
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
-  if (pixel.x >= params.width || pixel.y >= params.height) return;
+  bool inside = pixel.x < params.width && pixel.y < params.height;
+  PathSample ps;
+  ps.radiance = vec3(0.0f);
+  ps.rays = 0u;
+  // Out-of-image lanes still take part in the subgroup operations below (no early return).
+  if (inside) ps = TracePath(params, pixel.x, pixel.y, params.sampleBegin + sampleInBatch);
+  // Loops outside traversal: the path loop (≤ one iteration per ray) and the emitter
+  // binary search (≤ log2(emitters) + 2 per ray), bounded per lane and summed.
+  uint smallLoops = ps.rays * (3u + uint(findMSB(max(params.emitterCount, 1u))));
+  uint groupIterations = subgroupAdd(gLoopIterations) + subgroupAdd(smallLoops);
+  if (!inside) return;
   uint index = pixel.y * params.width + pixel.x;
-  vec3 sum = vec3(0.0f);
-  vec3 sumSq = vec3(0.0f);
-  uint rays = 0u;
-  uint nonFinite = 0u;
-  for (uint s = 0u; s < params.sampleCount; ++s) {
-    PathSample ps = TracePath(params, pixel.x, pixel.y, params.sampleBegin + s);
-    rays += ps.rays;
-    vec3 L = ps.radiance;
-    if (any(isnan(L)) || any(isinf(L))) {
-      nonFinite += 1u;
-      continue;
-    }
-    sum += L;
-    sumSq += L * L;
+  vec3 L = ps.radiance;
+  uvec4 count = uvec4(ps.rays, 0u, groupIterations >= kLoopBudget ? 1u : 0u, 0u);
+  if (any(isnan(L)) || any(isinf(L))) {
+    count.y = 1u;
+  } else {
+    accum[2u * index] += vec4(L, 0.0f);
+    accum[2u * index + 1u] += vec4(L * L, 0.0f);
   }
-  accum[2u * index] += vec4(sum, 0.0f);
-  accum[2u * index + 1u] += vec4(sumSq, 0.0f);
-  counters[index] += uvec2(rays, nonFinite);
+  counters[index] += count;
 }

@@ -15,31 +15,6 @@
 namespace vkpt {
 namespace {
 
-// A random soup with the cases that break naive builders: zero-area triangles
-// (repeated and collinear vertices), huge and tiny triangles, many identical triangles.
-std::vector<SceneTriangle> RandomSoup(uint32_t count, uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-  auto point = [&] { return glm::vec3(u(rng), u(rng), u(rng)) * 10.0f; };
-  std::vector<SceneTriangle> tris;
-  for (uint32_t i = 0; i < count; ++i) {
-    glm::vec3 c = point();
-    float size = std::pow(10.0f, u(rng) * 3.0f - 1.0f) * 0.1f;  // 1e-5 .. 10
-    SceneTriangle t{c, c + glm::vec3(u(rng), u(rng), u(rng)) * size, c + glm::vec3(u(rng), u(rng), u(rng)) * size, 0};
-    switch ((i + 7) % 23) {
-      case 0: t.v1 = t.v0; break;                                  // repeated vertex
-      case 1: t.v2 = t.v0 + 2.0f * (t.v1 - t.v0); break;            // collinear
-      case 2: t.v1 = t.v2 = t.v0; break;                            // a point
-      case 3: t.v1 = t.v0 + glm::vec3(40, 0, 0); t.v2 = t.v0 + glm::vec3(0, 40, 3); break;  // huge
-      case 4: if (i > 23) t = tris[i - 23]; break;                  // duplicate
-      case 5: t.v2 = t.v0 + (t.v1 - t.v0) * 0.37f; break;           // collinear after rounding
-      default: break;
-    }
-    tris.push_back(t);
-  }
-  return tris;
-}
-
 RenderScene Prepare(const std::vector<SceneTriangle>& tris, uint32_t leafSize = 4) {
   Material m{};
   m.baseColor = glm::vec3(0.5f);
@@ -98,7 +73,7 @@ TEST(Bvh, InvariantsOnRandomSoups) {
   for (uint32_t leaf : {1u, 4u, 15u}) {
     for (uint32_t count : {1u, 2u, 5u, 100u, 5000u}) {
       SCOPED_TRACE("leaf " + std::to_string(leaf) + ", " + std::to_string(count) + " triangles");
-      std::vector<SceneTriangle> soup = RandomSoup(count, count * 7 + leaf);
+      std::vector<SceneTriangle> soup = test::RandomSoup(count, count * 7 + leaf);
       RenderScene rs = Prepare(soup, leaf);
       CheckInvariants(rs, soup, leaf);
       EXPECT_LE(rs.bvhStats.maxLeafPrims, leaf);
@@ -117,7 +92,7 @@ TEST(Bvh, IdenticalTrianglesStillRespectLeafSize) {
 TEST(Bvh, SahBeatsMedianOnClusteredInput) {
   // Two far-apart clusters of very different sizes: the SAH cost must be close to the
   // cost of the two clusters traversed separately, far below a single leaf's.
-  std::vector<SceneTriangle> tris = RandomSoup(4000, 3);
+  std::vector<SceneTriangle> tris = test::RandomSoup(4000, 3);
   RenderScene rs = Prepare(tris, 4);
   std::printf("SAH cost %.3f for 4000 random triangles (%u nodes, depth %u)\n", rs.bvhStats.sahCost,
               rs.bvhStats.nodes, rs.bvhStats.depth);
@@ -192,8 +167,8 @@ void CompareWithBruteForce(const RenderScene& rs, uint32_t rays, uint32_t seed) 
 
 TEST(Bvh, TraversalMatchesBruteForceOnRandomSoups) {
   // 2 soups × 60k rays = 120k rays.
-  CompareWithBruteForce(Prepare(RandomSoup(600, 11), 4), 60000, 1);
-  CompareWithBruteForce(Prepare(RandomSoup(300, 12), 15), 60000, 2);
+  CompareWithBruteForce(Prepare(test::RandomSoup(600, 11), 4), 60000, 1);
+  CompareWithBruteForce(Prepare(test::RandomSoup(300, 12), 15), 60000, 2);
 }
 
 TEST(Bvh, TraversalMatchesBruteForceOnCorpusModel) {

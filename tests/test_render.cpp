@@ -24,48 +24,9 @@ shader::FrameParams Params(const Scene& scene, const RenderScene& rs, uint32_t w
   return p;
 }
 
-struct ZTest {
-  glm::dvec3 mean, stderr_, z;
-};
-
-// Image mean and its standard error from the per-pixel variances of the mean: pixels are
-// independent, so Var(mean) = Σ Var(pixel mean) / N².
-ZTest MeanAndError(const Image& img, glm::dvec3 expected) {
-  glm::dvec3 sum(0.0), var(0.0);
-  for (size_t i = 0; i < img.pixels.size(); ++i) {
-    sum += glm::dvec3(img.pixels[i]);
-    var += glm::dvec3(img.variance[i]);
-  }
-  double n = double(img.pixels.size());
-  ZTest t;
-  t.mean = sum / n;
-  t.stderr_ = glm::sqrt(var) / n;
-  t.z = (t.mean - expected) / t.stderr_;
-  return t;
-}
-
-// Passes when the difference is explained by noise (|z| below the Šidák-corrected critical
-// value) or is within a relative margin too small to matter (float rounding in 1e6 paths).
-bool Agrees(const ZTest& t, glm::dvec3 expected, double margin, const char* what) {
-  // Two-sided α = 0.0014 per channel: family α = 1 − (1 − 0.0014)³ ≈ 0.004 (Šidák).
-  const double zCrit = 3.2;
-  bool ok = true;
-  for (int c = 0; c < 3; ++c) {
-    bool pass = std::abs(t.z[c]) < zCrit || std::abs(t.mean[c] - expected[c]) <= margin * expected[c];
-    std::printf("%s channel %d: mean %.6f expected %.6f stderr %.2e z %.2f (|z| < %.1f or rel err <= %.0e) %s\n", what,
-                c, t.mean[c], expected[c], t.stderr_[c], t.z[c], zCrit, margin, pass ? "ok" : "FAIL");
-    ok &= pass;
-  }
-  return ok;
-}
-
-// A closed enclosure of albedo ρ and emission Le everywhere has radiance Le/(1−ρ); with
-// paths capped at D bounces, Le(1−ρ^(D+1))/(1−ρ) (geometric series of the rendering
-// equation's Neumann expansion L = E + KE + K²E + …).
-glm::dvec3 FurnaceExpected(const Scene& s, int maxDepth) {
-  glm::dvec3 rho(s.materials[0].baseColor), le(s.materials[0].emission);
-  return le * (1.0 - glm::pow(rho, glm::dvec3(maxDepth + 1))) / (1.0 - rho);
-}
+using test::Agrees;
+using test::FurnaceExpected;
+using test::MeanAndError;
 
 TEST(Render, FurnaceMatchesClosedForm) {
   Scene scene = LoadGltf(test::SourcePath("scenes/furnace.gltf"));

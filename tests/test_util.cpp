@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <random>
 
 namespace vkpt::test {
 
@@ -24,7 +25,8 @@ std::string ProcessResult::Describe() const {
   return s + "\nstdout: " + out.substr(0, 2000) + "\nstderr: " + err.substr(0, 2000);
 }
 
-ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds, const std::string& cwd) {
+ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds, const std::string& cwd,
+                      const std::vector<std::string>& env) {
   ProcessResult r;
   int outPipe[2], errPipe[2];
   if (pipe(outPipe) != 0 || pipe(errPipe) != 0) {
@@ -40,6 +42,7 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
     int devnull = open("/dev/null", O_RDONLY);
     dup2(devnull, STDIN_FILENO);
     if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(126);
+    for (const std::string& kv : env) putenv(const_cast<char*>(kv.c_str()));
     std::vector<char*> argv;
     std::string bin = VKPT_BINARY;
     argv.push_back(bin.data());
@@ -147,6 +150,70 @@ double ChiSquareTest(const std::vector<double>& observed, const std::vector<doub
   *statistic = chi2;
   *dof = cells - 1;
   return ChiSquareSurvival(chi2, cells - 1);
+}
+
+// A random soup with the cases that break naive builders: zero-area triangles
+// (repeated and collinear vertices), huge and tiny triangles, many identical triangles.
+std::vector<SceneTriangle> RandomSoup(uint32_t count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  auto point = [&] { return glm::vec3(u(rng), u(rng), u(rng)) * 10.0f; };
+  std::vector<SceneTriangle> tris;
+  for (uint32_t i = 0; i < count; ++i) {
+    glm::vec3 c = point();
+    float size = std::pow(10.0f, u(rng) * 3.0f - 1.0f) * 0.1f;  // 1e-5 .. 10
+    SceneTriangle t{c, c + glm::vec3(u(rng), u(rng), u(rng)) * size, c + glm::vec3(u(rng), u(rng), u(rng)) * size, 0};
+    switch ((i + 7) % 23) {
+      case 0: t.v1 = t.v0; break;                                  // repeated vertex
+      case 1: t.v2 = t.v0 + 2.0f * (t.v1 - t.v0); break;            // collinear
+      case 2: t.v1 = t.v2 = t.v0; break;                            // a point
+      case 3: t.v1 = t.v0 + glm::vec3(40, 0, 0); t.v2 = t.v0 + glm::vec3(0, 40, 3); break;  // huge
+      case 4: if (i > 23) t = tris[i - 23]; break;                  // duplicate
+      case 5: t.v2 = t.v0 + (t.v1 - t.v0) * 0.37f; break;           // collinear after rounding
+      default: break;
+    }
+    tris.push_back(t);
+  }
+  return tris;
+}
+
+// Image mean and its standard error from the per-pixel variances of the mean: pixels are
+// independent, so Var(mean) = Σ Var(pixel mean) / N².
+ZTest MeanAndError(const Image& img, glm::dvec3 expected) {
+  glm::dvec3 sum(0.0), var(0.0);
+  for (size_t i = 0; i < img.pixels.size(); ++i) {
+    sum += glm::dvec3(img.pixels[i]);
+    var += glm::dvec3(img.variance[i]);
+  }
+  double n = double(img.pixels.size());
+  ZTest t;
+  t.mean = sum / n;
+  t.stderr_ = glm::sqrt(var) / n;
+  t.z = (t.mean - expected) / t.stderr_;
+  return t;
+}
+
+// Passes when the difference is explained by noise (|z| below the Šidák-corrected critical
+// value) or is within a relative margin too small to matter (float rounding in 1e6 paths).
+bool Agrees(const ZTest& t, glm::dvec3 expected, double margin, const char* what) {
+  // Two-sided α = 0.0014 per channel: family α = 1 − (1 − 0.0014)³ ≈ 0.004 (Šidák).
+  const double zCrit = 3.2;
+  bool ok = true;
+  for (int c = 0; c < 3; ++c) {
+    bool pass = std::abs(t.z[c]) < zCrit || std::abs(t.mean[c] - expected[c]) <= margin * expected[c];
+    std::printf("%s channel %d: mean %.6f expected %.6f stderr %.2e z %.2f (|z| < %.1f or rel err <= %.0e) %s\n", what,
+                c, t.mean[c], expected[c], t.stderr_[c], t.z[c], zCrit, margin, pass ? "ok" : "FAIL");
+    ok &= pass;
+  }
+  return ok;
+}
+
+// A closed enclosure of albedo ρ and emission Le everywhere has radiance Le/(1−ρ); with
+// paths capped at D bounces, Le(1−ρ^(D+1))/(1−ρ) (geometric series of the rendering
+// equation's Neumann expansion L = E + KE + K²E + …).
+glm::dvec3 FurnaceExpected(const Scene& s, int maxDepth) {
+  glm::dvec3 rho(s.materials[0].baseColor), le(s.materials[0].emission);
+  return le * (1.0 - glm::pow(rho, glm::dvec3(maxDepth + 1))) / (1.0 - rho);
 }
 
 Scene MakeScene(const std::vector<SceneTriangle>& triangles, const std::vector<Material>& materials) {

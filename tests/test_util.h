@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image.h"
 #include "render/render_scene.h"
 #include "scene/scene.h"
 
@@ -24,9 +25,10 @@ struct ProcessResult {
 };
 
 // Runs `build/vkpt args...`, killing it after timeoutSeconds. A non-empty `cwd` is the
-// child's working directory (for relative paths and the default output name).
+// child's working directory (for relative paths and the default output name); `env`
+// entries ("NAME=value") are set in the child's environment.
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds = 120.0,
-                      const std::string& cwd = "");
+                      const std::string& cwd = "", const std::vector<std::string>& env = {});
 
 // Statistics.
 double ChiSquareSurvival(double statistic, double dof);  // P(X >= statistic), X ~ χ²(dof)
@@ -38,6 +40,22 @@ double SidakAlpha(double familyAlpha, int tests);        // per-test α for a fa
 // and fills the statistic and degrees of freedom.
 double ChiSquareTest(const std::vector<double>& observed, const std::vector<double>& expected, double* statistic,
                      int* dof);
+
+// A random triangle soup with the cases that break naive builders and intersectors:
+// zero-area, collinear, huge, tiny and duplicated triangles.
+std::vector<SceneTriangle> RandomSoup(uint32_t count, uint32_t seed);
+
+// Monte Carlo image mean against an expected value.
+struct ZTest {
+  glm::dvec3 mean, stderr_, z;
+};
+// Image mean and its standard error from the per-pixel variances of the mean.
+ZTest MeanAndError(const Image& img, glm::dvec3 expected);
+// Prints the per-channel figures; true when every channel agrees (|z| < 3.2, or within
+// the relative margin).
+bool Agrees(const ZTest& t, glm::dvec3 expected, double margin, const char* what);
+// Radiance in the furnace scene with paths capped at maxDepth bounces.
+glm::dvec3 FurnaceExpected(const Scene& furnace, int maxDepth);
 
 // A scene built in code (tests that need geometry no file has).
 Scene MakeScene(const std::vector<SceneTriangle>& triangles, const std::vector<Material>& materials);

@@ -53,7 +53,7 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
 struct Rendered {
   Image image;
   double seconds = 0.0;
-  uint64_t rays = 0, nonFinite = 0;
+  uint64_t rays = 0, nonFinite = 0, cutShort = 0;
   std::string engine;  // "cpu (2 threads)" or "vulkan: <device>"
   uint32_t validationMessages = 0;
 };
@@ -73,7 +73,8 @@ Rendered RenderOnCpu(const RenderScene& rs, const shader::FrameParams& params, c
   cpu.progress = ProgressLine();
   CpuRenderResult r = RenderCpu(rs, params, cpu);
   EndProgressLine();
-  return {std::move(r.image), r.seconds, r.stats.rays, r.stats.nonFinite, "cpu (" + std::to_string(r.threads) + " threads)", 0};
+  return {std::move(r.image), r.seconds, r.stats.rays, r.stats.nonFinite, 0,
+          "cpu (" + std::to_string(r.threads) + " threads)", 0};
 }
 
 Rendered RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
@@ -83,7 +84,7 @@ Rendered RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::F
   gpu.progress = ProgressLine();
   vk::GpuRenderResult r = renderer.Render(params, gpu);
   EndProgressLine();
-  return {std::move(r.image), r.seconds, r.rays, r.nonFinite, "vulkan: " + ctx.DeviceName(), 0};
+  return {std::move(r.image), r.seconds, r.rays, r.nonFinite, r.cutShort, "vulkan: " + ctx.DeviceName(), 0};
 }
 
 int ListDevices() {
@@ -180,6 +181,11 @@ int Run(const Options& o) {
               rs.bvhStats.leaves, rs.bvhStats.depth, rs.bvhStats.sahCost, rs.bvhStats.buildMs);
   if (r.nonFinite)
     std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.nonFinite);
+  if (r.cutShort)
+    std::fprintf(stderr,
+                 "vkpt: warning: %llu samples came near lavapipe's limit of 65535 loop iterations per SIMD group "
+                 "and may have been cut short (image biased dark); use --backend cpu or a smaller --max-depth\n",
+                 (unsigned long long)r.cutShort);
   if (r.validationMessages) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", r.validationMessages);
     return 3;

@@ -26,6 +26,10 @@ static_assert(offsetof(Material, flags) == 32);
 static_assert(sizeof(Emitter) == 16);
 static_assert(offsetof(Emitter, cdf) == 4 && offsetof(Emitter, pmf) == 8 && offsetof(Emitter, area) == 12);
 
+static_assert(sizeof(RayQuery) == 32);
+static_assert(offsetof(RayQuery, tMax) == 12 && offsetof(RayQuery, dir) == 16);
+static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, triangle) == 12);
+
 static_assert(sizeof(FrameParams) == 112);
 static_assert(offsetof(FrameParams, origin) == 0 && offsetof(FrameParams, tanHalfFovY) == 12);
 static_assert(offsetof(FrameParams, right) == 16 && offsetof(FrameParams, aspect) == 28);

@@ -1,12 +1,14 @@
 #include "vk/compute_pipeline.h"
 
+#include "vk/buffer.h"
 #include "vk/vk_check.h"
 
 namespace vkpt::vk {
 
 ComputePipeline::ComputePipeline(const Context& ctx, const uint32_t* spirv, size_t spirvBytes,
-                                 const std::vector<BufferBinding>& bindings, const std::string& name)
-    : ctx_(ctx) {
+                                 const std::vector<BufferBinding>& bindings, const std::string& name,
+                                 uint32_t pushConstantBytes)
+    : ctx_(ctx), pushConstantBytes_(pushConstantBytes) {
   VkDevice dev = ctx.Device();
   try {
     VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
@@ -29,6 +31,11 @@ ComputePipeline::ComputePipeline(const Context& ctx, const uint32_t* spirv, size
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layoutInfo.setLayoutCount = 1;
     layoutInfo.pSetLayouts = &setLayout_;
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
+    if (pushConstantBytes) {
+      layoutInfo.pushConstantRangeCount = 1;
+      layoutInfo.pPushConstantRanges = &range;
+    }
     VKPT_VK_CHECK(vkCreatePipelineLayout(dev, &layoutInfo, nullptr, &layout_));
 
     VkComputePipelineCreateInfo pipeInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
@@ -88,9 +95,10 @@ void ComputePipeline::Destroy() {
   module_ = VK_NULL_HANDLE;
 }
 
-void ComputePipeline::Dispatch(VkCommandBuffer cb, uint32_t x, uint32_t y, uint32_t z) const {
+void ComputePipeline::Dispatch(VkCommandBuffer cb, uint32_t x, uint32_t y, uint32_t z, const void* push) const {
   vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
   vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);
+  if (push && pushConstantBytes_) vkCmdPushConstants(cb, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes_, push);
   vkCmdDispatch(cb, x, y, z);
 }
 
@@ -100,6 +108,23 @@ void ComputeBarrier(VkCommandBuffer cb) {
   barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
   vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+void CopyToHost(VkCommandBuffer cb, const std::vector<std::pair<const Buffer*, const Buffer*>>& srcDst) {
+  VkMemoryBarrier toTransfer{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  toTransfer.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  toTransfer.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &toTransfer, 0, nullptr, 0, nullptr);
+  for (const auto& [src, dst] : srcDst) {
+    VkBufferCopy region{0, 0, src->Size()};
+    vkCmdCopyBuffer(cb, src->Handle(), dst->Handle(), 1, &region);
+  }
+  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
+                       nullptr);
 }
 
 }  // namespace vkpt::vk

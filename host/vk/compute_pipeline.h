@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vk/context.h"
@@ -21,14 +22,17 @@ struct BufferBinding {
 
 class ComputePipeline {
  public:
+  // `pushConstantBytes` > 0 declares a push-constant block of that size (compute stage).
   ComputePipeline(const Context& ctx, const uint32_t* spirv, size_t spirvBytes,
-                  const std::vector<BufferBinding>& bindings, const std::string& name);
+                  const std::vector<BufferBinding>& bindings, const std::string& name,
+                  uint32_t pushConstantBytes = 0);
   ~ComputePipeline();
   ComputePipeline(const ComputePipeline&) = delete;
   ComputePipeline& operator=(const ComputePipeline&) = delete;
 
-  // Binds the pipeline and its set and records a dispatch.
-  void Dispatch(VkCommandBuffer cb, uint32_t x, uint32_t y, uint32_t z) const;
+  // Binds the pipeline and its set, pushes `push` (pushConstantBytes of it) if given,
+  // and records a dispatch.
+  void Dispatch(VkCommandBuffer cb, uint32_t x, uint32_t y, uint32_t z, const void* push = nullptr) const;
 
  private:
   void Destroy();
@@ -39,10 +43,16 @@ class ComputePipeline {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
+  uint32_t pushConstantBytes_ = 0;
 };
 
 // A barrier making all earlier transfer and compute writes visible to later compute
 // reads and writes (also across submissions, which by themselves order nothing in memory).
 void ComputeBarrier(VkCommandBuffer cb);
+
+// Copies device buffers to host-visible ones after compute writes, with the barriers
+// that make the data visible to the host once the submission's fence has signalled.
+class Buffer;
+void CopyToHost(VkCommandBuffer cb, const std::vector<std::pair<const Buffer*, const Buffer*>>& srcDst);
 
 }  // namespace vkpt::vk

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "kPathTraceSpirv.h"
+#include "kTraceSpirv.h"
 #include "util/error.h"
 #include "vk/compute_pipeline.h"
 #include "vk/vk_check.h"
@@ -48,7 +49,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
 GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {
   const uint64_t pixels = uint64_t(frame.width) * frame.height;
   Buffer accum = Storage(ctx_, pixels * 2 * sizeof(glm::vec4), "accumulation");
-  Buffer counters = Storage(ctx_, pixels * sizeof(glm::uvec2), "counter");
+  Buffer counters = Storage(ctx_, pixels * sizeof(glm::uvec4), "counter");
   Buffer params(ctx_, sizeof(shader::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "frame params");
   ComputePipeline pipeline(ctx_, spirv_, spirvBytes_,
@@ -59,7 +60,7 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
                             {shader::kBindingEmitters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, emitters_.Handle()},
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counters.Handle()}},
-                           "pathtrace");
+                           "pathtrace", sizeof(uint32_t));
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, counters.Handle(), 0, VK_WHOLE_SIZE, 0);
@@ -76,8 +77,11 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
     p.sampleCount = std::min(batch, frame.sampleCount - done);
     std::memcpy(params.Mapped(), &p, sizeof p);  // the previous batch has finished: safe to overwrite
     ctx_.Submit([&](VkCommandBuffer cb) {
-      ComputeBarrier(cb);
-      pipeline.Dispatch(cb, (frame.width + kWorkgroup - 1) / kWorkgroup, (frame.height + kWorkgroup - 1) / kWorkgroup, 1);
+      for (uint32_t s = 0; s < p.sampleCount; ++s) {
+        ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
+        pipeline.Dispatch(cb, (frame.width + kWorkgroup - 1) / kWorkgroup, (frame.height + kWorkgroup - 1) / kWorkgroup,
+                          1, &s);
+      }
     });
     ++result.batches;
     if (options.progress) options.progress(double(done + p.sampleCount) / frame.sampleCount);
@@ -85,25 +89,11 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
 
   Buffer accumHost = Readback(ctx_, accum.Size(), "accumulation readback");
   Buffer countersHost = Readback(ctx_, counters.Size(), "counter readback");
-  ctx_.Submit([&](VkCommandBuffer cb) {
-    VkMemoryBarrier toTransfer{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    toTransfer.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-    toTransfer.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &toTransfer, 0, nullptr, 0, nullptr);
-    VkBufferCopy a{0, 0, accum.Size()}, c{0, 0, counters.Size()};
-    vkCmdCopyBuffer(cb, accum.Handle(), accumHost.Handle(), 1, &a);
-    vkCmdCopyBuffer(cb, counters.Handle(), countersHost.Handle(), 1, &c);
-    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
-                         nullptr);
-  });
+  ctx_.Submit([&](VkCommandBuffer cb) { CopyToHost(cb, {{&accum, &accumHost}, {&counters, &countersHost}}); });
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   const auto* sums = static_cast<const glm::vec4*>(accumHost.Mapped());
-  const auto* count = static_cast<const glm::uvec2*>(countersHost.Mapped());
+  const auto* count = static_cast<const glm::uvec4*>(countersHost.Mapped());
   result.image = Image(frame.width, frame.height);
   result.image.variance.assign(pixels, glm::vec3(0.0f));
   const double n = frame.sampleCount;
@@ -115,8 +105,30 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
     if (n > 1) result.image.variance[i] = glm::vec3(glm::max(meanSq - mean * mean, 0.0) / (n - 1.0));
     result.rays += count[i].x;
     result.nonFinite += count[i].y;
+    result.cutShort += count[i].z;
   }
   return result;
+}
+
+std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQuery>& rays) {
+  if (rays.empty()) return {};
+  Buffer rayBuffer = Upload(ctx_, rays, "rays");
+  Buffer hits = Storage(ctx_, rays.size() * sizeof(shader::HitRecord), "hits");
+  ComputePipeline pipeline(ctx_, kTraceSpirv, sizeof(kTraceSpirv),
+                           {{shader::kBindingTriangles, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, triangles_.Handle()},
+                            {shader::kBindingNodes, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nodes_.Handle()},
+                            {shader::kBindingRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, rayBuffer.Handle()},
+                            {shader::kBindingHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, hits.Handle()}},
+                           "trace");
+  Buffer hitsHost = Readback(ctx_, hits.Size(), "hits readback");
+  const uint32_t groups = uint32_t((rays.size() + 63) / 64);
+  ctx_.Submit([&](VkCommandBuffer cb) {
+    ComputeBarrier(cb);
+    pipeline.Dispatch(cb, groups, 1, 1);
+    CopyToHost(cb, {{&hits, &hitsHost}});
+  });
+  const auto* h = static_cast<const shader::HitRecord*>(hitsHost.Mapped());
+  return std::vector<shader::HitRecord>(h, h + rays.size());
 }
 
 }  // namespace vkpt::vk

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 #include "render/render_scene.h"
@@ -15,8 +16,8 @@
 namespace vkpt::vk {
 
 struct GpuRenderOptions {
-  // Samples per pixel per submission; 0 picks about 2^20 paths per submission, short
-  // enough that a desktop GPU's watchdog never fires.
+  // Samples per pixel per submission (one dispatch each); 0 picks about 2^20 paths per
+  // submission, short enough that a desktop GPU's watchdog never fires.
   uint32_t batch = 0;
   std::function<void(double)> progress;  // finished fraction, after every batch
 };
@@ -25,6 +26,9 @@ struct GpuRenderResult {
   Image image;  // mean and variance of the mean per pixel
   uint64_t rays = 0;
   uint64_t nonFinite = 0;
+  // Samples whose SIMD group came near lavapipe's 65535-loop-iteration limit, so they
+  // may have been ended early (biased dark). 0 for any sane scene; reported if not.
+  uint64_t cutShort = 0;
   double seconds = 0.0;  // dispatches and readback, not upload or pipeline creation
   uint32_t batches = 0;
 };
@@ -35,6 +39,9 @@ class GpuRenderer {
   // deliberately wrong variants.
   GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv = nullptr, size_t spirvBytes = 0);
   GpuRenderResult Render(const shader::FrameParams& params, const GpuRenderOptions& options = {});
+
+  // Closest hits of a batch of rays with the shader's traversal (trace.comp).
+  std::vector<shader::HitRecord> Trace(const std::vector<shader::RayQuery>& rays);
 
  private:
   const Context& ctx_;

@@ -17,13 +17,6 @@ struct Ray {
   vec3 dir;
 };
 
-// Closest hit: t < 0 for none; (b1, b2) barycentrics; triangle in leaf order.
-struct HitRecord {
-  float t;
-  float b1;
-  float b2;
-  uint triangle;
-};
 
 // Ray through pixel (px, py) at sub-pixel offset (jx, jy) ∈ [0,1)²; row 0 is the top
 // of the image. A box filter of one pixel: every sample has weight 1.

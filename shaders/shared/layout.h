@@ -18,7 +18,10 @@ const uint kBindingNodes = 2u;      // readonly buffer BvhNode[]
 const uint kBindingMaterials = 3u;  // readonly buffer Material[]
 const uint kBindingEmitters = 4u;   // readonly buffer Emitter[]
 const uint kBindingAccum = 5u;      // buffer vec4[2 per pixel]: Σ L, Σ L²
-const uint kBindingCounters = 6u;   // buffer uvec2[] per pixel: rays, non-finite samples
+const uint kBindingCounters = 6u;   // buffer uvec4[] per pixel: rays, non-finite, cut short, 0
+// The trace-only kernel (trace.comp) reuses kBindingTriangles and kBindingNodes, plus:
+const uint kBindingRays = 7u;       // readonly buffer RayQuery[]
+const uint kBindingHits = 8u;       // buffer HitRecord[]
 
 const uint kInvalidIndex = 0xFFFFFFFFu;
 
@@ -71,6 +74,22 @@ struct Emitter {
   float cdf;
   float pmf;
   float area;
+};
+
+// A ray for the trace-only kernel: closest hit along origin + t·dir, t ∈ (0, tMax).
+struct RayQuery {
+  vec3 origin;
+  float tMax;
+  vec3 dir;
+  uint pad0;
+};
+
+// Closest hit: t < 0 for none; (b1, b2) barycentrics; triangle in leaf order.
+struct HitRecord {
+  float t;
+  float b1;
+  float b2;
+  uint triangle;
 };
 
 // Per-render constants. The camera ray through film point (sx, sy) ∈ [-1,1]² has the

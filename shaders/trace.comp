@@ -1,0 +1,27 @@
+#version 460
+// Trace-only kernel: the closest hit of each ray in a buffer, with the same stackless
+// traversal as pathtrace.comp. Used by tests (GPU vs CPU brute force) and benchmarks.
+// One ray per invocation: far below lavapipe's 65535-iteration limit for any sane BVH.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+
+#include "shared/layout.h"
+
+layout(local_size_x = 64) in;
+
+layout(std430, binding = kBindingTriangles) readonly buffer Triangles { Triangle triangles[]; };
+layout(std430, binding = kBindingNodes) readonly buffer Nodes { BvhNode nodes[]; };
+layout(std430, binding = kBindingRays) readonly buffer Rays { RayQuery rays[]; };
+layout(std430, binding = kBindingHits) writeonly buffer Hits { HitRecord hits[]; };
+
+#include "traverse.glsl"
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  // No early return: every lane takes part in the subgroup operations of the traversal.
+  bool inside = i < uint(rays.length());
+  RayQuery r = rays[inside ? i : 0u];
+  HitRecord h = TraceClosest(r.origin, r.dir, r.tMax);
+  if (inside) hits[i] = h;
+}

@@ -1,0 +1,287 @@
+// The Vulkan backend on lavapipe (or any device), with the validation layer on: every
+// test ends by asserting that the layer reported nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <random>
+
+#include "cpu/path_tracer.h"
+#include "cpu/traversal.h"
+#include "image/image_compare.h"
+#include "kPathTraceMutantNoLightCosine.h"
+#include "kPathTraceMutantRouletteWithoutDivision.h"
+#include "kSharedMathSpirv.h"
+#include "render/render_scene.h"
+#include "scene/gltf_loader.h"
+#include "shared/estimator.h"
+#include "shared/intersect.h"
+#include "shared/rng.h"
+#include "shared/sampling.h"
+#include "test_util.h"
+#include "vk/buffer.h"
+#include "vk/compute_pipeline.h"
+#include "vk/vk_renderer.h"
+
+namespace vkpt::shader {
+struct MathOut {
+  uvec4 hash;
+  vec4 rand;
+  vec4 dir;
+  vec4 misc;
+};
+}  // namespace vkpt::shader
+#include "shaders/shared_math_body.glsl"
+
+namespace vkpt {
+namespace {
+
+using shader::FrameParams;
+
+// One validated context for the whole test program (device creation costs ~100 ms).
+vk::Context& Gpu() {
+  static std::unique_ptr<vk::Context> ctx = [] {
+    vk::ContextOptions o;
+    o.validation = true;
+    return std::make_unique<vk::Context>(o);
+  }();
+  return *ctx;
+}
+
+class GpuTest : public ::testing::Test {
+ protected:
+  void TearDown() override {
+    EXPECT_EQ(Gpu().ValidationMessages(), before_) << "the Vulkan validation layer reported messages";
+  }
+  uint32_t before_ = Gpu().ValidationMessages();
+};
+
+FrameParams Params(const RenderScene& rs, const Scene& scene, uint32_t w, uint32_t h, uint32_t spp, uint32_t seed,
+                   uint32_t maxDepth = 32, uint32_t rrDepth = 3) {
+  FrameParams p = MakeFrameParams(rs, scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0], w, h);
+  p.seed = seed;
+  p.sampleCount = spp;
+  p.maxDepth = maxDepth;
+  p.rrDepth = rrDepth;
+  if (rs.emitters.empty()) p.background = glm::vec3(1.0f);
+  return p;
+}
+
+TEST_F(GpuTest, SharedMathMatchesCpu) {
+  const uint32_t n = 65536;
+  vk::Buffer out(Gpu(), n * sizeof(shader::MathOut), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "math out");
+  vk::Buffer host(Gpu(), out.Size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "math readback");
+  vk::ComputePipeline pipe(Gpu(), kSharedMathSpirv, sizeof(kSharedMathSpirv),
+                           {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, out.Handle()}}, "shared math");
+  Gpu().Submit([&](VkCommandBuffer cb) {
+    pipe.Dispatch(cb, n / 64, 1, 1);
+    vk::CopyToHost(cb, {{&out, &host}});
+  });
+  const auto* gpu = static_cast<const shader::MathOut*>(host.Mapped());
+  uint32_t hashDiff = 0, randDiff = 0, dirDiff = 0, miscDiff = 0;
+  float maxDir = 0.0f, maxMisc = 0.0f;
+  for (uint32_t i = 0; i < n; ++i) {
+    shader::MathOut c = shader::Evaluate(i);
+    hashDiff += c.hash != gpu[i].hash;
+    randDiff += std::memcmp(&c.rand, &gpu[i].rand, sizeof c.rand) != 0;
+    float d = glm::length(glm::vec3(c.dir) - glm::vec3(gpu[i].dir)) + std::abs(c.dir.w - gpu[i].dir.w);
+    maxDir = std::max(maxDir, d);
+    dirDiff += d > 1e-5f;
+    glm::vec4 m = glm::abs(c.misc - gpu[i].misc);
+    float md = std::max(std::max(m.x, m.y), std::max(m.z, m.w));
+    maxMisc = std::max(maxMisc, md);
+    miscDiff += md > 1e-5f;
+  }
+  std::printf("%u inputs: hash mismatches %u, random-float mismatches %u (bitwise); direction max error %.2e "
+              "(%u > 1e-5); barycentric/box/triangle max error %.2e (%u > 1e-5)\n",
+              n, hashDiff, randDiff, maxDir, dirDiff, maxMisc, miscDiff);
+  EXPECT_EQ(hashDiff, 0u);
+  EXPECT_EQ(randDiff, 0u);
+  EXPECT_EQ(dirDiff, 0u);
+  EXPECT_EQ(miscDiff, 0u);
+}
+
+// GPU closest hits vs the CPU: every ray must hit the same triangle at the same t,
+// except on a true tie (equal t, another triangle). The CPU side is brute force for
+// small scenes and the CPU's ordered traversal (itself checked against brute force in
+// test_bvh) for the 100k-triangle model, where brute force would take minutes.
+void CompareTraversal(const RenderScene& rs, uint32_t count, uint32_t seed, bool bruteForce) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  Bounds3f b{rs.nodes[0].lo, rs.nodes[0].hi};
+  glm::vec3 ext = b.Diagonal();
+  std::vector<shader::RayQuery> rays;
+  for (uint32_t i = 0; i < count; ++i) {
+    glm::vec3 o = b.lo - 0.25f * ext + 1.5f * ext * glm::vec3(u(rng), u(rng), u(rng));
+    glm::vec3 d;
+    if (i % 2) {
+      const shader::Triangle& t = rs.triangles[std::min<size_t>(size_t(u(rng) * rs.triangles.size()), rs.triangles.size() - 1)];
+      d = t.v0 + u(rng) * 0.5f * t.e1 + u(rng) * 0.5f * t.e2 - o;
+    } else {
+      d = glm::vec3(u(rng), u(rng), u(rng)) * 2.0f - 1.0f;
+    }
+    if (i % 17 == 0) d.x = 0.0f;
+    if (glm::length(d) == 0.0f) d = glm::vec3(0, 0, 1);
+    rays.push_back({o, shader::kInfinity, glm::normalize(d), 0});
+  }
+  vk::GpuRenderer gpu(Gpu(), rs);
+  std::vector<shader::HitRecord> hits = gpu.Trace(rays);
+  uint32_t mismatches = 0, ties = 0, hitCount = 0;
+  for (uint32_t i = 0; i < count; ++i) {
+    const shader::RayQuery& r = rays[i];
+    float refT = -1.0f;
+    uint32_t refTri = shader::kInvalidIndex;
+    if (bruteForce) {
+      float tMax = r.tMax;
+      for (uint32_t k = 0; k < rs.triangles.size(); ++k) {
+        const shader::Triangle& t = rs.triangles[k];
+        glm::vec3 h = shader::IntersectTriangle(t.v0, t.e1, t.e2, r.origin, r.dir, tMax);
+        if (h.x >= 0.0f) refT = tMax = h.x, refTri = k;
+      }
+    } else {
+      Hit h = IntersectClosest(rs.nodes, rs.triangles, r.origin, r.dir, r.tMax);
+      refT = h.t;
+      refTri = h.triangle;
+    }
+    if (refT >= 0.0f) ++hitCount;
+    if (hits[i].t != refT) {
+      if (++mismatches <= 5)
+        ADD_FAILURE() << "ray " << i << ": GPU t=" << hits[i].t << " tri " << hits[i].triangle << ", CPU t=" << refT
+                      << " tri " << refTri;
+    } else if (hits[i].triangle != refTri) {
+      ++ties;
+    }
+  }
+  std::printf("%u rays vs CPU %s: %u hits, %u ties, %u mismatches\n", count, bruteForce ? "brute force" : "traversal",
+              hitCount, ties, mismatches);
+  EXPECT_EQ(mismatches, 0u);
+  EXPECT_GT(hitCount, count / 4);
+}
+
+TEST_F(GpuTest, TraversalMatchesCpuOnCornell) {
+  Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  CompareTraversal(PrepareRenderScene(s), 65536, 1, true);
+}
+
+TEST_F(GpuTest, TraversalMatchesCpuOnRandomSoup) {
+  Material m{};
+  Scene s = test::MakeScene(test::RandomSoup(2000, 5), {m});
+  CompareTraversal(PrepareRenderScene(s), 65536, 2, true);
+}
+
+TEST_F(GpuTest, TraversalMatchesCpuOnLargeCorpusModel) {
+  Scene s = LoadGltf(test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"));
+  ASSERT_GE(s.triangles.size(), 100000u);
+  RenderScene rs = PrepareRenderScene(s);
+  CompareTraversal(rs, 65536, 3, false);
+  CompareTraversal(rs, 1024, 4, true);
+}
+
+// Same seed, same estimator code: the images agree pixel for pixel up to float rounding;
+// a few pixels may differ where a rounding difference flips a branch.
+TEST_F(GpuTest, LockstepCornellMatchesCpu) {
+  Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  RenderScene rs = PrepareRenderScene(s);
+  FrameParams p = Params(rs, s, 128, 128, 4, 1);
+  Image cpu = RenderCpu(rs, p).image;
+  vk::GpuRenderer gpu(Gpu(), rs);
+  vk::GpuRenderResult g = gpu.Render(p);
+  EXPECT_EQ(g.nonFinite, 0u);
+  ImageComparison c = CompareImages(cpu, g.image);
+  std::printf("%s\n", c.Summary().c_str());
+  EXPECT_LE(c.differingFraction, 0.01) << "at most 1 % of pixel channels beyond 1e-3 relative";
+  EXPECT_EQ(c.nanA + c.nanB + c.infA + c.infB, 0u);
+  EXPECT_TRUE(c.lockstepAgree);
+}
+
+// Independent seeds: region means must agree within their standard errors. The same
+// test must reject deliberately wrong shaders (proof that it has teeth).
+ImageComparison IndependentComparison(const uint32_t* spirv, size_t bytes, const char* name) {
+  Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  RenderScene rs = PrepareRenderScene(s);
+  Image cpu = RenderCpu(rs, Params(rs, s, 64, 64, 64, 1)).image;
+  vk::GpuRenderer gpu(Gpu(), rs, spirv, bytes);
+  Image g = gpu.Render(Params(rs, s, 64, 64, 64, 2)).image;
+  ImageComparison c = CompareImages(cpu, g);
+  std::printf("[%s]\n%s\n", name, c.Summary().c_str());
+  return c;
+}
+
+TEST_F(GpuTest, IndependentCornellAgreesStatistically) {
+  EXPECT_TRUE(IndependentComparison(nullptr, 0, "pathtrace.comp").statisticallyAgree);
+}
+
+TEST_F(GpuTest, MutantWithoutLightCosineIsCaught) {
+  EXPECT_FALSE(IndependentComparison(kPathTraceMutantNoLightCosine, sizeof(kPathTraceMutantNoLightCosine),
+                                     "mutant: no cos at the light")
+                   .statisticallyAgree);
+}
+
+TEST_F(GpuTest, MutantRouletteWithoutDivisionIsCaught) {
+  EXPECT_FALSE(IndependentComparison(kPathTraceMutantRouletteWithoutDivision,
+                                     sizeof(kPathTraceMutantRouletteWithoutDivision), "mutant: roulette without 1/P")
+                   .statisticallyAgree);
+}
+
+test::ZTest GpuFurnace(const uint32_t* spirv, size_t bytes, glm::dvec3* expected) {
+  Scene s = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
+  RenderScene rs = PrepareRenderScene(s);
+  vk::GpuRenderer gpu(Gpu(), rs, spirv, bytes);
+  vk::GpuRenderResult r = gpu.Render(Params(rs, s, 32, 32, 128, 9, 200, 3));
+  EXPECT_EQ(r.nonFinite, 0u);
+  *expected = test::FurnaceExpected(s, 200);
+  return test::MeanAndError(r.image, *expected);
+}
+
+TEST_F(GpuTest, FurnaceMatchesClosedForm) {
+  glm::dvec3 expected;
+  test::ZTest t = GpuFurnace(nullptr, 0, &expected);
+  EXPECT_TRUE(test::Agrees(t, expected, 1e-3, "GPU furnace"));
+}
+
+TEST_F(GpuTest, FurnaceCatchesBothMutants) {
+  glm::dvec3 expected;
+  test::ZTest a = GpuFurnace(kPathTraceMutantNoLightCosine, sizeof(kPathTraceMutantNoLightCosine), &expected);
+  EXPECT_FALSE(test::Agrees(a, expected, 1e-3, "GPU furnace, mutant no light cosine (must fail)"));
+  test::ZTest b = GpuFurnace(kPathTraceMutantRouletteWithoutDivision, sizeof(kPathTraceMutantRouletteWithoutDivision),
+                             &expected);
+  EXPECT_FALSE(test::Agrees(b, expected, 1e-3, "GPU furnace, mutant roulette without 1/P (must fail)"));
+}
+
+class GpuCorpus : public GpuTest, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(GpuCorpus, RendersOnTheGpu) {
+  Scene s = LoadGltf(test::CorpusPath("valid/" + GetParam()));
+  RenderScene rs = PrepareRenderScene(s);
+  vk::GpuRenderer gpu(Gpu(), rs);
+  vk::GpuRenderResult r = gpu.Render(Params(rs, s, 24, 24, 2, 1));
+  EXPECT_EQ(r.nonFinite, 0u);
+  for (const glm::vec3& p : r.image.pixels) ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+  EXPECT_GT(r.rays, 24u * 24u * 2u);
+}
+
+std::vector<std::string> ValidModels() {
+  std::vector<std::string> out;
+  std::filesystem::path root = test::CorpusPath("valid");
+  if (!std::filesystem::exists(root)) return {"(corpus missing: " + root.string() + ")"};
+  for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
+    std::string ext = e.path().extension().string();
+    if (ext == ".gltf" || ext == ".glb") out.push_back(std::filesystem::relative(e.path(), root).string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Valid, GpuCorpus, ::testing::ValuesIn(ValidModels()), [](const auto& info) {
+  std::string n = info.param;
+  for (char& c : n)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return n;
+});
+
+}  // namespace
+}  // namespace vkpt
