@@ -8,11 +8,13 @@
 #include <exception>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/options.h"
 #include "cpu/path_tracer.h"
 #include "image/image.h"
+#include "image/image_compare.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared/sampling.h"
@@ -102,13 +104,14 @@ int ListDevices() {
 // The Vulkan context for --backend vulkan (errors are fatal) or auto (no device: the
 // CPU renders, after saying why).
 std::unique_ptr<vk::Context> OpenVulkan(const Options& o) {
-  if (o.backend == Backend::Cpu) return nullptr;
+  if (o.backend == Backend::Cpu && !o.compare) return nullptr;
   // lavapipe reads LP_NUM_THREADS when the device is created: --threads applies to it too.
   if (o.threads) setenv("LP_NUM_THREADS", std::to_string(o.threads).c_str(), 1);
   vk::ContextOptions opt;
   opt.validation = o.validation;
   opt.device = o.device;
-  if (o.backend == Backend::Vulkan || !o.device.empty() || o.validation) return std::make_unique<vk::Context>(opt);
+  if (o.backend == Backend::Vulkan || o.compare || !o.device.empty() || o.validation)
+    return std::make_unique<vk::Context>(opt);
   try {
     return std::make_unique<vk::Context>(opt);
   } catch (const Error& e) {
@@ -117,8 +120,24 @@ std::unique_ptr<vk::Context> OpenVulkan(const Options& o) {
   }
 }
 
+std::string DiffPath(const std::string& out) {
+  size_t dot = out.find_last_of('.');
+  return out.substr(0, dot) + "-diff.png";
+}
+
+// --diff A B: two existing images, no rendering.
+int Diff(const Options& o) {
+  Image a = ReadPfm(o.diff[0]);
+  Image b = ReadPfm(o.diff[1]);
+  ImageComparison c = CompareImages(a, b);
+  std::printf("vkpt: %s (A) vs %s (B)\n%s\n", o.diff[0].c_str(), o.diff[1].c_str(), c.Summary().c_str());
+  if (!o.outGiven.empty()) WriteImage(DifferenceHeatmap(a, b), o.outGiven);
+  return c.statisticallyAgree ? 0 : 4;
+}
+
 int Run(const Options& o) {
   if (o.listDevices) return ListDevices();
+  if (!o.diff.empty()) return Diff(o);
   FormatFromPath(o.out);  // fail before a long render, not after
 
   Scene scene = LoadGltf(o.scene);
@@ -163,10 +182,26 @@ int Run(const Options& o) {
                  o.scene.c_str());
 
   std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
+  std::optional<Rendered> reference;
+  if (o.compare) reference = RenderOnCpu(rs, params, o);
   Rendered r = ctx ? RenderOnVulkan(*ctx, rs, params, o) : RenderOnCpu(rs, params, o);
   if (ctx) r.validationMessages = ctx->ValidationMessages();
 
   WriteImage(r.image, o.out, o.exposure);
+  int status = 0;
+  if (reference) {
+    ImageComparison c = CompareImages(reference->image, r.image);
+    WriteImage(DifferenceHeatmap(reference->image, r.image), DiffPath(o.out));
+    std::printf("vkpt: --compare: A = %s (%.3f s), B = %s (%.3f s), seed %u\n%s\n  heat map: %s\n",
+                reference->engine.c_str(), reference->seconds, r.engine.c_str(), r.seconds, o.seed,
+                c.Summary().c_str(), DiffPath(o.out).c_str());
+    // Same seed, same estimator: the backends must agree pixel by pixel (lockstep) and
+    // in every region's mean (statistics).
+    if (!c.lockstepAgree || !c.statisticallyAgree) {
+      std::fprintf(stderr, "vkpt: --compare: the CPU and Vulkan images DISAGREE\n");
+      status = 4;
+    }
+  }
 
   const double samples = double(width) * height * o.spp;
   glm::dvec3 mean(0.0);
@@ -190,7 +225,7 @@ int Run(const Options& o) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", r.validationMessages);
     return 3;
   }
-  return 0;
+  return status;
 }
 
 }  // namespace

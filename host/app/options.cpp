@@ -25,6 +25,8 @@ T ParseNumber(const std::string& opt, const std::string& text, T lo, T hi) {
 
 std::string HelpText() {
   return R"(usage: vkpt --scene FILE [options]
+       vkpt --diff A.pfm B.pfm [--out heatmap.png]
+       vkpt --list-devices
 
 Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
 
@@ -46,6 +48,12 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      validation message makes vkpt exit with status 3
   --batch N          Vulkan: samples per pixel per submission [default: ~1M paths each]
   --threads N        CPU threads; also LP_NUM_THREADS for lavapipe [default: all cores]
+  --compare          render on the CPU and on Vulkan with the same seed and report how
+                     they agree; writes the Vulkan image to --out and a heat map of the
+                     differences to <out>-diff.png; exit status 4 if they disagree
+  --diff A B         compare two .pfm images (no rendering): per-channel mean difference,
+                     region tests, NaN/Inf counts; heat map to --out if given; exit
+                     status 4 if they differ beyond statistics
   --camera N         index of the glTF camera to render from, in scene order [default: 0;
                      a scene without cameras gets one that frames it]
   --background R,G,B constant environment radiance seen by rays that leave the scene
@@ -58,7 +66,7 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --version          print the version and exit
 
 Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error,
-3 Vulkan validation messages were reported.
+3 Vulkan validation messages were reported, 4 --compare/--diff found a disagreement.
 )";
 }
 
@@ -73,7 +81,7 @@ Options ParseOptions(int argc, const char* const* argv) {
   };
   const std::map<std::string, Handler> withValue = {
       {"--scene", [&](const std::string&, const std::string& v) { o.scene = v; }},
-      {"--out", [&](const std::string&, const std::string& v) { o.out = v; }},
+      {"--out", [&](const std::string&, const std::string& v) { o.out = o.outGiven = v; }},
       {"--width", optU32(o.width, 1, 16384)},
       {"--height", optU32(o.height, 1, 16384)},
       {"--spp", u32(o.spp, 1, 1u << 30)},
@@ -128,6 +136,13 @@ Options ParseOptions(int argc, const char* const* argv) {
     if (arg == "-v" || arg == "--verbose") { o.verbose = true; continue; }
     if (arg == "--list-devices") { o.listDevices = true; continue; }
     if (arg == "--validation") { o.validation = true; continue; }
+    if (arg == "--compare") { o.compare = true; continue; }
+    if (arg == "--diff") {
+      if (inlineValue || i + 2 >= argc) throw UsageError("--diff needs two image files: --diff A.pfm B.pfm");
+      o.diff = {argv[i + 1], argv[i + 2]};
+      i += 2;
+      continue;
+    }
     auto it = withValue.find(arg);
     if (it == withValue.end()) throw UsageError("unknown option \"" + arg + "\" (see --help)");
     if (!inlineValue) {
@@ -138,6 +153,11 @@ Options ParseOptions(int argc, const char* const* argv) {
   }
   if (const char* env = std::getenv("VKPT_VALIDATION"); env && std::string(env) == "1") o.validation = true;
   if (o.help || o.version || o.listDevices) return o;
+  if (!o.diff.empty()) {
+    if (!o.scene.empty() || o.compare) throw UsageError("--diff compares two images; it takes no --scene or --compare");
+    return o;
+  }
+  if (o.compare && o.backend != Backend::Auto) throw UsageError("--compare uses both backends; drop --backend");
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
   if (o.out.empty()) {
     std::string base = o.scene.substr(o.scene.find_last_of('/') + 1);

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace vkpt {
 
@@ -14,6 +15,7 @@ enum class Backend { Auto, Cpu, Vulkan };
 struct Options {
   std::string scene;
   std::string out;  // default: <scene name>.png in the current directory
+  std::string outGiven;  // --out exactly as given ("" when absent)
   std::optional<uint32_t> width, height;
   uint32_t spp = 64;
   uint32_t seed = 0;
@@ -24,6 +26,8 @@ struct Options {
   bool listDevices = false;
   bool validation = false;          // --validation or VKPT_VALIDATION=1
   uint32_t batch = 0;               // samples per pixel per GPU submission; 0 = auto
+  bool compare = false;             // render on both backends and compare
+  std::vector<std::string> diff;    // --diff A.pfm B.pfm: compare two existing images
   unsigned threads = 0;  // 0: all cores
   std::optional<uint32_t> camera;
   float exposure = 0.0f;
