@@ -129,6 +129,7 @@ std::string DiffPath(const std::string& out) {
 int Diff(const Options& o) {
   Image a = ReadPfm(o.diff[0]);
   Image b = ReadPfm(o.diff[1]);
+  if (!o.outGiven.empty()) CheckOutputPath(o.outGiven);
   ImageComparison c = CompareImages(a, b);
   std::printf("vkpt: %s (A) vs %s (B)\n%s\n", o.diff[0].c_str(), o.diff[1].c_str(), c.Summary().c_str());
   if (!o.outGiven.empty()) WriteImage(DifferenceHeatmap(a, b), o.outGiven);
@@ -138,7 +139,7 @@ int Diff(const Options& o) {
 int Run(const Options& o) {
   if (o.listDevices) return ListDevices();
   if (!o.diff.empty()) return Diff(o);
-  FormatFromPath(o.out);  // fail before a long render, not after
+  CheckOutputPath(o.out);  // fail before a long render, not after
 
   Scene scene = LoadGltf(o.scene);
   BvhBuildOptions bvhOptions;

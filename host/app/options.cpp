@@ -39,8 +39,8 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --seed N           random seed; same seed and device give a bit-identical image [default: 0]
   --max-depth N      maximum number of bounces [default: 32]
   --rr-depth N       bounces before Russian roulette starts [default: 3]
-  --backend NAME     vulkan (compute shader on a Vulkan device) or cpu (reference path
-                     tracer) [default: vulkan if a device exists, else cpu]
+  --backend NAME     vulkan (compute shader on a Vulkan device), cpu (reference path
+                     tracer) or auto (vulkan if a device exists, else cpu) [default: auto]
   --device N|NAME    Vulkan device by index or name substring [default: discrete GPU >
                      integrated > virtual > CPU (lavapipe)]
   --list-devices     list Vulkan devices and exit
@@ -119,7 +119,8 @@ Options ParseOptions(int argc, const char* const* argv) {
        [&](const std::string&, const std::string& v) {
          if (v == "cpu") o.backend = Backend::Cpu;
          else if (v == "vulkan") o.backend = Backend::Vulkan;
-         else throw UsageError("--backend must be cpu or vulkan, got \"" + v + "\"");
+         else if (v == "auto") o.backend = Backend::Auto;
+         else throw UsageError("--backend must be auto, vulkan or cpu, got \"" + v + "\"");
        }},
   };
   for (int i = 1; i < argc; ++i) {

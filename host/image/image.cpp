@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -32,34 +33,36 @@ bool EndsWith(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-void WritePfm(const Image& img, const std::string& path) {
-  FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw Error(path + ": cannot create file: " + std::strerror(errno));
+// Each writer writes `file` (a temporary) and names `shown` (the user's path) in errors.
+void WritePfm(const Image& img, const std::string& file, const std::string& shown) {
+  FILE* f = std::fopen(file.c_str(), "wb");
+  if (!f) throw Error(shown + ": cannot create file: " + std::strerror(errno));
   // PFM: "PF" = RGB, negative scale = little-endian, rows stored bottom to top.
   std::fprintf(f, "PF\n%u %u\n-1.0\n", img.width, img.height);
   bool ok = true;
   for (uint32_t y = img.height; y-- > 0;)
     ok &= std::fwrite(&img.pixels[size_t(y) * img.width], sizeof(glm::vec3), img.width, f) == img.width;
   ok &= std::fclose(f) == 0;
-  if (!ok) throw Error(path + ": write failed: " + std::strerror(errno));
+  if (!ok) throw Error(shown + ": write failed: " + std::strerror(errno));
 }
 
-void WritePng(const Image& img, const std::string& path, float exposure) {
+void WritePng(const Image& img, const std::string& file, const std::string& shown, float exposure) {
   const float scale = std::exp2(exposure);
   std::vector<uint8_t> rgb(size_t(img.width) * img.height * 3);
   for (size_t i = 0; i < img.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = LinearToSrgb8(img.pixels[i][c] * scale);
-  if (!stbi_write_png(path.c_str(), int(img.width), int(img.height), 3, rgb.data(), int(img.width * 3)))
-    throw Error(path + ": PNG write failed");
+  errno = 0;
+  if (!stbi_write_png(file.c_str(), int(img.width), int(img.height), 3, rgb.data(), int(img.width * 3)))
+    throw Error(shown + ": PNG write failed" + (errno ? std::string(": ") + std::strerror(errno) : ""));
 }
 
-void WriteExr(const Image& img, const std::string& path) {
+void WriteExr(const Image& img, const std::string& file, const std::string& shown) {
   const char* err = nullptr;
-  int rc = SaveEXR(&img.pixels[0].x, int(img.width), int(img.height), 3, /*save_as_fp16=*/0, path.c_str(), &err);
+  int rc = SaveEXR(&img.pixels[0].x, int(img.width), int(img.height), 3, /*save_as_fp16=*/0, file.c_str(), &err);
   if (rc != TINYEXR_SUCCESS) {
     std::string msg = err ? err : "unknown error";
     if (err) FreeEXRErrorMessage(err);
-    throw Error(path + ": EXR write failed: " + msg);
+    throw Error(shown + ": EXR write failed: " + msg);
   }
 }
 
@@ -71,6 +74,18 @@ ImageFormat FormatFromPath(const std::string& path) {
   if (EndsWith(p, ".pfm")) return ImageFormat::Pfm;
   if (EndsWith(p, ".exr")) return ImageFormat::Exr;
   throw Error(path + ": unknown image format (use .png, .pfm or .exr)");
+}
+
+void CheckOutputPath(const std::string& path) {
+  FormatFromPath(path);
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p(path);
+  if (fs::is_directory(p, ec)) throw Error(path + ": is a directory, not an image file name");
+  fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir, ec)) throw Error(path + ": directory " + dir.string() + " does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw Error(path + ": cannot write to directory " + dir.string() + ": " + std::strerror(errno));
 }
 
 uint8_t LinearToSrgb8(float linear) {
@@ -87,9 +102,9 @@ void WriteImage(const Image& image, const std::string& path, float exposure) {
   tmp += path.substr(path.find_last_of('.'));
   try {
     switch (format) {
-      case ImageFormat::Png: WritePng(image, tmp, exposure); break;
-      case ImageFormat::Pfm: WritePfm(image, tmp); break;
-      case ImageFormat::Exr: WriteExr(image, tmp); break;
+      case ImageFormat::Png: WritePng(image, tmp, path, exposure); break;
+      case ImageFormat::Pfm: WritePfm(image, tmp, path); break;
+      case ImageFormat::Exr: WriteExr(image, tmp, path); break;
     }
   } catch (...) {
     std::remove(tmp.c_str());

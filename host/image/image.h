@@ -26,6 +26,10 @@ enum class ImageFormat { Png, Pfm, Exr };
 // Format from the file extension (case-insensitive); throws vkpt::Error for others.
 ImageFormat FormatFromPath(const std::string& path);
 
+// Checks, before a long render, that `path` has a known image extension and that its
+// directory exists and is writable; throws vkpt::Error naming the path otherwise.
+void CheckOutputPath(const std::string& path);
+
 // Writes atomically: to a temporary file beside `path`, renamed over it only when
 // complete, so an error never leaves a partial file that looks like a result.
 // `exposure` (stops) applies to PNG only; float formats stay linear and unscaled.

@@ -158,6 +158,8 @@ class Loader {
       Fail(name + ".componentType " + std::to_string(a.componentType) + " is not valid");
     if (ComponentCount(a.type) == 0) Fail(name + ".type is not valid");
     if (a.count == 0) Fail(name + ".count is 0");
+    // Guards the allocation of an accessor without a bufferView (all zeros, or sparse).
+    if (a.count > (size_t(1) << 28)) Fail(name + ".count " + std::to_string(a.count) + " is too large (limit 2^28)");
     size_t elem = ElementSize(a);
     if (a.bufferView >= 0) {
       CheckIndex(a.bufferView, m_.bufferViews, name + ".bufferView");
@@ -509,7 +511,21 @@ class Loader {
     scene_.cameras.push_back(cam);
   }
 
-  void InstantiateNode(int nodeIndex, const glm::dmat4& parent) {
+  // Instantiates a root and its subtree. Iterative: a hierarchy thousands of levels
+  // deep must not overflow the call stack.
+  void InstantiateTree(int root) {
+    std::vector<std::pair<int, glm::dmat4>> work{{root, glm::dmat4(1.0)}};
+    while (!work.empty()) {
+      auto [node, parent] = work.back();
+      work.pop_back();
+      glm::dmat4 world = InstantiateNode(node, parent);
+      const std::vector<int>& children = m_.nodes[node].children;
+      for (auto it = children.rbegin(); it != children.rend(); ++it) work.push_back({*it, world});
+    }
+  }
+
+  // Adds one node's camera and mesh; returns its world transform.
+  glm::dmat4 InstantiateNode(int nodeIndex, const glm::dmat4& parent) {
     const tinygltf::Node& n = m_.nodes[nodeIndex];
     std::string name = "nodes[" + std::to_string(nodeIndex) + "]";
     glm::dmat4 world = parent * LocalTransform(nodeIndex);
@@ -540,7 +556,7 @@ class Loader {
         }
       }
     }
-    for (int child : n.children) InstantiateNode(child, world);
+    return world;
   }
 
   // Child indices in range, no cycles, no node with two parents (the node graph must be
@@ -555,15 +571,21 @@ class Loader {
         parent[c] = int(i);
       }
     }
-    // With at most one parent each, a cycle is a parent chain that never reaches a root.
-    for (size_t i = 0; i < m_.nodes.size(); ++i) {
-      size_t steps = 0;
-      for (int p = parent[i]; p != -1; p = parent[p])
-        if (++steps > m_.nodes.size()) Fail("nodes[" + std::to_string(i) + "] is part of a cycle in the node hierarchy");
-    }
     roots_.clear();
     for (size_t i = 0; i < m_.nodes.size(); ++i)
       if (parent[i] == -1) roots_.push_back(int(i));
+    // With at most one parent each, the nodes reachable from the roots form a forest; a
+    // node not reached lies on a cycle (its parent chain never ends). Linear time.
+    std::vector<char> reached(m_.nodes.size(), 0);
+    std::vector<int> work = roots_;
+    while (!work.empty()) {
+      int n = work.back();
+      work.pop_back();
+      reached[n] = 1;
+      for (int c : m_.nodes[n].children) work.push_back(c);
+    }
+    for (size_t i = 0; i < m_.nodes.size(); ++i)
+      if (!reached[i]) Fail("nodes[" + std::to_string(i) + "] is part of a cycle in the node hierarchy");
     parent_ = std::move(parent);
   }
 
@@ -584,7 +606,7 @@ class Loader {
       roots = roots_;
       if (!roots.empty()) scene_.warnings.push_back("the file defines no scene; rendering all root nodes");
     }
-    for (int r : roots) InstantiateNode(r, glm::dmat4(1.0));
+    for (int r : roots) InstantiateTree(r);
   }
 
   void NoteIgnoredFeatures() {

@@ -57,8 +57,15 @@ void Walk(const std::string& path, const json& j, const std::string& where, bool
 
 void CheckGltfSchema(const std::string& path, std::string_view text) {
   json doc;
+  // glTF needs a handful of nesting levels (extras may hold more); refusing absurd depth
+  // keeps both the parser and the walk below from exhausting the stack.
+  constexpr int kMaxDepth = 256;
+  auto limitDepth = [&](int depth, json::parse_event_t, json&) {
+    if (depth > kMaxDepth) throw Error(path + ": JSON is nested deeper than " + std::to_string(kMaxDepth) + " levels");
+    return true;
+  };
   try {
-    doc = json::parse(text.begin(), text.end());
+    doc = json::parse(text.begin(), text.end(), limitDepth);
   } catch (const json::exception& e) {
     throw Error(path + ": invalid JSON: " + e.what());
   }
