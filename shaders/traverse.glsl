@@ -27,6 +27,22 @@ void CountLoop(uint laneIterations) {
   if (subgroupElect()) gLoopIterations += groupIterations;
 }
 
+// One step of the walk at node i: a missed box (or one beyond tMax) jumps to its skip
+// link, an inner node descends to its first child, a leaf queues its triangles [k, end)
+// and moves on to its skip link.
+void VisitNode(vec3 origin, vec3 invDir, float tMax, inout uint i, inout uint k, inout uint end) {
+  BvhNode node = nodes[i];
+  if (IntersectBox(node.lo, node.hi, origin, invDir, tMax) < 0.0f) {
+    i = node.skip;
+  } else if (node.leaf == 0u) {
+    i = i + 1u;
+  } else {
+    k = node.leaf >> 4u;
+    end = k + (node.leaf & 15u);
+    i = node.skip;
+  }
+}
+
 HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
   HitRecord hit;
   hit.t = -1.0f;
@@ -53,16 +69,7 @@ HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
       ++k;
       continue;
     }
-    BvhNode node = nodes[i];
-    if (IntersectBox(node.lo, node.hi, origin, invDir, tMax) < 0.0f) {
-      i = node.skip;
-    } else if (node.leaf == 0u) {
-      i = i + 1u;
-    } else {
-      k = node.leaf >> 4u;
-      end = k + (node.leaf & 15u);
-      i = node.skip;
-    }
+    VisitNode(origin, invDir, tMax, i, k, end);
   }
   CountLoop(steps);
   return hit;
@@ -87,16 +94,7 @@ bool TraceOccluded(vec3 origin, vec3 dir, float tMax) {
       ++k;
       continue;
     }
-    BvhNode node = nodes[i];
-    if (IntersectBox(node.lo, node.hi, origin, invDir, tMax) < 0.0f) {
-      i = node.skip;
-    } else if (node.leaf == 0u) {
-      i = i + 1u;
-    } else {
-      k = node.leaf >> 4u;
-      end = k + (node.leaf & 15u);
-      i = node.skip;
-    }
+    VisitNode(origin, invDir, tMax, i, k, end);
   }
   CountLoop(steps);
   return occluded;
