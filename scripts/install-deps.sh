@@ -11,7 +11,8 @@ packages=(
   libglm-dev                            # vector math shared by C++ and GLSL headers
   libtinygltf-dev nlohmann-json3-dev    # glTF loading and schema checks
   libstb-dev libtinyexr-dev             # PNG and EXR writers
-  libgtest-dev libbenchmark-dev         # tests and benchmarks
+  libgtest-dev                          # tests
+  libembree-dev                         # vkpt-bench compares against Embree
 )
 
 missing=()

