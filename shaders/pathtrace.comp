@@ -38,6 +38,8 @@ layout(push_constant) uniform Push { uint sampleInBatch; };
 const uint kLoopBudget = 65535u - 256u;
 
 void main() {
+  gNodeCount = params.nodeCount;
+  gNodeCopies = params.nodeCopies;
   uvec2 pixel = gl_GlobalInvocationID.xy;
   bool inside = pixel.x < params.width && pixel.y < params.height;
   PathSample ps;

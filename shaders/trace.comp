@@ -14,10 +14,13 @@ layout(std430, binding = kBindingTriangles) readonly buffer Triangles { Triangle
 layout(std430, binding = kBindingNodes) readonly buffer Nodes { BvhNode nodes[]; };
 layout(std430, binding = kBindingRays) readonly buffer Rays { RayQuery rays[]; };
 layout(std430, binding = kBindingHits) writeonly buffer Hits { HitRecord hits[]; };
+layout(push_constant) uniform Push { uint nodeCount; uint nodeCopies; };
 
 #include "traverse.glsl"
 
 void main() {
+  gNodeCount = nodeCount;
+  gNodeCopies = nodeCopies;
   uint i = gl_GlobalInvocationID.x;
   // No early return: every lane takes part in the subgroup operations of the traversal.
   bool inside = i < uint(rays.length());

@@ -16,6 +16,18 @@
 #include "shared/layout.h"
 #include "shared/intersect.h"
 
+// Set by the including shader's main(): nodes per copy of the tree, and the number of
+// copies (1, or 8 ordered near-first for each octant of ray directions).
+uint gNodeCount = 0u;
+uint gNodeCopies = 1u;
+
+// The root of the tree copy ordered for this ray direction's octant.
+uint RootFor(vec3 dir) {
+  if (gNodeCopies == 1u) return 0u;
+  uint octant = (dir.x < 0.0f ? 1u : 0u) | (dir.y < 0.0f ? 2u : 0u) | (dir.z < 0.0f ? 4u : 0u);
+  return octant * gNodeCount;
+}
+
 // Loop iterations this SIMD group has run in traversal loops, held by one lane per
 // loop execution (the elected one), so a subgroupAdd over the group gives the total.
 uint gLoopIterations = 0u;
@@ -50,7 +62,7 @@ HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
   hit.b2 = 0.0f;
   hit.triangle = kInvalidIndex;
   vec3 invDir = SafeInverse(dir);
-  uint i = 0u;      // next node
+  uint i = RootFor(dir);  // next node
   uint k = 0u;      // next triangle of the current leaf
   uint end = 0u;    // one past the current leaf's last triangle
   uint steps = 0u;
@@ -78,7 +90,7 @@ HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
 // Any hit with t ∈ (0, tMax): the walk stops at the first one.
 bool TraceOccluded(vec3 origin, vec3 dir, float tMax) {
   vec3 invDir = SafeInverse(dir);
-  uint i = 0u;
+  uint i = RootFor(dir);
   uint k = 0u;
   uint end = 0u;
   uint steps = 0u;

@@ -33,40 +33,69 @@ Bounds3f TriBounds(const shader::Triangle& t) {
 
 // Checks every structural invariant of the flattened layout; returns the subtree end.
 uint32_t CheckSubtree(const RenderScene& rs, uint32_t i, uint32_t skip, uint32_t maxLeaf, std::vector<int>& seen,
-                      uint32_t& nextPrim) {
+                      uint32_t& leafTriangles) {
   const shader::BvhNode& n = rs.nodes[i];
   EXPECT_EQ(n.skip, skip) << "node " << i;
   Bounds3f box{n.lo, n.hi};
   if (IsLeaf(n)) {
     EXPECT_GE(LeafCount(n), 1u);
     EXPECT_LE(LeafCount(n), maxLeaf);
-    EXPECT_EQ(LeafFirst(n), nextPrim) << "leaves must cover triangles in depth-first order";
     for (uint32_t k = LeafFirst(n); k < LeafFirst(n) + LeafCount(n); ++k) {
       EXPECT_TRUE(box.Contains(TriBounds(rs.triangles[k]))) << "leaf " << i << " triangle " << k;
       ++seen[rs.triangles[k].sourceIndex];
     }
-    nextPrim = LeafFirst(n) + LeafCount(n);
+    leafTriangles += LeafCount(n);
     return i + 1;
   }
   uint32_t a = FirstChild(i);
   uint32_t b = SecondChild(rs.nodes, i);
   EXPECT_TRUE(box.Contains(Bounds3f{rs.nodes[a].lo, rs.nodes[a].hi})) << "node " << i;
   EXPECT_TRUE(box.Contains(Bounds3f{rs.nodes[b].lo, rs.nodes[b].hi})) << "node " << i;
-  uint32_t endA = CheckSubtree(rs, a, b, maxLeaf, seen, nextPrim);
+  uint32_t endA = CheckSubtree(rs, a, b, maxLeaf, seen, leafTriangles);
   EXPECT_EQ(endA, b);
-  return CheckSubtree(rs, b, skip, maxLeaf, seen, nextPrim);
+  return CheckSubtree(rs, b, skip, maxLeaf, seen, leafTriangles);
 }
 
+// Every copy of the tree (one per ray octant) must be a complete, valid tree of its own.
 void CheckInvariants(const RenderScene& rs, const std::vector<SceneTriangle>& input, uint32_t maxLeaf) {
   const uint32_t triangleCount = uint32_t(input.size());
-  std::vector<int> seen(triangleCount, 0);
-  uint32_t nextPrim = 0;
-  uint32_t end = CheckSubtree(rs, 0, shader::kInvalidIndex, maxLeaf, seen, nextPrim);
-  EXPECT_EQ(end, rs.nodes.size()) << "every node is reachable from the root";
-  EXPECT_EQ(nextPrim, rs.triangles.size());
+  const uint32_t perCopy = rs.bvhStats.nodes;
+  ASSERT_TRUE(rs.nodeCopies == 1 || rs.nodeCopies == 8);
+  ASSERT_EQ(rs.nodes.size(), size_t(perCopy) * rs.nodeCopies);
   EXPECT_EQ(rs.triangles.size() + rs.degenerateTriangles, triangleCount);
-  for (uint32_t i = 0; i < triangleCount; ++i)
-    ASSERT_EQ(seen[i], IsDegenerate(input[i]) ? 0 : 1) << "triangle " << i << " must appear once unless degenerate";
+  for (uint32_t copy = 0; copy < rs.nodeCopies; ++copy) {
+    SCOPED_TRACE("copy " + std::to_string(copy));
+    std::vector<int> seen(triangleCount, 0);
+    uint32_t leafTriangles = 0;
+    uint32_t end = CheckSubtree(rs, copy * perCopy, shader::kInvalidIndex, maxLeaf, seen, leafTriangles);
+    EXPECT_EQ(end, (copy + 1) * perCopy) << "every node is reachable from the root";
+    EXPECT_EQ(leafTriangles, rs.triangles.size());
+    for (uint32_t i = 0; i < triangleCount; ++i)
+      ASSERT_EQ(seen[i], IsDegenerate(input[i]) ? 0 : 1) << "triangle " << i << " must appear once unless degenerate";
+  }
+}
+
+// In copy k, an inner node's first child is the nearer one for rays in octant k, along
+// the axis that separates the children's centres most.
+TEST(Bvh, DirectionCopiesAreNearFirst) {
+  RenderScene rs = Prepare(test::RandomSoup(3000, 17), 4);
+  ASSERT_EQ(rs.nodeCopies, 8u);
+  const uint32_t perCopy = rs.bvhStats.nodes;
+  uint32_t checked = 0;
+  for (uint32_t copy = 0; copy < 8; ++copy)
+    for (uint32_t i = copy * perCopy; i < (copy + 1) * perCopy; ++i) {
+      if (IsLeaf(rs.nodes[i])) continue;
+      const shader::BvhNode& a = rs.nodes[FirstChild(i)];
+      const shader::BvhNode& b = rs.nodes[SecondChild(rs.nodes, i)];
+      glm::vec3 d = (b.lo + b.hi) * 0.5f - (a.lo + a.hi) * 0.5f;
+      glm::vec3 ad = glm::abs(d);
+      int axis = ad.x >= ad.y && ad.x >= ad.z ? 0 : (ad.y >= ad.z ? 1 : 2);
+      bool negative = (copy >> axis) & 1u;
+      // Positive rays: the second child lies further along +axis (and vice versa).
+      if (d[axis] != 0.0f) ASSERT_EQ(d[axis] > 0.0f, !negative) << "node " << i;
+      ++checked;
+    }
+  EXPECT_GT(checked, 8u * 100u);
 }
 
 TEST(Bvh, InvariantsOnRandomSoups) {

@@ -17,10 +17,16 @@ struct BvhBuildOptions {
   uint32_t bins = 16;        // SAH candidate planes per axis = bins - 1
   float traversalCost = 1.0f;
   float intersectionCost = 1.0f;
+  // Eight copies of the flattened tree, one per ray-direction octant, each ordered
+  // near-child-first for its octant, so the stackless skip-link walk visits near
+  // subtrees first (fewer boxes behind an early hit). Only while all eight fit in
+  // maxCopiesBytes (Vulkan guarantees 128 MiB per storage buffer); else one copy.
+  bool directionCopies = true;
+  uint64_t maxCopiesBytes = uint64_t(128) << 20;
 };
 
 struct BvhStats {
-  uint32_t nodes = 0;
+  uint32_t nodes = 0;  // per copy
   uint32_t leaves = 0;
   uint32_t depth = 0;         // edges on the longest root-to-leaf path
   uint32_t maxLeafPrims = 0;
@@ -29,8 +35,11 @@ struct BvhStats {
 };
 
 struct Bvh {
-  std::vector<shader::BvhNode> nodes;  // depth-first; nodes[0] is the root
-  std::vector<uint32_t> primOrder;     // leaf order → index of the input primitive
+  // `copies` (1 or 8) flattened copies of the tree, stats.nodes nodes each; copy k starts
+  // at k * stats.nodes with its root. Depth first with absolute skip links.
+  std::vector<shader::BvhNode> nodes;
+  uint32_t copies = 1;
+  std::vector<uint32_t> primOrder;  // leaf ranges index this: position → input primitive
   BvhStats stats;
 };
 

@@ -161,13 +161,39 @@ class Builder {
       if (!nodes_[i].leaf) size[i] = 1 + size[nodes_[i].child[0]] + size[nodes_[i].child[1]];
 
     Bvh bvh;
-    bvh.nodes.resize(nodes_.size());
+    // Partitioning kept every subtree's primitives contiguous in prims_, so a leaf's
+    // range [first, first + count) is valid in every child order.
     bvh.primOrder.reserve(prims_.size());
+    for (const BuildPrim& p : prims_) bvh.primOrder.push_back(p.index);
+    const uint32_t count = uint32_t(nodes_.size());
+    bvh.copies = opt_.directionCopies && uint64_t(count) * sizeof(shader::BvhNode) * 8 <= opt_.maxCopiesBytes ? 8 : 1;
+    bvh.nodes.resize(size_t(count) * bvh.copies);
+    for (uint32_t octant = 0; octant < bvh.copies; ++octant) FlattenCopy(size, octant, bvh);
     BvhStats& st = bvh.stats;
     const float rootArea = nodes_[0].box.SurfaceArea();
-    // (build node, flat index, skip target)
+    for (const BuildNode& n : nodes_) {
+      // Relative area; a flat scene (root area 0) counts every node as 1.
+      double rel = rootArea > 0.0f ? double(n.box.SurfaceArea()) / rootArea : 1.0;
+      st.depth = std::max(st.depth, n.depth);
+      if (n.leaf) {
+        ++st.leaves;
+        st.maxLeafPrims = std::max(st.maxLeafPrims, n.count);
+        st.sahCost += rel * opt_.intersectionCost * n.count;
+      } else {
+        st.sahCost += rel * opt_.traversalCost;
+      }
+    }
+    st.nodes = count;
+    return bvh;
+  }
+
+  // Writes copy `octant` of the tree at nodes[octant * count ...], depth first, each
+  // inner node's children ordered near-first for rays whose direction signs are the
+  // octant's (bit 0: x < 0, bit 1: y < 0, bit 2: z < 0). Skip links are absolute.
+  void FlattenCopy(const std::vector<uint32_t>& size, uint32_t octant, Bvh& bvh) const {
+    const uint32_t base = octant * uint32_t(nodes_.size());
     struct Item { uint32_t node, flat, skip; };
-    std::vector<Item> stack{{0, 0, shader::kInvalidIndex}};
+    std::vector<Item> stack{{0, base, shader::kInvalidIndex}};
     while (!stack.empty()) {
       Item it = stack.back();
       stack.pop_back();
@@ -176,27 +202,22 @@ class Builder {
       out.lo = n.box.lo;
       out.hi = n.box.hi;
       out.skip = it.skip;
-      // Relative area; a flat scene (root area 0) counts every node as 1.
-      double rel = rootArea > 0.0f ? double(n.box.SurfaceArea()) / rootArea : 1.0;
-      st.depth = std::max(st.depth, n.depth);
       if (n.leaf) {
-        out.leaf = (uint32_t(bvh.primOrder.size()) << 4) | n.count;
-        for (uint32_t i = n.first; i < n.first + n.count; ++i) bvh.primOrder.push_back(prims_[i].index);
-        ++st.leaves;
-        st.maxLeafPrims = std::max(st.maxLeafPrims, n.count);
-        st.sahCost += rel * opt_.intersectionCost * n.count;
-      } else {
-        out.leaf = 0;
-        st.sahCost += rel * opt_.traversalCost;
-        uint32_t second = it.flat + 1 + size[n.child[0]];
-        // Push the second child first so the first child's subtree is emitted first and
-        // primitives land in depth-first leaf order.
-        stack.push_back({n.child[1], second, it.skip});
-        stack.push_back({n.child[0], it.flat + 1, second});
+        out.leaf = (n.first << 4) | n.count;
+        continue;
       }
+      out.leaf = 0;
+      // Near child first along the axis where the children's centres differ most.
+      uint32_t first = n.child[0], second = n.child[1];
+      glm::vec3 d = nodes_[second].box.Center() - nodes_[first].box.Center();
+      glm::vec3 ad = glm::abs(d);
+      int axis = ad.x >= ad.y && ad.x >= ad.z ? 0 : (ad.y >= ad.z ? 1 : 2);
+      bool negative = (octant >> axis) & 1u;
+      if ((d[axis] < 0.0f) != negative) std::swap(first, second);
+      uint32_t secondFlat = it.flat + 1 + size[first];
+      stack.push_back({second, secondFlat, it.skip});
+      stack.push_back({first, it.flat + 1, secondFlat});
     }
-    st.nodes = uint32_t(bvh.nodes.size());
-    return bvh;
   }
 
   BvhBuildOptions opt_;

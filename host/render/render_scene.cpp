@@ -40,6 +40,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   Bvh bvh = BuildBvh(bounds, options);
 
   rs.nodes = std::move(bvh.nodes);
+  rs.nodeCopies = bvh.copies;
   rs.bvhStats = bvh.stats;
   rs.materials = scene.materials;
   rs.triangles.reserve(bvh.primOrder.size());
@@ -89,7 +90,8 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
 shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height) {
   shader::FrameParams p{};
   p.emitterCount = uint32_t(scene.emitters.size());
-  p.nodeCount = uint32_t(scene.nodes.size());
+  p.nodeCount = scene.bvhStats.nodes;
+  p.nodeCopies = scene.nodeCopies;
   p.triangleCount = uint32_t(scene.triangles.size());
   p.origin = camera.position;
   p.forward = camera.forward;

@@ -13,7 +13,8 @@ namespace vkpt {
 
 struct RenderScene {
   std::vector<shader::Triangle> triangles;  // BVH leaf order
-  std::vector<shader::BvhNode> nodes;
+  std::vector<shader::BvhNode> nodes;  // nodeCopies copies of bvhStats.nodes nodes (see Bvh)
+  uint32_t nodeCopies = 1;
   std::vector<shader::Material> materials;
   std::vector<shader::Emitter> emitters;  // empty: the scene is dark
   BvhStats bvhStats;

@@ -30,12 +30,13 @@ static_assert(sizeof(RayQuery) == 32);
 static_assert(offsetof(RayQuery, tMax) == 12 && offsetof(RayQuery, dir) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, triangle) == 12);
 
-static_assert(sizeof(FrameParams) == 112);
+static_assert(sizeof(FrameParams) == 128);
 static_assert(offsetof(FrameParams, origin) == 0 && offsetof(FrameParams, tanHalfFovY) == 12);
 static_assert(offsetof(FrameParams, right) == 16 && offsetof(FrameParams, aspect) == 28);
 static_assert(offsetof(FrameParams, up) == 32 && offsetof(FrameParams, width) == 44);
 static_assert(offsetof(FrameParams, forward) == 48 && offsetof(FrameParams, height) == 60);
 static_assert(offsetof(FrameParams, seed) == 64 && offsetof(FrameParams, triangleCount) == 92);
 static_assert(offsetof(FrameParams, background) == 96 && offsetof(FrameParams, orthographic) == 108);
+static_assert(offsetof(FrameParams, nodeCopies) == 112);
 
 }  // namespace vkpt::shader

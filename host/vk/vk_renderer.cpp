@@ -44,7 +44,9 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       triangles_(Upload(ctx, scene.triangles, "triangles")),
       nodes_(Upload(ctx, scene.nodes, "BVH nodes")),
       materials_(Upload(ctx, scene.materials, "materials")),
-      emitters_(Upload(ctx, scene.emitters, "emitters")) {}
+      emitters_(Upload(ctx, scene.emitters, "emitters")),
+      nodeCount_(scene.bvhStats.nodes),
+      nodeCopies_(scene.nodeCopies) {}
 
 GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {
   const uint64_t pixels = uint64_t(frame.width) * frame.height;
@@ -119,13 +121,14 @@ std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQ
                             {shader::kBindingNodes, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nodes_.Handle()},
                             {shader::kBindingRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, rayBuffer.Handle()},
                             {shader::kBindingHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, hits.Handle()}},
-                           "trace");
+                           "trace", 2 * sizeof(uint32_t));
+  const uint32_t push[2] = {nodeCount_, nodeCopies_};
   Buffer hitsHost = Readback(ctx_, hits.Size(), "hits readback");
   const uint32_t groups = uint32_t((rays.size() + 63) / 64);
   auto t0 = std::chrono::steady_clock::now();
   ctx_.Submit([&](VkCommandBuffer cb) {
     ComputeBarrier(cb);
-    pipeline.Dispatch(cb, groups, 1, 1);
+    pipeline.Dispatch(cb, groups, 1, 1, push);
   });
   if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ctx_.Submit([&](VkCommandBuffer cb) { CopyToHost(cb, {{&hits, &hitsHost}}); });

@@ -50,6 +50,7 @@ class GpuRenderer {
   const uint32_t* spirv_;
   size_t spirvBytes_;
   Buffer triangles_, nodes_, materials_, emitters_;
+  uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 
 }  // namespace vkpt::vk

@@ -110,10 +110,14 @@ struct FrameParams {
   uint maxDepth;
   uint rrDepth;
   uint emitterCount;
-  uint nodeCount;
+  uint nodeCount;  // per copy
   uint triangleCount;
   vec3 background;    // radiance arriving from every direction no triangle blocks
   uint orthographic;  // 1: parallel rays; tanHalfFovY then holds the half view height
+  uint nodeCopies;    // 1, or 8 direction-ordered copies of the BVH (see bvh.h)
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 VKPT_END_NAMESPACE
