@@ -17,17 +17,23 @@ Hit Traverse(const std::vector<shader::BvhNode>& nodes, const std::vector<shader
   using shader::IntersectTriangle;
   Hit hit;
   const glm::vec3 inv = shader::SafeInverse(dir);
-  uint32_t inlineStack[kInlineStack];
-  std::vector<uint32_t> overflow;
-  int top = 0;
-  auto push = [&](uint32_t n) {
-    if (top < kInlineStack) inlineStack[top++] = n;
-    else overflow.push_back(n);
+  // Deferred far children with their entry distances: a popped entry beyond the closest
+  // hit found since is dropped without testing its box again.
+  struct Entry {
+    uint32_t node;
+    float tEnter;
   };
-  auto pop = [&](uint32_t& n) {
-    if (!overflow.empty()) { n = overflow.back(); overflow.pop_back(); return true; }
+  Entry inlineStack[kInlineStack];
+  std::vector<Entry> overflow;
+  int top = 0;
+  auto push = [&](Entry e) {
+    if (top < kInlineStack) inlineStack[top++] = e;
+    else overflow.push_back(e);
+  };
+  auto pop = [&](Entry& e) {
+    if (!overflow.empty()) { e = overflow.back(); overflow.pop_back(); return true; }
     if (top == 0) return false;
-    n = inlineStack[--top];
+    e = inlineStack[--top];
     return true;
   };
 
@@ -53,20 +59,26 @@ Hit Traverse(const std::vector<shader::BvhNode>& nodes, const std::vector<shader
       float ta = IntersectBox(nodes[a].lo, nodes[a].hi, origin, inv, tMax);
       float tb = IntersectBox(nodes[b].lo, nodes[b].hi, origin, inv, tMax);
       if (ta >= 0.0f && tb >= 0.0f) {
-        if (tb < ta) std::swap(a, b);
-        push(b);  // farther child: revisited later, culled then against the closer hit
+        if (tb < ta) {
+          std::swap(a, b);
+          std::swap(ta, tb);
+        }
+        push({b, tb});  // farther child: revisited later unless a closer hit culls it
         n = a;
         continue;
       }
       if (ta >= 0.0f) { n = a; continue; }
       if (tb >= 0.0f) { n = b; continue; }
     }
-    // Pop until a node whose box is still in front of the closest hit.
+    // Pop until an entry still in front of the closest hit. The box test's exit slack
+    // (1 + 2γ₃) is applied to tMax so culling stays as conservative as the test itself.
+    Entry e;
     bool found = false;
-    while (pop(n)) {
-      if (IntersectBox(nodes[n].lo, nodes[n].hi, origin, inv, tMax) >= 0.0f) { found = true; break; }
+    while (pop(e)) {
+      if (e.tEnter <= tMax * 1.0000004f) { found = true; break; }
     }
     if (!found) break;
+    n = e.node;
   }
 done:
   if (counters) {
