@@ -320,7 +320,9 @@ int Run(const Options& o) {
   rep.threads = threads;
 
   Scene scene = o.procedural ? ProceduralScene(o.procedural) : LoadGltf(o.scene);
-  RenderScene rs = PrepareRenderScene(scene);
+  BvhBuildOptions bvhOptions;
+  bvhOptions.threads = threads;
+  RenderScene rs = PrepareRenderScene(scene, bvhOptions);
   const double tris = double(rs.triangles.size());
   rep.Set("tris", tris);
   rep.Set("build_ms", rs.bvhStats.buildMs);

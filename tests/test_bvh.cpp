@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <random>
 
 #include "bvh/bvh.h"
@@ -107,6 +108,33 @@ TEST(Bvh, InvariantsOnRandomSoups) {
       CheckInvariants(rs, soup, leaf);
       EXPECT_LE(rs.bvhStats.maxLeafPrims, leaf);
     }
+  }
+}
+
+TEST(Bvh, SameTreeForAnyBuildThreadCount) {
+  // 100k triangles: the top levels are binned on several threads and the rest is built
+  // as independent subtrees; the flattened result must not depend on the thread count.
+  std::vector<SceneTriangle> soup = test::RandomSoup(100000, 23);
+  std::vector<Bounds3f> bounds;
+  for (const SceneTriangle& t : soup) {
+    Bounds3f b;
+    b.Extend(t.v0);
+    b.Extend(t.v1);
+    b.Extend(t.v2);
+    bounds.push_back(b);
+  }
+  BvhBuildOptions o;
+  o.threads = 1;
+  Bvh one = BuildBvh(bounds, o);
+  for (unsigned threads : {2u, 3u, 8u}) {
+    o.threads = threads;
+    Bvh many = BuildBvh(bounds, o);
+    std::printf("%u threads: %.1f ms (1 thread: %.1f ms), %u nodes\n", threads, many.stats.buildMs, one.stats.buildMs,
+                many.stats.nodes);
+    ASSERT_EQ(many.nodes.size(), one.nodes.size());
+    EXPECT_EQ(0, std::memcmp(many.nodes.data(), one.nodes.data(), one.nodes.size() * sizeof(shader::BvhNode)));
+    EXPECT_EQ(many.primOrder, one.primOrder);
+    EXPECT_EQ(many.stats.sahCost, one.stats.sahCost);
   }
 }
 

@@ -144,6 +144,7 @@ int Run(const Options& o) {
   Scene scene = LoadGltf(o.scene);
   BvhBuildOptions bvhOptions;
   bvhOptions.maxLeafSize = o.leafSize;
+  bvhOptions.threads = o.threads;
   RenderScene rs = PrepareRenderScene(scene, bvhOptions);
 
   uint32_t camIndex = o.camera.value_or(0);

@@ -22,6 +22,7 @@ struct BvhBuildOptions {
   // subtrees first (fewer boxes behind an early hit). Only while all eight fit in
   // maxCopiesBytes (Vulkan guarantees 128 MiB per storage buffer); else one copy.
   bool directionCopies = true;
+  unsigned threads = 0;  // build threads; 0 = all cores. The tree is the same for any count.
   uint64_t maxCopiesBytes = uint64_t(128) << 20;
 };
 

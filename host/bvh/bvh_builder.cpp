@@ -6,6 +6,8 @@
 // cannot overflow the call stack.
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <thread>
 #include <chrono>
 #include <limits>
 
@@ -34,6 +36,9 @@ struct Bin {
   uint32_t count = 0;
 };
 
+// Nodes with at least this many primitives are binned on several threads.
+constexpr uint32_t kParallelNode = 1u << 15;
+
 struct Split {
   int axis = -1;
   uint32_t bin = 0;  // primitives with bin index < `bin` go left
@@ -49,31 +54,96 @@ class Builder {
   }
 
   Bvh Build() {
+    const unsigned threads = opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency());
     nodes_.reserve(2 * prims_.size() / std::max(1u, opt_.maxLeafSize) + 1);
     nodes_.push_back({});
     nodes_[0].count = uint32_t(prims_.size());
-    std::vector<uint32_t> work{0};
+    // Phase 1, top levels: one node at a time, its binning spread over all threads.
+    // Nodes below `small` primitives are deferred as independent subtrees.
+    const uint32_t small = threads > 1 ? std::max(4096u, uint32_t(prims_.size() / (8 * threads))) : 0u;
+    std::vector<uint32_t> work{0}, deferred;
     while (!work.empty()) {
       uint32_t n = work.back();
       work.pop_back();
-      Subdivide(n, work);
+      if (nodes_[n].count < small) deferred.push_back(n);
+      else Subdivide(nodes_, n, work, threads);
+    }
+    // Phase 2: the subtrees, one per thread at a time, each into its own node array;
+    // they touch disjoint ranges of prims_. The tree does not depend on the thread
+    // count (only the order of nodes_ does, which Flatten does not see).
+    std::vector<std::vector<BuildNode>> subtrees(deferred.size());
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+      for (size_t k; (k = next.fetch_add(1)) < deferred.size();) {
+        std::vector<BuildNode>& local = subtrees[k];
+        local.push_back(nodes_[deferred[k]]);
+        std::vector<uint32_t> localWork{0};
+        while (!localWork.empty()) {
+          uint32_t n = localWork.back();
+          localWork.pop_back();
+          Subdivide(local, n, localWork, 1);
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < std::min<size_t>(threads, deferred.size()); ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    // Stitch: local node j >= 1 goes to offset + j; local node 0 replaces its root.
+    for (size_t k = 0; k < deferred.size(); ++k) {
+      std::vector<BuildNode>& local = subtrees[k];
+      const uint32_t offset = uint32_t(nodes_.size()) - 1;
+      for (BuildNode& n : local)
+        if (!n.leaf) n.child[0] += offset, n.child[1] += offset;
+      nodes_[deferred[k]] = local[0];
+      nodes_.insert(nodes_.end(), local.begin() + 1, local.end());
     }
     return Flatten();
   }
 
  private:
-  void Subdivide(uint32_t ni, std::vector<uint32_t>& work) {
-    BuildNode node = nodes_[ni];
-    Bounds3f centroids;
-    for (uint32_t i = node.first; i < node.first + node.count; ++i) {
-      node.box.Extend(prims_[i].box);
-      centroids.Extend(prims_[i].centroid);
+  // Runs f(begin, end, chunk) over [first, first + count) split into `threads` chunks.
+  template <class F>
+  static void ForChunks(uint32_t first, uint32_t count, unsigned threads, F&& f) {
+    std::vector<std::thread> pool;
+    const uint32_t per = (count + threads - 1) / threads;
+    for (unsigned t = 1; t < threads; ++t) {
+      uint32_t b = first + std::min(count, t * per), e = first + std::min(count, (t + 1) * per);
+      pool.emplace_back([&f, b, e, t] { f(b, e, t); });
     }
-    nodes_[ni].box = node.box;
-    auto makeLeaf = [&] { nodes_[ni].leaf = true; };
+    f(first, first + std::min(count, per), 0u);
+    for (auto& th : pool) th.join();
+  }
+
+  // Splits node ni of `nodes` (or makes it a leaf), appending its children to `nodes`
+  // and `work`. Large nodes are binned on `threads` threads.
+  void Subdivide(std::vector<BuildNode>& nodes, uint32_t ni, std::vector<uint32_t>& work, unsigned threads) {
+    BuildNode node = nodes[ni];
+    if (node.count < kParallelNode) threads = 1;
+    Bounds3f centroids;
+    if (threads == 1) {
+      for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+        node.box.Extend(prims_[i].box);
+        centroids.Extend(prims_[i].centroid);
+      }
+    } else {
+      std::vector<Bounds3f> boxes(threads), cents(threads);
+      ForChunks(node.first, node.count, threads, [&](uint32_t b, uint32_t e, unsigned t) {
+        for (uint32_t i = b; i < e; ++i) {
+          boxes[t].Extend(prims_[i].box);
+          cents[t].Extend(prims_[i].centroid);
+        }
+      });
+      for (unsigned t = 0; t < threads; ++t) {
+        node.box.Extend(boxes[t]);
+        centroids.Extend(cents[t]);
+      }
+    }
+    nodes[ni].box = node.box;
+    auto makeLeaf = [&] { nodes[ni].leaf = true; };
     if (node.count == 1) return makeLeaf();
 
-    Split best = FindSplit(node, centroids);
+    Split best = FindSplit(node, centroids, threads);
     const float leafCost = opt_.intersectionCost * float(node.count);
     if (node.count <= opt_.maxLeafSize && !(best.cost < leafCost)) return makeLeaf();
 
@@ -96,17 +166,17 @@ class Builder {
       std::nth_element(prims_.begin() + node.first, prims_.begin() + mid, prims_.begin() + node.first + node.count,
                        [&](const BuildPrim& p, const BuildPrim& q) { return p.centroid[a] < q.centroid[a]; });
     }
-    uint32_t left = uint32_t(nodes_.size());
+    uint32_t left = uint32_t(nodes.size());
     BuildNode l, r;
     l.first = node.first;
     l.count = mid - node.first;
     r.first = mid;
     r.count = node.first + node.count - mid;
     l.depth = r.depth = node.depth + 1;
-    nodes_.push_back(l);
-    nodes_.push_back(r);
-    nodes_[ni].child[0] = left;
-    nodes_[ni].child[1] = left + 1;
+    nodes.push_back(l);
+    nodes.push_back(r);
+    nodes[ni].child[0] = left;
+    nodes[ni].child[1] = left + 1;
     work.push_back(left + 1);
     work.push_back(left);
   }
@@ -115,20 +185,37 @@ class Builder {
     return std::min(opt_.bins - 1, uint32_t(std::max(0.0f, (c - lo) * scale)));
   }
 
-  Split FindSplit(const BuildNode& node, const Bounds3f& centroids) const {
+  Split FindSplit(const BuildNode& node, const Bounds3f& centroids, unsigned threads) const {
     Split best;
     const float parentArea = node.box.SurfaceArea();
-    std::vector<Bin> bins(opt_.bins);
-    std::vector<float> rightCost(opt_.bins);
+    std::array<Bin, 256> bins;
+    std::array<float, 256> rightCost;
+    std::vector<std::array<Bin, 256>> partial(threads > 1 ? threads : 0);
     for (int a = 0; a < 3; ++a) {
       const float extent = centroids.hi[a] - centroids.lo[a];
       if (!(extent > 0.0f)) continue;
-      std::fill(bins.begin(), bins.end(), Bin{});
       const float scale = float(opt_.bins) / extent;
-      for (uint32_t i = node.first; i < node.first + node.count; ++i) {
-        Bin& b = bins[BinOf(prims_[i].centroid[a], centroids.lo[a], scale)];
-        b.box.Extend(prims_[i].box);
-        ++b.count;
+      // Bin per chunk, then merge: min/max and counts are exact, so the result does not
+      // depend on the number of threads.
+      auto binRange = [&](uint32_t b, uint32_t e, std::array<Bin, 256>& out) {
+        std::fill(out.begin(), out.begin() + opt_.bins, Bin{});
+        for (uint32_t i = b; i < e; ++i) {
+          Bin& bin = out[BinOf(prims_[i].centroid[a], centroids.lo[a], scale)];
+          bin.box.Extend(prims_[i].box);
+          ++bin.count;
+        }
+      };
+      if (threads == 1) {
+        binRange(node.first, node.first + node.count, bins);
+      } else {
+        ForChunks(node.first, node.count, threads,
+                  [&](uint32_t b, uint32_t e, unsigned t) { binRange(b, e, partial[t]); });
+        std::fill(bins.begin(), bins.begin() + opt_.bins, Bin{});
+        for (const std::array<Bin, 256>& mine : partial)
+          for (uint32_t b = 0; b < opt_.bins; ++b) {
+            bins[b].box.Extend(mine[b].box);
+            bins[b].count += mine[b].count;
+          }
       }
       // Sweep from the right to get the cost of every right side, then from the left.
       Bounds3f acc;
@@ -171,7 +258,13 @@ class Builder {
     for (uint32_t octant = 0; octant < bvh.copies; ++octant) FlattenCopy(size, octant, bvh);
     BvhStats& st = bvh.stats;
     const float rootArea = nodes_[0].box.SurfaceArea();
-    for (const BuildNode& n : nodes_) {
+    // Summed in depth-first order from the root (not storage order, which depends on the
+    // thread count), so the reported cost is the same to the last bit for any count.
+    std::vector<uint32_t> order{0};
+    while (!order.empty()) {
+      const BuildNode& n = nodes_[order.back()];
+      order.pop_back();
+      if (!n.leaf) order.insert(order.end(), {n.child[1], n.child[0]});
       // Relative area; a flat scene (root area 0) counts every node as 1.
       double rel = rootArea > 0.0f ? double(n.box.SurfaceArea()) / rootArea : 1.0;
       st.depth = std::max(st.depth, n.depth);
