@@ -102,6 +102,12 @@ class Builder {
   }
 
  private:
+  static std::vector<float>& RightCostScratch(uint32_t bins) {
+    static thread_local std::vector<float> v;
+    v.resize(bins);
+    return v;
+  }
+
   // Runs f(begin, end, chunk) over [first, first + count) split into `threads` chunks.
   template <class F>
   static void ForChunks(uint32_t first, uint32_t count, unsigned threads, F&& f) {
@@ -188,35 +194,49 @@ class Builder {
   Split FindSplit(const BuildNode& node, const Bounds3f& centroids, unsigned threads) const {
     Split best;
     const float parentArea = node.box.SurfaceArea();
-    std::array<Bin, 256> bins;
-    std::array<float, 256> rightCost;
-    std::vector<std::array<Bin, 256>> partial(threads > 1 ? threads : 0);
+    const uint32_t nb = opt_.bins;
+    float scale[3];
+    bool usable[3];
     for (int a = 0; a < 3; ++a) {
       const float extent = centroids.hi[a] - centroids.lo[a];
-      if (!(extent > 0.0f)) continue;
-      const float scale = float(opt_.bins) / extent;
-      // Bin per chunk, then merge: min/max and counts are exact, so the result does not
-      // depend on the number of threads.
-      auto binRange = [&](uint32_t b, uint32_t e, std::array<Bin, 256>& out) {
-        std::fill(out.begin(), out.begin() + opt_.bins, Bin{});
-        for (uint32_t i = b; i < e; ++i) {
-          Bin& bin = out[BinOf(prims_[i].centroid[a], centroids.lo[a], scale)];
-          bin.box.Extend(prims_[i].box);
+      usable[a] = extent > 0.0f;
+      scale[a] = usable[a] ? float(nb) / extent : 0.0f;
+    }
+    // One pass over the primitives bins all three axes (bins [a·nb, (a+1)·nb)). Each
+    // thread fills its own scratch bins, reused across calls (no allocation per node);
+    // merging min/max and counts is exact, so the result does not depend on `threads`.
+    auto binRange = [&](uint32_t b, uint32_t e, std::vector<Bin>& out) {
+      out.assign(3 * nb, Bin{});
+      for (uint32_t i = b; i < e; ++i) {
+        const BuildPrim& p = prims_[i];
+        for (int a = 0; a < 3; ++a) {
+          if (!usable[a]) continue;
+          Bin& bin = out[a * nb + BinOf(p.centroid[a], centroids.lo[a], scale[a])];
+          bin.box.Extend(p.box);
           ++bin.count;
         }
-      };
-      if (threads == 1) {
-        binRange(node.first, node.first + node.count, bins);
-      } else {
-        ForChunks(node.first, node.count, threads,
-                  [&](uint32_t b, uint32_t e, unsigned t) { binRange(b, e, partial[t]); });
-        std::fill(bins.begin(), bins.begin() + opt_.bins, Bin{});
-        for (const std::array<Bin, 256>& mine : partial)
-          for (uint32_t b = 0; b < opt_.bins; ++b) {
-            bins[b].box.Extend(mine[b].box);
-            bins[b].count += mine[b].count;
-          }
       }
+    };
+    static thread_local std::vector<Bin> scratch;
+    std::vector<Bin> merged;
+    const std::vector<Bin>* all = &scratch;
+    if (threads == 1) {
+      binRange(node.first, node.first + node.count, scratch);
+    } else {
+      std::vector<std::vector<Bin>> partial(threads);
+      ForChunks(node.first, node.count, threads, [&](uint32_t b, uint32_t e, unsigned t) { binRange(b, e, partial[t]); });
+      merged.assign(3 * nb, Bin{});
+      for (const std::vector<Bin>& mine : partial)
+        for (uint32_t k = 0; k < 3 * nb; ++k) {
+          merged[k].box.Extend(mine[k].box);
+          merged[k].count += mine[k].count;
+        }
+      all = &merged;
+    }
+    std::vector<float>& rightCost = RightCostScratch(nb);
+    for (int a = 0; a < 3; ++a) {
+      if (!usable[a]) continue;
+      const Bin* bins = all->data() + a * nb;
       // Sweep from the right to get the cost of every right side, then from the left.
       Bounds3f acc;
       uint32_t count = 0;
