@@ -462,14 +462,20 @@ TEST(Loader, NonIndexedTriangleList) {
 // ---------------------------------------------------------------------------------------
 // Accessor encodings
 
+// The ",sparse":{...}" member of an accessor: `count` substitutions, indices of
+// `componentType` in bufferView `indices`, values in bufferView `values`.
+std::string SparseJson(int count, int indices, int componentType, int values) {
+  return ",\"sparse\":{\"count\":" + std::to_string(count) + ",\"indices\":{\"bufferView\":" + std::to_string(indices) +
+         ",\"componentType\":" + std::to_string(componentType) + "},\"values\":{\"bufferView\":" +
+         std::to_string(values) + "}}";
+}
+
 TEST(Loader, SparseAccessorSubstitutesValues) {
   GltfBuilder b;
   int base = b.View(Bytes(kUnitTriangle));
   int sparseIdx = b.View(Bytes(std::vector<uint16_t>{2, 0}));  // uint16 index 2, padding
   int sparseVal = b.View(Bytes(std::vector<glm::vec3>{{0, 7, 0}}));
-  int pos = b.Accessor(base, kFloat, 3, "VEC3",
-                       ",\"sparse\":{\"count\":1,\"indices\":{\"bufferView\":" + std::to_string(sparseIdx) +
-                           ",\"componentType\":5123},\"values\":{\"bufferView\":" + std::to_string(sparseVal) + "}}");
+  int pos = b.Accessor(base, kFloat, 3, "VEC3", SparseJson(1, sparseIdx, 5123, sparseVal));
   b.Mesh(pos);
   b.Node(R"({"mesh":0})");
   Scene s = Load(b);
@@ -483,9 +489,7 @@ TEST(Loader, SparseAccessorWithoutBufferViewStartsFromZeros) {
   GltfBuilder b;
   int sparseIdx = b.View(Bytes(std::vector<uint32_t>{1, 2}));
   int sparseVal = b.View(Bytes(std::vector<glm::vec3>{{2, 0, 0}, {0, 3, 0}}));
-  int pos = b.Accessor(-1, kFloat, 3, "VEC3",
-                       ",\"sparse\":{\"count\":2,\"indices\":{\"bufferView\":" + std::to_string(sparseIdx) +
-                           ",\"componentType\":5125},\"values\":{\"bufferView\":" + std::to_string(sparseVal) + "}}");
+  int pos = b.Accessor(-1, kFloat, 3, "VEC3", SparseJson(2, sparseIdx, 5125, sparseVal));
   b.Mesh(pos);
   b.Node(R"({"mesh":0})");
   Scene s = Load(b);
