@@ -35,6 +35,9 @@ every hit ("diffuse"). Mrays/s; path tracing in Msamples/s at 256×256 × 4 spp,
 `LP_NUM_THREADS` for lavapipe). "mismatches": rays whose hit distance differs between
 tracers by more than 1e-4 relative (grazing hits on shared edges).
 
+Timings on this shared 2-core machine vary by up to 2× from run to run; compare the
+tracers within one row (one run), not rows measured at different times.
+
 HEAD
   echo "Measured $(date -u +%Y-%m-%d) on: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')."
   echo
