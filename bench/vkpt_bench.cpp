@@ -30,6 +30,7 @@
 #include "shared/intersect.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
+#include "image/image.h"
 #include "util/error.h"
 #include "vk/vk_renderer.h"
 
@@ -50,12 +51,17 @@ struct Options {
   unsigned threads = 0;  // 0: all cores
   bool json = false;
   bool markdown = false;  // one row of bench/README.md's table
+  std::string quality;    // --quality REF.pfm: time to reach relMSE <= kQualityTarget
 };
+
+// "What users feel" (the benchmark issue): seconds until an image's relMSE against a
+// converged reference first drops to this value.
+constexpr double kQualityTarget = 1.2e-3;
 
 [[noreturn]] void Usage(const std::string& why) {
   std::fprintf(stderr,
                "vkpt-bench: %s\nusage: vkpt-bench (--scene FILE | --procedural N) [--width W] [--height H] "
-               "[--threads N] [--json | --markdown]\n",
+               "[--threads N] [--json | --markdown] [--quality REF.pfm]\n",
                why.c_str());
   std::exit(2);
 }
@@ -82,10 +88,12 @@ Options Parse(int argc, char** argv) {
     else if (a == "--threads") o.threads = Number("--threads", value());
     else if (a == "--json") o.json = true;
     else if (a == "--markdown") o.markdown = true;
+    else if (a == "--quality") o.quality = value();
     else if (a == "-h" || a == "--help") Usage("benchmarks BVH build, traversal and path tracing");
     else Usage("unknown option \"" + a + "\"");
   }
   if (o.scene.empty() == (o.procedural == 0)) Usage("give exactly one of --scene FILE and --procedural N");
+  if (!o.quality.empty() && o.markdown) Usage("--quality prints text or --json, not --markdown");
   return o;
 }
 
@@ -312,10 +320,108 @@ void PrintTable(const Report& r) {
   line("hit mismatches between tracers", "hit_mismatches", "rays", nullptr);
 }
 
+// relMSE = mean over pixels and channels of (a − r)² / (r² + 0.01).
+double RelMse(const std::vector<glm::dvec3>& sum, double spp, const Image& ref) {
+  double total = 0.0;
+  for (size_t i = 0; i < ref.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      double a = sum[i][c] / spp, r = ref.pixels[i][c];
+      total += (a - r) * (a - r) / (r * r + 0.01);
+    }
+  return total / (3.0 * double(ref.pixels.size()));
+}
+
+// Renders progressively (chunks growing by ~25 %) until relMSE ≤ kQualityTarget or the
+// time budget is spent; returns the render seconds it took (nullopt if never reached).
+// `render` renders samples [begin, begin + count) and returns (image of their mean, seconds).
+std::optional<double> SecondsToQuality(const Image& ref, const std::function<std::pair<Image, double>(uint32_t, uint32_t)>& render,
+                                       const char* name, uint32_t* sppReached) {
+  std::vector<glm::dvec3> sum(ref.pixels.size(), glm::dvec3(0.0));
+  double seconds = 0.0;
+  uint32_t spp = 0;
+  while (seconds < 300.0 && spp < (1u << 16)) {
+    uint32_t chunk = std::max(1u, spp / 4);
+    auto [img, s] = render(spp, chunk);
+    seconds += s;
+    for (size_t i = 0; i < sum.size(); ++i) sum[i] += glm::dvec3(img.pixels[i]) * double(chunk);
+    spp += chunk;
+    double e = RelMse(sum, spp, ref);
+    if (e <= kQualityTarget) {
+      std::fprintf(stderr, "  %s: relMSE %.3g at %u spp after %.2f s\n", name, e, spp, seconds);
+      *sppReached = spp;
+      return seconds;
+    }
+  }
+  std::fprintf(stderr, "  %s: relMSE target not reached in %.0f s (%u spp)\n", name, seconds, spp);
+  *sppReached = spp;
+  return std::nullopt;
+}
+
+int Quality(const Options& o, unsigned threads) {
+  Image ref = ReadPfm(o.quality);
+  Scene scene = o.procedural ? ProceduralScene(o.procedural) : LoadGltf(o.scene);
+  BvhBuildOptions bvhOptions;
+  bvhOptions.threads = threads;
+  RenderScene rs = PrepareRenderScene(scene, bvhOptions);
+  const Camera cam = scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0];
+  shader::FrameParams p = MakeFrameParams(rs, cam, ref.width, ref.height);
+  p.seed = 1;  // the reference should use another seed
+  p.maxDepth = 32;
+  p.rrDepth = 3;
+  if (rs.emitters.empty()) p.background = glm::vec3(1.0f);
+  Report rep;
+  rep.threads = threads;
+  std::fprintf(stderr, "vkpt-bench: time to relMSE <= %.1e against %s (%ux%u)\n", kQualityTarget, o.quality.c_str(),
+               ref.width, ref.height);
+  uint32_t cpuSpp = 0, gpuSpp = 0;
+  rep.Set("cpu_seconds_to_quality", SecondsToQuality(ref, [&](uint32_t begin, uint32_t count) {
+    shader::FrameParams q = p;
+    q.sampleBegin = begin;
+    q.sampleCount = count;
+    CpuRenderOptions opt;
+    opt.threads = threads;
+    CpuRenderResult r = RenderCpu(rs, q, opt);
+    return std::make_pair(std::move(r.image), r.seconds);
+  }, "cpu", &cpuSpp));
+  rep.Set("cpu_spp_to_quality", double(cpuSpp));
+  rep.Set("gpu_seconds_to_quality", std::nullopt);
+  rep.Set("gpu_spp_to_quality", std::nullopt);
+  try {
+    vk::Context ctx(vk::ContextOptions{});
+    rep.device = ctx.DeviceName();
+    vk::GpuRenderer gpu(ctx, rs);
+    rep.Set("gpu_seconds_to_quality", SecondsToQuality(ref, [&](uint32_t begin, uint32_t count) {
+      shader::FrameParams q = p;
+      q.sampleBegin = begin;
+      q.sampleCount = count;
+      vk::GpuRenderResult r = gpu.Render(q);
+      return std::make_pair(std::move(r.image), r.seconds);
+    }, "gpu", &gpuSpp));
+    rep.Set("gpu_spp_to_quality", double(gpuSpp));
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vkpt-bench: GPU figures skipped: %s\n", e.what());
+    rep.device = "none";
+  }
+  if (o.json) {
+    PrintJson(rep);
+  } else {
+    auto show = [&](const char* what, const char* key, const char* sppKey) {
+      std::optional<double> v = rep.Get(key), n = rep.Get(sppKey);
+      if (v) std::printf("  %-28s %8.2f s (%0.f spp)\n", what, *v, n.value_or(0));
+      else std::printf("  %-28s %8s\n", what, "not reached");
+    };
+    std::printf("vkpt-bench: seconds to relMSE <= %.1e, %u threads, device %s\n", kQualityTarget, threads, rep.device.c_str());
+    show("CPU reference", "cpu_seconds_to_quality", "cpu_spp_to_quality");
+    show("GPU", "gpu_seconds_to_quality", "gpu_spp_to_quality");
+  }
+  return 0;
+}
+
 int Run(const Options& o) {
   unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   // lavapipe reads LP_NUM_THREADS when its device is created: set it first.
   setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
+  if (!o.quality.empty()) return Quality(o, threads);
   Report rep;
   rep.threads = threads;
 
