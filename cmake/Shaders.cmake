@@ -19,10 +19,12 @@ function(vkpt_compile_shader out_var source symbol)
     OUTPUT "${header}" "${spv}"
     COMMAND "${CMAKE_COMMAND}" -E make_directory "${out_dir}"
     COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 "-I${PROJECT_SOURCE_DIR}/shaders" ${defines}
-            --depfile "${out_dir}/${symbol}.d" -o "${spv}" "${source}"
+            -o "${spv}" "${source}"
     COMMAND "${SPIRV_VAL}" --target-env vulkan1.2 "${spv}"
+    # The depfile must name the first OUTPUT (the header), or make never rebuilds it
+    # when an included header changes.
     COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 "-I${PROJECT_SOURCE_DIR}/shaders" ${defines}
-            --vn "${symbol}" -o "${header}" "${source}"
+            --depfile "${out_dir}/${symbol}.d" --vn "${symbol}" -o "${header}" "${source}"
     MAIN_DEPENDENCY "${source}"
     DEPFILE "${out_dir}/${symbol}.d"
     COMMENT "glslang: ${symbol} <- ${source}"

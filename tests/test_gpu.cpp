@@ -31,6 +31,7 @@ struct MathOut {
   vec4 rand;
   vec4 dir;
   vec4 misc;
+  vec4 sobol;
 };
 }  // namespace vkpt::shader
 #include "shaders/shared_math_body.glsl"
@@ -88,6 +89,7 @@ TEST_F(GpuTest, SharedMathMatchesCpu) {
     shader::MathOut c = shader::Evaluate(i);
     hashDiff += c.hash != gpu[i].hash;
     randDiff += std::memcmp(&c.rand, &gpu[i].rand, sizeof c.rand) != 0;
+    randDiff += std::memcmp(&c.sobol, &gpu[i].sobol, sizeof c.sobol) != 0;
     float d = glm::length(glm::vec3(c.dir) - glm::vec3(gpu[i].dir)) + std::abs(c.dir.w - gpu[i].dir.w);
     maxDir = std::max(maxDir, d);
     dirDiff += d > 1e-5f;
@@ -96,7 +98,7 @@ TEST_F(GpuTest, SharedMathMatchesCpu) {
     maxMisc = std::max(maxMisc, md);
     miscDiff += md > 1e-5f;
   }
-  std::printf("%u inputs: hash mismatches %u, random-float mismatches %u (bitwise); direction max error %.2e "
+  std::printf("%u inputs: hash mismatches %u, random-float and Sobol mismatches %u (bitwise); direction max error %.2e "
               "(%u > 1e-5); barycentric/box/triangle max error %.2e (%u > 1e-5)\n",
               n, hashDiff, randDiff, maxDir, dirDiff, maxMisc, miscDiff);
   EXPECT_EQ(hashDiff, 0u);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <functional>
+#include <random>
 #include <unordered_set>
 
 #include "shared/rng.h"
@@ -100,6 +101,66 @@ TEST(Rng, DistinctKeysGiveDistinctNumbers) {
 TEST(Rng, IsAPureFunctionOfItsKey) {
   for (uint32_t i = 0; i < 1000; ++i) EXPECT_EQ(Random4(3u, i, i * 7u, 2u), Random4(3u, i, i * 7u, 2u));
   EXPECT_NE(Random4(3u, 1u, 2u, 3u), Random4(4u, 1u, 2u, 3u));
+}
+
+TEST(Rng, LoopFreeSobolMatchesDirectionNumbers) {
+  // Reference: XOR of direction numbers v1 = 2^31, v(k+1) = v(k) ^ (v(k) >> 1).
+  std::mt19937 rng(3);
+  for (uint32_t n = 0; n < 200000; ++n) {
+    uint32_t index = n < 100000 ? n : uint32_t(rng());
+    uint32_t ref = 0, v = 1u << 31;
+    for (uint32_t i = index; i; i >>= 1, v ^= v >> 1)
+      if (i & 1) ref ^= v;
+    ASSERT_EQ(shader::SobolSecondDimension(index), ref) << "index " << index;
+  }
+  EXPECT_EQ(shader::ReverseBits(1u), 0x80000000u);
+  EXPECT_EQ(shader::ReverseBits(0x12345678u), 0x1E6A2C48u);
+}
+
+// The first 2^m samples of a pixel's pair form a (0, m, 2)-net: every elementary
+// interval [a/2^i, (a+1)/2^i) × [b/2^j, (b+1)/2^j) with i + j = m holds exactly one point.
+TEST(Rng, Sample2DIsStratifiedPerPixel) {
+  const int m = 8, n = 1 << m;
+  int nets = 0;
+  for (uint32_t pixel : {0u, 17u, 40000u})
+    for (uint32_t pair : {0u, 1u, 6u}) {
+      std::vector<glm::vec2> p(n);
+      for (int s = 0; s < n; ++s) p[s] = shader::Sample2D(9u, pixel, uint32_t(s), pair);
+      for (int i = 0; i <= m; ++i) {
+        const int cols = 1 << i, rows = 1 << (m - i);
+        std::vector<int> count(n, 0);
+        for (const glm::vec2& q : p) ++count[int(q.y * rows) * cols + int(q.x * cols)];
+        for (int c : count) ASSERT_EQ(c, 1) << "pixel " << pixel << " pair " << pair << " interval " << cols << "x" << rows;
+      }
+      ++nets;
+    }
+  std::printf("%d pixel/pair combinations: all 9 elementary-interval shapes of 256 samples hold one point each\n", nets);
+}
+
+// Different pairs, and different pixels, must be independent: a 2-D χ² on coordinates
+// taken from two streams at the same sample index.
+TEST(Rng, Sample2DPairsAndPixelsAreIndependent) {
+  const int grid = 31;
+  const uint32_t n = 1000000;
+  const double alpha = test::SidakAlpha(0.01, 3);
+  struct Pair { const char* name; std::function<glm::vec2(uint32_t)> draw; };
+  Pair pairs[] = {
+      {"pair 1 x / pair 2 x, one pixel", [](uint32_t i) { return glm::vec2(shader::Sample2D(1u, 7u, i, 1u).x, shader::Sample2D(1u, 7u, i, 2u).x); }},
+      {"pair 0 y / pair 3 x, one pixel", [](uint32_t i) { return glm::vec2(shader::Sample2D(1u, 7u, i, 0u).y, shader::Sample2D(1u, 7u, i, 3u).x); }},
+      {"pixel p / pixel p+1, sample 0", [](uint32_t i) { return glm::vec2(shader::Sample2D(1u, i, 0u, 1u).x, shader::Sample2D(1u, i + 1, 0u, 1u).x); }},
+  };
+  for (const Pair& pr : pairs) {
+    std::vector<double> observed(grid * grid, 0.0), expected(grid * grid, double(n) / (grid * grid));
+    for (uint32_t i = 0; i < n; ++i) {
+      glm::vec2 v = pr.draw(i);
+      observed[int(v.x * grid) * grid + int(v.y * grid)] += 1.0;
+    }
+    double stat;
+    int dof;
+    double p = test::ChiSquareTest(observed, expected, &stat, &dof);
+    std::printf("%s: chi2 = %.1f, dof = %d, p = %.4f (alpha %.5f)\n", pr.name, stat, dof, p, alpha);
+    EXPECT_GT(p, alpha) << pr.name;
+  }
 }
 
 }  // namespace

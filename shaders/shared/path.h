@@ -48,7 +48,7 @@ struct PathSample {
 // numbers come from the streams (params.seed, pixel, sampleIndex, dimension).
 VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint py, uint sampleIndex) {
   uint pixel = py * params.width + px;
-  vec4 uc = Random4(params.seed, pixel, sampleIndex, kGroupCamera);
+  vec2 uc = Sample2D(params.seed, pixel, sampleIndex, kGroupCamera);
   Ray ray = GenerateCameraRay(params, px, py, uc.x, uc.y);
   PathSample result;
   result.radiance = vec3(0.0f);
@@ -88,7 +88,8 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
       vec3 le1 = VKPT_TRIANGLE(e.triangle).e1;
       vec3 le2 = VKPT_TRIANGLE(e.triangle).e2;
       uint lightMaterial = VKPT_TRIANGLE(e.triangle).material;
-      vec2 b = SampleUniformTriangle(ul.y, ul.z);
+      vec2 us = Sample2D(params.seed, pixel, sampleIndex, LightGroup(bounce));
+      vec2 b = SampleUniformTriangle(us.x, us.y);
       vec3 x = VKPT_TRIANGLE(e.triangle).v0 + b.x * le1 + b.y * le2;
       vec3 nl = normalize(cross(le1, le2));
       bool twoSided = (VKPT_MATERIAL(lightMaterial).flags & kMaterialDoubleSided) != 0u;
@@ -114,7 +115,7 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
       throughput /= survive;
 #endif
     }
-    vec4 ub = Random4(params.seed, pixel, sampleIndex, BsdfGroup(bounce));
+    vec2 ub = Sample2D(params.seed, pixel, sampleIndex, BsdfGroup(bounce));
     ray.origin = origin;
     ray.dir = FrameToWorld(FrameFromNormal(n), SampleCosineHemisphere(ub.x, ub.y));
   }

@@ -35,11 +35,67 @@ VKPT_FN vec4 Random4(uint seed, uint pixel, uint sampleIndex, uint group) {
   return vec4(ToUnitFloat(h.x), ToUnitFloat(h.y), ToUnitFloat(h.z), ToUnitFloat(h.w));
 }
 
+// --- Low-discrepancy 2-D samples -----------------------------------------------------
+// Shuffled, Owen-scrambled Sobol points (Burley 2020, "Practical Hash-based Owen
+// Scrambling", JCGT 9(4)): within one pixel, the first 2^k samples of a dimension pair are
+// stratified in every elementary interval of the unit square (a (0,2)-sequence), so
+// camera jitter, light points and bounce directions converge faster than with independent
+// random numbers. Each pair gets its own scramble and its own shuffle of the sample
+// order, which keeps pairs (and pixels) statistically independent. Integer-only and
+// loop-free, so it is bit-identical on CPU and GPU and costs lavapipe no loop iterations.
+
+VKPT_FN uint ReverseBits(uint x) {
+  x = ((x >> 1u) & 0x55555555u) | ((x & 0x55555555u) << 1u);
+  x = ((x >> 2u) & 0x33333333u) | ((x & 0x33333333u) << 2u);
+  x = ((x >> 4u) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4u);
+  x = ((x >> 8u) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8u);
+  return (x >> 16u) | (x << 16u);
+}
+
+// Laine–Karras style hash that only lets bits influence *higher* bits: on bit-reversed
+// values that is a random nested uniform (Owen) scramble.
+VKPT_FN uint LaineKarrasPermutation(uint x, uint seed) {
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return x;
+}
+
+VKPT_FN uint NestedUniformScramble(uint x, uint seed) {
+  return ReverseBits(LaineKarrasPermutation(ReverseBits(x), seed));
+}
+
+// Second Sobol dimension without a loop. Its generator matrix is Pascal's triangle mod 2:
+// output digit m collects index bits b with C(b, m) odd, i.e. (Lucas) m ⊆ b. That is a
+// superset transform over the 5-bit positions, done in five masked xor-shifts; the digit
+// order is then reversed into a binary fraction.
+VKPT_FN uint SobolSecondDimension(uint index) {
+  uint y = index;
+  y ^= (y >> 1u) & 0x55555555u;
+  y ^= (y >> 2u) & 0x33333333u;
+  y ^= (y >> 4u) & 0x0F0F0F0Fu;
+  y ^= (y >> 8u) & 0x00FF00FFu;
+  y ^= (y >> 16u) & 0x0000FFFFu;
+  return ReverseBits(y);
+}
+
+// Point `sampleIndex` of dimension pair `pair` of `pixel`, in [0,1)².
+VKPT_FN vec2 Sample2D(uint seed, uint pixel, uint sampleIndex, uint pair) {
+  uvec4 h = Pcg4d(uvec4(pixel, pair, seed, 0x50B0150Bu));
+  uint index = NestedUniformScramble(sampleIndex, h.x);
+  uint x = NestedUniformScramble(ReverseBits(index), h.y);
+  uint y = NestedUniformScramble(SobolSecondDimension(index), h.z);
+  return vec2(ToUnitFloat(x), ToUnitFloat(y));
+}
+
 // How the estimator spends its dimensions (groups of four), identically on CPU and GPU.
-const uint kGroupCamera = 0u;  // x: film jitter x, y: film jitter y
-// At path vertex `bounce` (0 = the camera hit):
-//   LightGroup: x: emitter choice, y, z: point on the emitter, w: Russian roulette
-//   BsdfGroup:  x, y: scattered direction
+// Pair kGroupCamera of Sample2D: film jitter. At path vertex `bounce` (0 = camera hit):
+//   Random4(LightGroup): x: emitter choice, w: Russian roulette
+//   Sample2D(LightGroup): the point on the emitter
+//   Sample2D(BsdfGroup):  the scattered direction
+const uint kGroupCamera = 0u;
 VKPT_FN uint LightGroup(uint bounce) { return 1u + 2u * bounce; }
 VKPT_FN uint BsdfGroup(uint bounce) { return 2u + 2u * bounce; }
 

@@ -15,6 +15,7 @@ struct MathOut {
   vec4 rand;   // Random4(5, i, 2, 3)
   vec4 dir;    // xyz: cosine-sampled direction around a rand-derived normal; w: its pdf
   vec4 misc;   // xy: triangle barycentrics, z: slab entry t, w: triangle hit t
+  vec4 sobol;  // xy: Sample2D(7, i, i >> 3, 2), zw: Sample2D(7, i >> 4, i, 5)
 };
 layout(std430, binding = 0) writeonly buffer Out { MathOut outputs[]; };
 

@@ -18,6 +18,7 @@ VKPT_FN MathOut Evaluate(uint i) {
   float tBox = IntersectBox(vec3(0.0f), vec3(1.0f), origin, SafeInverse(ray), 100.0f);
   vec3 hit = IntersectTriangle(vec3(0.0f, 0.0f, 0.5f), vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, 1.0f, 0.0f), origin, ray, 100.0f);
   o.misc = vec4(b.x, b.y, tBox, hit.x);
+  o.sobol = vec4(Sample2D(7u, i, i >> 3u, 2u), Sample2D(7u, i >> 4u, i, 5u));
   return o;
 }
 
