@@ -100,19 +100,17 @@ Options ParseOptions(int argc, const char* const* argv) {
        [&](const std::string& opt, const std::string& v) { o.exposure = ParseNumber(opt, v, -64.0f, 64.0f); }},
       {"--background",
        [&](const std::string& opt, const std::string& v) {
-         std::array<float, 3> c{};
-         size_t start = 0;
-         int n = 0;
-         for (; n < 3 && start <= v.size(); ++n) {
+         std::vector<std::string> parts;
+         for (size_t start = 0;;) {
            size_t comma = v.find(',', start);
-           std::string part = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-           c[n] = ParseNumber(opt, part, 0.0f, 1e30f);
-           if (comma == std::string::npos) { ++n; break; }
+           parts.push_back(v.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+           if (comma == std::string::npos) break;
            start = comma + 1;
          }
-         if (n == 1) c[1] = c[2] = c[0];
-         else if (n != 3 || v.find(',', v.rfind(',') + 1) != std::string::npos || std::count(v.begin(), v.end(), ',') != 2)
+         if (parts.size() != 1 && parts.size() != 3)
            throw UsageError(opt + " expects R,G,B or one number, got \"" + v + "\"");
+         std::array<float, 3> c{};
+         for (size_t k = 0; k < 3; ++k) c[k] = ParseNumber(opt, parts[parts.size() == 1 ? 0 : k], 0.0f, 1e30f);
          o.background = c;
        }},
       {"--backend",
