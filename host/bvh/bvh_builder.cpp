@@ -135,10 +135,14 @@ class Builder {
     } else {
       std::vector<Bounds3f> boxes(threads), cents(threads);
       ForChunks(node.first, node.count, threads, [&](uint32_t b, uint32_t e, unsigned t) {
+        // Accumulate locally: neighbouring elements of `boxes` share a cache line.
+        Bounds3f box, cent;
         for (uint32_t i = b; i < e; ++i) {
-          boxes[t].Extend(prims_[i].box);
-          cents[t].Extend(prims_[i].centroid);
+          box.Extend(prims_[i].box);
+          cent.Extend(prims_[i].centroid);
         }
+        boxes[t] = box;
+        cents[t] = cent;
       });
       for (unsigned t = 0; t < threads; ++t) {
         node.box.Extend(boxes[t]);
