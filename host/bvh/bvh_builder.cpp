@@ -279,7 +279,16 @@ class Builder {
     const uint32_t count = uint32_t(nodes_.size());
     bvh.copies = opt_.directionCopies && uint64_t(count) * sizeof(shader::BvhNode) * 8 <= opt_.maxCopiesBytes ? 8 : 1;
     bvh.nodes.resize(size_t(count) * bvh.copies);
-    for (uint32_t octant = 0; octant < bvh.copies; ++octant) FlattenCopy(size, octant, bvh);
+    // The copies fill disjoint ranges of bvh.nodes: one thread each.
+    const unsigned threads = std::min<unsigned>(bvh.copies, opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency()));
+    std::atomic<uint32_t> nextCopy{0};
+    auto flatten = [&] {
+      for (uint32_t octant; (octant = nextCopy.fetch_add(1)) < bvh.copies;) FlattenCopy(size, octant, bvh);
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(flatten);
+    flatten();
+    for (auto& t : pool) t.join();
     BvhStats& st = bvh.stats;
     const float rootArea = nodes_[0].box.SurfaceArea();
     // Summed in depth-first order from the root (not storage order, which depends on the
