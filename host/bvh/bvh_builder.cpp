@@ -280,7 +280,8 @@ class Builder {
     bvh.copies = opt_.directionCopies && uint64_t(count) * sizeof(shader::BvhNode) * 8 <= opt_.maxCopiesBytes ? 8 : 1;
     bvh.nodes.resize(size_t(count) * bvh.copies);
     // The copies fill disjoint ranges of bvh.nodes: one thread each.
-    const unsigned threads = std::min<unsigned>(bvh.copies, opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency()));
+    // (Small trees: a thread costs more than the copy.)
+    const unsigned threads = count < 16384 ? 1u : std::min<unsigned>(bvh.copies, opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency()));
     std::atomic<uint32_t> nextCopy{0};
     auto flatten = [&] {
       for (uint32_t octant; (octant = nextCopy.fetch_add(1)) < bvh.copies;) FlattenCopy(size, octant, bvh);
