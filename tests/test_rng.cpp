@@ -60,20 +60,16 @@ TEST(Rng, EachDimensionIsUniform) {
   }
 }
 
-// Pairs drawn from neighbouring streams must be jointly uniform on [0,1)²: a 2-D χ²
-// catches correlation between pixels, samples, dimension groups and seeds.
-TEST(Rng, NeighbouringStreamsAreIndependent) {
+// Two coordinates drawn by `draw(i)` for i < 1M, binned on a 31×31 grid: χ² against the
+// uniform joint distribution; p must exceed `alpha` for every pair.
+struct Pair {
+  const char* name;
+  std::function<glm::vec2(uint32_t)> draw;
+};
+
+void ExpectJointlyUniform(const std::vector<Pair>& pairs, double alpha) {
   const int grid = 31;
   const uint32_t n = 1000000;
-  const double alpha = test::SidakAlpha(0.01, 5);
-  struct Pair { const char* name; std::function<glm::vec2(uint32_t)> draw; };
-  Pair pairs[] = {
-      {"pixel i / pixel i+1", [](uint32_t i) { return glm::vec2(Random4(1u, i, 0u, 0u).x, Random4(1u, i + 1, 0u, 0u).x); }},
-      {"sample i / sample i+1", [](uint32_t i) { return glm::vec2(Random4(1u, 5u, i, 0u).x, Random4(1u, 5u, i + 1, 0u).x); }},
-      {"group g / group g+1", [](uint32_t i) { return glm::vec2(Random4(1u, i, 3u, 1u).y, Random4(1u, i, 3u, 2u).y); }},
-      {"seed s / seed s+1", [](uint32_t i) { return glm::vec2(Random4(i, 8u, 3u, 1u).z, Random4(i + 1, 8u, 3u, 1u).z); }},
-      {"x / y of one call", [](uint32_t i) { glm::vec4 r = Random4(2u, i, 0u, 0u); return glm::vec2(r.x, r.y); }},
-  };
   for (const Pair& pr : pairs) {
     std::vector<double> observed(grid * grid, 0.0), expected(grid * grid, double(n) / (grid * grid));
     for (uint32_t i = 0; i < n; ++i) {
@@ -86,6 +82,20 @@ TEST(Rng, NeighbouringStreamsAreIndependent) {
     std::printf("%s: chi2 = %.1f, dof = %d, p = %.4f (alpha %.5f)\n", pr.name, stat, dof, p, alpha);
     EXPECT_GT(p, alpha) << pr.name;
   }
+}
+
+// Pairs drawn from neighbouring streams must be jointly uniform on [0,1)²: a 2-D χ²
+// catches correlation between pixels, samples, dimension groups and seeds.
+TEST(Rng, NeighbouringStreamsAreIndependent) {
+  const double alpha = test::SidakAlpha(0.01, 5);
+  std::vector<Pair> pairs = {
+      {"pixel i / pixel i+1", [](uint32_t i) { return glm::vec2(Random4(1u, i, 0u, 0u).x, Random4(1u, i + 1, 0u, 0u).x); }},
+      {"sample i / sample i+1", [](uint32_t i) { return glm::vec2(Random4(1u, 5u, i, 0u).x, Random4(1u, 5u, i + 1, 0u).x); }},
+      {"group g / group g+1", [](uint32_t i) { return glm::vec2(Random4(1u, i, 3u, 1u).y, Random4(1u, i, 3u, 2u).y); }},
+      {"seed s / seed s+1", [](uint32_t i) { return glm::vec2(Random4(i, 8u, 3u, 1u).z, Random4(i + 1, 8u, 3u, 1u).z); }},
+      {"x / y of one call", [](uint32_t i) { glm::vec4 r = Random4(2u, i, 0u, 0u); return glm::vec2(r.x, r.y); }},
+  };
+  ExpectJointlyUniform(pairs, alpha);
 }
 
 TEST(Rng, DistinctKeysGiveDistinctNumbers) {
@@ -140,27 +150,13 @@ TEST(Rng, Sample2DIsStratifiedPerPixel) {
 // Different pairs, and different pixels, must be independent: a 2-D χ² on coordinates
 // taken from two streams at the same sample index.
 TEST(Rng, Sample2DPairsAndPixelsAreIndependent) {
-  const int grid = 31;
-  const uint32_t n = 1000000;
   const double alpha = test::SidakAlpha(0.01, 3);
-  struct Pair { const char* name; std::function<glm::vec2(uint32_t)> draw; };
-  Pair pairs[] = {
+  std::vector<Pair> pairs = {
       {"pair 1 x / pair 2 x, one pixel", [](uint32_t i) { return glm::vec2(shader::Sample2D(1u, 7u, i, 1u).x, shader::Sample2D(1u, 7u, i, 2u).x); }},
       {"pair 0 y / pair 3 x, one pixel", [](uint32_t i) { return glm::vec2(shader::Sample2D(1u, 7u, i, 0u).y, shader::Sample2D(1u, 7u, i, 3u).x); }},
       {"pixel p / pixel p+1, sample 0", [](uint32_t i) { return glm::vec2(shader::Sample2D(1u, i, 0u, 1u).x, shader::Sample2D(1u, i + 1, 0u, 1u).x); }},
   };
-  for (const Pair& pr : pairs) {
-    std::vector<double> observed(grid * grid, 0.0), expected(grid * grid, double(n) / (grid * grid));
-    for (uint32_t i = 0; i < n; ++i) {
-      glm::vec2 v = pr.draw(i);
-      observed[int(v.x * grid) * grid + int(v.y * grid)] += 1.0;
-    }
-    double stat;
-    int dof;
-    double p = test::ChiSquareTest(observed, expected, &stat, &dof);
-    std::printf("%s: chi2 = %.1f, dof = %d, p = %.4f (alpha %.5f)\n", pr.name, stat, dof, p, alpha);
-    EXPECT_GT(p, alpha) << pr.name;
-  }
+  ExpectJointlyUniform(pairs, alpha);
 }
 
 }  // namespace
