@@ -129,7 +129,7 @@ RaySets MakeRays(const RenderScene& rs, const shader::FrameParams& p, unsigned t
     hits[i] = IntersectClosest(rs.nodes, rs.triangles, r.camera[i].origin, r.camera[i].dir, r.camera[i].tMax);
   });
   for (size_t i = 0; i < hits.size(); ++i) {
-    if (!hits[i].Valid()) continue;
+    if (hits[i].t < 0.0f) continue;
     const shader::Triangle& t = rs.triangles[hits[i].triangle];
     glm::vec3 ng = glm::normalize(glm::cross(t.e1, t.e2));
     if (glm::dot(ng, r.camera[i].dir) > 0.0f) ng = -ng;

@@ -15,8 +15,7 @@
 namespace vkpt::shader {
 
 inline HitRecord TraceClosest(const RenderScene& scene, vec3 origin, vec3 dir, float tMax) {
-  Hit h = IntersectClosest(scene.nodes, scene.triangles, origin, dir, tMax);
-  return HitRecord{h.t, h.b1, h.b2, h.triangle};
+  return IntersectClosest(scene.nodes, scene.triangles, origin, dir, tMax);
 }
 
 inline bool TraceOccluded(const RenderScene& scene, vec3 origin, vec3 dir, float tMax) {

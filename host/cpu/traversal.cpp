@@ -15,7 +15,7 @@ Hit Traverse(const std::vector<shader::BvhNode>& nodes, const std::vector<shader
              glm::vec3 origin, glm::vec3 dir, float tMax, TraversalCounters* counters) {
   using shader::IntersectBox;
   using shader::IntersectTriangle;
-  Hit hit;
+  Hit hit{-1.0f, 0.0f, 0.0f, shader::kInvalidIndex};
   const glm::vec3 inv = shader::SafeInverse(dir);
   // Deferred far children with their entry distances: a popped entry beyond the closest
   // hit found since is dropped without testing its box again.
@@ -97,7 +97,7 @@ Hit IntersectClosest(const std::vector<shader::BvhNode>& nodes, const std::vecto
 
 bool Occluded(const std::vector<shader::BvhNode>& nodes, const std::vector<shader::Triangle>& triangles,
               glm::vec3 origin, glm::vec3 dir, float tMax) {
-  return Traverse<true>(nodes, triangles, origin, dir, tMax, nullptr).Valid();
+  return Traverse<true>(nodes, triangles, origin, dir, tMax, nullptr).t >= 0.0f;
 }
 
 }  // namespace vkpt

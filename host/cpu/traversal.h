@@ -10,12 +10,8 @@
 
 namespace vkpt {
 
-struct Hit {
-  float t = -1.0f;  // < 0: no hit
-  float b1 = 0.0f, b2 = 0.0f;
-  uint32_t triangle = shader::kInvalidIndex;  // leaf-order index
-  bool Valid() const { return t >= 0.0f; }
-};
+// The hit record the GPU returns too (shaders/shared/layout.h): t < 0 means no hit.
+using Hit = shader::HitRecord;
 
 // Per-query counters, for benchmarks and tests.
 struct TraversalCounters {
