@@ -84,11 +84,18 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
 
     vec4 ul = Random4(params.seed, pixel, sampleIndex, LightGroup(bounce));
     if (params.emitterCount > 0u && MaxComponent(baseColor) > 0.0f) {
-      Emitter e = VKPT_EMITTER(PickEmitter(VKPT_SCENE_ARG params.emitterCount, ul.x));
+      // One stratified 2-D sample picks the emitter *and* the point on it: us.x chooses
+      // the CDF interval and is then stretched back to [0,1) within it (pbrt-v4's
+      // SampleDiscrete remapping). The points thus stay stratified over the union of all
+      // emitters (a quad light's two triangles, say), not just within the one picked.
+      vec2 us = Sample2D(params.seed, pixel, sampleIndex, LightGroup(bounce));
+      uint k = PickEmitter(VKPT_SCENE_ARG params.emitterCount, us.x);
+      Emitter e = VKPT_EMITTER(k);
+      float cdfBelow = k > 0u ? VKPT_EMITTER(k - 1u).cdf : 0.0f;
+      us.x = min((us.x - cdfBelow) / (e.cdf - cdfBelow), kOneMinusEpsilon);
       vec3 le1 = VKPT_TRIANGLE(e.triangle).e1;
       vec3 le2 = VKPT_TRIANGLE(e.triangle).e2;
       uint lightMaterial = VKPT_TRIANGLE(e.triangle).material;
-      vec2 us = Sample2D(params.seed, pixel, sampleIndex, LightGroup(bounce));
       vec2 b = SampleUniformTriangle(us.x, us.y);
       vec3 x = VKPT_TRIANGLE(e.triangle).v0 + b.x * le1 + b.y * le2;
       vec3 nl = normalize(cross(le1, le2));

@@ -92,8 +92,8 @@ VKPT_FN vec2 Sample2D(uint seed, uint pixel, uint sampleIndex, uint pair) {
 
 // How the estimator spends its dimensions (groups of four), identically on CPU and GPU.
 // Pair kGroupCamera of Sample2D: film jitter. At path vertex `bounce` (0 = camera hit):
-//   Random4(LightGroup): x: emitter choice, w: Russian roulette
-//   Sample2D(LightGroup): the point on the emitter
+//   Random4(LightGroup): w: Russian roulette (x, y, z unused)
+//   Sample2D(LightGroup): the emitter and the point on it
 //   Sample2D(BsdfGroup):  the scattered direction
 const uint kGroupCamera = 0u;
 VKPT_FN uint LightGroup(uint bounce) { return 1u + 2u * bounce; }

@@ -7,6 +7,8 @@ VKPT_BEGIN_NAMESPACE
 
 const float kPi = 3.14159265358979323846f;
 const float kInvPi = 0.31830988618379067154f;
+// The largest float below 1 (1 − 2⁻²⁴): keeps remapped uniforms inside [0, 1).
+const float kOneMinusEpsilon = 0.99999994f;
 
 // Orthonormal basis around unit vector n (Duff et al. 2017, "Building an Orthonormal
 // Basis, Revisited", JCGT 6(1)): branch-free and without the singularity at n.z = -1.
