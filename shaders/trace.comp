@@ -10,8 +10,6 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, binding = kBindingTriangles) readonly buffer Triangles { Triangle triangles[]; };
-layout(std430, binding = kBindingNodes) readonly buffer Nodes { BvhNode nodes[]; };
 layout(std430, binding = kBindingRays) readonly buffer Rays { RayQuery rays[]; };
 layout(std430, binding = kBindingHits) writeonly buffer Hits { HitRecord hits[]; };
 layout(push_constant) uniform Push { uint nodeCount; uint nodeCopies; };

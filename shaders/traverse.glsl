@@ -1,7 +1,7 @@
 // Stackless BVH traversal for GLSL, over the depth-first skip-link layout (Smits 1998,
-// "Efficiency Issues for Ray Tracing"). The including shader declares the buffers
-// `triangles` (Triangle[]) and `nodes` (BvhNode[]), and enables
-// GL_KHR_shader_subgroup_basic and GL_KHR_shader_subgroup_arithmetic.
+// "Efficiency Issues for Ray Tracing"). The including shader enables
+// GL_KHR_shader_subgroup_basic and GL_KHR_shader_subgroup_arithmetic; the scene comes
+// from scene_fetch.glsl.
 //
 // A node whose box is hit before the closest hit so far is entered by stepping to the
 // next node; a missed box or a finished leaf jumps to its skip link. No stack: no
@@ -15,6 +15,7 @@
 #define VKPT_TRAVERSE_GLSL
 #include "shared/layout.h"
 #include "shared/intersect.h"
+#include "scene_fetch.glsl"
 
 // Set by the including shader's main(): nodes per copy of the tree, and the number of
 // copies (1, or 8 ordered near-first for each octant of ray directions).
@@ -43,7 +44,7 @@ void CountLoop(uint laneIterations) {
 // link, an inner node descends to its first child, a leaf queues its triangles [k, end)
 // and moves on to its skip link.
 void VisitNode(vec3 origin, vec3 invDir, float tMax, inout uint i, inout uint k, inout uint end) {
-  BvhNode node = nodes[i];
+  BvhNode node = FetchNode(i);
   if (IntersectBox(node.lo, node.hi, origin, invDir, tMax) < 0.0f) {
     i = node.skip;
   } else if (node.leaf == 0u) {
@@ -69,7 +70,8 @@ HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
   while (k < end || i != kInvalidIndex) {
     ++steps;
     if (k < end) {
-      vec3 r = IntersectTriangle(triangles[k].v0, triangles[k].e1, triangles[k].e2, origin, dir, tMax);
+      Triangle t = FetchTriangle(k);
+      vec3 r = IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax);
       if (r.x >= 0.0f) {
         tMax = r.x;
         hit.t = r.x;
@@ -97,7 +99,8 @@ bool TraceOccluded(vec3 origin, vec3 dir, float tMax) {
   while (k < end || i != kInvalidIndex) {
     ++steps;
     if (k < end) {
-      if (IntersectTriangle(triangles[k].v0, triangles[k].e1, triangles[k].e2, origin, dir, tMax).x >= 0.0f) {
+      Triangle t = FetchTriangle(k);
+      if (IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax).x >= 0.0f) {
         occluded = true;
         break;
       }

@@ -18,6 +18,8 @@ static_assert(sizeof(BvhNode) == 32);
 static_assert(offsetof(BvhNode, lo) == 0 && offsetof(BvhNode, skip) == 12);
 static_assert(offsetof(BvhNode, hi) == 16 && offsetof(BvhNode, leaf) == 28);
 
+static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(BvhNode) == 16 * kTexelsPerNode);
+
 static_assert(sizeof(Material) == 48);
 static_assert(offsetof(Material, baseColor) == 0 && offsetof(Material, metallic) == 12);
 static_assert(offsetof(Material, emission) == 16 && offsetof(Material, roughness) == 28);

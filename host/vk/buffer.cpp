@@ -1,5 +1,6 @@
 #include "vk/buffer.h"
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
@@ -16,6 +17,23 @@ uint32_t FindMemoryType(const Context& ctx, uint32_t typeBits, VkMemoryPropertyF
   for (uint32_t i = 0; i < mp.memoryTypeCount; ++i)
     if ((typeBits & (1u << i)) && (mp.memoryTypes[i].propertyFlags & want) == want) return i;
   throw Error("Vulkan: no memory type for the " + what + " buffer on " + ctx.DeviceName());
+}
+
+// At least one 16-byte texel and a whole number of them (Vulkan has no empty buffers, and
+// a TexelView then covers every byte), filled through a staging buffer.
+Buffer UploadDeviceLocal(const Context& ctx, const void* data, size_t bytes, VkBufferUsageFlags usage,
+                         const std::string& what) {
+  const VkDeviceSize size = std::max<VkDeviceSize>((bytes + 15) / 16 * 16, 16);
+  Buffer staging(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what + " (staging)");
+  std::memset(staging.Mapped(), 0, size);
+  if (bytes) std::memcpy(staging.Mapped(), data, bytes);
+  Buffer device(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+  ctx.Submit([&](VkCommandBuffer cb) {
+    VkBufferCopy region{0, 0, size};
+    vkCmdCopyBuffer(cb, staging.Handle(), device.Handle(), 1, &region);
+  });
+  return device;
 }
 
 }  // namespace
@@ -74,23 +92,55 @@ void Buffer::Release() {
 }
 
 Buffer UploadStorage(const Context& ctx, const void* data, size_t bytes, const std::string& what) {
-  const VkDeviceSize size = std::max<VkDeviceSize>(bytes, 4);
-  const VkPhysicalDeviceLimits& limits = ctx.Properties().limits;
-  if (size > limits.maxStorageBufferRange)
-    throw Error("the scene's " + what + " buffer needs " + MiB(size) + ", but " + ctx.DeviceName() +
-                " allows at most " + MiB(limits.maxStorageBufferRange) +
+  const VkDeviceSize limit = ctx.Properties().limits.maxStorageBufferRange;
+  if (bytes > limit)
+    throw Error("the scene's " + what + " buffer needs " + MiB(bytes) + ", but " + ctx.DeviceName() +
+                " allows at most " + MiB(limit) +
                 " per storage buffer (maxStorageBufferRange); render this scene with --backend cpu");
-  Buffer staging(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what + " (staging)");
-  std::memset(staging.Mapped(), 0, size);
-  if (bytes) std::memcpy(staging.Mapped(), data, bytes);
-  Buffer device(ctx, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
-  ctx.Submit([&](VkCommandBuffer cb) {
-    VkBufferCopy region{0, 0, size};
-    vkCmdCopyBuffer(cb, staging.Handle(), device.Handle(), 1, &region);
-  });
-  return device;
+  return UploadDeviceLocal(ctx, data, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, what);
+}
+
+Buffer UploadTexels(const Context& ctx, const void* data, size_t bytes, const std::string& what) {
+  const uint64_t texels = (bytes + 15) / 16;
+  const uint32_t limit = ctx.Properties().limits.maxTexelBufferElements;
+  if (texels > limit)
+    throw Error("the scene's " + what + " need " + std::to_string(texels) + " texels of 16 bytes, but " +
+                ctx.DeviceName() + " allows at most " + std::to_string(limit) +
+                " per texel buffer (maxTexelBufferElements); render this scene with --backend cpu");
+  return UploadDeviceLocal(ctx, data, bytes, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, what);
+}
+
+TexelView::TexelView(const Context& ctx, const Buffer& buffer, const std::string& what) : ctx_(&ctx) {
+  constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_UINT;
+  VkFormatProperties fp;
+  vkGetPhysicalDeviceFormatProperties(ctx.PhysicalDevice(), kFormat, &fp);
+  if (!(fp.bufferFeatures & VK_FORMAT_FEATURE_UNIFORM_TEXEL_BUFFER_BIT))
+    throw Error("Vulkan: " + ctx.DeviceName() + " cannot read RGBA32UI uniform texel buffers");
+  VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  info.buffer = buffer.Handle();
+  info.format = kFormat;
+  info.offset = 0;
+  info.range = VK_WHOLE_SIZE;
+  VKPT_VK_CHECK(vkCreateBufferView(ctx.Device(), &info, nullptr, &view_));
+  ctx.Name(VK_OBJECT_TYPE_BUFFER_VIEW, uint64_t(view_), what.c_str());
+}
+
+TexelView::~TexelView() { Release(); }
+
+TexelView::TexelView(TexelView&& o) noexcept { *this = std::move(o); }
+
+TexelView& TexelView::operator=(TexelView&& o) noexcept {
+  if (this != &o) {
+    Release();
+    ctx_ = std::exchange(o.ctx_, nullptr);
+    view_ = std::exchange(o.view_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
+void TexelView::Release() {
+  if (ctx_ && view_) vkDestroyBufferView(ctx_->Device(), view_, nullptr);
+  view_ = VK_NULL_HANDLE;
 }
 
 }  // namespace vkpt::vk

@@ -36,8 +36,29 @@ class Buffer {
   void* mapped_ = nullptr;
 };
 
-// A device-local storage buffer holding `bytes` (at least 4 bytes: Vulkan has no empty
-// buffers). Uploads through a staging buffer.
+// Device-local buffers holding `bytes`, uploaded through a staging buffer: a storage
+// buffer (checked against maxStorageBufferRange), or a buffer for a TexelView.
 Buffer UploadStorage(const Context& ctx, const void* data, size_t bytes, const std::string& what);
+Buffer UploadTexels(const Context& ctx, const void* data, size_t bytes, const std::string& what);
+
+// A view of a whole buffer as a uniform texel buffer of RGBA32UI texels (16 bytes), which
+// shaders read with texelFetch. Checks maxTexelBufferElements and the format's support.
+class TexelView {
+ public:
+  TexelView() = default;
+  TexelView(const Context& ctx, const Buffer& buffer, const std::string& what);
+  ~TexelView();
+  TexelView(TexelView&& o) noexcept;
+  TexelView& operator=(TexelView&& o) noexcept;
+  TexelView(const TexelView&) = delete;
+  TexelView& operator=(const TexelView&) = delete;
+
+  VkBufferView Handle() const { return view_; }
+
+ private:
+  void Release();
+  const Context* ctx_ = nullptr;
+  VkBufferView view_ = VK_NULL_HANDLE;
+};
 
 }  // namespace vkpt::vk

@@ -1,5 +1,7 @@
 #include "vk/compute_pipeline.h"
 
+#include <map>
+
 #include "vk/buffer.h"
 #include "vk/vk_check.h"
 
@@ -18,10 +20,10 @@ ComputePipeline::ComputePipeline(const Context& ctx, const uint32_t* spirv, size
     ctx.Name(VK_OBJECT_TYPE_SHADER_MODULE, uint64_t(module_), name.c_str());
 
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-    uint32_t storage = 0, uniform = 0;
+    std::map<VkDescriptorType, uint32_t> perType;
     for (const BufferBinding& b : bindings) {
       layoutBindings.push_back({b.binding, b.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-      (b.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER ? uniform : storage)++;
+      ++perType[b.type];
     }
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.bindingCount = uint32_t(layoutBindings.size());
@@ -48,8 +50,7 @@ ComputePipeline::ComputePipeline(const Context& ctx, const uint32_t* spirv, size
     ctx.Name(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline_), name.c_str());
 
     std::vector<VkDescriptorPoolSize> sizes;
-    if (storage) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storage});
-    if (uniform) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniform});
+    for (auto [type, count] : perType) sizes.push_back({type, count});
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
     poolInfo.poolSizeCount = uint32_t(sizes.size());
@@ -70,7 +71,8 @@ ComputePipeline::ComputePipeline(const Context& ctx, const uint32_t* spirv, size
       writes[i].dstBinding = bindings[i].binding;
       writes[i].descriptorCount = 1;
       writes[i].descriptorType = bindings[i].type;
-      writes[i].pBufferInfo = &infos[i];
+      if (bindings[i].type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) writes[i].pTexelBufferView = &bindings[i].view;
+      else writes[i].pBufferInfo = &infos[i];
     }
     vkUpdateDescriptorSets(dev, uint32_t(writes.size()), writes.data(), 0, nullptr);
   } catch (...) {

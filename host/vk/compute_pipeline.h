@@ -1,5 +1,5 @@
-// A compute pipeline with one descriptor set of buffers (set 0): shader module, layouts,
-// pool and set, owned together.
+// A compute pipeline with one descriptor set of buffers and texel buffers (set 0):
+// shader module, layouts, pool and set, owned together.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -16,8 +16,9 @@ namespace vkpt::vk {
 
 struct BufferBinding {
   uint32_t binding;
-  VkDescriptorType type;  // STORAGE_BUFFER or UNIFORM_BUFFER
-  VkBuffer buffer;
+  VkDescriptorType type;  // STORAGE_BUFFER, UNIFORM_BUFFER or UNIFORM_TEXEL_BUFFER
+  VkBuffer buffer;        // the buffer types
+  VkBufferView view = VK_NULL_HANDLE;  // UNIFORM_TEXEL_BUFFER
 };
 
 class ComputePipeline {

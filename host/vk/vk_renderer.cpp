@@ -41,10 +41,12 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
     : ctx_(ctx),
       spirv_(spirv ? spirv : kPathTraceSpirv),
       spirvBytes_(spirv ? spirvBytes : sizeof(kPathTraceSpirv)),
-      triangles_(Upload(ctx, scene.triangles, "triangles")),
-      nodes_(Upload(ctx, scene.nodes, "BVH nodes")),
+      triangles_(UploadTexels(ctx, scene.triangles.data(), scene.triangles.size() * sizeof(shader::Triangle), "triangles")),
+      nodes_(UploadTexels(ctx, scene.nodes.data(), scene.nodes.size() * sizeof(shader::BvhNode), "BVH nodes")),
       materials_(Upload(ctx, scene.materials, "materials")),
       emitters_(Upload(ctx, scene.emitters, "emitters")),
+      triangleTexels_(ctx, triangles_, "triangles"),
+      nodeTexels_(ctx, nodes_, "BVH nodes"),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
@@ -56,8 +58,8 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "frame params");
   ComputePipeline pipeline(ctx_, spirv_, spirvBytes_,
                            {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.Handle()},
-                            {shader::kBindingTriangles, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, triangles_.Handle()},
-                            {shader::kBindingNodes, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nodes_.Handle()},
+                            {shader::kBindingTriangles, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, triangles_.Handle(), triangleTexels_.Handle()},
+                            {shader::kBindingNodes, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, nodes_.Handle(), nodeTexels_.Handle()},
                             {shader::kBindingMaterials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, materials_.Handle()},
                             {shader::kBindingEmitters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, emitters_.Handle()},
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, accum.Handle()},
@@ -117,8 +119,8 @@ std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQ
   Buffer rayBuffer = Upload(ctx_, rays, "rays");
   Buffer hits = Storage(ctx_, rays.size() * sizeof(shader::HitRecord), "hits");
   ComputePipeline pipeline(ctx_, kTraceSpirv, sizeof(kTraceSpirv),
-                           {{shader::kBindingTriangles, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, triangles_.Handle()},
-                            {shader::kBindingNodes, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, nodes_.Handle()},
+                           {{shader::kBindingTriangles, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, triangles_.Handle(), triangleTexels_.Handle()},
+                            {shader::kBindingNodes, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, nodes_.Handle(), nodeTexels_.Handle()},
                             {shader::kBindingRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, rayBuffer.Handle()},
                             {shader::kBindingHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, hits.Handle()}},
                            "trace", 2 * sizeof(uint32_t));

@@ -49,7 +49,10 @@ class GpuRenderer {
   const Context& ctx_;
   const uint32_t* spirv_;
   size_t spirvBytes_;
+  // Triangles and nodes are read as texel buffers: gathers through lavapipe's texture
+  // path are vectorised, its storage-buffer loads go lane by lane.
   Buffer triangles_, nodes_, materials_, emitters_;
+  TexelView triangleTexels_, nodeTexels_;
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 

@@ -51,6 +51,11 @@ struct BvhNode {
 
 const uint kMaxLeafSize = 15u;
 
+// The shaders read triangles and nodes as RGBA32UI texels (shaders/scene_fetch.glsl):
+// 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
+const uint kTexelsPerTriangle = 3u;
+const uint kTexelsPerNode = 2u;
+
 const uint kMaterialDoubleSided = 1u;
 
 // Lambertian reflectance plus emission. metallic/roughness are carried for the

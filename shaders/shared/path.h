@@ -62,12 +62,9 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
       result.radiance += throughput * params.background;
       break;
     }
-    // Fields are read one by one, not as whole structs: on a SIMD device every load is a
-    // gather, and lavapipe runs ~40 % faster without the unused ones.
-    uint material = VKPT_TRIANGLE(hit.triangle).material;
-    vec3 e1 = VKPT_TRIANGLE(hit.triangle).e1;
-    vec3 e2 = VKPT_TRIANGLE(hit.triangle).e2;
-    vec3 ng = normalize(cross(e1, e2));
+    Triangle tri = VKPT_TRIANGLE(hit.triangle);
+    uint material = tri.material;
+    vec3 ng = normalize(cross(tri.e1, tri.e2));
     bool frontFace = dot(ng, ray.dir) < 0.0f;
     uint flags = VKPT_MATERIAL(material).flags;
     if (bounce == 0u && (frontFace || (flags & kMaterialDoubleSided) != 0u))
@@ -78,7 +75,7 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
 
     // Surfaces reflect on both sides: shade with the normal facing the incoming ray.
     vec3 n = frontFace ? ng : -ng;
-    vec3 p = VKPT_TRIANGLE(hit.triangle).v0 + hit.b1 * e1 + hit.b2 * e2;
+    vec3 p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
     vec3 baseColor = VKPT_MATERIAL(material).baseColor;
     vec3 origin = OffsetRayOrigin(p, n);
 
@@ -93,12 +90,11 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
       Emitter e = VKPT_EMITTER(k);
       float cdfBelow = k > 0u ? VKPT_EMITTER(k - 1u).cdf : 0.0f;
       us.x = min((us.x - cdfBelow) / (e.cdf - cdfBelow), kOneMinusEpsilon);
-      vec3 le1 = VKPT_TRIANGLE(e.triangle).e1;
-      vec3 le2 = VKPT_TRIANGLE(e.triangle).e2;
-      uint lightMaterial = VKPT_TRIANGLE(e.triangle).material;
+      Triangle light = VKPT_TRIANGLE(e.triangle);
+      uint lightMaterial = light.material;
       vec2 b = SampleUniformTriangle(us.x, us.y);
-      vec3 x = VKPT_TRIANGLE(e.triangle).v0 + b.x * le1 + b.y * le2;
-      vec3 nl = normalize(cross(le1, le2));
+      vec3 x = light.v0 + b.x * light.e1 + b.y * light.e2;
+      vec3 nl = normalize(cross(light.e1, light.e2));
       bool twoSided = (VKPT_MATERIAL(lightMaterial).flags & kMaterialDoubleSided) != 0u;
       float w = LightSampleWeight(p, n, x, nl, twoSided, e.pmf, e.area);
       if (w > 0.0f) {
