@@ -12,8 +12,6 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std140, binding = kBindingParams) uniform Params { FrameParams params; };
-layout(std430, binding = kBindingMaterials) readonly buffer Materials { Material materials[]; };
-layout(std430, binding = kBindingEmitters) readonly buffer Emitters { Emitter emitters[]; };
 // Per pixel: [2i] = (Σ L, unused), [2i + 1] = (Σ L², unused), over all samples so far.
 layout(std430, binding = kBindingAccum) buffer Accum { vec4 accum[]; };
 // Per pixel: (rays traced, non-finite samples discarded, samples possibly cut short, 0).
@@ -24,8 +22,8 @@ layout(push_constant) uniform Push { uint sampleInBatch; };
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
 #define VKPT_TRIANGLE(i) FetchTriangle(i)
-#define VKPT_MATERIAL(i) materials[i]
-#define VKPT_EMITTER(i) emitters[i]
+#define VKPT_MATERIAL(i) FetchMaterial(i)
+#define VKPT_EMITTER(i) FetchEmitter(i)
 
 #include "traverse.glsl"
 

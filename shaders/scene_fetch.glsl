@@ -1,6 +1,6 @@
-// Scene geometry for the shaders: triangles and BVH nodes read from uniform texel buffers
-// of RGBA32UI texels (16 bytes; kTexelsPerTriangle / kTexelsPerNode per struct, the
-// std430 layouts of shared/layout.h byte for byte).
+// The scene for the shaders: triangles, BVH nodes, materials and emitters read from
+// uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per struct, the std430
+// layouts of shared/layout.h byte for byte).
 //
 // Why texels and not storage-buffer structs: lavapipe (Mesa 22.3) loads a storage buffer
 // lane by lane — a loop over the 8 SIMD lanes with a bounds-checked scalar load per
@@ -14,6 +14,8 @@
 
 layout(binding = kBindingTriangles) uniform usamplerBuffer triangleTexels;
 layout(binding = kBindingNodes) uniform usamplerBuffer nodeTexels;
+layout(binding = kBindingMaterials) uniform usamplerBuffer materialTexels;
+layout(binding = kBindingEmitters) uniform usamplerBuffer emitterTexels;
 
 BvhNode FetchNode(uint i) {
   uvec4 a = texelFetch(nodeTexels, int(kTexelsPerNode * i));
@@ -38,6 +40,32 @@ Triangle FetchTriangle(uint k) {
   t.e2 = uintBitsToFloat(c.xyz);
   t.pad0 = c.w;
   return t;
+}
+
+Material FetchMaterial(uint m) {
+  uvec4 a = texelFetch(materialTexels, int(kTexelsPerMaterial * m));
+  uvec4 b = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 1u));
+  uvec4 c = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 2u));
+  Material mat;
+  mat.baseColor = uintBitsToFloat(a.xyz);
+  mat.metallic = uintBitsToFloat(a.w);
+  mat.emission = uintBitsToFloat(b.xyz);
+  mat.roughness = uintBitsToFloat(b.w);
+  mat.flags = c.x;
+  mat.pad0 = c.y;
+  mat.pad1 = c.z;
+  mat.pad2 = c.w;
+  return mat;
+}
+
+Emitter FetchEmitter(uint e) {
+  uvec4 a = texelFetch(emitterTexels, int(kTexelsPerEmitter * e));
+  Emitter em;
+  em.triangle = a.x;
+  em.cdf = uintBitsToFloat(a.y);
+  em.pmf = uintBitsToFloat(a.z);
+  em.area = uintBitsToFloat(a.w);
+  return em;
 }
 
 #endif

@@ -18,8 +18,6 @@ static_assert(sizeof(BvhNode) == 32);
 static_assert(offsetof(BvhNode, lo) == 0 && offsetof(BvhNode, skip) == 12);
 static_assert(offsetof(BvhNode, hi) == 16 && offsetof(BvhNode, leaf) == 28);
 
-static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(BvhNode) == 16 * kTexelsPerNode);
-
 static_assert(sizeof(Material) == 48);
 static_assert(offsetof(Material, baseColor) == 0 && offsetof(Material, metallic) == 12);
 static_assert(offsetof(Material, emission) == 16 && offsetof(Material, roughness) == 28);
@@ -29,6 +27,9 @@ static_assert(sizeof(Emitter) == 16);
 static_assert(offsetof(Emitter, cdf) == 4 && offsetof(Emitter, pmf) == 8 && offsetof(Emitter, area) == 12);
 
 static_assert(sizeof(RayQuery) == 32);
+static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(BvhNode) == 16 * kTexelsPerNode);
+static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Emitter) == 16 * kTexelsPerEmitter);
+
 static_assert(offsetof(RayQuery, tMax) == 12 && offsetof(RayQuery, dir) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, triangle) == 12);
 

@@ -100,14 +100,17 @@ Buffer UploadStorage(const Context& ctx, const void* data, size_t bytes, const s
   return UploadDeviceLocal(ctx, data, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, what);
 }
 
-Buffer UploadTexels(const Context& ctx, const void* data, size_t bytes, const std::string& what) {
+TexelBuffer UploadTexelBuffer(const Context& ctx, const void* data, size_t bytes, const std::string& what) {
   const uint64_t texels = (bytes + 15) / 16;
   const uint32_t limit = ctx.Properties().limits.maxTexelBufferElements;
   if (texels > limit)
     throw Error("the scene's " + what + " need " + std::to_string(texels) + " texels of 16 bytes, but " +
                 ctx.DeviceName() + " allows at most " + std::to_string(limit) +
                 " per texel buffer (maxTexelBufferElements); render this scene with --backend cpu");
-  return UploadDeviceLocal(ctx, data, bytes, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, what);
+  TexelBuffer t;
+  t.buffer = UploadDeviceLocal(ctx, data, bytes, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, what);
+  t.view = TexelView(ctx, t.buffer, what);
+  return t;
 }
 
 TexelView::TexelView(const Context& ctx, const Buffer& buffer, const std::string& what) : ctx_(&ctx) {

@@ -36,13 +36,12 @@ class Buffer {
   void* mapped_ = nullptr;
 };
 
-// Device-local buffers holding `bytes`, uploaded through a staging buffer: a storage
-// buffer (checked against maxStorageBufferRange), or a buffer for a TexelView.
+// A device-local storage buffer holding `bytes`, uploaded through a staging buffer;
+// checked against maxStorageBufferRange.
 Buffer UploadStorage(const Context& ctx, const void* data, size_t bytes, const std::string& what);
-Buffer UploadTexels(const Context& ctx, const void* data, size_t bytes, const std::string& what);
 
 // A view of a whole buffer as a uniform texel buffer of RGBA32UI texels (16 bytes), which
-// shaders read with texelFetch. Checks maxTexelBufferElements and the format's support.
+// shaders read with texelFetch. Checks that the device supports the format for that.
 class TexelView {
  public:
   TexelView() = default;
@@ -60,5 +59,13 @@ class TexelView {
   const Context* ctx_ = nullptr;
   VkBufferView view_ = VK_NULL_HANDLE;
 };
+
+// A device-local buffer and its texel view, uploaded through a staging buffer; checked
+// against maxTexelBufferElements.
+struct TexelBuffer {
+  Buffer buffer;
+  TexelView view;
+};
+TexelBuffer UploadTexelBuffer(const Context& ctx, const void* data, size_t bytes, const std::string& what);
 
 }  // namespace vkpt::vk

@@ -20,6 +20,15 @@ Buffer Upload(const Context& ctx, const std::vector<T>& v, const char* what) {
   return UploadStorage(ctx, v.data(), v.size() * sizeof(T), what);
 }
 
+template <class T>
+TexelBuffer UploadArray(const Context& ctx, const std::vector<T>& v, const char* what) {
+  return UploadTexelBuffer(ctx, v.data(), v.size() * sizeof(T), what);
+}
+
+BufferBinding TexelBinding(uint32_t binding, const TexelBuffer& t) {
+  return {binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, t.buffer.Handle(), t.view.Handle()};
+}
+
 Buffer Storage(const Context& ctx, VkDeviceSize size, const char* what) {
   const VkDeviceSize limit = ctx.Properties().limits.maxStorageBufferRange;
   if (size > limit)
@@ -41,12 +50,10 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
     : ctx_(ctx),
       spirv_(spirv ? spirv : kPathTraceSpirv),
       spirvBytes_(spirv ? spirvBytes : sizeof(kPathTraceSpirv)),
-      triangles_(UploadTexels(ctx, scene.triangles.data(), scene.triangles.size() * sizeof(shader::Triangle), "triangles")),
-      nodes_(UploadTexels(ctx, scene.nodes.data(), scene.nodes.size() * sizeof(shader::BvhNode), "BVH nodes")),
-      materials_(Upload(ctx, scene.materials, "materials")),
-      emitters_(Upload(ctx, scene.emitters, "emitters")),
-      triangleTexels_(ctx, triangles_, "triangles"),
-      nodeTexels_(ctx, nodes_, "BVH nodes"),
+      triangles_(UploadArray(ctx, scene.triangles, "triangles")),
+      nodes_(UploadArray(ctx, scene.nodes, "BVH nodes")),
+      materials_(UploadArray(ctx, scene.materials, "materials")),
+      emitters_(UploadArray(ctx, scene.emitters, "emitters")),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
@@ -58,10 +65,10 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "frame params");
   ComputePipeline pipeline(ctx_, spirv_, spirvBytes_,
                            {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.Handle()},
-                            {shader::kBindingTriangles, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, triangles_.Handle(), triangleTexels_.Handle()},
-                            {shader::kBindingNodes, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, nodes_.Handle(), nodeTexels_.Handle()},
-                            {shader::kBindingMaterials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, materials_.Handle()},
-                            {shader::kBindingEmitters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, emitters_.Handle()},
+                            TexelBinding(shader::kBindingTriangles, triangles_),
+                            TexelBinding(shader::kBindingNodes, nodes_),
+                            TexelBinding(shader::kBindingMaterials, materials_),
+                            TexelBinding(shader::kBindingEmitters, emitters_),
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counters.Handle()}},
                            "pathtrace", sizeof(uint32_t));
@@ -119,8 +126,8 @@ std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQ
   Buffer rayBuffer = Upload(ctx_, rays, "rays");
   Buffer hits = Storage(ctx_, rays.size() * sizeof(shader::HitRecord), "hits");
   ComputePipeline pipeline(ctx_, kTraceSpirv, sizeof(kTraceSpirv),
-                           {{shader::kBindingTriangles, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, triangles_.Handle(), triangleTexels_.Handle()},
-                            {shader::kBindingNodes, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, nodes_.Handle(), nodeTexels_.Handle()},
+                           {TexelBinding(shader::kBindingTriangles, triangles_),
+                            TexelBinding(shader::kBindingNodes, nodes_),
                             {shader::kBindingRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, rayBuffer.Handle()},
                             {shader::kBindingHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, hits.Handle()}},
                            "trace", 2 * sizeof(uint32_t));

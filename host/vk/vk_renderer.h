@@ -49,10 +49,8 @@ class GpuRenderer {
   const Context& ctx_;
   const uint32_t* spirv_;
   size_t spirvBytes_;
-  // Triangles and nodes are read as texel buffers: gathers through lavapipe's texture
-  // path are vectorised, its storage-buffer loads go lane by lane.
-  Buffer triangles_, nodes_, materials_, emitters_;
-  TexelView triangleTexels_, nodeTexels_;
+  // The scene is read as texel buffers (shaders/scene_fetch.glsl says why).
+  TexelBuffer triangles_, nodes_, materials_, emitters_;
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 

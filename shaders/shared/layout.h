@@ -13,10 +13,10 @@ VKPT_BEGIN_NAMESPACE
 
 // Descriptor bindings of the path-tracing pipeline (set 0).
 const uint kBindingParams = 0u;     // uniform FrameParams
-const uint kBindingTriangles = 1u;  // readonly buffer Triangle[]
-const uint kBindingNodes = 2u;      // readonly buffer BvhNode[]
-const uint kBindingMaterials = 3u;  // readonly buffer Material[]
-const uint kBindingEmitters = 4u;   // readonly buffer Emitter[]
+const uint kBindingTriangles = 1u;  // texel buffer of Triangle
+const uint kBindingNodes = 2u;      // texel buffer of BvhNode
+const uint kBindingMaterials = 3u;  // texel buffer of Material
+const uint kBindingEmitters = 4u;   // texel buffer of Emitter
 const uint kBindingAccum = 5u;      // buffer vec4[2 per pixel]: Σ L, Σ L²
 const uint kBindingCounters = 6u;   // buffer uvec4[] per pixel: rays, non-finite, cut short, 0
 // The trace-only kernel (trace.comp) reuses kBindingTriangles and kBindingNodes, plus:
@@ -51,10 +51,7 @@ struct BvhNode {
 
 const uint kMaxLeafSize = 15u;
 
-// The shaders read triangles and nodes as RGBA32UI texels (shaders/scene_fetch.glsl):
-// 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
-const uint kTexelsPerTriangle = 3u;
-const uint kTexelsPerNode = 2u;
+
 
 const uint kMaterialDoubleSided = 1u;
 
@@ -80,6 +77,13 @@ struct Emitter {
   float pmf;
   float area;
 };
+
+// The shaders read the scene arrays above as RGBA32UI texels (shaders/scene_fetch.glsl):
+// 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
+const uint kTexelsPerTriangle = 3u;
+const uint kTexelsPerNode = 2u;
+const uint kTexelsPerMaterial = 3u;
+const uint kTexelsPerEmitter = 1u;
 
 // A ray for the trace-only kernel: closest hit along origin + t·dir, t ∈ (0, tMax).
 struct RayQuery {

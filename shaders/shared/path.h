@@ -63,12 +63,11 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
       break;
     }
     Triangle tri = VKPT_TRIANGLE(hit.triangle);
-    uint material = tri.material;
+    Material mat = VKPT_MATERIAL(tri.material);
     vec3 ng = normalize(cross(tri.e1, tri.e2));
     bool frontFace = dot(ng, ray.dir) < 0.0f;
-    uint flags = VKPT_MATERIAL(material).flags;
-    if (bounce == 0u && (frontFace || (flags & kMaterialDoubleSided) != 0u))
-      result.radiance += throughput * VKPT_MATERIAL(material).emission;
+    if (bounce == 0u && (frontFace || (mat.flags & kMaterialDoubleSided) != 0u))
+      result.radiance += throughput * mat.emission;
     // Paths have at most maxDepth bounces: the light sample at vertex k, and the ray
     // leaving it (which may escape to the environment), make k + 1.
     if (bounce >= params.maxDepth) break;
@@ -76,7 +75,7 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
     // Surfaces reflect on both sides: shade with the normal facing the incoming ray.
     vec3 n = frontFace ? ng : -ng;
     vec3 p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
-    vec3 baseColor = VKPT_MATERIAL(material).baseColor;
+    vec3 baseColor = mat.baseColor;
     vec3 origin = OffsetRayOrigin(p, n);
 
     vec4 ul = Random4(params.seed, pixel, sampleIndex, LightGroup(bounce));
@@ -91,11 +90,11 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
       float cdfBelow = k > 0u ? VKPT_EMITTER(k - 1u).cdf : 0.0f;
       us.x = min((us.x - cdfBelow) / (e.cdf - cdfBelow), kOneMinusEpsilon);
       Triangle light = VKPT_TRIANGLE(e.triangle);
-      uint lightMaterial = light.material;
+      Material lightMat = VKPT_MATERIAL(light.material);
       vec2 b = SampleUniformTriangle(us.x, us.y);
       vec3 x = light.v0 + b.x * light.e1 + b.y * light.e2;
       vec3 nl = normalize(cross(light.e1, light.e2));
-      bool twoSided = (VKPT_MATERIAL(lightMaterial).flags & kMaterialDoubleSided) != 0u;
+      bool twoSided = (lightMat.flags & kMaterialDoubleSided) != 0u;
       float w = LightSampleWeight(p, n, x, nl, twoSided, e.pmf, e.area);
       if (w > 0.0f) {
         // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
@@ -103,7 +102,7 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
         vec3 target = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl);
         result.rays += 1u;
         if (!TraceOccluded(VKPT_SCENE_ARG origin, target - origin, 1.0f))
-          result.radiance += throughput * (baseColor * kInvPi) * VKPT_MATERIAL(lightMaterial).emission * w;
+          result.radiance += throughput * (baseColor * kInvPi) * lightMat.emission * w;
       }
     }
 
