@@ -127,6 +127,22 @@ TEST(Rng, LoopFreeSobolMatchesDirectionNumbers) {
   EXPECT_EQ(shader::ReverseBits(0x12345678u), 0x1E6A2C48u);
 }
 
+// Sample2D leaves out paired bit reversals; its values must be those of the plain
+// composition: scrambled index, then each Sobol dimension Owen-scrambled.
+TEST(Rng, Sample2DEqualsTheScrambledSobolComposition) {
+  std::mt19937 rng(5);
+  for (int n = 0; n < 100000; ++n) {
+    uint32_t seed = rng(), pixel = rng(), sample = n < 50000 ? uint32_t(n) : uint32_t(rng()), pair = rng() % 64;
+    glm::uvec4 h = shader::Pcg4d(glm::uvec4(pixel, pair, seed, 0x50B0150Bu));
+    uint32_t index = shader::NestedUniformScramble(sample, h.x);
+    uint32_t x = shader::NestedUniformScramble(shader::ReverseBits(index), h.y);
+    uint32_t y = shader::NestedUniformScramble(shader::SobolSecondDimension(index), h.z);
+    glm::vec2 u = shader::Sample2D(seed, pixel, sample, pair);
+    ASSERT_EQ(u.x, shader::ToUnitFloat(x)) << n;
+    ASSERT_EQ(u.y, shader::ToUnitFloat(y)) << n;
+  }
+}
+
 // The first 2^m samples of a pixel's pair form a (0, m, 2)-net: every elementary
 // interval [a/2^i, (a+1)/2^i) × [b/2^j, (b+1)/2^j) with i + j = m holds exactly one point.
 TEST(Rng, Sample2DIsStratifiedPerPixel) {

@@ -69,24 +69,32 @@ VKPT_FN uint NestedUniformScramble(uint x, uint seed) {
 
 // Second Sobol dimension without a loop. Its generator matrix is Pascal's triangle mod 2:
 // output digit m collects index bits b with C(b, m) odd, i.e. (Lucas) m ⊆ b. That is a
-// superset transform over the 5-bit positions, done in five masked xor-shifts; the digit
-// order is then reversed into a binary fraction.
-VKPT_FN uint SobolSecondDimension(uint index) {
+// superset transform over the 5-bit positions, done in five masked xor-shifts. This
+// returns the digits in index bit order (digit m at bit m); SobolSecondDimension reverses
+// them into a binary fraction.
+VKPT_FN uint SobolSecondDigits(uint index) {
   uint y = index;
   y ^= (y >> 1u) & 0x55555555u;
   y ^= (y >> 2u) & 0x33333333u;
   y ^= (y >> 4u) & 0x0F0F0F0Fu;
   y ^= (y >> 8u) & 0x00FF00FFu;
   y ^= (y >> 16u) & 0x0000FFFFu;
-  return ReverseBits(y);
+  return y;
 }
 
-// Point `sampleIndex` of dimension pair `pair` of `pixel`, in [0,1)².
+VKPT_FN uint SobolSecondDimension(uint index) { return ReverseBits(SobolSecondDigits(index)); }
+
+// Point `sampleIndex` of dimension pair `pair` of `pixel`, in [0,1)²: the shuffled index
+// (an Owen-scrambled sample index), then Owen-scrambled Sobol dimensions 1 and 2 of it.
+// Written out, NestedUniformScramble(ReverseBits(v), s) is ReverseBits(Lk(v, s)) — the
+// first dimension is the bit-reversed index, and SobolSecondDimension ends in a
+// reversal — so the paired reversals are left out; the values are those of the
+// composition exactly.
 VKPT_FN vec2 Sample2D(uint seed, uint pixel, uint sampleIndex, uint pair) {
   uvec4 h = Pcg4d(uvec4(pixel, pair, seed, 0x50B0150Bu));
   uint index = NestedUniformScramble(sampleIndex, h.x);
-  uint x = NestedUniformScramble(ReverseBits(index), h.y);
-  uint y = NestedUniformScramble(SobolSecondDimension(index), h.z);
+  uint x = ReverseBits(LaineKarrasPermutation(index, h.y));
+  uint y = ReverseBits(LaineKarrasPermutation(SobolSecondDigits(index), h.z));
   return vec2(ToUnitFloat(x), ToUnitFloat(y));
 }
 
