@@ -126,7 +126,7 @@ RaySets MakeRays(const RenderScene& rs, const shader::FrameParams& p, unsigned t
     }
   std::vector<Hit> hits(r.camera.size());
   ParallelFor(hits.size(), threads, [&](size_t i) {
-    hits[i] = IntersectClosest(rs.nodes, rs.triangles, r.camera[i].origin, r.camera[i].dir, r.camera[i].tMax);
+    hits[i] = IntersectClosest(rs, r.camera[i].origin, r.camera[i].dir, r.camera[i].tMax);
   });
   for (size_t i = 0; i < hits.size(); ++i) {
     if (hits[i].t < 0.0f) continue;
@@ -151,7 +151,7 @@ TraceRun TraceCpu(const RenderScene& rs, const std::vector<shader::RayQuery>& ra
   run.t.resize(rays.size());
   auto t0 = Clock::now();
   ParallelFor(rays.size(), threads, [&](size_t i) {
-    run.t[i] = IntersectClosest(rs.nodes, rs.triangles, rays[i].origin, rays[i].dir, rays[i].tMax).t;
+    run.t[i] = IntersectClosest(rs, rays[i].origin, rays[i].dir, rays[i].tMax).t;
   });
   run.seconds = Seconds(t0);
   return run;

@@ -200,7 +200,7 @@ void CompareWithBruteForce(const RenderScene& rs, uint32_t rays, uint32_t seed) 
     if (glm::length(d) == 0.0f) continue;
     d = glm::normalize(d);
     BruteHit ref = BruteForce(rs, o, d);
-    Hit h = IntersectClosest(rs.nodes, rs.triangles, o, d, shader::kInfinity);
+    Hit h = IntersectClosest(rs, o, d, shader::kInfinity);
     if (ref.t >= 0.0f) ++hits;
     if (h.t != ref.t) {
       ++mismatches;
@@ -213,7 +213,7 @@ void CompareWithBruteForce(const RenderScene& rs, uint32_t rays, uint32_t seed) 
     // Any-hit must agree with the closest hit about whether something is in the way.
     float tMax = ref.t >= 0.0f ? ref.t * 1.5f : 100.0f;
     bool expectOccluded = ref.t >= 0.0f;
-    if (Occluded(rs.nodes, rs.triangles, o, d, tMax) != expectOccluded) ++occlusionMismatches;
+    if (Occluded(rs, o, d, tMax) != expectOccluded) ++occlusionMismatches;
   }
   std::printf("%u rays: %u hits, %u ties, %u mismatches, %u occlusion mismatches\n", rays, hits, ties, mismatches,
               occlusionMismatches);

@@ -145,7 +145,7 @@ void CompareTraversal(const RenderScene& rs, uint32_t count, uint32_t seed, bool
         if (h.x >= 0.0f) refT = tMax = h.x, refTri = k;
       }
     } else {
-      Hit h = IntersectClosest(rs.nodes, rs.triangles, r.origin, r.dir, r.tMax);
+      Hit h = IntersectClosest(rs, r.origin, r.dir, r.tMax);
       refT = h.t;
       refTri = h.triangle;
     }

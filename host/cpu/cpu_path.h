@@ -15,11 +15,11 @@
 namespace vkpt::shader {
 
 inline HitRecord TraceClosest(const RenderScene& scene, vec3 origin, vec3 dir, float tMax) {
-  return IntersectClosest(scene.nodes, scene.triangles, origin, dir, tMax);
+  return IntersectClosest(scene, origin, dir, tMax);
 }
 
 inline bool TraceOccluded(const RenderScene& scene, vec3 origin, vec3 dir, float tMax) {
-  return Occluded(scene.nodes, scene.triangles, origin, dir, tMax);
+  return Occluded(scene, origin, dir, tMax);
 }
 
 }  // namespace vkpt::shader

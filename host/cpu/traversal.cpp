@@ -1,26 +1,76 @@
 #include "cpu/traversal.h"
 
-#include "bvh/bvh.h"
+#include <cstring>
+#include <vector>
+
 #include "shared/intersect.h"
 
 namespace vkpt {
 namespace {
+
+// Four floats in one SSE/NEON register, through the compiler's generic vector extension
+// (GCC and Clang), so the code stays portable and needs no intrinsics.
+typedef float Float4 __attribute__((vector_size(16)));
+typedef int32_t Int4 __attribute__((vector_size(16)));
+
+Float4 Splat(float x) { return Float4{x, x, x, x}; }
+// x86 minps/maxps are exactly these selects, and the compilers emit them for it.
+Float4 Min(Float4 a, Float4 b) { return a < b ? a : b; }
+Float4 Max(Float4 a, Float4 b) { return a > b ? a : b; }
+Float4 SwapHalves(Float4 v) {
+#if defined(__clang__)
+  return __builtin_shufflevector(v, v, 2, 3, 0, 1);
+#else
+  return __builtin_shuffle(v, Int4{2, 3, 0, 1});
+#endif
+}
+
+struct RaySlabs {
+  Float4 origin[3];
+  Float4 invDir[3];
+};
+
+// The slab test of shader::IntersectBox (same operations, so the same decisions) on both
+// children at once. Lanes hold {lo0, lo1, hi0, hi1} per axis; after (b − o)·(1/d), the
+// per-lane min/max against the half-swapped vector gives each child's near and far slab
+// distance in lanes 0 and 1. Returns a 2-bit hit mask; tEnter gets the entry distances.
+int IntersectPair(const BvhPairNode& p, const RaySlabs& r, float tMax, float tEnter[2]) {
+  Float4 enter = Splat(0.0f), exit = Splat(tMax);
+  for (int axis = 0; axis < 3; ++axis) {
+    Float4 b;
+    std::memcpy(&b, p.bounds[axis], sizeof b);
+    Float4 t = (b - r.origin[axis]) * r.invDir[axis];
+    Float4 s = SwapHalves(t);
+    enter = Max(enter, Min(t, s));
+    exit = Min(exit, Max(t, s));
+  }
+  exit *= Splat(1.0000004f);  // the 1 + 2γ₃ slack of IntersectBox
+  Int4 hit = enter <= exit;
+  tEnter[0] = enter[0];
+  tEnter[1] = enter[1];
+  return (hit[0] & 1) | (hit[1] & 2);
+}
 
 // Depth of the explicit stack. The builder bounds nothing about depth, so the stack
 // grows on the heap past this (pathological trees only).
 constexpr int kInlineStack = 64;
 
 template <bool kAnyHit>
-Hit Traverse(const std::vector<shader::BvhNode>& nodes, const std::vector<shader::Triangle>& tris,
-             glm::vec3 origin, glm::vec3 dir, float tMax, TraversalCounters* counters) {
-  using shader::IntersectBox;
+Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax) {
   using shader::IntersectTriangle;
   Hit hit{-1.0f, 0.0f, 0.0f, shader::kInvalidIndex};
+  const std::vector<shader::Triangle>& tris = scene.triangles;
+  const std::vector<BvhPairNode>& pairs = scene.pairLayout.pairs;
   const glm::vec3 inv = shader::SafeInverse(dir);
-  // Deferred far children with their entry distances: a popped entry beyond the closest
-  // hit found since is dropped without testing its box again.
+  RaySlabs slabs;
+  for (int axis = 0; axis < 3; ++axis) {
+    slabs.origin[axis] = Splat(origin[axis]);
+    slabs.invDir[axis] = Splat(inv[axis]);
+  }
+  // Deferred far children (pair index << 4, or a leaf code) with their entry distances:
+  // a popped entry beyond the closest hit found since is dropped without another test.
   struct Entry {
-    uint32_t node;
+    uint32_t code;
     float tEnter;
   };
   Entry inlineStack[kInlineStack];
@@ -37,38 +87,38 @@ Hit Traverse(const std::vector<shader::BvhNode>& nodes, const std::vector<shader
     return true;
   };
 
-  uint64_t visited = 0, tested = 0;
-  uint32_t n = 0;
-  if (IntersectBox(nodes[0].lo, nodes[0].hi, origin, inv, tMax) < 0.0f) return hit;
+  // The root's own box is not tested: its children's boxes cull as well. A single-leaf
+  // tree has no pairs; its leaf is the whole walk.
+  uint32_t code = scene.pairLayout.rootLeaf;
   for (;;) {
-    const shader::BvhNode& node = nodes[n];
-    ++visited;
-    if (IsLeaf(node)) {
-      for (uint32_t i = LeafFirst(node), e = i + LeafCount(node); i < e; ++i) {
-        ++tested;
+    if (IsLeafCode(code)) {
+      for (uint32_t i = code >> 4, e = i + (code & 15u); i < e; ++i) {
         const shader::Triangle& t = tris[i];
         glm::vec3 r = IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax);
         if (r.x >= 0.0f) {
           hit = {r.x, r.y, r.z, i};
-          if (kAnyHit) goto done;
+          if (kAnyHit) return hit;
           tMax = r.x;
         }
       }
     } else {
-      uint32_t a = FirstChild(n), b = SecondChild(nodes, n);
-      float ta = IntersectBox(nodes[a].lo, nodes[a].hi, origin, inv, tMax);
-      float tb = IntersectBox(nodes[b].lo, nodes[b].hi, origin, inv, tMax);
-      if (ta >= 0.0f && tb >= 0.0f) {
-        if (tb < ta) {
-          std::swap(a, b);
-          std::swap(ta, tb);
+      const BvhPairNode& p = pairs[code >> 4];
+      float t[2];
+      switch (IntersectPair(p, slabs, tMax, t)) {
+        case 1: code = p.child[0]; continue;
+        case 2: code = p.child[1]; continue;
+        case 3: {
+          int nearChild = t[1] < t[0] ? 1 : 0;
+          uint32_t far = p.child[1 - nearChild];
+          // Its record is needed only after the near subtree: fetch it meanwhile (1 M
+          // triangles, diffuse rays: +25 %; prefetching far leaves' triangles gave nothing).
+          if (!IsLeafCode(far)) __builtin_prefetch(&pairs[far >> 4]);
+          push({far, t[1 - nearChild]});  // revisited later unless a closer hit culls it
+          code = p.child[nearChild];
+          continue;
         }
-        push({b, tb});  // farther child: revisited later unless a closer hit culls it
-        n = a;
-        continue;
+        default: break;
       }
-      if (ta >= 0.0f) { n = a; continue; }
-      if (tb >= 0.0f) { n = b; continue; }
     }
     // Pop until an entry still in front of the closest hit. The box test's exit slack
     // (1 + 2γ₃) is applied to tMax so culling stays as conservative as the test itself.
@@ -78,26 +128,19 @@ Hit Traverse(const std::vector<shader::BvhNode>& nodes, const std::vector<shader
       if (e.tEnter <= tMax * 1.0000004f) { found = true; break; }
     }
     if (!found) break;
-    n = e.node;
-  }
-done:
-  if (counters) {
-    counters->nodesVisited += visited;
-    counters->trianglesTested += tested;
+    code = e.code;
   }
   return hit;
 }
 
 }  // namespace
 
-Hit IntersectClosest(const std::vector<shader::BvhNode>& nodes, const std::vector<shader::Triangle>& triangles,
-                     glm::vec3 origin, glm::vec3 dir, float tMax, TraversalCounters* counters) {
-  return Traverse<false>(nodes, triangles, origin, dir, tMax, counters);
+Hit IntersectClosest(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax) {
+  return Traverse<false>(scene, origin, dir, tMax);
 }
 
-bool Occluded(const std::vector<shader::BvhNode>& nodes, const std::vector<shader::Triangle>& triangles,
-              glm::vec3 origin, glm::vec3 dir, float tMax) {
-  return Traverse<true>(nodes, triangles, origin, dir, tMax, nullptr).t >= 0.0f;
+bool Occluded(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax) {
+  return Traverse<true>(scene, origin, dir, tMax).t >= 0.0f;
 }
 
 }  // namespace vkpt

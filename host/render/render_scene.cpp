@@ -40,6 +40,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   Bvh bvh = BuildBvh(bounds, options);
 
   rs.nodes = std::move(bvh.nodes);
+  rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes);
   rs.nodeCopies = bvh.copies;
   rs.bvhStats = bvh.stats;
   rs.materials = scene.materials;

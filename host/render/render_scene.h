@@ -1,11 +1,13 @@
 // What a renderer consumes: the Scene's triangles in BVH leaf order as shader::Triangle,
-// the flattened BVH, materials and the emitter table for light sampling. These vectors
-// are uploaded verbatim by the Vulkan backend, and read directly by the CPU reference.
+// the BVH in two layouts (flattened skip links for the GPU, child pairs for the CPU),
+// materials and the emitter table for light sampling. The shader-layout vectors are
+// uploaded verbatim by the Vulkan backend; the CPU reference reads them directly.
 #pragma once
 
 #include <vector>
 
 #include "bvh/bvh.h"
+#include "bvh/pair_layout.h"
 #include "scene/scene.h"
 #include "shared/layout.h"
 
@@ -15,6 +17,7 @@ struct RenderScene {
   std::vector<shader::Triangle> triangles;  // BVH leaf order
   std::vector<shader::BvhNode> nodes;  // nodeCopies copies of bvhStats.nodes nodes (see Bvh)
   uint32_t nodeCopies = 1;
+  BvhPairLayout pairLayout;  // the first copy of `nodes`, for the CPU tracer
   std::vector<shader::Material> materials;
   std::vector<shader::Emitter> emitters;  // empty: the scene is dark
   BvhStats bvhStats;
