@@ -14,6 +14,7 @@
 #include "kPathTraceMutantNoLightCosine.h"
 #include "kPathTraceMutantRouletteWithoutDivision.h"
 #include "kSharedMathSpirv.h"
+#include "kTraceLoopBudgetSpirv.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared/estimator.h"
@@ -111,7 +112,9 @@ TEST_F(GpuTest, SharedMathMatchesCpu) {
 // except on a true tie (equal t, another triangle). The CPU side is brute force for
 // small scenes and the CPU's ordered traversal (itself checked against brute force in
 // test_bvh) for the 100k-triangle model, where brute force would take minutes.
-void CompareTraversal(const RenderScene& rs, uint32_t count, uint32_t seed, bool bruteForce) {
+// Rays from around the scene's bounds: half aimed at random triangles, half in random
+// directions, some parallel to the x = const planes.
+std::vector<shader::RayQuery> RandomRays(const RenderScene& rs, uint32_t count, uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   Bounds3f b{rs.nodes[0].lo, rs.nodes[0].hi};
@@ -130,6 +133,11 @@ void CompareTraversal(const RenderScene& rs, uint32_t count, uint32_t seed, bool
     if (glm::length(d) == 0.0f) d = glm::vec3(0, 0, 1);
     rays.push_back({o, shader::kInfinity, glm::normalize(d), 0});
   }
+  return rays;
+}
+
+void CompareTraversal(const RenderScene& rs, uint32_t count, uint32_t seed, bool bruteForce) {
+  std::vector<shader::RayQuery> rays = RandomRays(rs, count, seed);
   vk::GpuRenderer gpu(Gpu(), rs);
   std::vector<shader::HitRecord> hits = gpu.Trace(rays);
   uint32_t mismatches = 0, ties = 0, hitCount = 0;
@@ -181,6 +189,39 @@ TEST_F(GpuTest, TraversalMatchesCpuOnLargeCorpusModel) {
   RenderScene rs = PrepareRenderScene(s);
   CompareTraversal(rs, 65536, 3, false);
   CompareTraversal(rs, 1024, 4, true);
+}
+
+// lavapipe ends a shader after 65535 loop passes per SIMD group; pathtrace.comp flags
+// samples near that limit from the passes the traversal counts. The count must be exact:
+// a probe loop sized from it must end right at the limit, and one pass longer must be
+// cut (see VKPT_TEST_LOOP_BUDGET in trace.comp).
+TEST_F(GpuTest, TraversalCountsLoopPassesExactly) {
+  if (Gpu().DeviceName().find("llvmpipe") == std::string::npos) GTEST_SKIP() << "the loop limit is lavapipe's";
+  Scene cornell = LoadGltf(std::string(VKPT_SOURCE_DIR) + "/scenes/cornell.gltf");
+  std::vector<RenderScene> scenes;
+  scenes.push_back(PrepareRenderScene(cornell));
+  scenes.push_back(PrepareRenderScene(test::MakeScene(test::RandomSoup(3000, 11), {Material{}})));
+  for (const RenderScene& rs : scenes) {
+    vk::GpuRenderer gpu(Gpu(), rs);
+    std::vector<shader::RayQuery> rays = RandomRays(rs, 4096, 5);
+    for (uint32_t beyond : {0u, 1u}) {
+      for (shader::RayQuery& r : rays) r.pad0 = beyond;
+      std::vector<shader::HitRecord> out = gpu.Trace(rays, nullptr, kTraceLoopBudgetSpirv, sizeof(kTraceLoopBudgetSpirv));
+      uint32_t wrong = 0, minCounted = ~0u, maxCounted = 0;
+      for (const shader::HitRecord& h : out) {
+        uint32_t passes = glm::floatBitsToUint(h.t), probe = glm::floatBitsToUint(h.b1);
+        uint32_t counted = glm::floatBitsToUint(h.b2);
+        minCounted = std::min(minCounted, counted);
+        maxCounted = std::max(maxCounted, counted);
+        if (passes != probe - beyond && ++wrong <= 3)
+          ADD_FAILURE() << "probe of " << probe << " passes ran " << passes << " after " << counted << " counted";
+      }
+      std::printf("%zu triangles, probe %s the limit: traversal counted %u..%u passes per SIMD group, %u wrong\n",
+                  rs.triangles.size(), beyond ? "one past" : "ending at", minCounted, maxCounted, wrong);
+      EXPECT_EQ(wrong, 0u);
+      EXPECT_GT(minCounted, 6u) << "the traversal loops must have been counted";
+    }
+  }
 }
 
 // Same seed, same estimator code: the images agree pixel for pixel up to float rounding;

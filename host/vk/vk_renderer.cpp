@@ -121,11 +121,12 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
   return result;
 }
 
-std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQuery>& rays, double* seconds) {
+std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQuery>& rays, double* seconds,
+                                                  const uint32_t* spirv, size_t spirvBytes) {
   if (rays.empty()) return {};
   Buffer rayBuffer = Upload(ctx_, rays, "rays");
   Buffer hits = Storage(ctx_, rays.size() * sizeof(shader::HitRecord), "hits");
-  ComputePipeline pipeline(ctx_, kTraceSpirv, sizeof(kTraceSpirv),
+  ComputePipeline pipeline(ctx_, spirv ? spirv : kTraceSpirv, spirv ? spirvBytes : sizeof(kTraceSpirv),
                            {TexelBinding(shader::kBindingTriangles, triangles_),
                             TexelBinding(shader::kBindingNodes, nodes_),
                             {shader::kBindingRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, rayBuffer.Handle()},

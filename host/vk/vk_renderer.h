@@ -40,10 +40,11 @@ class GpuRenderer {
   GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv = nullptr, size_t spirvBytes = 0);
   GpuRenderResult Render(const shader::FrameParams& params, const GpuRenderOptions& options = {});
 
-  // Closest hits of a batch of rays with the shader's traversal (trace.comp).
-  // `seconds`, if given, receives the time of the dispatch alone (no upload, pipeline
-  // creation or readback), for benchmarks.
-  std::vector<shader::HitRecord> Trace(const std::vector<shader::RayQuery>& rays, double* seconds = nullptr);
+  // Closest hits of a batch of rays with the shader's traversal (trace.comp, or a test
+  // variant of it). `seconds`, if given, receives the time of the dispatch alone (no
+  // upload, pipeline creation or readback), for benchmarks.
+  std::vector<shader::HitRecord> Trace(const std::vector<shader::RayQuery>& rays, double* seconds = nullptr,
+                                       const uint32_t* spirv = nullptr, size_t spirvBytes = 0);
 
  private:
   const Context& ctx_;
