@@ -16,17 +16,25 @@ VKPT_FN vec3 SafeInverse(vec3 d) {
   return vec3(1.0f) / s;
 }
 
+// Minimum and maximum as plain selects, for values that are never NaN. GLSL's min/max
+// must return the non-NaN operand, which costs lavapipe a NaN test and a blend per call.
+VKPT_FN float MinNotNaN(float a, float b) { return b < a ? b : a; }
+VKPT_FN float MaxNotNaN(float a, float b) { return a < b ? b : a; }
+VKPT_FN vec3 MinNotNaN(vec3 a, vec3 b) { return mix(a, b, lessThan(b, a)); }
+VKPT_FN vec3 MaxNotNaN(vec3 a, vec3 b) { return mix(a, b, lessThan(a, b)); }
+
 // Slab test (Kay & Kajiya 1986; GAMES101 Bounds3::IntersectP). Returns the entry
 // distance, or -1 when the box is missed or lies beyond tMax. The exit distance is
 // enlarged by 1 + 2γ₃ (pbrt-v3 §3.9.2) so rounding can never miss a box that the ray
-// truly grazes.
+// truly grazes. The slab distances are never NaN: the loader rejects non-finite
+// positions, and SafeInverse keeps 1/d finite.
 VKPT_FN float IntersectBox(vec3 lo, vec3 hi, vec3 origin, vec3 invDir, float tMax) {
   vec3 t0 = (lo - origin) * invDir;
   vec3 t1 = (hi - origin) * invDir;
-  vec3 tNear = min(t0, t1);
-  vec3 tFar = max(t0, t1);
-  float tEnter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0f));
-  float tExit = min(min(tFar.x, tFar.y), min(tFar.z, tMax)) * 1.0000004f;
+  vec3 tNear = MinNotNaN(t0, t1);
+  vec3 tFar = MaxNotNaN(t0, t1);
+  float tEnter = MaxNotNaN(MaxNotNaN(tNear.x, tNear.y), MaxNotNaN(tNear.z, 0.0f));
+  float tExit = MinNotNaN(MinNotNaN(tFar.x, tFar.y), MinNotNaN(tFar.z, tMax)) * 1.0000004f;
   return tEnter <= tExit ? tEnter : -1.0f;
 }
 
