@@ -9,19 +9,24 @@
 #include <atomic>
 #include <thread>
 #include <chrono>
+#include <cstddef>
 #include <limits>
 
 #include "bvh/bvh.h"
+#include "util/float4.h"
 #include "util/error.h"
 
 namespace vkpt {
 namespace {
 
+// Laid out so that 16-byte loads at box.lo, box.hi and centroid give x, y, z in lanes
+// 0-2 (lane 3 holds the next field and is ignored).
 struct BuildPrim {
   Bounds3f box;
   glm::vec3 centroid;
   uint32_t index;
 };
+static_assert(offsetof(BuildPrim, box) == 0 && offsetof(Bounds3f, hi) == 12 && offsetof(BuildPrim, centroid) == 24);
 
 struct BuildNode {
   Bounds3f box;
@@ -31,9 +36,22 @@ struct BuildNode {
   bool leaf = false;
 };
 
+// A bin's box in lanes 0-2 of lo and hi; lane 3 is whatever the primitives carried.
 struct Bin {
-  Bounds3f box;
+  Float4 lo = Splat4(std::numeric_limits<float>::infinity());
+  Float4 hi = Splat4(-std::numeric_limits<float>::infinity());
   uint32_t count = 0;
+
+  void Extend(Float4 boxLo, Float4 boxHi) {
+    lo = Min4(lo, boxLo);
+    hi = Max4(hi, boxHi);
+  }
+  Bounds3f Box() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
+  // Bounds3f::SurfaceArea of Box(), for a bin that holds something.
+  float Area() const {
+    Float4 d = hi - lo;
+    return 2.0f * (d[0] * d[1] + d[1] * d[2] + d[2] * d[0]);
+  }
 };
 
 // Nodes with at least this many primitives are binned on several threads.
@@ -127,26 +145,32 @@ class Builder {
     BuildNode node = nodes[ni];
     if (node.count < kParallelNode) threads = 1;
     Bounds3f centroids;
-    if (threads == 1) {
-      for (uint32_t i = node.first; i < node.first + node.count; ++i) {
-        node.box.Extend(prims_[i].box);
-        centroids.Extend(prims_[i].centroid);
+    // The node's box and its centroids' bounds, as two bins (lane by lane min/max).
+    auto scan = [&](uint32_t b, uint32_t e, Bin& box, Bin& cent) {
+      for (uint32_t i = b; i < e; ++i) {
+        const BuildPrim& p = prims_[i];
+        Float4 c = Load4(&p.centroid.x);
+        box.Extend(Load4(&p.box.lo.x), Load4(&p.box.hi.x));
+        cent.Extend(c, c);
       }
+    };
+    if (threads == 1) {
+      Bin box, cent;
+      scan(node.first, node.first + node.count, box, cent);
+      node.box = box.Box();
+      centroids = cent.Box();
     } else {
-      std::vector<Bounds3f> boxes(threads), cents(threads);
+      // Accumulated locally, merged after: neighbouring vector elements share a cache line.
+      std::vector<Bin> boxes(threads), cents(threads);
       ForChunks(node.first, node.count, threads, [&](uint32_t b, uint32_t e, unsigned t) {
-        // Accumulate locally: neighbouring elements of `boxes` share a cache line.
-        Bounds3f box, cent;
-        for (uint32_t i = b; i < e; ++i) {
-          box.Extend(prims_[i].box);
-          cent.Extend(prims_[i].centroid);
-        }
+        Bin box, cent;
+        scan(b, e, box, cent);
         boxes[t] = box;
         cents[t] = cent;
       });
       for (unsigned t = 0; t < threads; ++t) {
-        node.box.Extend(boxes[t]);
-        centroids.Extend(cents[t]);
+        node.box.Extend(boxes[t].Box());
+        centroids.Extend(cents[t].Box());
       }
     }
     nodes[ni].box = node.box;
@@ -206,17 +230,25 @@ class Builder {
       usable[a] = extent > 0.0f;
       scale[a] = usable[a] ? float(nb) / extent : 0.0f;
     }
+    const Float4 lo4{centroids.lo.x, centroids.lo.y, centroids.lo.z, 0.0f};
+    const Float4 scale4{scale[0], scale[1], scale[2], 0.0f};
+    const Int4 last4 = Int4{1, 1, 1, 1} * int32_t(nb - 1);
     // One pass over the primitives bins all three axes (bins [a·nb, (a+1)·nb)). Each
     // thread fills its own scratch bins, reused across calls (no allocation per node);
     // merging min/max and counts is exact, so the result does not depend on `threads`.
+    // The three axes' bin indices come from one vector expression, the same float
+    // operations as BinOf (so partitioning agrees with binning); an unusable axis has
+    // scale 0 and lands in bin 0, which the sweep below never reads.
     auto binRange = [&](uint32_t b, uint32_t e, std::vector<Bin>& out) {
       out.assign(3 * nb, Bin{});
       for (uint32_t i = b; i < e; ++i) {
         const BuildPrim& p = prims_[i];
+        Int4 k = __builtin_convertvector(Max4((Load4(&p.centroid.x) - lo4) * scale4, Splat4(0.0f)), Int4);
+        k = k < last4 ? k : last4;
+        const Float4 boxLo = Load4(&p.box.lo.x), boxHi = Load4(&p.box.hi.x);
         for (int a = 0; a < 3; ++a) {
-          if (!usable[a]) continue;
-          Bin& bin = out[a * nb + BinOf(p.centroid[a], centroids.lo[a], scale[a])];
-          bin.box.Extend(p.box);
+          Bin& bin = out[a * nb + uint32_t(k[a])];
+          bin.Extend(boxLo, boxHi);
           ++bin.count;
         }
       }
@@ -232,7 +264,7 @@ class Builder {
       merged.assign(3 * nb, Bin{});
       for (const std::vector<Bin>& mine : partial)
         for (uint32_t k = 0; k < 3 * nb; ++k) {
-          merged[k].box.Extend(mine[k].box);
+          merged[k].Extend(mine[k].lo, mine[k].hi);
           merged[k].count += mine[k].count;
         }
       all = &merged;
@@ -242,21 +274,20 @@ class Builder {
       if (!usable[a]) continue;
       const Bin* bins = all->data() + a * nb;
       // Sweep from the right to get the cost of every right side, then from the left.
-      Bounds3f acc;
-      uint32_t count = 0;
+      // (Small nodes make most of the calls, so this runs on vectors too.)
+      Bin acc;
       for (uint32_t b = opt_.bins - 1; b > 0; --b) {
-        acc.Extend(bins[b].box);
-        count += bins[b].count;
-        rightCost[b] = acc.SurfaceArea() * float(count);
+        acc.Extend(bins[b].lo, bins[b].hi);
+        acc.count += bins[b].count;
+        rightCost[b] = acc.count ? acc.Area() * float(acc.count) : 0.0f;
       }
-      acc = Bounds3f{};
-      count = 0;
+      acc = Bin{};
       for (uint32_t b = 1; b < opt_.bins; ++b) {
-        acc.Extend(bins[b - 1].box);
-        count += bins[b - 1].count;
-        if (count == 0 || count == node.count) continue;
+        acc.Extend(bins[b - 1].lo, bins[b - 1].hi);
+        acc.count += bins[b - 1].count;
+        if (acc.count == 0 || acc.count == node.count) continue;
         float cost = opt_.traversalCost +
-                     opt_.intersectionCost * (acc.SurfaceArea() * float(count) + rightCost[b]) / parentArea;
+                     opt_.intersectionCost * (acc.Area() * float(acc.count) + rightCost[b]) / parentArea;
         if (cost < best.cost) best = {a, b, cost};
       }
     }

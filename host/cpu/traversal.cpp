@@ -1,29 +1,12 @@
 #include "cpu/traversal.h"
 
-#include <cstring>
 #include <vector>
 
 #include "shared/intersect.h"
+#include "util/float4.h"
 
 namespace vkpt {
 namespace {
-
-// Four floats in one SSE/NEON register, through the compiler's generic vector extension
-// (GCC and Clang), so the code stays portable and needs no intrinsics.
-typedef float Float4 __attribute__((vector_size(16)));
-typedef int32_t Int4 __attribute__((vector_size(16)));
-
-Float4 Splat(float x) { return Float4{x, x, x, x}; }
-// x86 minps/maxps are exactly these selects, and the compilers emit them for it.
-Float4 Min(Float4 a, Float4 b) { return a < b ? a : b; }
-Float4 Max(Float4 a, Float4 b) { return a > b ? a : b; }
-Float4 SwapHalves(Float4 v) {
-#if defined(__clang__)
-  return __builtin_shufflevector(v, v, 2, 3, 0, 1);
-#else
-  return __builtin_shuffle(v, Int4{2, 3, 0, 1});
-#endif
-}
 
 struct RaySlabs {
   Float4 origin[3];
@@ -35,16 +18,14 @@ struct RaySlabs {
 // per-lane min/max against the half-swapped vector gives each child's near and far slab
 // distance in lanes 0 and 1. Returns a 2-bit hit mask; tEnter gets the entry distances.
 int IntersectPair(const BvhPairNode& p, const RaySlabs& r, float tMax, float tEnter[2]) {
-  Float4 enter = Splat(0.0f), exit = Splat(tMax);
+  Float4 enter = Splat4(0.0f), exit = Splat4(tMax);
   for (int axis = 0; axis < 3; ++axis) {
-    Float4 b;
-    std::memcpy(&b, p.bounds[axis], sizeof b);
-    Float4 t = (b - r.origin[axis]) * r.invDir[axis];
-    Float4 s = SwapHalves(t);
-    enter = Max(enter, Min(t, s));
-    exit = Min(exit, Max(t, s));
+    Float4 t = (Load4(p.bounds[axis]) - r.origin[axis]) * r.invDir[axis];
+    Float4 s = SwapHalves4(t);
+    enter = Max4(enter, Min4(t, s));
+    exit = Min4(exit, Max4(t, s));
   }
-  exit *= Splat(1.0000004f);  // the 1 + 2γ₃ slack of IntersectBox
+  exit *= Splat4(1.0000004f);  // the 1 + 2γ₃ slack of IntersectBox
   Int4 hit = enter <= exit;
   tEnter[0] = enter[0];
   tEnter[1] = enter[1];
@@ -64,8 +45,8 @@ Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tM
   const glm::vec3 inv = shader::SafeInverse(dir);
   RaySlabs slabs;
   for (int axis = 0; axis < 3; ++axis) {
-    slabs.origin[axis] = Splat(origin[axis]);
-    slabs.invDir[axis] = Splat(inv[axis]);
+    slabs.origin[axis] = Splat4(origin[axis]);
+    slabs.invDir[axis] = Splat4(inv[axis]);
   }
   // Deferred far children (pair index << 4, or a leaf code) with their entry distances:
   // a popped entry beyond the closest hit found since is dropped without another test.
