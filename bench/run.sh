@@ -8,13 +8,15 @@ corpus=../shared/gltf-corpus/valid
 out=bench/README.md
 ref=bench/data/cornell-ref-16k.pfm
 rows=()
+engine="$corpus/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"
 for threads in 1 2; do
   rows+=("$($bench --procedural 1000000 --threads $threads --markdown)")
   rows+=("$($bench --scene scenes/cornell.gltf --threads $threads --markdown)")
-  if [ -f "$corpus/2CylinderEngine/glTF-Binary/2CylinderEngine.glb" ]; then
-    rows+=("$($bench --scene "$corpus/2CylinderEngine/glTF-Binary/2CylinderEngine.glb" --threads $threads --markdown)")
-  fi
+  if [ -f "$engine" ]; then rows+=("$($bench --scene "$engine" --threads $threads --markdown)"); fi
 done
+# Spatial splits (--spatial-splits; the build is single-threaded), one thread.
+rows+=("$($bench --procedural 1000000 --threads 1 --spatial-splits --markdown)")
+if [ -f "$engine" ]; then rows+=("$($bench --scene "$engine" --threads 1 --spatial-splits --markdown)"); fi
 quality=""
 if [ -f "$ref" ]; then
   quality="$($bench --scene scenes/cornell.gltf --quality "$ref" --threads 2 2>/dev/null)"

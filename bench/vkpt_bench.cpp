@@ -52,6 +52,7 @@ struct Options {
   bool json = false;
   bool markdown = false;  // one row of bench/README.md's table
   std::string quality;    // --quality REF.pfm: time to reach relMSE <= kQualityTarget
+  bool spatialSplits = false;
 };
 
 // "What users feel" (the benchmark issue): seconds until an image's relMSE against a
@@ -61,7 +62,7 @@ constexpr double kQualityTarget = 1.2e-3;
 [[noreturn]] void Usage(const std::string& why) {
   std::fprintf(stderr,
                "vkpt-bench: %s\nusage: vkpt-bench (--scene FILE | --procedural N) [--width W] [--height H] "
-               "[--threads N] [--json | --markdown] [--quality REF.pfm]\n",
+               "[--threads N] [--spatial-splits] [--json | --markdown] [--quality REF.pfm]\n",
                why.c_str());
   std::exit(2);
 }
@@ -89,6 +90,7 @@ Options Parse(int argc, char** argv) {
     else if (a == "--json") o.json = true;
     else if (a == "--markdown") o.markdown = true;
     else if (a == "--quality") o.quality = value();
+    else if (a == "--spatial-splits") o.spatialSplits = true;
     else if (a == "-h" || a == "--help") Usage("benchmarks BVH build, traversal and path tracing");
     else Usage("unknown option \"" + a + "\"");
   }
@@ -367,6 +369,7 @@ int Quality(const Options& o, unsigned threads) {
   Scene scene = o.procedural ? ProceduralScene(o.procedural) : LoadGltf(o.scene);
   BvhBuildOptions bvhOptions;
   bvhOptions.threads = threads;
+  bvhOptions.spatialSplits = o.spatialSplits;
   RenderScene rs = PrepareRenderScene(scene, bvhOptions);
   const Camera cam = scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0];
   shader::FrameParams p = MakeFrameParams(rs, cam, ref.width, ref.height);
@@ -433,6 +436,7 @@ int Run(const Options& o) {
   Scene scene = o.procedural ? ProceduralScene(o.procedural) : LoadGltf(o.scene);
   BvhBuildOptions bvhOptions;
   bvhOptions.threads = threads;
+  bvhOptions.spatialSplits = o.spatialSplits;
   RenderScene rs = PrepareRenderScene(scene, bvhOptions);
   const double tris = double(rs.triangles.size());
   rep.Set("tris", tris);
@@ -505,7 +509,10 @@ int Run(const Options& o) {
 #endif
   rep.Set("hit_mismatches", double(mismatches));
   if (o.json) PrintJson(rep);
-  else if (o.markdown) PrintMarkdownRow(rep, o.procedural ? "procedural " + std::to_string(o.procedural) : o.scene.substr(o.scene.find_last_of('/') + 1));
+  else if (o.markdown)
+    PrintMarkdownRow(rep, (o.procedural ? "procedural " + std::to_string(o.procedural)
+                                        : o.scene.substr(o.scene.find_last_of('/') + 1)) +
+                              (o.spatialSplits ? ", spatial splits" : ""));
   else PrintTable(rep);
   return 0;
 }

@@ -61,7 +61,7 @@ TEST(Cli, HelpListsEveryOption) {
     EXPECT_NE(r.out.find("usage:"), std::string::npos) << r.out;
     for (const char* opt : {"--scene", "--out", "--width", "--height", "--spp", "--seed", "--max-depth", "--rr-depth",
                             "--backend", "--device", "--list-devices", "--validation", "--batch", "--threads", "--compare", "--diff",
-                            "--camera", "--background", "--exposure", "--leaf-size", "-v", "--verbose", "--help",
+                            "--camera", "--background", "--exposure", "--leaf-size", "--spatial-splits", "-v", "--verbose", "--help",
                             "--version"})
       EXPECT_NE(r.out.find(opt), std::string::npos) << flag << " output does not mention " << opt;
     EXPECT_NE(r.out.find(".png"), std::string::npos);
@@ -444,6 +444,23 @@ TEST(Cli, CompareReportsAgreementAndWritesHeatmap) {
   EXPECT_TRUE(fs::exists(heat));
   std::remove(out.c_str());
   std::remove(heat.c_str());
+}
+
+// --spatial-splits on a CAD model (long thin triangles): more references than triangles,
+// and the CPU and Vulkan renders still agree.
+TEST(Cli, SpatialSplitsRenderAndAgree) {
+  const std::string out = TempPath("cli-spatial.pfm");
+  ProcessResult r = RunVkpt({"--scene", test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"),
+                             "--spatial-splits", "--compare", "--width", "40", "--height", "40", "--spp", "4", "--out", out},
+                            300.0);
+  EXPECT_TRUE(r.ExitedWith(0)) << r.Describe();
+  EXPECT_NE(r.out.find("-> agree"), std::string::npos) << r.out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("scene: (\\d+) triangles \\((\\d+) degenerate.*?(\\d+) triangle references")))
+      << r.out;
+  EXPECT_GT(std::stoul(m[3]), std::stoul(m[1]) - std::stoul(m[2])) << r.out;
+  std::remove(out.c_str());
+  std::remove((out.substr(0, out.size() - 4) + "-diff.png").c_str());
 }
 
 TEST(Cli, DiffTellsSameFromDifferentImages) {

@@ -183,6 +183,15 @@ TEST_F(GpuTest, TraversalMatchesCpuOnRandomSoup) {
   CompareTraversal(PrepareRenderScene(s), 65536, 2, true);
 }
 
+TEST_F(GpuTest, TraversalMatchesCpuWithSpatialSplits) {
+  Material m{};
+  BvhBuildOptions o;
+  o.spatialSplits = true;
+  RenderScene rs = PrepareRenderScene(test::MakeScene(test::RandomSoup(2000, 8), {m}), o);
+  ASSERT_GT(rs.triangles.size() + rs.degenerateTriangles, 2000u) << "the test needs duplicated triangles";
+  CompareTraversal(rs, 65536, 6, true);
+}
+
 TEST_F(GpuTest, TraversalMatchesCpuOnLargeCorpusModel) {
   Scene s = LoadGltf(test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"));
   ASSERT_GE(s.triangles.size(), 100000u);

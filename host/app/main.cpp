@@ -144,6 +144,7 @@ int Run(const Options& o) {
   Scene scene = LoadGltf(o.scene);
   BvhBuildOptions bvhOptions;
   bvhOptions.maxLeafSize = o.leafSize;
+  bvhOptions.spatialSplits = o.spatialSplits;
   bvhOptions.threads = o.threads;
   RenderScene rs = PrepareRenderScene(scene, bvhOptions);
 
@@ -213,9 +214,10 @@ int Run(const Options& o) {
               r.engine.c_str());
   std::printf("  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", r.seconds,
               samples / r.seconds * 1e-6, double(r.rays) / r.seconds * 1e-6, mean.x, mean.y, mean.z);
-  std::printf("  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %u nodes, %u leaves, depth %u, SAH cost %.3f, built in %.2f ms\n",
+  std::printf("  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %u nodes, %u leaves, depth %u, "
+              "%u triangle references, SAH cost %.3f, built in %.2f ms\n",
               scene.triangles.size(), rs.degenerateTriangles, rs.emitters.size(), rs.bvhStats.nodes,
-              rs.bvhStats.leaves, rs.bvhStats.depth, rs.bvhStats.sahCost, rs.bvhStats.buildMs);
+              rs.bvhStats.leaves, rs.bvhStats.depth, rs.bvhStats.references, rs.bvhStats.sahCost, rs.bvhStats.buildMs);
   if (r.nonFinite)
     std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.nonFinite);
   if (r.cutShort)

@@ -61,6 +61,10 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      triangles, so any model is lit; else 0]
   --exposure STOPS   PNG only: scale radiance by 2^STOPS before sRGB encoding [default: 0]
   --leaf-size N      maximum triangles per BVH leaf, 1..15 [default: 4]
+  --spatial-splits   let the BVH split space, not only triangle sets: a triangle may be
+                     referenced from several leaves with its clipped bounds. Faster
+                     rays where long thin triangles overlap (CAD models); a slower,
+                     single-threaded build [default: off]
   -v, --verbose      print what was loaded and which glTF features were ignored
   -h, --help         print this help and exit
   --version          print the version and exit
@@ -135,6 +139,7 @@ Options ParseOptions(int argc, const char* const* argv) {
     if (arg == "-v" || arg == "--verbose") { o.verbose = true; continue; }
     if (arg == "--list-devices") { o.listDevices = true; continue; }
     if (arg == "--validation") { o.validation = true; continue; }
+    if (arg == "--spatial-splits") { o.spatialSplits = true; continue; }
     if (arg == "--compare") { o.compare = true; continue; }
     if (arg == "--diff") {
       if (inlineValue || i + 2 >= argc) throw UsageError("--diff needs two image files: --diff A.pfm B.pfm");

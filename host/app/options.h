@@ -35,6 +35,7 @@ struct Options {
   // triangles (so any model is visible), black otherwise.
   std::optional<std::array<float, 3>> background;
   uint32_t leafSize = 4;
+  bool spatialSplits = false;
   bool verbose = false;
   bool help = false;
   bool version = false;

@@ -24,10 +24,22 @@ struct BvhBuildOptions {
   bool directionCopies = true;
   unsigned threads = 0;  // build threads; 0 = all cores. The tree is the same for any count.
   uint64_t maxCopiesBytes = uint64_t(128) << 20;
+  // Spatial splits (Stich et al. 2009, "Spatial Splits in Bounding Volume Hierarchies"):
+  // a node may also be divided by a plane that cuts triangles; each straddling triangle is
+  // then referenced from both sides, with the bounds of its part on that side. Boxes
+  // overlap less where triangles are long and thin (CAD models); the price is duplicated
+  // references and a single-threaded build. Needs the triangles' vertices.
+  bool spatialSplits = false;
+  // Spatial splits are tried only where the object split's children overlap by more than
+  // this fraction of the root's surface area (the paper's α).
+  float spatialOverlap = 1e-5f;
+  // Duplicated references allowed, as a fraction of the triangle count.
+  float maxDuplication = 1.0f;
 };
 
 struct BvhStats {
   uint32_t nodes = 0;  // per copy
+  uint32_t references = 0;  // triangle references in leaves (> triangles with spatial splits)
   uint32_t leaves = 0;
   uint32_t depth = 0;         // edges on the longest root-to-leaf path
   uint32_t maxLeafPrims = 0;
@@ -41,12 +53,16 @@ struct Bvh {
   std::vector<shader::BvhNode> nodes;
   uint32_t copies = 1;
   std::vector<uint32_t> primOrder;  // leaf ranges index this: position → input primitive
+                                    // (with spatial splits a primitive may appear more than once)
   BvhStats stats;
 };
 
 // Builds over primitive bounding boxes (one per triangle). Degenerate boxes (zero area,
-// zero extent) are fine. Throws vkpt::Error for an empty input or bad options.
-Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& options = {});
+// zero extent) are fine. `vertices` holds three per primitive, in order; spatial splits
+// need them (and are skipped without them). Throws vkpt::Error for an empty input or bad
+// options.
+Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& options = {},
+             std::span<const glm::vec3> vertices = {});
 
 // Children of inner node `i` in the flattened layout: the first child is the next node,
 // and the second is where the first child's subtree ends, i.e. the first child's skip.

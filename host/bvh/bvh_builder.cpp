@@ -61,18 +61,65 @@ struct Split {
   int axis = -1;
   uint32_t bin = 0;  // primitives with bin index < `bin` go left
   float cost = std::numeric_limits<float>::infinity();
+  Bounds3f left, right;  // the children's boxes
 };
+
+// A spatial split: the plane at the lower boundary of spatial bin `bin` along `axis`.
+struct SpatialSplit {
+  int axis = -1;
+  uint32_t bin = 0;
+  float cost = std::numeric_limits<float>::infinity();
+};
+
+Bounds3f Intersection(const Bounds3f& a, const Bounds3f& b) {
+  Bounds3f r;
+  r.lo = glm::max(a.lo, b.lo);
+  r.hi = glm::min(a.hi, b.hi);
+  return r;
+}
+
+// Bounds of the part of triangle v[0..2] with lo <= p[axis] <= hi: the vertices inside
+// the slab and the points where edges cross its planes. Rounding in the crossings could
+// shave the box, so it is padded by a few ulps of its coordinates; the caller intersects
+// it with the reference's box, which stays conservative.
+Bounds3f ClipTriangle(const glm::vec3 v[3], int axis, float lo, float hi) {
+  Bounds3f b;
+  for (int i = 0; i < 3; ++i) {
+    const glm::vec3 p = v[i], q = v[(i + 1) % 3];
+    const float pa = p[axis], qa = q[axis];
+    if (pa >= lo && pa <= hi) b.Extend(p);
+    for (float plane : {lo, hi}) {
+      if ((pa < plane && qa > plane) || (pa > plane && qa < plane)) {
+        glm::vec3 x = p + (q - p) * ((plane - pa) / (qa - pa));
+        x[axis] = plane;
+        b.Extend(x);
+      }
+    }
+  }
+  if (b.Empty()) return b;
+  const glm::vec3 pad = (glm::abs(b.lo) + glm::abs(b.hi)) * 4e-7f + glm::vec3(1e-30f);
+  b.lo -= pad;
+  b.hi += pad;
+  return b;
+}
 
 class Builder {
  public:
-  Builder(std::span<const Bounds3f> bounds, const BvhBuildOptions& o) : opt_(o) {
+  Builder(std::span<const Bounds3f> bounds, const BvhBuildOptions& o, std::span<const glm::vec3> vertices)
+      : opt_(o), verts_(vertices), spatial_(o.spatialSplits && vertices.size() == 3 * bounds.size()) {
     prims_.reserve(bounds.size());
     for (uint32_t i = 0; i < bounds.size(); ++i)
       prims_.push_back({bounds[i], bounds[i].Center(), i});
+    // References stay below 2^28, what a leaf code can address.
+    duplicatesLeft_ = spatial_ ? std::min<uint64_t>(uint64_t(double(o.maxDuplication) * double(bounds.size())),
+                                                    (1u << 28) - 1 - bounds.size())
+                               : 0;
   }
 
   Bvh Build() {
-    const unsigned threads = opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency());
+    // Spatial splits append references to prims_ as they go: one thread.
+    const unsigned threads =
+        spatial_ ? 1u : opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency());
     nodes_.reserve(2 * prims_.size() / std::max(1u, opt_.maxLeafSize) + 1);
     nodes_.push_back({});
     nodes_[0].count = uint32_t(prims_.size());
@@ -116,12 +163,13 @@ class Builder {
       nodes_[deferred[k]] = local[0];
       nodes_.insert(nodes_.end(), local.begin() + 1, local.end());
     }
+    if (spatial_) CompactReferences();
     return Flatten();
   }
 
  private:
-  static std::vector<float>& RightCostScratch(uint32_t bins) {
-    static thread_local std::vector<float> v;
+  static std::vector<Bin>& RightScratch(uint32_t bins) {
+    static thread_local std::vector<Bin> v;
     v.resize(bins);
     return v;
   }
@@ -174,12 +222,40 @@ class Builder {
       }
     }
     nodes[ni].box = node.box;
+    if (ni == 0 && &nodes == &nodes_) rootArea_ = node.box.SurfaceArea();
     auto makeLeaf = [&] { nodes[ni].leaf = true; };
     if (node.count == 1) return makeLeaf();
+    auto addChildren = [&](uint32_t leftFirst, uint32_t leftCount, uint32_t rightFirst, uint32_t rightCount) {
+      uint32_t left = uint32_t(nodes.size());
+      BuildNode l, r;
+      l.first = leftFirst;
+      l.count = leftCount;
+      r.first = rightFirst;
+      r.count = rightCount;
+      l.depth = r.depth = node.depth + 1;
+      nodes.push_back(l);
+      nodes.push_back(r);
+      nodes[ni].child[0] = left;
+      nodes[ni].child[1] = left + 1;
+      work.push_back(left + 1);
+      work.push_back(left);
+    };
 
     Split best = FindSplit(node, centroids, threads);
+    // Spatial splits are tried where the object split leaves overlapping children (or
+    // found no plane at all), while the duplication budget lasts.
+    SpatialSplit spatial;
+    if (spatial_ && duplicatesLeft_ > 0) {
+      const float overlap = best.axis >= 0 ? Intersection(best.left, best.right).SurfaceArea() : node.box.SurfaceArea();
+      if (overlap > opt_.spatialOverlap * rootArea_) spatial = FindSpatialSplit(node);
+    }
     const float leafCost = opt_.intersectionCost * float(node.count);
-    if (node.count <= opt_.maxLeafSize && !(best.cost < leafCost)) return makeLeaf();
+    if (node.count <= opt_.maxLeafSize && !(std::min(best.cost, spatial.cost) < leafCost)) return makeLeaf();
+    if (spatial.cost < best.cost) {
+      uint32_t leftCount = 0, rightFirst = 0, rightCount = 0;
+      if (SplitSpatially(node, spatial, leftCount, rightFirst, rightCount))
+        return addChildren(node.first, leftCount, rightFirst, rightCount);
+    }
 
     uint32_t mid = node.first;
     if (best.axis >= 0) {
@@ -200,19 +276,137 @@ class Builder {
       std::nth_element(prims_.begin() + node.first, prims_.begin() + mid, prims_.begin() + node.first + node.count,
                        [&](const BuildPrim& p, const BuildPrim& q) { return p.centroid[a] < q.centroid[a]; });
     }
-    uint32_t left = uint32_t(nodes.size());
-    BuildNode l, r;
-    l.first = node.first;
-    l.count = mid - node.first;
-    r.first = mid;
-    r.count = node.first + node.count - mid;
-    l.depth = r.depth = node.depth + 1;
-    nodes.push_back(l);
-    nodes.push_back(r);
-    nodes[ni].child[0] = left;
-    nodes[ni].child[1] = left + 1;
-    work.push_back(left + 1);
-    work.push_back(left);
+    addChildren(node.first, mid - node.first, mid, node.first + node.count - mid);
+  }
+
+  // --- Spatial splits -----------------------------------------------------------------
+  // Spatial bin k of `axis` over the node's box spans [Plane(k), Plane(k + 1)).
+  struct SpatialBins {
+    float lo, scale, step;
+    uint32_t count;
+    uint32_t Of(float x) const { return std::min(count - 1, uint32_t(std::max(0.0f, (x - lo) * scale))); }
+    float Plane(uint32_t k) const { return lo + float(k) * step; }
+  };
+
+  SpatialBins BinsOf(const BuildNode& node, int axis) const {
+    const float extent = node.box.hi[axis] - node.box.lo[axis];
+    return {node.box.lo[axis], float(opt_.bins) / extent, extent / float(opt_.bins), opt_.bins};
+  }
+
+  void Vertices(uint32_t prim, glm::vec3 v[3]) const {
+    for (int k = 0; k < 3; ++k) v[k] = verts_[3 * size_t(prim) + k];
+  }
+
+  // Every reference is counted where it enters (its first bin) and where it leaves (its
+  // last), and the box of its part within each bin it spans goes into that bin; a plane's
+  // cost then counts each side's references and their clipped bounds.
+  SpatialSplit FindSpatialSplit(const BuildNode& node) const {
+    SpatialSplit best;
+    const float parentArea = node.box.SurfaceArea();
+    if (!(parentArea > 0.0f)) return best;
+    const uint32_t nb = opt_.bins;
+    const float inf = std::numeric_limits<float>::infinity();
+    std::vector<Bin> bins(nb), right(nb);
+    std::vector<uint32_t> entries(nb), exits(nb);
+    for (int a = 0; a < 3; ++a) {
+      if (!(node.box.hi[a] > node.box.lo[a])) continue;
+      const SpatialBins sb = BinsOf(node, a);
+      std::fill(bins.begin(), bins.end(), Bin{});
+      std::fill(entries.begin(), entries.end(), 0u);
+      std::fill(exits.begin(), exits.end(), 0u);
+      for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+        const BuildPrim& p = prims_[i];
+        const uint32_t b0 = sb.Of(p.box.lo[a]), b1 = sb.Of(p.box.hi[a]);
+        ++entries[b0];
+        ++exits[b1];
+        if (b0 == b1) {
+          bins[b0].Extend(Load4(&p.box.lo.x), Load4(&p.box.hi.x));
+          continue;
+        }
+        glm::vec3 v[3];
+        Vertices(p.index, v);
+        for (uint32_t b = b0; b <= b1; ++b) {
+          Bounds3f part = Intersection(ClipTriangle(v, a, b == b0 ? -inf : sb.Plane(b), b == b1 ? inf : sb.Plane(b + 1)), p.box);
+          if (!part.Empty()) bins[b].Extend(Float4{part.lo.x, part.lo.y, part.lo.z, 0.0f}, Float4{part.hi.x, part.hi.y, part.hi.z, 0.0f});
+        }
+      }
+      Bin acc;
+      for (uint32_t b = nb - 1; b > 0; --b) {
+        acc.Extend(bins[b].lo, bins[b].hi);
+        acc.count += exits[b];
+        right[b] = acc;
+      }
+      acc = Bin{};
+      for (uint32_t b = 1; b < nb; ++b) {
+        acc.Extend(bins[b - 1].lo, bins[b - 1].hi);
+        acc.count += entries[b - 1];
+        if (acc.count == 0 || right[b].count == 0) continue;
+        float cost = opt_.traversalCost + opt_.intersectionCost *
+                                              (acc.Area() * float(acc.count) + right[b].Area() * float(right[b].count)) /
+                                              parentArea;
+        if (cost < best.cost) best = {a, b, cost};
+      }
+    }
+    return best;
+  }
+
+  // Performs a spatial split of `node`: its left references stay in place (there are
+  // at most as many), the right ones are appended to prims_; a straddling reference goes
+  // to both sides with its clipped bounds. False if one side would be empty.
+  bool SplitSpatially(const BuildNode& node, const SpatialSplit& split, uint32_t& leftCount, uint32_t& rightFirst,
+                      uint32_t& rightCount) {
+    const int a = split.axis;
+    const SpatialBins sb = BinsOf(node, a);
+    const float plane = sb.Plane(split.bin), inf = std::numeric_limits<float>::infinity();
+    std::vector<BuildPrim> left, right;
+    for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+      const BuildPrim& p = prims_[i];
+      const uint32_t b0 = sb.Of(p.box.lo[a]), b1 = sb.Of(p.box.hi[a]);
+      if (b1 < split.bin) {
+        left.push_back(p);
+      } else if (b0 >= split.bin) {
+        right.push_back(p);
+      } else {
+        glm::vec3 v[3];
+        Vertices(p.index, v);
+        Bounds3f l = Intersection(ClipTriangle(v, a, -inf, plane), p.box);
+        Bounds3f r = Intersection(ClipTriangle(v, a, plane, inf), p.box);
+        if (l.Empty() || (duplicatesLeft_ == 0 && !r.Empty())) {
+          right.push_back(r.Empty() ? p : BuildPrim{r, r.Center(), p.index});
+        } else if (r.Empty()) {
+          left.push_back({l, l.Center(), p.index});
+        } else {
+          --duplicatesLeft_;
+          left.push_back({l, l.Center(), p.index});
+          right.push_back({r, r.Center(), p.index});
+        }
+      }
+    }
+    if (left.empty() || right.empty()) return false;
+    std::copy(left.begin(), left.end(), prims_.begin() + node.first);
+    leftCount = uint32_t(left.size());
+    rightFirst = uint32_t(prims_.size());
+    rightCount = uint32_t(right.size());
+    prims_.insert(prims_.end(), right.begin(), right.end());
+    return true;
+  }
+
+  // Spatial splits leave unused slots in prims_; this packs the leaves' references in
+  // depth-first order (so the triangle array follows the tree, as without splits).
+  void CompactReferences() {
+    std::vector<BuildPrim> packed;
+    std::vector<uint32_t> stack{0};
+    while (!stack.empty()) {
+      BuildNode& n = nodes_[stack.back()];
+      stack.pop_back();
+      if (!n.leaf) {
+        stack.insert(stack.end(), {n.child[1], n.child[0]});
+        continue;
+      }
+      packed.insert(packed.end(), prims_.begin() + n.first, prims_.begin() + n.first + n.count);
+      n.first = uint32_t(packed.size() - n.count);
+    }
+    prims_ = std::move(packed);
   }
 
   uint32_t BinOf(float c, float lo, float scale) const {
@@ -269,7 +463,7 @@ class Builder {
         }
       all = &merged;
     }
-    std::vector<float>& rightCost = RightCostScratch(nb);
+    std::vector<Bin>& right = RightScratch(nb);
     for (int a = 0; a < 3; ++a) {
       if (!usable[a]) continue;
       const Bin* bins = all->data() + a * nb;
@@ -279,16 +473,17 @@ class Builder {
       for (uint32_t b = opt_.bins - 1; b > 0; --b) {
         acc.Extend(bins[b].lo, bins[b].hi);
         acc.count += bins[b].count;
-        rightCost[b] = acc.count ? acc.Area() * float(acc.count) : 0.0f;
+        right[b] = acc;
       }
       acc = Bin{};
       for (uint32_t b = 1; b < opt_.bins; ++b) {
         acc.Extend(bins[b - 1].lo, bins[b - 1].hi);
         acc.count += bins[b - 1].count;
         if (acc.count == 0 || acc.count == node.count) continue;
-        float cost = opt_.traversalCost +
-                     opt_.intersectionCost * (acc.Area() * float(acc.count) + rightCost[b]) / parentArea;
-        if (cost < best.cost) best = {a, b, cost};
+        float cost = opt_.traversalCost + opt_.intersectionCost *
+                                              (acc.Area() * float(acc.count) + right[b].Area() * float(right[b].count)) /
+                                              parentArea;
+        if (cost < best.cost) best = {a, b, cost, acc.Box(), right[b].Box()};
       }
     }
     // A flat parent (zero area) makes every cost NaN or ∞: fall back to the median split.
@@ -342,6 +537,7 @@ class Builder {
       }
     }
     st.nodes = count;
+    st.references = uint32_t(prims_.size());
     return bvh;
   }
 
@@ -379,20 +575,28 @@ class Builder {
   }
 
   BvhBuildOptions opt_;
+  std::span<const glm::vec3> verts_;  // three per primitive (spatial splits)
+  bool spatial_ = false;
+  uint64_t duplicatesLeft_ = 0;  // references spatial splits may still add
+  float rootArea_ = 0.0f;
   std::vector<BuildPrim> prims_;
   std::vector<BuildNode> nodes_;
 };
 
 }  // namespace
 
-Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& options) {
+Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& options,
+             std::span<const glm::vec3> vertices) {
   if (primBounds.empty()) throw Error("cannot build a BVH over zero primitives");
   if (options.maxLeafSize < 1 || options.maxLeafSize > shader::kMaxLeafSize)
     throw Error("BVH leaf size must be in [1, " + std::to_string(shader::kMaxLeafSize) + "]");
   if (options.bins < 2 || options.bins > 256) throw Error("BVH bin count must be in [2, 256]");
   if (primBounds.size() >= (1u << 28)) throw Error("too many triangles for the BVH layout (limit 2^28)");
+  if (!vertices.empty() && vertices.size() != 3 * primBounds.size())
+    throw Error("BVH build: expected three vertices per primitive");
+  if (!(options.maxDuplication >= 0.0f)) throw Error("BVH build: the duplication budget must be >= 0");
   auto t0 = std::chrono::steady_clock::now();
-  Bvh bvh = Builder(primBounds, options).Build();
+  Bvh bvh = Builder(primBounds, options, vertices).Build();
   bvh.stats.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return bvh;
 }

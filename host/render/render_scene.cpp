@@ -16,6 +16,7 @@ bool IsDegenerate(const SceneTriangle& t) {
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options) {
   RenderScene rs;
   std::vector<Bounds3f> bounds;
+  std::vector<glm::vec3> vertices;  // for spatial splits: as the GPU stores them
   std::vector<uint32_t> kept;
   bounds.reserve(scene.triangles.size());
   kept.reserve(scene.triangles.size());
@@ -34,10 +35,11 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
     b.Extend(t.v0 + (t.v1 - t.v0));
     b.Extend(t.v0 + (t.v2 - t.v0));
     bounds.push_back(b);
+    if (options.spatialSplits) vertices.insert(vertices.end(), {t.v0, t.v0 + (t.v1 - t.v0), t.v0 + (t.v2 - t.v0)});
     kept.push_back(i);
   }
   if (kept.empty()) throw Error(scene.path + ": every triangle of the scene is degenerate (zero area)");
-  Bvh bvh = BuildBvh(bounds, options);
+  Bvh bvh = BuildBvh(bounds, options, vertices);
 
   rs.nodes = std::move(bvh.nodes);
   rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes);
@@ -59,10 +61,14 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
 
   // Emitter table: every emissive triangle with non-zero area, chosen with probability
   // proportional to its emitted power (area × luminance, doubled when it emits from both
-  // faces), so bright large lights get most samples.
+  // faces), so bright large lights get most samples. A triangle that spatial splits put in
+  // several leaves is one emitter (its first copy): counting it twice would double its light.
   std::vector<double> weight;
+  std::vector<bool> listed(scene.triangles.size(), false);
   for (uint32_t i = 0; i < rs.triangles.size(); ++i) {
     const shader::Triangle& t = rs.triangles[i];
+    if (listed[t.sourceIndex]) continue;
+    listed[t.sourceIndex] = true;
     const shader::Material& m = rs.materials[t.material];
     double area = 0.5 * glm::length(glm::dvec3(glm::cross(t.e1, t.e2)));
     double lum = shader::Luminance(m.emission);
