@@ -1,10 +1,14 @@
 // Four floats in one SSE/NEON register through the compiler's generic vector extension
-// (GCC and Clang): portable, no intrinsics. Used where a loop handles x, y, z (and a
+// (GCC and Clang): portable; only min/max name SSE instructions, with a generic fallback. Used where a loop handles x, y, z (and a
 // spare lane) at once: the CPU traversal's child-pair test and the BVH builder's binning.
 #pragma once
 
 #include <cstdint>
 #include <cstring>
+
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 namespace vkpt {
 
@@ -18,9 +22,16 @@ inline Float4 Load4(const float* p) {
   std::memcpy(&v, p, sizeof v);
   return v;
 }
-// x86 minps/maxps are exactly these selects, and the compilers emit them for it.
+// Per lane a < b ? a : b and a > b ? a : b. That is exactly what SSE's minps/maxps do
+// (NaN and signed zeros included), but GCC 12 compiles the selects to compare-and-blend,
+// so on x86 the instructions are named.
+#if defined(__SSE__)
+inline Float4 Min4(Float4 a, Float4 b) { return Float4(_mm_min_ps(__m128(a), __m128(b))); }
+inline Float4 Max4(Float4 a, Float4 b) { return Float4(_mm_max_ps(__m128(a), __m128(b))); }
+#else
 inline Float4 Min4(Float4 a, Float4 b) { return a < b ? a : b; }
 inline Float4 Max4(Float4 a, Float4 b) { return a > b ? a : b; }
+#endif
 inline Float4 SwapHalves4(Float4 v) {
 #if defined(__clang__)
   return __builtin_shufflevector(v, v, 2, 3, 0, 1);
