@@ -314,14 +314,18 @@ void PrintTable(const Report& r) {
   line("CPU diffuse rays, 1 thread", "cpu_diffuse_mrays_s_1t", "Mrays/s", "embree_diffuse_mrays_s_1t");
   // "N threads": the --threads count, which the GPU (LP_NUM_THREADS) and Embree use too.
   const std::string n = std::to_string(r.threads) + (r.threads == 1 ? " thread" : " threads");
-  line(("CPU camera rays, " + n).c_str(), "cpu_primary_mrays_s", "Mrays/s", "embree_primary_mrays_s");
-  line(("CPU diffuse rays, " + n).c_str(), "cpu_diffuse_mrays_s", "Mrays/s", "embree_diffuse_mrays_s");
+  if (r.threads > 1) {
+    line(("CPU camera rays, " + n).c_str(), "cpu_primary_mrays_s", "Mrays/s", "embree_primary_mrays_s");
+    line(("CPU diffuse rays, " + n).c_str(), "cpu_diffuse_mrays_s", "Mrays/s", "embree_diffuse_mrays_s");
+  }
   line(("GPU camera rays, " + n).c_str(), "gpu_primary_mrays_s", "Mrays/s", "embree_primary_mrays_s");
   line(("GPU diffuse rays, " + n).c_str(), "gpu_diffuse_mrays_s", "Mrays/s", "embree_diffuse_mrays_s");
   line("Embree camera rays, 1 thread", "embree_primary_mrays_s_1t", "Mrays/s", nullptr);
   line("Embree diffuse rays, 1 thread", "embree_diffuse_mrays_s_1t", "Mrays/s", nullptr);
-  line(("Embree camera rays, " + n).c_str(), "embree_primary_mrays_s", "Mrays/s", nullptr);
-  line(("Embree diffuse rays, " + n).c_str(), "embree_diffuse_mrays_s", "Mrays/s", nullptr);
+  if (r.threads > 1) {
+    line(("Embree camera rays, " + n).c_str(), "embree_primary_mrays_s", "Mrays/s", nullptr);
+    line(("Embree diffuse rays, " + n).c_str(), "embree_diffuse_mrays_s", "Mrays/s", nullptr);
+  }
   line("CPU path tracing", "cpu_pt_msamples_s", "Msamples/s", nullptr);
   line("GPU path tracing", "gpu_pt_msamples_s", "Msamples/s", nullptr);
   line("hit mismatches between tracers", "hit_mismatches", "rays", nullptr);

@@ -10,6 +10,7 @@ namespace {
 
 struct RaySlabs {
   Float4 origin[3];
+  Float4 dir[3];
   Float4 invDir[3];
 };
 
@@ -32,20 +33,45 @@ int IntersectPair(const BvhPairNode& p, const RaySlabs& r, float tMax, float tEn
   return (hit[0] & 1) | (hit[1] & 2);
 }
 
+// shader::IntersectTriangle (Möller–Trumbore) on the four triangles of a packet: the same
+// operations in the same order (glm's cross and left-to-right dot), so t, b1 and b2 are
+// bit-identical to the scalar test's. Returns the 4-bit mask of lanes with a hit in
+// (0, tMax).
+int IntersectPacket(const TrianglePacket& p, const RaySlabs& r, float tMax, Float4& t, Float4& b1, Float4& b2) {
+  const Float4* d = r.dir;
+  const Float4 px = d[1] * p.e2[2] - p.e2[1] * d[2];
+  const Float4 py = d[2] * p.e2[0] - p.e2[2] * d[0];
+  const Float4 pz = d[0] * p.e2[1] - p.e2[0] * d[1];
+  const Float4 det = (p.e1[0] * px + p.e1[1] * py) + p.e1[2] * pz;
+  const Float4 invDet = Splat4(1.0f) / det;
+  const Float4 sx = r.origin[0] - p.v0[0], sy = r.origin[1] - p.v0[1], sz = r.origin[2] - p.v0[2];
+  b1 = ((sx * px + sy * py) + sz * pz) * invDet;
+  const Float4 qx = sy * p.e1[2] - p.e1[1] * sz;
+  const Float4 qy = sz * p.e1[0] - p.e1[2] * sx;
+  const Float4 qz = sx * p.e1[1] - p.e1[0] * sy;
+  b2 = ((d[0] * qx + d[1] * qy) + d[2] * qz) * invDet;
+  t = ((p.e2[0] * qx + p.e2[1] * qy) + p.e2[2] * qz) * invDet;
+  const Float4 zero = Splat4(0.0f), one = Splat4(1.0f);
+  // The scalar test's early outs, as one mask (comparisons with NaN are false there too).
+  const Int4 ok = (det != zero) & ~(b1 < zero) & ~(b1 > one) & ~(b2 < zero) & ~(b1 + b2 > one) & (t > zero) &
+                  (t < Splat4(tMax));
+  return (ok[0] & 1) | (ok[1] & 2) | (ok[2] & 4) | (ok[3] & 8);
+}
+
 // Depth of the explicit stack. The builder bounds nothing about depth, so the stack
 // grows on the heap past this (pathological trees only).
 constexpr int kInlineStack = 64;
 
 template <bool kAnyHit>
 Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax) {
-  using shader::IntersectTriangle;
   Hit hit{-1.0f, 0.0f, 0.0f, shader::kInvalidIndex};
-  const std::vector<shader::Triangle>& tris = scene.triangles;
   const std::vector<BvhPairNode>& pairs = scene.pairLayout.pairs;
+  const std::vector<TrianglePacket>& packets = scene.pairLayout.packets;
   const glm::vec3 inv = shader::SafeInverse(dir);
   RaySlabs slabs;
   for (int axis = 0; axis < 3; ++axis) {
     slabs.origin[axis] = Splat4(origin[axis]);
+    slabs.dir[axis] = Splat4(dir[axis]);
     slabs.invDir[axis] = Splat4(inv[axis]);
   }
   // Deferred far children (pair index << 4, or a leaf code) with their entry distances:
@@ -73,13 +99,15 @@ Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tM
   uint32_t code = scene.pairLayout.rootLeaf;
   for (;;) {
     if (IsLeafCode(code)) {
-      for (uint32_t i = code >> 4, e = i + (code & 15u); i < e; ++i) {
-        const shader::Triangle& t = tris[i];
-        glm::vec3 r = IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax);
-        if (r.x >= 0.0f) {
-          hit = {r.x, r.y, r.z, i};
+      for (uint32_t k = code >> 4, e = k + ((code & 15u) + 3) / 4; k < e; ++k) {
+        Float4 t, b1, b2;
+        const int mask = IntersectPacket(packets[k], slabs, tMax, t, b1, b2);
+        // Lanes in order, each against the closest hit so far: the scalar loop's result.
+        for (int lane = 0; lane < 4; ++lane) {
+          if (!(mask >> lane & 1) || !(t[lane] < tMax)) continue;
+          hit = {t[lane], b1[lane], b2[lane], packets[k].index[lane]};
           if (kAnyHit) return hit;
-          tMax = r.x;
+          tMax = t[lane];
         }
       }
     } else {

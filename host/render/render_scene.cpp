@@ -42,7 +42,6 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   Bvh bvh = BuildBvh(bounds, options, vertices);
 
   rs.nodes = std::move(bvh.nodes);
-  rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes);
   rs.nodeCopies = bvh.copies;
   rs.bvhStats = bvh.stats;
   rs.materials = scene.materials;
@@ -58,6 +57,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
     g.sourceIndex = src;
     rs.triangles.push_back(g);
   }
+  rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
 
   // Emitter table: every emissive triangle with non-zero area, chosen with probability
   // proportional to its emitted power (area × luminance, doubled when it emits from both
