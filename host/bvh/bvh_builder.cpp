@@ -120,7 +120,7 @@ class Builder {
     // Spatial splits append references to prims_ as they go: one thread.
     const unsigned threads =
         spatial_ ? 1u : opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency());
-    nodes_.reserve(2 * prims_.size() / std::max(1u, opt_.maxLeafSize) + 1);
+    nodes_.reserve(2 * prims_.size());  // a binary tree over n leaves' worth has < 2n nodes
     nodes_.push_back({});
     nodes_[0].count = uint32_t(prims_.size());
     // Phase 1, top levels: one node at a time, its binning spread over all threads.
@@ -154,15 +154,31 @@ class Builder {
     for (unsigned t = 1; t < std::min<size_t>(threads, deferred.size()); ++t) pool.emplace_back(worker);
     worker();
     for (auto& t : pool) t.join();
-    // Stitch: local node j >= 1 goes to offset + j; local node 0 replaces its root.
+    // Stitch: subtree k's local node j >= 1 goes to offset[k] + j, its local node 0
+    // replaces its root. The offsets follow k, so the result does not depend on which
+    // thread copies what; the copies (a serial half second for 1 M triangles) run on all
+    // threads.
+    std::vector<uint32_t> offset(deferred.size());
+    size_t total = nodes_.size();
     for (size_t k = 0; k < deferred.size(); ++k) {
-      std::vector<BuildNode>& local = subtrees[k];
-      const uint32_t offset = uint32_t(nodes_.size()) - 1;
-      for (BuildNode& n : local)
-        if (!n.leaf) n.child[0] += offset, n.child[1] += offset;
-      nodes_[deferred[k]] = local[0];
-      nodes_.insert(nodes_.end(), local.begin() + 1, local.end());
+      offset[k] = uint32_t(total) - 1;
+      total += subtrees[k].size() - 1;
     }
+    nodes_.resize(total);
+    next = 0;
+    auto stitch = [&] {
+      for (size_t k; (k = next.fetch_add(1)) < deferred.size();) {
+        std::vector<BuildNode> local = std::move(subtrees[k]);
+        for (BuildNode& n : local)
+          if (!n.leaf) n.child[0] += offset[k], n.child[1] += offset[k];
+        nodes_[deferred[k]] = local[0];
+        std::copy(local.begin() + 1, local.end(), nodes_.begin() + offset[k] + 1);
+      }
+    };
+    pool.clear();
+    for (unsigned t = 1; t < std::min<size_t>(threads, deferred.size()); ++t) pool.emplace_back(stitch);
+    stitch();
+    for (auto& t : pool) t.join();
     if (spatial_) CompactReferences();
     return Flatten();
   }
