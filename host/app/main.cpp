@@ -142,11 +142,6 @@ int Run(const Options& o) {
   CheckOutputPath(o.out);  // fail before a long render, not after
 
   Scene scene = LoadGltf(o.scene);
-  BvhBuildOptions bvhOptions;
-  bvhOptions.maxLeafSize = o.leafSize;
-  bvhOptions.spatialSplits = o.spatialSplits;
-  bvhOptions.threads = o.threads;
-  RenderScene rs = PrepareRenderScene(scene, bvhOptions);
 
   uint32_t camIndex = o.camera.value_or(0);
   Camera cam;
@@ -166,6 +161,15 @@ int Run(const Options& o) {
   width = std::max(1u, std::min(width, 16384u));
   height = std::max(1u, std::min(height, 16384u));
 
+  // The device before the scene's arrays: without one (auto backend) the CPU renders, and
+  // only then does the scene need the CPU's BVH layout.
+  std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
+  BvhBuildOptions bvhOptions;
+  bvhOptions.maxLeafSize = o.leafSize;
+  bvhOptions.spatialSplits = o.spatialSplits;
+  bvhOptions.threads = o.threads;
+  RenderScene rs = PrepareRenderScene(scene, bvhOptions, !ctx || o.compare);
+
   if (o.verbose) PrintLoadReport(scene, rs, cam, camIndex);
 
   shader::FrameParams params = MakeFrameParams(rs, cam, width, height);
@@ -184,7 +188,6 @@ int Run(const Options& o) {
     std::fprintf(stderr, "vkpt: warning: %s: no emissive triangles and a black background; the image will be black\n",
                  o.scene.c_str());
 
-  std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
   std::optional<Rendered> reference;
   if (o.compare) reference = RenderOnCpu(rs, params, o);
   Rendered r = ctx ? RenderOnVulkan(*ctx, rs, params, o) : RenderOnCpu(rs, params, o);

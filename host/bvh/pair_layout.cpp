@@ -15,7 +15,7 @@ uint32_t AddLeaf(uint32_t leaf, const std::vector<shader::Triangle>& triangles, 
     for (uint32_t lane = 0; lane < 4; ++lane) {
       p.index[lane] = shader::kInvalidIndex;
       if (k + lane >= count) continue;
-      const shader::Triangle& t = triangles.at(first + k + lane);
+      const shader::Triangle& t = triangles[first + k + lane];
       for (int axis = 0; axis < 3; ++axis) {
         p.v0[axis][lane] = t.v0[axis];
         p.e1[axis][lane] = t.e1[axis];
@@ -43,10 +43,14 @@ BvhPairLayout BuildPairLayout(const std::vector<shader::BvhNode>& nodes, uint32_
   // the same order.
   std::vector<uint32_t> pairOf(nodeCount, 0);
   uint32_t inner = 0;
-  for (uint32_t i = 0; i < nodeCount; ++i)
+  size_t packets = 0;
+  for (uint32_t i = 0; i < nodeCount; ++i) {
     if (!IsLeaf(nodes[i])) pairOf[i] = inner++;
-  if (inner > (1u << 28)) throw Error("BuildPairLayout: too many nodes for the 28-bit index");
+    else packets += (LeafCount(nodes[i]) + 3) / 4;
+  }
+  if (inner > (1u << 28) || packets >= (1u << 28)) throw Error("BuildPairLayout: too many nodes for the 28-bit index");
   layout.pairs.resize(inner);
+  layout.packets.reserve(packets);
   for (uint32_t i = 0; i < nodeCount; ++i) {
     if (IsLeaf(nodes[i])) continue;
     BvhPairNode& p = layout.pairs[pairOf[i]];
@@ -60,7 +64,6 @@ BvhPairLayout BuildPairLayout(const std::vector<shader::BvhNode>& nodes, uint32_
       p.child[c] = IsLeaf(k) ? AddLeaf(k.leaf, triangles, layout.packets) : pairOf[kids[c]] << 4;
     }
   }
-  if (layout.packets.size() >= (1u << 28)) throw Error("BuildPairLayout: too many leaves for the 28-bit index");
   return layout;
 }
 

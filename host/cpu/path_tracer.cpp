@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cpu/cpu_path.h"
+#include "util/error.h"
 
 namespace vkpt {
 
@@ -22,6 +23,8 @@ glm::vec3 SampleRadiance(const RenderScene& scene, const FrameParams& params, ui
 }
 
 CpuRenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, const CpuRenderOptions& options) {
+  if (scene.pairLayout.pairs.empty() && scene.pairLayout.packets.empty())
+    throw Error("the CPU renderer needs a RenderScene prepared with forCpu = true");
   CpuRenderResult result;
   result.image = Image(params.width, params.height);
   result.image.variance.assign(result.image.pixels.size(), glm::vec3(0.0f));

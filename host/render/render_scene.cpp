@@ -13,7 +13,7 @@ bool IsDegenerate(const SceneTriangle& t) {
   return !(glm::length(glm::cross(e1, e2)) > 1e-6f * glm::length(e1) * glm::length(e2));
 }
 
-RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options) {
+RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {
   RenderScene rs;
   std::vector<Bounds3f> bounds;
   std::vector<glm::vec3> vertices;  // for spatial splits: as the GPU stores them
@@ -57,7 +57,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
     g.sourceIndex = src;
     rs.triangles.push_back(g);
   }
-  rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
+  if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
 
   // Emitter table: every emissive triangle with non-zero area, chosen with probability
   // proportional to its emitted power (area × luminance, doubled when it emits from both
