@@ -189,10 +189,34 @@ class Builder {
   }
 
  private:
-  static std::vector<Bin>& RightScratch(uint32_t bins) {
-    static thread_local std::vector<Bin> v;
-    v.resize(bins);
-    return v;
+  // The SAH sweep over one axis's bins: the side right of every plane b (bins >= b)
+  // accumulated from the right, then the left sides from the left, each plane costed.
+  // A bin adds enters(b) references to the sides left of the planes above it and exits(b)
+  // to the sides right of the planes at or below it: both are its count for object bins;
+  // for spatial bins, the references that start and end there. consider(b, cost, left,
+  // right) sees every plane with references on both sides. (Small nodes make most of the
+  // calls, so this runs on vectors too.)
+  template <class Enters, class Exits, class Consider>
+  void SweepBins(const Bin* bins, Enters&& enters, Exits&& exits, float parentArea, Consider&& consider) const {
+    static thread_local std::vector<Bin> right;
+    const uint32_t nb = opt_.bins;
+    right.resize(nb);
+    Bin acc;
+    for (uint32_t b = nb - 1; b > 0; --b) {
+      acc.Extend(bins[b].lo, bins[b].hi);
+      acc.count += exits(b);
+      right[b] = acc;
+    }
+    acc = Bin{};
+    for (uint32_t b = 1; b < nb; ++b) {
+      acc.Extend(bins[b - 1].lo, bins[b - 1].hi);
+      acc.count += enters(b - 1);
+      if (acc.count == 0 || right[b].count == 0) continue;
+      float cost = opt_.traversalCost +
+                   opt_.intersectionCost * (acc.Area() * float(acc.count) + right[b].Area() * float(right[b].count)) /
+                       parentArea;
+      consider(b, cost, acc, right[b]);
+    }
   }
 
   // Runs f(begin, end, chunk) over [first, first + count) split into `threads` chunks.
@@ -327,14 +351,14 @@ class Builder {
     if (!(parentArea > 0.0f)) return best;
     const uint32_t nb = opt_.bins;
     const float inf = std::numeric_limits<float>::infinity();
-    std::vector<Bin> bins(nb), right(nb);
-    std::vector<uint32_t> entries(nb), exits(nb);
+    static thread_local std::vector<Bin> bins;
+    static thread_local std::vector<uint32_t> entries, exits;
     for (int a = 0; a < 3; ++a) {
       if (!(node.box.hi[a] > node.box.lo[a])) continue;
       const SpatialBins sb = BinsOf(node, a);
-      std::fill(bins.begin(), bins.end(), Bin{});
-      std::fill(entries.begin(), entries.end(), 0u);
-      std::fill(exits.begin(), exits.end(), 0u);
+      bins.assign(nb, Bin{});
+      entries.assign(nb, 0u);
+      exits.assign(nb, 0u);
       for (uint32_t i = node.first; i < node.first + node.count; ++i) {
         const BuildPrim& p = prims_[i];
         const uint32_t b0 = sb.Of(p.box.lo[a]), b1 = sb.Of(p.box.hi[a]);
@@ -351,22 +375,11 @@ class Builder {
           if (!part.Empty()) bins[b].Extend(Float4{part.lo.x, part.lo.y, part.lo.z, 0.0f}, Float4{part.hi.x, part.hi.y, part.hi.z, 0.0f});
         }
       }
-      Bin acc;
-      for (uint32_t b = nb - 1; b > 0; --b) {
-        acc.Extend(bins[b].lo, bins[b].hi);
-        acc.count += exits[b];
-        right[b] = acc;
-      }
-      acc = Bin{};
-      for (uint32_t b = 1; b < nb; ++b) {
-        acc.Extend(bins[b - 1].lo, bins[b - 1].hi);
-        acc.count += entries[b - 1];
-        if (acc.count == 0 || right[b].count == 0) continue;
-        float cost = opt_.traversalCost + opt_.intersectionCost *
-                                              (acc.Area() * float(acc.count) + right[b].Area() * float(right[b].count)) /
-                                              parentArea;
-        if (cost < best.cost) best = {a, b, cost};
-      }
+      SweepBins(
+          bins.data(), [&](uint32_t b) { return entries[b]; }, [&](uint32_t b) { return exits[b]; }, parentArea,
+          [&](uint32_t b, float cost, const Bin&, const Bin&) {
+            if (cost < best.cost) best = {a, b, cost};
+          });
     }
     return best;
   }
@@ -484,28 +497,13 @@ class Builder {
         }
       all = &merged;
     }
-    std::vector<Bin>& right = RightScratch(nb);
     for (int a = 0; a < 3; ++a) {
       if (!usable[a]) continue;
       const Bin* bins = all->data() + a * nb;
-      // Sweep from the right to get the cost of every right side, then from the left.
-      // (Small nodes make most of the calls, so this runs on vectors too.)
-      Bin acc;
-      for (uint32_t b = opt_.bins - 1; b > 0; --b) {
-        acc.Extend(bins[b].lo, bins[b].hi);
-        acc.count += bins[b].count;
-        right[b] = acc;
-      }
-      acc = Bin{};
-      for (uint32_t b = 1; b < opt_.bins; ++b) {
-        acc.Extend(bins[b - 1].lo, bins[b - 1].hi);
-        acc.count += bins[b - 1].count;
-        if (acc.count == 0 || acc.count == node.count) continue;
-        float cost = opt_.traversalCost + opt_.intersectionCost *
-                                              (acc.Area() * float(acc.count) + right[b].Area() * float(right[b].count)) /
-                                              parentArea;
-        if (cost < best.cost) best = {a, b, cost, acc.Box(), right[b].Box()};
-      }
+      auto count = [&](uint32_t b) { return bins[b].count; };
+      SweepBins(bins, count, count, parentArea, [&](uint32_t b, float cost, const Bin& left, const Bin& right) {
+        if (cost < best.cost) best = {a, b, cost, left.Box(), right.Box()};
+      });
     }
     // A flat parent (zero area) makes every cost NaN or ∞: fall back to the median split.
     if (!(parentArea > 0.0f)) best.axis = -1, best.cost = std::numeric_limits<float>::infinity();
