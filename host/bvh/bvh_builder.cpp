@@ -267,7 +267,7 @@ class Builder {
       }
     }
     nodes[ni].box = node.box;
-    if (ni == 0 && &nodes == &nodes_) rootArea_ = node.box.SurfaceArea();
+    if (node.depth == 0) rootArea_ = node.box.SurfaceArea();  // the root comes first
     auto makeLeaf = [&] { nodes[ni].leaf = true; };
     if (node.count == 1) return makeLeaf();
     auto addChildren = [&](uint32_t leftFirst, uint32_t leftCount, uint32_t rightFirst, uint32_t rightCount) {
