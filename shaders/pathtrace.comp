@@ -1,8 +1,18 @@
 #version 460
-// vkpt's path tracer on a Vulkan compute device: one invocation per pixel and sample,
-// the estimator of shared/path.h (the very code the CPU reference runs), and a stackless
-// BVH walk. One sample per invocation keeps each invocation's loop count small (see
-// traverse.glsl on lavapipe's loop limit); a submission holds several dispatches.
+// vkpt's path tracer on a Vulkan compute device: one invocation per pixel, computing a
+// run of that pixel's samples with the estimator of shared/path.h (the very code the CPU
+// reference runs) and a stackless BVH walk.
+//
+// Path regeneration (Novák et al. 2010): the invocation extends its path one vertex per
+// loop pass, and a lane whose path has ended starts its next sample at once. On SIMD
+// hardware (lavapipe runs 8 invocations as the lanes of one vector) a loop makes as many
+// passes as its slowest lane; with one path per invocation the lanes of short paths idled
+// while the longest one went on, with a run of samples the lengths even out.
+//
+// lavapipe ends a shader after 65535 loop passes per SIMD group (traverse.glsl), so the
+// run must stay short enough: the host sizes it from the passes per sample measured on
+// the previous dispatch (kBindingLoopStats), and every sample of a group that may have
+// been cut short is counted as such.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
@@ -16,8 +26,14 @@ layout(std140, binding = kBindingParams) uniform Params { FrameParams params; };
 layout(std430, binding = kBindingAccum) buffer Accum { vec4 accum[]; };
 // Per pixel: (rays traced, non-finite samples discarded, samples possibly cut short, 0).
 layout(std430, binding = kBindingCounters) buffer Counters { uvec4 counters[]; };
-// Which sample of the batch this dispatch computes: params.sampleBegin + sampleInBatch.
-layout(push_constant) uniform Push { uint sampleInBatch; };
+// The most loop passes any SIMD group has needed per sample (rounded up), for the host's
+// choice of samplesPerInvocation.
+layout(std430, binding = kBindingLoopStats) buffer LoopStats { uint maxPassesPerSample; };
+// This dispatch computes samples params.sampleBegin + firstSample + [0, samples).
+layout(push_constant) uniform Push {
+  uint firstSample;
+  uint samples;
+};
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -29,33 +45,52 @@ layout(push_constant) uniform Push { uint sampleInBatch; };
 
 #include "shared/path.h"
 
-// lavapipe ends a shader once its SIMD group has run 65535 loop iterations in total;
-// stay clear of it by a margin for the small loops not counted exactly.
-const uint kLoopBudget = 65535u - 256u;
-
 void main() {
   gNodeCount = params.nodeCount;
   gNodeCopies = params.nodeCopies;
   uvec2 pixel = gl_GlobalInvocationID.xy;
   bool inside = pixel.x < params.width && pixel.y < params.height;
-  PathSample ps;
-  ps.radiance = vec3(0.0f);
-  ps.rays = 0u;
-  // Out-of-image lanes still take part in the subgroup operations below (no early return).
-  if (inside) ps = TracePath(params, pixel.x, pixel.y, params.sampleBegin + sampleInBatch);
-  // Loops outside traversal: the path loop (≤ one iteration per ray) and the emitter
-  // binary search (≤ log2(emitters) + 2 per ray), bounded per lane and summed.
-  uint smallLoops = ps.rays * (3u + uint(findMSB(max(params.emitterCount, 1u))));
-  uint groupIterations = subgroupAdd(gLoopIterations) + subgroupAdd(smallLoops);
-  if (!inside) return;
   uint index = pixel.y * params.width + pixel.x;
-  vec3 L = ps.radiance;
-  uvec4 count = uvec4(ps.rays, 0u, groupIterations >= kLoopBudget ? 1u : 0u, 0u);
-  if (any(isnan(L)) || any(isinf(L))) {
-    count.y = 1u;
-  } else {
-    accum[2u * index] += vec4(L, 0.0f);
-    accum[2u * index + 1u] += vec4(L * L, 0.0f);
+  // The sums are carried in registers and added to in sample order, as if each sample
+  // were its own dispatch: the image does not depend on how samples are grouped.
+  vec4 sum = vec4(0.0f);
+  vec4 sumSq = vec4(0.0f);
+  uvec4 count = uvec4(0u);
+  if (inside) {
+    sum = accum[2u * index];
+    sumSq = accum[2u * index + 1u];
+    count = counters[index];
   }
-  counters[index] += count;
+  uint first = params.sampleBegin + firstSample;
+  uint done = 0u;
+  uint rays = 0u;
+  PathState path = StartPath(params, pixel.x, pixel.y, first);
+  // Out-of-image lanes still take part in the subgroup operations (no early return).
+  bool tracing = inside;
+  while (tracing) {
+    if (!ExtendPath(params, path)) {
+      vec3 L = path.result.radiance;
+      rays += path.result.rays;
+      if (any(isnan(L)) || any(isinf(L))) {
+        count.y += 1u;
+      } else {
+        sum += vec4(L, 0.0f);
+        sumSq += vec4(L * L, 0.0f);
+      }
+      ++done;
+      if (done == samples) tracing = false;
+      else path = StartPath(params, pixel.x, pixel.y, first + done);
+    }
+  }
+  // Loops outside traversal: this loop (≤ one pass per ray) and the emitter binary
+  // search (≤ log2(emitters) + 2 per ray), bounded per lane and summed.
+  uint smallLoops = rays * (3u + uint(findMSB(max(params.emitterCount, 1u))));
+  uint groupPasses = subgroupAdd(gLoopIterations) + subgroupAdd(smallLoops);
+  if (subgroupElect()) atomicMax(maxPassesPerSample, (groupPasses + samples - 1u) / samples);
+  if (!inside) return;
+  count.x += rays;
+  if (groupPasses >= kLoopBudget) count.z += samples;
+  accum[2u * index] = sum;
+  accum[2u * index + 1u] = sumSq;
+  counters[index] = count;
 }

@@ -250,6 +250,48 @@ TEST_F(GpuTest, LockstepCornellMatchesCpu) {
   EXPECT_TRUE(c.lockstepAgree);
 }
 
+// Path regeneration (pathtrace.comp) adds each invocation's samples in sample order, as
+// separate dispatches would: the image must not depend on how samples are grouped.
+TEST_F(GpuTest, ImageDoesNotDependOnSamplesPerInvocation) {
+  Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  RenderScene rs = PrepareRenderScene(s);
+  FrameParams p = Params(rs, s, 40, 24, 13, 3);
+  vk::GpuRenderer gpu(Gpu(), rs);
+  std::vector<vk::GpuRenderResult> results;
+  for (uint32_t run : {1u, 4u, 13u, 0u}) {
+    vk::GpuRenderOptions o;
+    o.samplesPerInvocation = run;
+    o.batch = run ? 0 : 5;  // adaptive: one measuring dispatch, then batches of 5
+    results.push_back(gpu.Render(p, o));
+    const vk::GpuRenderResult& r = results.back();
+    EXPECT_EQ(r.cutShort, 0u);
+    EXPECT_EQ(r.nonFinite, 0u);
+    if (run) EXPECT_EQ(r.samplesPerInvocation, run);
+  }
+  EXPECT_GT(results.back().samplesPerInvocation, 1u) << "the adaptive run length must group samples on Cornell";
+  for (size_t i = 1; i < results.size(); ++i) {
+    EXPECT_EQ(results[i].rays, results[0].rays);
+    EXPECT_TRUE(results[i].image.pixels == results[0].image.pixels) << "run " << i;
+    EXPECT_TRUE(results[i].image.variance == results[0].image.variance) << "run " << i;
+  }
+}
+
+// A run of samples too long for lavapipe's loop limit must be reported as cut short,
+// never returned as a silently darker image.
+TEST_F(GpuTest, RunPastTheLoopLimitIsReported) {
+  if (Gpu().DeviceName().find("llvmpipe") == std::string::npos) GTEST_SKIP() << "the loop limit is lavapipe's";
+  Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  RenderScene rs = PrepareRenderScene(s);
+  FrameParams p = Params(rs, s, 8, 8, 2000, 1);
+  vk::GpuRenderer gpu(Gpu(), rs);
+  vk::GpuRenderOptions o;
+  o.samplesPerInvocation = p.sampleCount;
+  vk::GpuRenderResult r = gpu.Render(p, o);
+  std::printf("2000 samples per invocation: %llu of %u samples flagged as cut short\n",
+              (unsigned long long)r.cutShort, 64 * p.sampleCount);
+  EXPECT_GT(r.cutShort, 0u);
+}
+
 // Independent seeds: region means must agree within their standard errors. The same
 // test must reject deliberately wrong shaders (proof that it has teeth).
 ImageComparison IndependentComparison(const uint32_t* spirv, size_t bytes, const char* name) {

@@ -51,6 +51,10 @@ class ComputePipeline {
 // reads and writes (also across submissions, which by themselves order nothing in memory).
 void ComputeBarrier(VkCommandBuffer cb);
 
+// A barrier making earlier compute writes to host-visible memory readable by the host
+// once the submission's fence has signalled.
+void HostReadBarrier(VkCommandBuffer cb);
+
 // Copies device buffers to host-visible ones after compute writes, with the barriers
 // that make the data visible to the host once the submission's fence has signalled.
 class Buffer;

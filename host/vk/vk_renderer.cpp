@@ -44,6 +44,14 @@ Buffer Readback(const Context& ctx, VkDeviceSize size, const char* what) {
                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what);
 }
 
+// Samples per invocation for a scene whose SIMD groups have needed up to `passesPerSample`
+// loop passes per sample: a quarter of lavapipe's loop budget, so that a run of unluckier
+// samples still fits (a group past the budget is reported as cut short, never silent).
+// Runs longer than 32 samples gain nothing measurable.
+uint32_t RunLength(uint32_t passesPerSample) {
+  return std::clamp<uint32_t>(shader::kLoopBudget / 4 / std::max(passesPerSample, 1u), 1u, 32u);
+}
+
 }  // namespace
 
 GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv, size_t spirvBytes)
@@ -63,6 +71,9 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
   Buffer counters = Storage(ctx_, pixels * sizeof(glm::uvec4), "counter");
   Buffer params(ctx_, sizeof(shader::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "frame params");
+  Buffer loopStats(ctx_, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "loop statistics");
+  std::memset(loopStats.Mapped(), 0, sizeof(uint32_t));
   ComputePipeline pipeline(ctx_, spirv_, spirvBytes_,
                            {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.Handle()},
                             TexelBinding(shader::kBindingTriangles, triangles_),
@@ -70,8 +81,9 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
                             TexelBinding(shader::kBindingMaterials, materials_),
                             TexelBinding(shader::kBindingEmitters, emitters_),
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, accum.Handle()},
-                            {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counters.Handle()}},
-                           "pathtrace", sizeof(uint32_t));
+                            {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counters.Handle()},
+                            {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, loopStats.Handle()}},
+                           "pathtrace", 2 * sizeof(uint32_t));
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, counters.Handle(), 0, VK_WHOLE_SIZE, 0);
@@ -81,21 +93,33 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
                                        : uint32_t(std::clamp<uint64_t>((1u << 20) / std::max<uint64_t>(pixels, 1), 1,
                                                                         std::max(frame.sampleCount, 1u)));
   GpuRenderResult result;
+  // Until a dispatch has measured the scene's loop passes, one sample per invocation,
+  // and the first submission holds just that one dispatch.
+  uint32_t run = options.samplesPerInvocation ? options.samplesPerInvocation : 1u;
+  bool measured = options.samplesPerInvocation != 0;
   auto t0 = std::chrono::steady_clock::now();
-  for (uint32_t done = 0; done < frame.sampleCount; done += batch) {
+  for (uint32_t done = 0; done < frame.sampleCount;) {
     shader::FrameParams p = frame;
     p.sampleBegin = frame.sampleBegin + done;
-    p.sampleCount = std::min(batch, frame.sampleCount - done);
+    p.sampleCount = measured ? std::min(batch, frame.sampleCount - done) : 1u;
     std::memcpy(params.Mapped(), &p, sizeof p);  // the previous batch has finished: safe to overwrite
     ctx_.Submit([&](VkCommandBuffer cb) {
-      for (uint32_t s = 0; s < p.sampleCount; ++s) {
+      for (uint32_t s = 0; s < p.sampleCount; s += run) {
         ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
+        const uint32_t push[2] = {s, std::min(run, p.sampleCount - s)};
         pipeline.Dispatch(cb, (frame.width + kWorkgroup - 1) / kWorkgroup, (frame.height + kWorkgroup - 1) / kWorkgroup,
-                          1, &s);
+                          1, push);
       }
+      HostReadBarrier(cb);  // for loopStats
     });
+    result.samplesPerInvocation = std::max(result.samplesPerInvocation, std::min(run, p.sampleCount));
+    if (!options.samplesPerInvocation) {
+      run = RunLength(*static_cast<const uint32_t*>(loopStats.Mapped()));
+      measured = true;
+    }
+    done += p.sampleCount;
     ++result.batches;
-    if (options.progress) options.progress(double(done + p.sampleCount) / frame.sampleCount);
+    if (options.progress) options.progress(double(done) / frame.sampleCount);
   }
 
   Buffer accumHost = Readback(ctx_, accum.Size(), "accumulation readback");

@@ -19,6 +19,10 @@ struct GpuRenderOptions {
   // Samples per pixel per submission (one dispatch each); 0 picks about 2^20 paths per
   // submission, short enough that a desktop GPU's watchdog never fires.
   uint32_t batch = 0;
+  // Samples each invocation computes in one dispatch (path regeneration, pathtrace.comp);
+  // 0 sizes the run from the loop passes per sample measured so far (RunLength). The image
+  // is the same for every choice.
+  uint32_t samplesPerInvocation = 0;
   std::function<void(double)> progress;  // finished fraction, after every batch
 };
 
@@ -31,6 +35,7 @@ struct GpuRenderResult {
   uint64_t cutShort = 0;
   double seconds = 0.0;  // dispatches and readback, not upload or pipeline creation
   uint32_t batches = 0;
+  uint32_t samplesPerInvocation = 0;  // the longest run used
 };
 
 class GpuRenderer {

@@ -17,5 +17,7 @@ using uint = std::uint32_t;
 
 // Free functions in shared headers are `VKPT_FN`: inline in C++, plain in GLSL.
 #define VKPT_FN inline
+// A parameter the function reads and writes: a reference in C++, `inout` in GLSL.
+#define VKPT_INOUT(T) T&
 #define VKPT_BEGIN_NAMESPACE namespace vkpt::shader {
 #define VKPT_END_NAMESPACE }

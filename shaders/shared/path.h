@@ -44,84 +44,112 @@ struct PathSample {
   uint rays;  // closest-hit plus shadow rays traced
 };
 
-// Radiance carried by sample `sampleIndex` of pixel (px, py): one path. Its random
+// A path under construction: the ray about to be traced from its latest vertex. The path
+// is built one vertex at a time (ExtendPath) so that a SIMD lane whose path ends can start
+// its next sample at once instead of idling while its neighbours' paths go on (path
+// regeneration, Novák et al. 2010); the CPU simply extends until the path ends.
+struct PathState {
+  Ray ray;
+  vec3 throughput;
+  PathSample result;  // what the path has gathered so far
+  uint bounce;        // vertices found so far
+  uint pixel;         // py * width + px
+  uint sampleIndex;
+};
+
+// Sample `sampleIndex` of pixel (px, py) before its first ray: the camera ray. Its random
 // numbers come from the streams (params.seed, pixel, sampleIndex, dimension).
-VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint py, uint sampleIndex) {
-  uint pixel = py * params.width + px;
-  vec2 uc = Sample2D(params.seed, pixel, sampleIndex, kGroupCamera);
-  Ray ray = GenerateCameraRay(params, px, py, uc.x, uc.y);
-  PathSample result;
-  result.radiance = vec3(0.0f);
-  result.rays = 0u;
-  vec3 throughput = vec3(1.0f);
+VKPT_FN PathState StartPath(FrameParams params, uint px, uint py, uint sampleIndex) {
+  PathState s;
+  s.pixel = py * params.width + px;
+  s.sampleIndex = sampleIndex;
+  vec2 uc = Sample2D(params.seed, s.pixel, sampleIndex, kGroupCamera);
+  s.ray = GenerateCameraRay(params, px, py, uc.x, uc.y);
+  s.throughput = vec3(1.0f);
+  s.result.radiance = vec3(0.0f);
+  s.result.rays = 0u;
+  s.bounce = 0u;
+  return s;
+}
 
-  for (uint bounce = 0u;; ++bounce) {
-    result.rays += 1u;
-    HitRecord hit = TraceClosest(VKPT_SCENE_ARG ray.origin, ray.dir, kInfinity);
-    if (hit.t < 0.0f) {
-      result.radiance += throughput * params.background;
-      break;
-    }
-    Triangle tri = VKPT_TRIANGLE(hit.triangle);
-    Material mat = VKPT_MATERIAL(tri.material);
-    vec3 ng = normalize(cross(tri.e1, tri.e2));
-    bool frontFace = dot(ng, ray.dir) < 0.0f;
-    if (bounce == 0u && (frontFace || (mat.flags & kMaterialDoubleSided) != 0u))
-      result.radiance += throughput * mat.emission;
-    // Paths have at most maxDepth bounces: the light sample at vertex k, and the ray
-    // leaving it (which may escape to the environment), make k + 1.
-    if (bounce >= params.maxDepth) break;
-
-    // Surfaces reflect on both sides: shade with the normal facing the incoming ray.
-    vec3 n = frontFace ? ng : -ng;
-    vec3 p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
-    vec3 baseColor = mat.baseColor;
-    vec3 origin = OffsetRayOrigin(p, n);
-
-    vec4 ul = Random4(params.seed, pixel, sampleIndex, LightGroup(bounce));
-    if (params.emitterCount > 0u && MaxComponent(baseColor) > 0.0f) {
-      // One stratified 2-D sample picks the emitter *and* the point on it: us.x chooses
-      // the CDF interval and is then stretched back to [0,1) within it (pbrt-v4's
-      // SampleDiscrete remapping). The points thus stay stratified over the union of all
-      // emitters (a quad light's two triangles, say), not just within the one picked.
-      vec2 us = Sample2D(params.seed, pixel, sampleIndex, LightGroup(bounce));
-      uint k = PickEmitter(VKPT_SCENE_ARG params.emitterCount, us.x);
-      Emitter e = VKPT_EMITTER(k);
-      float cdfBelow = k > 0u ? VKPT_EMITTER(k - 1u).cdf : 0.0f;
-      us.x = min((us.x - cdfBelow) / (e.cdf - cdfBelow), kOneMinusEpsilon);
-      Triangle light = VKPT_TRIANGLE(e.triangle);
-      Material lightMat = VKPT_MATERIAL(light.material);
-      vec2 b = SampleUniformTriangle(us.x, us.y);
-      vec3 x = light.v0 + b.x * light.e1 + b.y * light.e2;
-      vec3 nl = normalize(cross(light.e1, light.e2));
-      bool twoSided = (lightMat.flags & kMaterialDoubleSided) != 0u;
-      float w = LightSampleWeight(p, n, x, nl, twoSided, e.pmf, e.area);
-      if (w > 0.0f) {
-        // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
-        // unnormalised direction: the emitter itself then lies beyond tMax.
-        vec3 target = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl);
-        result.rays += 1u;
-        if (!TraceOccluded(VKPT_SCENE_ARG origin, target - origin, 1.0f))
-          result.radiance += throughput * (baseColor * kInvPi) * lightMat.emission * w;
-      }
-    }
-
-    // Cosine-weighted bounce: f·cos θ / pdf = (ρ/π)·cos θ / (cos θ/π) = ρ.
-    throughput *= baseColor;
-    // Russian roulette (GAMES101: continue with probability P, divide by P): survival
-    // follows the throughput, so dim paths end early and bright ones rarely.
-    if (bounce >= params.rrDepth) {
-      float survive = min(1.0f, MaxComponent(throughput));
-      if (!(ul.w < survive)) break;
-#ifndef VKPT_MUTANT_ROULETTE_WITHOUT_DIVISION
-      throughput /= survive;
-#endif
-    }
-    vec2 ub = Sample2D(params.seed, pixel, sampleIndex, BsdfGroup(bounce));
-    ray.origin = origin;
-    ray.dir = FrameToWorld(FrameFromNormal(n), SampleCosineHemisphere(ub.x, ub.y));
+// Traces the path's next ray and, at the vertex it finds, the light sample and the
+// continuation: returns false once the path has ended (s.result is then final).
+VKPT_FN bool ExtendPath(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s) {
+  uint bounce = s.bounce;
+  s.bounce = bounce + 1u;
+  s.result.rays += 1u;
+  HitRecord hit = TraceClosest(VKPT_SCENE_ARG s.ray.origin, s.ray.dir, kInfinity);
+  if (hit.t < 0.0f) {
+    s.result.radiance += s.throughput * params.background;
+    return false;
   }
-  return result;
+  Triangle tri = VKPT_TRIANGLE(hit.triangle);
+  Material mat = VKPT_MATERIAL(tri.material);
+  vec3 ng = normalize(cross(tri.e1, tri.e2));
+  bool frontFace = dot(ng, s.ray.dir) < 0.0f;
+  if (bounce == 0u && (frontFace || (mat.flags & kMaterialDoubleSided) != 0u))
+    s.result.radiance += s.throughput * mat.emission;
+  // Paths have at most maxDepth bounces: the light sample at vertex k, and the ray
+  // leaving it (which may escape to the environment), make k + 1.
+  if (bounce >= params.maxDepth) return false;
+
+  // Surfaces reflect on both sides: shade with the normal facing the incoming ray.
+  vec3 n = frontFace ? ng : -ng;
+  vec3 p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
+  vec3 baseColor = mat.baseColor;
+  vec3 origin = OffsetRayOrigin(p, n);
+
+  vec4 ul = Random4(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
+  if (params.emitterCount > 0u && MaxComponent(baseColor) > 0.0f) {
+    // One stratified 2-D sample picks the emitter *and* the point on it: us.x chooses
+    // the CDF interval and is then stretched back to [0,1) within it (pbrt-v4's
+    // SampleDiscrete remapping). The points thus stay stratified over the union of all
+    // emitters (a quad light's two triangles, say), not just within the one picked.
+    vec2 us = Sample2D(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
+    uint k = PickEmitter(VKPT_SCENE_ARG params.emitterCount, us.x);
+    Emitter e = VKPT_EMITTER(k);
+    float cdfBelow = k > 0u ? VKPT_EMITTER(k - 1u).cdf : 0.0f;
+    us.x = min((us.x - cdfBelow) / (e.cdf - cdfBelow), kOneMinusEpsilon);
+    Triangle light = VKPT_TRIANGLE(e.triangle);
+    Material lightMat = VKPT_MATERIAL(light.material);
+    vec2 b = SampleUniformTriangle(us.x, us.y);
+    vec3 x = light.v0 + b.x * light.e1 + b.y * light.e2;
+    vec3 nl = normalize(cross(light.e1, light.e2));
+    bool twoSided = (lightMat.flags & kMaterialDoubleSided) != 0u;
+    float w = LightSampleWeight(p, n, x, nl, twoSided, e.pmf, e.area);
+    if (w > 0.0f) {
+      // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
+      // unnormalised direction: the emitter itself then lies beyond tMax.
+      vec3 target = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl);
+      s.result.rays += 1u;
+      if (!TraceOccluded(VKPT_SCENE_ARG origin, target - origin, 1.0f))
+        s.result.radiance += s.throughput * (baseColor * kInvPi) * lightMat.emission * w;
+    }
+  }
+
+  // Cosine-weighted bounce: f·cos θ / pdf = (ρ/π)·cos θ / (cos θ/π) = ρ.
+  s.throughput *= baseColor;
+  // Russian roulette (GAMES101: continue with probability P, divide by P): survival
+  // follows the throughput, so dim paths end early and bright ones rarely.
+  if (bounce >= params.rrDepth) {
+    float survive = min(1.0f, MaxComponent(s.throughput));
+    if (!(ul.w < survive)) return false;
+#ifndef VKPT_MUTANT_ROULETTE_WITHOUT_DIVISION
+    s.throughput /= survive;
+#endif
+  }
+  vec2 ub = Sample2D(params.seed, s.pixel, s.sampleIndex, BsdfGroup(bounce));
+  s.ray.origin = origin;
+  s.ray.dir = FrameToWorld(FrameFromNormal(n), SampleCosineHemisphere(ub.x, ub.y));
+  return true;
+}
+
+// Radiance carried by sample `sampleIndex` of pixel (px, py): one whole path.
+VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint py, uint sampleIndex) {
+  PathState s = StartPath(params, px, py, sampleIndex);
+  while (ExtendPath(VKPT_SCENE_ARG params, s)) {
+  }
+  return s.result;
 }
 
 VKPT_END_NAMESPACE
