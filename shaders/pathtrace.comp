@@ -3,8 +3,9 @@
 // run of that pixel's samples with the estimator of shared/path.h (the very code the CPU
 // reference runs) and a stackless BVH walk.
 //
-// Path regeneration (Novák et al. 2010): the invocation extends its path one vertex per
-// loop pass, and a lane whose path has ended starts its next sample at once. On SIMD
+// Path regeneration (Novák et al. 2010): the invocation traces one ray of its path per
+// loop pass (a bounce or a shadow ray), and a lane whose path has ended starts its next
+// sample at once. On SIMD
 // hardware (lavapipe runs 8 invocations as the lanes of one vector) a loop makes as many
 // passes as its slowest lane; with one path per invocation the lanes of short paths idled
 // while the longest one went on, with a run of samples the lengths even out.
@@ -65,10 +66,18 @@ void main() {
   uint done = 0u;
   uint rays = 0u;
   PathState path = StartPath(params, pixel.x, pixel.y, first);
+  bool more = true;  // the path has a closest-hit ray to trace
   // Out-of-image lanes still take part in the subgroup operations (no early return).
   bool tracing = inside;
   while (tracing) {
-    if (!ExtendPath(params, path)) {
+    // One ray per pass, of either kind: lanes tracing shadow rays and lanes tracing
+    // bounce rays share the traversal loops instead of waiting for each other.
+    bool shadow = path.shadowPending;
+    Ray ray = shadow ? path.shadowRay : path.ray;
+    HitRecord hit = TraceRay(ray.origin, ray.dir, shadow ? 1.0f : kInfinity, shadow);
+    if (shadow) AddLightIfVisible(path, hit.t >= 0.0f);
+    else more = ShadeHit(params, path, hit);
+    if (!more && !path.shadowPending) {
       vec3 L = path.result.radiance;
       rays += path.result.rays;
       if (any(isnan(L)) || any(isinf(L))) {
@@ -78,8 +87,12 @@ void main() {
         sumSq += vec4(L * L, 0.0f);
       }
       ++done;
-      if (done == samples) tracing = false;
-      else path = StartPath(params, pixel.x, pixel.y, first + done);
+      if (done == samples) {
+        tracing = false;
+      } else {
+        path = StartPath(params, pixel.x, pixel.y, first + done);
+        more = true;
+      }
     }
   }
   // Loops outside traversal: this loop (≤ one pass per ray) and the emitter binary

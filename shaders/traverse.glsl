@@ -74,7 +74,10 @@ uint WalkToLeaf(vec3 origin, vec3 invDir, float tMax, inout uint i, inout uint k
   return steps;
 }
 
-HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
+// The closest hit with t ∈ (0, tMax), or with anyHit the first hit found (a shadow ray
+// needs no more). One function for both kinds, so that pathtrace.comp's lanes can trace
+// whichever kind of ray each has next in the same loop.
+HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit) {
   HitRecord hit;
   hit.t = -1.0f;
   hit.b1 = 0.0f;
@@ -101,6 +104,10 @@ HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
         hit.b1 = r.y;
         hit.b2 = r.z;
         hit.triangle = k;
+        if (anyHit) {  // ends both loops
+          i = kInvalidIndex;
+          end = k;
+        }
       }
       ++k;
     }
@@ -110,29 +117,9 @@ HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) {
   return hit;
 }
 
-// Any hit with t ∈ (0, tMax): the walk stops at the first one.
-bool TraceOccluded(vec3 origin, vec3 dir, float tMax) {
-  vec3 invDir = SafeInverse(dir);
-  uint i = RootFor(dir);
-  uint k = 0u;
-  uint end = 0u;
-  bool occluded = false;
-  while (!occluded && (k < end || i != kInvalidIndex)) {
-    uint nodeSteps = WalkToLeaf(origin, invDir, tMax, i, k, end);
-    uint triangleSteps = 0u;
-    while (k < end) {
-      ++triangleSteps;
-      Triangle t = FetchTriangle(k);
-      if (IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax).x >= 0.0f) {
-        occluded = true;
-        break;
-      }
-      ++k;
-    }
-    CountNestedPass(nodeSteps, triangleSteps);
-  }
-  CountPasses(3u);
-  return occluded;
-}
+HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) { return TraceRay(origin, dir, tMax, false); }
+
+// Any hit with t ∈ (0, tMax).
+bool TraceOccluded(vec3 origin, vec3 dir, float tMax) { return TraceRay(origin, dir, tMax, true).t >= 0.0f; }
 
 #endif

@@ -44,17 +44,22 @@ struct PathSample {
   uint rays;  // closest-hit plus shadow rays traced
 };
 
-// A path under construction: the ray about to be traced from its latest vertex. The path
-// is built one vertex at a time (ExtendPath) so that a SIMD lane whose path ends can start
-// its next sample at once instead of idling while its neighbours' paths go on (path
-// regeneration, Novák et al. 2010); the CPU simply extends until the path ends.
+// A path under construction: the ray about to be traced from its latest vertex and, when
+// that vertex sampled a light, the shadow ray still to be traced. The path is built one
+// ray at a time (ShadeHit after a closest hit, AddLightIfVisible after a shadow ray) so
+// that a SIMD lane can trace whichever ray it has next, and start its next sample as soon
+// as a path ends, instead of idling while its neighbours' rays go on (path regeneration,
+// Novák et al. 2010). The CPU calls the same steps in order (TracePath).
 struct PathState {
-  Ray ray;
+  Ray ray;             // the next closest-hit ray: camera ray, then bounce directions
   vec3 throughput;
-  PathSample result;  // what the path has gathered so far
-  uint bounce;        // vertices found so far
-  uint pixel;         // py * width + px
+  PathSample result;   // what the path has gathered so far
+  uint bounce;         // vertices found so far
+  uint pixel;          // py * width + px
   uint sampleIndex;
+  bool shadowPending;  // a light sample awaits its shadow ray (shadowRay, tMax = 1)
+  Ray shadowRay;
+  vec3 lightContribution;  // added to the radiance if the shadow ray is unoccluded
 };
 
 // Sample `sampleIndex` of pixel (px, py) before its first ray: the camera ray. Its random
@@ -67,18 +72,21 @@ VKPT_FN PathState StartPath(FrameParams params, uint px, uint py, uint sampleInd
   s.ray = GenerateCameraRay(params, px, py, uc.x, uc.y);
   s.throughput = vec3(1.0f);
   s.result.radiance = vec3(0.0f);
-  s.result.rays = 0u;
+  s.result.rays = 1u;  // the camera ray
   s.bounce = 0u;
+  s.shadowPending = false;
+  s.shadowRay = s.ray;
+  s.lightContribution = vec3(0.0f);
   return s;
 }
 
-// Traces the path's next ray and, at the vertex it finds, the light sample and the
-// continuation: returns false once the path has ended (s.result is then final).
-VKPT_FN bool ExtendPath(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s) {
+// The path's ray s.ray has found `hit`: adds what is seen there, samples a light (setting
+// s.shadowPending and the shadow ray if the sample can contribute) and the continuation
+// s.ray. Returns false if no further closest-hit ray follows (the pending shadow ray, if
+// any, must still be resolved before the path's radiance is final).
+VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s, HitRecord hit) {
   uint bounce = s.bounce;
   s.bounce = bounce + 1u;
-  s.result.rays += 1u;
-  HitRecord hit = TraceClosest(VKPT_SCENE_ARG s.ray.origin, s.ray.dir, kInfinity);
   if (hit.t < 0.0f) {
     s.result.radiance += s.throughput * params.background;
     return false;
@@ -122,8 +130,10 @@ VKPT_FN bool ExtendPath(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathStat
       // unnormalised direction: the emitter itself then lies beyond tMax.
       vec3 target = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl);
       s.result.rays += 1u;
-      if (!TraceOccluded(VKPT_SCENE_ARG origin, target - origin, 1.0f))
-        s.result.radiance += s.throughput * (baseColor * kInvPi) * lightMat.emission * w;
+      s.shadowPending = true;
+      s.shadowRay.origin = origin;
+      s.shadowRay.dir = target - origin;
+      s.lightContribution = s.throughput * (baseColor * kInvPi) * lightMat.emission * w;
     }
   }
 
@@ -141,13 +151,25 @@ VKPT_FN bool ExtendPath(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathStat
   vec2 ub = Sample2D(params.seed, s.pixel, s.sampleIndex, BsdfGroup(bounce));
   s.ray.origin = origin;
   s.ray.dir = FrameToWorld(FrameFromNormal(n), SampleCosineHemisphere(ub.x, ub.y));
+  s.result.rays += 1u;
   return true;
+}
+
+// The pending shadow ray has been traced: the light sample counts if nothing blocked it.
+VKPT_FN void AddLightIfVisible(VKPT_INOUT(PathState) s, bool occluded) {
+  s.shadowPending = false;
+  if (!occluded) s.result.radiance += s.lightContribution;
 }
 
 // Radiance carried by sample `sampleIndex` of pixel (px, py): one whole path.
 VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint py, uint sampleIndex) {
   PathState s = StartPath(params, px, py, sampleIndex);
-  while (ExtendPath(VKPT_SCENE_ARG params, s)) {
+  bool more = true;
+  while (more) {
+    HitRecord hit = TraceClosest(VKPT_SCENE_ARG s.ray.origin, s.ray.dir, kInfinity);
+    more = ShadeHit(VKPT_SCENE_ARG params, s, hit);
+    if (s.shadowPending)
+      AddLightIfVisible(s, TraceOccluded(VKPT_SCENE_ARG s.shadowRay.origin, s.shadowRay.dir, 1.0f));
   }
   return s.result;
 }
