@@ -468,16 +468,16 @@ int Run(const Options& o) {
   rep.Set("cpu_diffuse_mrays_s", mrays(rays.diffuse.size(), cpuDif.seconds));
   uint64_t mismatches = 0;
 
-  // Full path tracing: 256×256 × 4 spp (background 1 if the scene has no emitters).
+  // Full path tracing: 256×256 × 16 spp (background 1 if the scene has no emitters).
   shader::FrameParams pt = MakeFrameParams(rs, cam, 256, 256);
-  pt.sampleCount = 4;
+  pt.sampleCount = 16;
   pt.maxDepth = 32;
   pt.rrDepth = 3;
   if (rs.emitters.empty()) pt.background = glm::vec3(1.0f);
   CpuRenderOptions cpuOpt;
   cpuOpt.threads = threads;
   CpuRenderResult cpuPt = RenderCpu(rs, pt, cpuOpt);
-  rep.Set("cpu_pt_msamples_s", 256.0 * 256.0 * 4.0 / cpuPt.seconds * 1e-6);
+  rep.Set("cpu_pt_msamples_s", 256.0 * 256.0 * pt.sampleCount / cpuPt.seconds * 1e-6);
 
   rep.Set("gpu_primary_mrays_s", std::nullopt);
   rep.Set("gpu_diffuse_mrays_s", std::nullopt);
@@ -491,7 +491,7 @@ int Run(const Options& o) {
     rep.Set("gpu_diffuse_mrays_s", mrays(rays.diffuse.size(), gDif.seconds));
     mismatches += Mismatches(cpuCam, gCam) + Mismatches(cpuDif, gDif);
     vk::GpuRenderResult g = gpu.Render(pt);
-    rep.Set("gpu_pt_msamples_s", 256.0 * 256.0 * 4.0 / g.seconds * 1e-6);
+    rep.Set("gpu_pt_msamples_s", 256.0 * 256.0 * pt.sampleCount / g.seconds * 1e-6);
   } catch (const Error& e) {
     std::fprintf(stderr, "vkpt-bench: GPU figures skipped: %s\n", e.what());
     rep.device = "none";
