@@ -86,7 +86,10 @@ Rendered RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::F
   gpu.progress = ProgressLine();
   vk::GpuRenderResult r = renderer.Render(params, gpu);
   EndProgressLine();
-  return {std::move(r.image), r.seconds, r.rays, r.nonFinite, r.cutShort, "vulkan: " + ctx.DeviceName(), 0};
+  return {std::move(r.image), r.seconds, r.rays, r.nonFinite, r.cutShort,
+          "vulkan: " + ctx.DeviceName() + " (up to " + std::to_string(r.samplesPerInvocation) +
+              " samples per invocation)",
+          0};
 }
 
 int ListDevices() {

@@ -44,10 +44,12 @@ Buffer Readback(const Context& ctx, VkDeviceSize size, const char* what) {
                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what);
 }
 
-// Samples per invocation for a scene whose SIMD groups have needed up to `passesPerSample`
-// loop passes per sample: a quarter of lavapipe's loop budget, so that a run of unluckier
-// samples still fits (a group past the budget is reported as cut short, never silent).
-// Runs longer than 32 samples gain nothing measurable.
+// Samples per invocation for a scene whose worst SIMD group needed `passesPerSample` loop
+// passes per sample in the last submission: a quarter of lavapipe's loop budget, so that
+// a run of unluckier samples still fits (a group past the budget is reported as cut
+// short, never silent). A run averages its samples' passes, so longer runs measure fewer
+// per sample and the run grows from one submission to the next (Cornell: 12 samples after
+// the first, single-sample dispatch, then 32). Runs longer than 32 gain nothing measurable.
 uint32_t RunLength(uint32_t passesPerSample) {
   return std::clamp<uint32_t>(shader::kLoopBudget / 4 / std::max(passesPerSample, 1u), 1u, 32u);
 }
@@ -73,7 +75,6 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "frame params");
   Buffer loopStats(ctx_, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                    VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "loop statistics");
-  std::memset(loopStats.Mapped(), 0, sizeof(uint32_t));
   ComputePipeline pipeline(ctx_, spirv_, spirvBytes_,
                            {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.Handle()},
                             TexelBinding(shader::kBindingTriangles, triangles_),
@@ -103,6 +104,7 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
     p.sampleBegin = frame.sampleBegin + done;
     p.sampleCount = measured ? std::min(batch, frame.sampleCount - done) : 1u;
     std::memcpy(params.Mapped(), &p, sizeof p);  // the previous batch has finished: safe to overwrite
+    std::memset(loopStats.Mapped(), 0, sizeof(uint32_t));  // measure this submission's runs alone
     ctx_.Submit([&](VkCommandBuffer cb) {
       for (uint32_t s = 0; s < p.sampleCount; s += run) {
         ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
