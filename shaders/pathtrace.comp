@@ -36,6 +36,10 @@ layout(push_constant) uniform Push {
   uint samples;
 };
 
+// 0 when the scene has no emitters (set by the host): see shared/path.h.
+layout(constant_id = 0) const uint kSceneHasEmitters = 1u;
+#define VKPT_LIGHT_SAMPLING (kSceneHasEmitters != 0u)
+
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
 #define VKPT_TRIANGLE(i) FetchTriangle(i)

@@ -9,7 +9,7 @@ namespace vkpt::vk {
 
 ComputePipeline::ComputePipeline(const Context& ctx, const uint32_t* spirv, size_t spirvBytes,
                                  const std::vector<BufferBinding>& bindings, const std::string& name,
-                                 uint32_t pushConstantBytes)
+                                 uint32_t pushConstantBytes, const std::vector<uint32_t>& specialization)
     : ctx_(ctx), pushConstantBytes_(pushConstantBytes) {
   VkDevice dev = ctx.Device();
   try {
@@ -45,6 +45,11 @@ ComputePipeline::ComputePipeline(const Context& ctx, const uint32_t* spirv, size
     pipeInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipeInfo.stage.module = module_;
     pipeInfo.stage.pName = "main";
+    std::vector<VkSpecializationMapEntry> entries(specialization.size());
+    for (uint32_t i = 0; i < entries.size(); ++i) entries[i] = {i, i * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)};
+    VkSpecializationInfo specInfo{uint32_t(entries.size()), entries.data(), specialization.size() * sizeof(uint32_t),
+                                  specialization.data()};
+    if (!specialization.empty()) pipeInfo.stage.pSpecializationInfo = &specInfo;
     pipeInfo.layout = layout_;
     VKPT_VK_CHECK(vkCreateComputePipelines(dev, VK_NULL_HANDLE, 1, &pipeInfo, nullptr, &pipeline_));
     ctx.Name(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline_), name.c_str());

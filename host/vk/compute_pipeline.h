@@ -24,9 +24,10 @@ struct BufferBinding {
 class ComputePipeline {
  public:
   // `pushConstantBytes` > 0 declares a push-constant block of that size (compute stage).
+  // `specialization[i]` is the value of the 32-bit specialization constant constant_id = i.
   ComputePipeline(const Context& ctx, const uint32_t* spirv, size_t spirvBytes,
                   const std::vector<BufferBinding>& bindings, const std::string& name,
-                  uint32_t pushConstantBytes = 0);
+                  uint32_t pushConstantBytes = 0, const std::vector<uint32_t>& specialization = {});
   ~ComputePipeline();
   ComputePipeline(const ComputePipeline&) = delete;
   ComputePipeline& operator=(const ComputePipeline&) = delete;

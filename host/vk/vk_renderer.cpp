@@ -84,7 +84,7 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counters.Handle()},
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, loopStats.Handle()}},
-                           "pathtrace", 2 * sizeof(uint32_t));
+                           "pathtrace", 2 * sizeof(uint32_t), {frame.emitterCount > 0 ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, counters.Handle(), 0, VK_WHOLE_SIZE, 0);
