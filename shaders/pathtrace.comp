@@ -53,7 +53,12 @@ layout(constant_id = 0) const uint kSceneHasEmitters = 1u;
 void main() {
   gNodeCount = params.nodeCount;
   gNodeCopies = params.nodeCopies;
-  uvec2 pixel = gl_GlobalInvocationID.xy;
+  // lavapipe hands each thread one contiguous range of workgroups (the top and bottom
+  // half of the image with two threads), so costly regions would leave a thread idle:
+  // rows of tiles are dealt out with a stride coprime to their count (host: TileRowStride).
+  uint tileRows = (params.height + 7u) / 8u;
+  uint tileRow = gl_WorkGroupID.y * params.tileRowStride % tileRows;
+  uvec2 pixel = uvec2(gl_GlobalInvocationID.x, tileRow * 8u + gl_LocalInvocationID.y);
   bool inside = pixel.x < params.width && pixel.y < params.height;
   uint index = pixel.y * params.width + pixel.x;
   // The sums are carried in registers and added to in sample order, as if each sample

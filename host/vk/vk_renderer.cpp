@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <numeric>
 
 #include "kPathTraceSpirv.h"
 #include "kTraceSpirv.h"
@@ -54,6 +55,18 @@ uint32_t RunLength(uint32_t passesPerSample) {
   return std::clamp<uint32_t>(shader::kLoopBudget / 4 / std::max(passesPerSample, 1u), 1u, 32u);
 }
 
+// A stride for dealing out n rows of tiles to rows of workgroups (pathtrace.comp): close
+// to n / φ, so that any run of consecutive rows samples the image evenly (a Weyl
+// sequence), and coprime to n, so that each row is rendered exactly once. Past 65535
+// (Vulkan's minimum workgroup count per dimension), n · stride could overflow the
+// shader's 32-bit product: stride 1, in order.
+uint32_t TileRowStride(uint32_t n) {
+  if (n > 65535) return 1;
+  uint32_t stride = std::max(1u, uint32_t(n * 0.6180339887));
+  while (std::gcd(stride, n) != 1) ++stride;
+  return stride;
+}
+
 }  // namespace
 
 GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv, size_t spirvBytes)
@@ -101,6 +114,7 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
   auto t0 = std::chrono::steady_clock::now();
   for (uint32_t done = 0; done < frame.sampleCount;) {
     shader::FrameParams p = frame;
+    p.tileRowStride = TileRowStride((frame.height + kWorkgroup - 1) / kWorkgroup);
     p.sampleBegin = frame.sampleBegin + done;
     p.sampleCount = measured ? std::min(batch, frame.sampleCount - done) : 1u;
     std::memcpy(params.Mapped(), &p, sizeof p);  // the previous batch has finished: safe to overwrite

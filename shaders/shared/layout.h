@@ -130,7 +130,7 @@ struct FrameParams {
   vec3 background;    // radiance arriving from every direction no triangle blocks
   uint orthographic;  // 1: parallel rays; tanHalfFovY then holds the half view height
   uint nodeCopies;    // 1, or 8 direction-ordered copies of the BVH (see bvh.h)
-  uint pad0;
+  uint tileRowStride; // GPU: workgroup row y renders tile row (y * stride) mod rows
   uint pad1;
   uint pad2;
 };
