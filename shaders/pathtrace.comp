@@ -5,14 +5,14 @@
 //
 // Path regeneration (Novák et al. 2010): the invocation traces one ray of its path per
 // loop pass (a bounce or a shadow ray), and a lane whose path has ended starts its next
-// sample at once. On SIMD
-// hardware (lavapipe runs 8 invocations as the lanes of one vector) a loop makes as many
-// passes as its slowest lane; with one path per invocation the lanes of short paths idled
-// while the longest one went on, with a run of samples the lengths even out.
+// sample at once. On SIMD hardware (lavapipe runs 8 invocations as the lanes of one
+// vector) a loop makes as many passes as its slowest lane; with one path per invocation
+// the lanes of short paths idled while the longest one went on, with a run of samples
+// the lengths even out.
 //
 // lavapipe ends a shader after 65535 loop passes per SIMD group (traverse.glsl), so the
-// run must stay short enough: the host sizes it from the passes per sample measured on
-// the previous dispatch (kBindingLoopStats), and every sample of a group that may have
+// run must stay short enough: the host sizes it from the passes per sample measured in
+// the previous submission (kBindingLoopStats), and every sample of a group that may have
 // been cut short is counted as such.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
