@@ -49,8 +49,9 @@ Buffer Readback(const Context& ctx, VkDeviceSize size, const char* what) {
 // passes per sample in the last submission: a quarter of lavapipe's loop budget, so that
 // a run of unluckier samples still fits (a group past the budget is reported as cut
 // short, never silent). A run averages its samples' passes, so longer runs measure fewer
-// per sample and the run grows from one submission to the next (Cornell: 12 samples after
-// the first, single-sample dispatch, then 32). Runs longer than 32 gain nothing measurable.
+// per sample and the run may grow from one submission to the next (Cornell 256²: 12
+// samples after the single-sample dispatch, then the whole 16-sample batch). Runs longer
+// than 32 gain nothing measurable.
 uint32_t RunLength(uint32_t passesPerSample) {
   return std::clamp<uint32_t>(shader::kLoopBudget / 4 / std::max(passesPerSample, 1u), 1u, 32u);
 }
@@ -111,10 +112,13 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
   // and the first submission holds just that one dispatch.
   uint32_t run = options.samplesPerInvocation ? options.samplesPerInvocation : 1u;
   bool measured = options.samplesPerInvocation != 0;
+  const uint32_t groupsX = (frame.width + kWorkgroup - 1) / kWorkgroup;
+  const uint32_t groupsY = (frame.height + kWorkgroup - 1) / kWorkgroup;
+  const uint32_t tileRowStride = TileRowStride(groupsY);
   auto t0 = std::chrono::steady_clock::now();
   for (uint32_t done = 0; done < frame.sampleCount;) {
     shader::FrameParams p = frame;
-    p.tileRowStride = TileRowStride((frame.height + kWorkgroup - 1) / kWorkgroup);
+    p.tileRowStride = tileRowStride;
     p.sampleBegin = frame.sampleBegin + done;
     p.sampleCount = measured ? std::min(batch, frame.sampleCount - done) : 1u;
     std::memcpy(params.Mapped(), &p, sizeof p);  // the previous batch has finished: safe to overwrite
@@ -123,8 +127,7 @@ GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuR
       for (uint32_t s = 0; s < p.sampleCount; s += run) {
         ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
         const uint32_t push[2] = {s, std::min(run, p.sampleCount - s)};
-        pipeline.Dispatch(cb, (frame.width + kWorkgroup - 1) / kWorkgroup, (frame.height + kWorkgroup - 1) / kWorkgroup,
-                          1, push);
+        pipeline.Dispatch(cb, groupsX, groupsY, 1, push);
       }
       HostReadBarrier(cb);  // for loopStats
     });

@@ -16,8 +16,9 @@
 namespace vkpt::vk {
 
 struct GpuRenderOptions {
-  // Samples per pixel per submission (one dispatch each); 0 picks about 2^20 paths per
-  // submission, short enough that a desktop GPU's watchdog never fires.
+  // Samples per pixel per submission (in dispatches of samplesPerInvocation each); 0
+  // picks about 2^20 paths per submission, short enough that a desktop GPU's watchdog
+  // never fires.
   uint32_t batch = 0;
   // Samples each invocation computes in one dispatch (path regeneration, pathtrace.comp);
   // 0 sizes the run from the loop passes per sample measured so far (RunLength). The image

@@ -19,15 +19,16 @@ const uint kBindingMaterials = 3u;  // texel buffer of Material
 const uint kBindingEmitters = 4u;   // texel buffer of Emitter
 const uint kBindingAccum = 5u;      // buffer vec4[2 per pixel]: Σ L, Σ L²
 const uint kBindingCounters = 6u;   // buffer uvec4[] per pixel: rays, non-finite, cut short, 0
+// The trace-only kernel (trace.comp) reuses kBindingTriangles and kBindingNodes, plus:
+const uint kBindingRays = 7u;       // readonly buffer RayQuery[]
+const uint kBindingHits = 8u;       // buffer HitRecord[]
+// pathtrace.comp again:
 const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample of a SIMD group
 
 // lavapipe ends a shader once its SIMD group has run 65535 loop passes in total
 // (traverse.glsl); pathtrace.comp keeps clear of it by a margin for the small loops not
 // counted exactly, and the host sizes its runs of samples to fit.
 const uint kLoopBudget = 65535u - 256u;
-// The trace-only kernel (trace.comp) reuses kBindingTriangles and kBindingNodes, plus:
-const uint kBindingRays = 7u;       // readonly buffer RayQuery[]
-const uint kBindingHits = 8u;       // buffer HitRecord[]
 
 const uint kInvalidIndex = 0xFFFFFFFFu;
 
@@ -56,8 +57,6 @@ struct BvhNode {
 };
 
 const uint kMaxLeafSize = 15u;
-
-
 
 const uint kMaterialDoubleSided = 1u;
 
