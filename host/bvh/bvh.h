@@ -9,6 +9,7 @@
 
 #include "shared/layout.h"
 #include "util/bounds.h"
+#include "util/huge_pages.h"
 
 namespace vkpt {
 
@@ -50,7 +51,7 @@ struct BvhStats {
 struct Bvh {
   // `copies` (1 or 8) flattened copies of the tree, stats.nodes nodes each; copy k starts
   // at k * stats.nodes with its root. Depth first with absolute skip links.
-  std::vector<shader::BvhNode> nodes;
+  HugeVector<shader::BvhNode> nodes;
   uint32_t copies = 1;
   std::vector<uint32_t> primOrder;  // leaf ranges index this: position → input primitive
                                     // (with spatial splits a primitive may appear more than once)
@@ -67,7 +68,7 @@ Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& option
 // Children of inner node `i` in the flattened layout: the first child is the next node,
 // and the second is where the first child's subtree ends, i.e. the first child's skip.
 inline uint32_t FirstChild(uint32_t i) { return i + 1; }
-inline uint32_t SecondChild(const std::vector<shader::BvhNode>& nodes, uint32_t i) {
+inline uint32_t SecondChild(std::span<const shader::BvhNode> nodes, uint32_t i) {
   return nodes[i + 1].skip;
 }
 inline bool IsLeaf(const shader::BvhNode& n) { return n.leaf != 0u; }

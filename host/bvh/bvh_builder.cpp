@@ -14,6 +14,7 @@
 
 #include "bvh/bvh.h"
 #include "util/float4.h"
+#include "util/huge_pages.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -40,6 +41,7 @@ struct BuildNode {
   uint32_t depth = 0;
   bool leaf = false;
 };
+using NodeArray = HugeVector<BuildNode>;
 
 // A bin's box in lanes 0-2 of lo and hi; lane 3 is whatever the primitives carried.
 struct Bin {
@@ -141,11 +143,11 @@ class Builder {
     // Phase 2: the subtrees, one per thread at a time, each into its own node array;
     // they touch disjoint ranges of prims_. The tree does not depend on the thread
     // count (only the order of nodes_ does, which Flatten does not see).
-    std::vector<std::vector<BuildNode>> subtrees(deferred.size());
+    std::vector<NodeArray> subtrees(deferred.size());
     std::atomic<size_t> next{0};
     auto worker = [&] {
       for (size_t k; (k = next.fetch_add(1)) < deferred.size();) {
-        std::vector<BuildNode>& local = subtrees[k];
+        NodeArray& local = subtrees[k];
         local.push_back(nodes_[deferred[k]]);
         std::vector<uint32_t> localWork{0};
         while (!localWork.empty()) {
@@ -173,7 +175,7 @@ class Builder {
     next = 0;
     auto stitch = [&] {
       for (size_t k; (k = next.fetch_add(1)) < deferred.size();) {
-        std::vector<BuildNode> local = std::move(subtrees[k]);
+        NodeArray local = std::move(subtrees[k]);
         for (BuildNode& n : local)
           if (!n.leaf) n.child[0] += offset[k], n.child[1] += offset[k];
         nodes_[deferred[k]] = local[0];
@@ -234,7 +236,7 @@ class Builder {
 
   // Splits node ni of `nodes` (or makes it a leaf), appending its children to `nodes`
   // and `work`. Large nodes are binned on `threads` threads.
-  void Subdivide(std::vector<BuildNode>& nodes, uint32_t ni, std::vector<uint32_t>& work, unsigned threads) {
+  void Subdivide(NodeArray& nodes, uint32_t ni, std::vector<uint32_t>& work, unsigned threads) {
     BuildNode node = nodes[ni];
     if (node.count < kParallelNode) threads = 1;
     Bounds3f centroids;
@@ -428,7 +430,7 @@ class Builder {
   // Spatial splits leave unused slots in prims_; this packs the leaves' references in
   // depth-first order (so the triangle array follows the tree, as without splits).
   void CompactReferences() {
-    std::vector<BuildPrim> packed;
+    HugeVector<BuildPrim> packed;
     std::vector<uint32_t> stack{0};
     while (!stack.empty()) {
       BuildNode& n = nodes_[stack.back()];
@@ -512,7 +514,7 @@ class Builder {
 
   Bvh Flatten() const {
     // Subtree sizes, bottom-up: children always come after their parent in nodes_.
-    std::vector<uint32_t> size(nodes_.size(), 1);
+    HugeVector<uint32_t> size(nodes_.size(), 1);
     for (size_t i = nodes_.size(); i-- > 0;)
       if (!nodes_[i].leaf) size[i] = 1 + size[nodes_[i].child[0]] + size[nodes_[i].child[1]];
 
@@ -563,7 +565,7 @@ class Builder {
   // Writes copy `octant` of the tree at nodes[octant * count ...], depth first, each
   // inner node's children ordered near-first for rays whose direction signs are the
   // octant's (bit 0: x < 0, bit 1: y < 0, bit 2: z < 0). Skip links are absolute.
-  void FlattenCopy(const std::vector<uint32_t>& size, uint32_t octant, Bvh& bvh) const {
+  void FlattenCopy(const HugeVector<uint32_t>& size, uint32_t octant, Bvh& bvh) const {
     const uint32_t base = octant * uint32_t(nodes_.size());
     struct Item { uint32_t node, flat, skip; };
     std::vector<Item> stack{{0, base, shader::kInvalidIndex}};
@@ -598,8 +600,8 @@ class Builder {
   bool spatial_ = false;
   uint64_t duplicatesLeft_ = 0;  // references spatial splits may still add
   float rootArea_ = 0.0f;
-  std::vector<BuildPrim> prims_;
-  std::vector<BuildNode> nodes_;
+  HugeVector<BuildPrim> prims_;
+  NodeArray nodes_;
 };
 
 }  // namespace

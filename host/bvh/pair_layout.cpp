@@ -30,7 +30,7 @@ uint32_t AddLeaf(uint32_t leaf, const std::vector<shader::Triangle>& triangles, 
 
 }  // namespace
 
-BvhPairLayout BuildPairLayout(const std::vector<shader::BvhNode>& nodes, uint32_t nodeCount,
+BvhPairLayout BuildPairLayout(std::span<const shader::BvhNode> nodes, uint32_t nodeCount,
                               const std::vector<shader::Triangle>& triangles) {
   BvhPairLayout layout;
   if (nodeCount == 0 || nodes.size() < nodeCount) throw Error("BuildPairLayout: no tree to convert");

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "shared/layout.h"
@@ -43,7 +44,7 @@ struct BvhPairLayout {
 
 // From `nodeCount` flattened nodes starting at nodes[0] (one copy of the tree) and the
 // triangles their leaves index.
-BvhPairLayout BuildPairLayout(const std::vector<shader::BvhNode>& nodes, uint32_t nodeCount,
+BvhPairLayout BuildPairLayout(std::span<const shader::BvhNode> nodes, uint32_t nodeCount,
                               const std::vector<shader::Triangle>& triangles);
 
 }  // namespace vkpt

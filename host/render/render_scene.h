@@ -15,7 +15,7 @@ namespace vkpt {
 
 struct RenderScene {
   std::vector<shader::Triangle> triangles;  // BVH leaf order
-  std::vector<shader::BvhNode> nodes;  // nodeCopies copies of bvhStats.nodes nodes (see Bvh)
+  HugeVector<shader::BvhNode> nodes;  // nodeCopies copies of bvhStats.nodes nodes (see Bvh)
   uint32_t nodeCopies = 1;
   BvhPairLayout pairLayout;  // the first copy of `nodes`, for the CPU tracer (if asked for)
   std::vector<shader::Material> materials;

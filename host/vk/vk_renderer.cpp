@@ -22,7 +22,7 @@ Buffer Upload(const Context& ctx, const std::vector<T>& v, const char* what) {
 }
 
 template <class T>
-TexelBuffer UploadArray(const Context& ctx, const std::vector<T>& v, const char* what) {
+TexelBuffer UploadArray(const Context& ctx, std::span<const T> v, const char* what) {
   return UploadTexelBuffer(ctx, v.data(), v.size() * sizeof(T), what);
 }
 
@@ -74,10 +74,10 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
     : ctx_(ctx),
       spirv_(spirv ? spirv : kPathTraceSpirv),
       spirvBytes_(spirv ? spirvBytes : sizeof(kPathTraceSpirv)),
-      triangles_(UploadArray(ctx, scene.triangles, "triangles")),
-      nodes_(UploadArray(ctx, scene.nodes, "BVH nodes")),
-      materials_(UploadArray(ctx, scene.materials, "materials")),
-      emitters_(UploadArray(ctx, scene.emitters, "emitters")),
+      triangles_(UploadArray<shader::Triangle>(ctx, scene.triangles, "triangles")),
+      nodes_(UploadArray<shader::BvhNode>(ctx, scene.nodes, "BVH nodes")),
+      materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
+      emitters_(UploadArray<shader::Emitter>(ctx, scene.emitters, "emitters")),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
