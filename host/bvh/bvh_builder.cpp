@@ -34,6 +34,15 @@ struct BuildPrim {
 };
 static_assert(sizeof(BuildPrim) == 32 && offsetof(Bounds3f, hi) == 12);
 
+// Orders primitives by centroid along `axis`, ties by index (so the order is unique).
+struct CentroidLess {
+  int axis;
+  bool operator()(const BuildPrim& p, const BuildPrim& q) const {
+    const float cp = p.Centroid(axis), cq = q.Centroid(axis);
+    return cp < cq || (cp == cq && p.index < q.index);
+  }
+};
+
 struct BuildNode {
   Bounds3f box;
   uint32_t first = 0, count = 0;          // leaf: primitive range in `prims`
@@ -63,6 +72,39 @@ struct Bin {
 
 // Nodes with at least this many primitives are binned on several threads.
 constexpr uint32_t kParallelNode = 1u << 15;
+
+// A small node is split exactly: every position in its centroid order is costed.
+constexpr uint32_t kExactSplitMax = 8;
+
+// A node waiting to be split, with its centroids' bounds (binning needs them).
+struct Task {
+  uint32_t node;
+  Bounds3f centroids;
+};
+
+// Centroid → bin index along all three axes at once: nb bins spanning the node's
+// centroid bounds. Binning and partitioning both use it, so they agree to the last bit.
+// An axis with no centroid extent has scale 0: everything lands in bin 0 and the sweep
+// skips the axis.
+struct BinMap {
+  Float4 lo, scale;
+  Int4 last;
+  BinMap(const Bounds3f& centroids, uint32_t nb) {
+    float s[3];
+    for (int a = 0; a < 3; ++a) {
+      const float extent = centroids.hi[a] - centroids.lo[a];
+      s[a] = extent > 0.0f ? float(nb) / extent : 0.0f;
+    }
+    lo = Float4{centroids.lo.x, centroids.lo.y, centroids.lo.z, 0.0f};
+    scale = Float4{s[0], s[1], s[2], 0.0f};
+    last = Int4{1, 1, 1, 1} * int32_t(nb - 1);
+  }
+  bool Usable(int axis) const { return scale[axis] > 0.0f; }
+  Int4 Of(Float4 centroid) const {
+    const Int4 k = __builtin_convertvector(Max4((centroid - lo) * scale, Splat4(0.0f)), Int4);
+    return k < last ? k : last;
+  }
+};
 
 struct Split {
   int axis = -1;
@@ -130,15 +172,26 @@ class Builder {
     nodes_.reserve(2 * prims_.size());  // a binary tree over n leaves' worth has < 2n nodes
     nodes_.push_back({});
     nodes_[0].count = uint32_t(prims_.size());
+    // The root's box and centroid bounds; every other node gets them from its parent.
+    Task root{0, {}};
+    {
+      std::vector<Bounds3f> boxes(threads), cents(threads);
+      ForChunks(0, nodes_[0].count, threads, [&](uint32_t b, uint32_t e, unsigned t) { Scan(b, e, boxes[t], cents[t]); });
+      for (unsigned t = 0; t < threads; ++t) {
+        nodes_[0].box.Extend(boxes[t]);
+        root.centroids.Extend(cents[t]);
+      }
+    }
+    rootArea_ = nodes_[0].box.SurfaceArea();
     // Phase 1, top levels: one node at a time, its binning spread over all threads.
     // Nodes below `small` primitives are deferred as independent subtrees.
     const uint32_t small = threads > 1 ? std::max(4096u, uint32_t(prims_.size() / (8 * threads))) : 0u;
-    std::vector<uint32_t> work{0}, deferred;
+    std::vector<Task> work{root}, deferred;
     while (!work.empty()) {
-      uint32_t n = work.back();
+      Task task = work.back();
       work.pop_back();
-      if (nodes_[n].count < small) deferred.push_back(n);
-      else Subdivide(nodes_, n, work, threads);
+      if (nodes_[task.node].count < small) deferred.push_back(task);
+      else Subdivide(nodes_, task, work, threads);
     }
     // Phase 2: the subtrees, one per thread at a time, each into its own node array;
     // they touch disjoint ranges of prims_. The tree does not depend on the thread
@@ -148,12 +201,12 @@ class Builder {
     auto worker = [&] {
       for (size_t k; (k = next.fetch_add(1)) < deferred.size();) {
         NodeArray& local = subtrees[k];
-        local.push_back(nodes_[deferred[k]]);
-        std::vector<uint32_t> localWork{0};
+        local.push_back(nodes_[deferred[k].node]);
+        std::vector<Task> localWork{{0, deferred[k].centroids}};
         while (!localWork.empty()) {
-          uint32_t n = localWork.back();
+          Task task = localWork.back();
           localWork.pop_back();
-          Subdivide(local, n, localWork, 1);
+          Subdivide(local, task, localWork, 1);
         }
       }
     };
@@ -178,7 +231,7 @@ class Builder {
         NodeArray local = std::move(subtrees[k]);
         for (BuildNode& n : local)
           if (!n.leaf) n.child[0] += offset[k], n.child[1] += offset[k];
-        nodes_[deferred[k]] = local[0];
+        nodes_[deferred[k].node] = local[0];
         std::copy(local.begin() + 1, local.end(), nodes_.begin() + offset[k] + 1);
       }
     };
@@ -234,49 +287,39 @@ class Builder {
     for (auto& th : pool) th.join();
   }
 
-  // Splits node ni of `nodes` (or makes it a leaf), appending its children to `nodes`
-  // and `work`. Large nodes are binned on `threads` threads.
-  void Subdivide(NodeArray& nodes, uint32_t ni, std::vector<uint32_t>& work, unsigned threads) {
-    BuildNode node = nodes[ni];
-    if (node.count < kParallelNode) threads = 1;
-    Bounds3f centroids;
-    // The node's box and its centroids' bounds, as two bins (lane by lane min/max).
-    auto scan = [&](uint32_t b, uint32_t e, Bin& box, Bin& cent) {
-      for (uint32_t i = b; i < e; ++i) {
-        const BuildPrim& p = prims_[i];
-        Float4 c = p.Centroid4();
-        box.Extend(Load4(&p.box.lo.x), Load4(&p.box.hi.x));
-        cent.Extend(c, c);
-      }
-    };
-    if (threads == 1) {
-      Bin box, cent;
-      scan(node.first, node.first + node.count, box, cent);
-      node.box = box.Box();
-      centroids = cent.Box();
-    } else {
-      // Accumulated locally, merged after: neighbouring vector elements share a cache line.
-      std::vector<Bin> boxes(threads), cents(threads);
-      ForChunks(node.first, node.count, threads, [&](uint32_t b, uint32_t e, unsigned t) {
-        Bin box, cent;
-        scan(b, e, box, cent);
-        boxes[t] = box;
-        cents[t] = cent;
-      });
-      for (unsigned t = 0; t < threads; ++t) {
-        node.box.Extend(boxes[t].Box());
-        centroids.Extend(cents[t].Box());
-      }
+  // The box of primitives [b, e) and their centroids' bounds, extended into box and cent.
+  void Scan(uint32_t b, uint32_t e, Bounds3f& box, Bounds3f& cent) const {
+    Bin boxBin, centBin;  // lane by lane min/max
+    for (uint32_t i = b; i < e; ++i) {
+      const BuildPrim& p = prims_[i];
+      const Float4 c = p.Centroid4();
+      boxBin.Extend(Load4(&p.box.lo.x), Load4(&p.box.hi.x));
+      centBin.Extend(c, c);
     }
-    nodes[ni].box = node.box;
-    if (node.depth == 0) rootArea_ = node.box.SurfaceArea();  // the root comes first
-    auto makeLeaf = [&] { nodes[ni].leaf = true; };
-    if (node.count == 1) return makeLeaf();
-    auto addChildren = [&](uint32_t leftFirst, uint32_t leftCount, uint32_t rightFirst, uint32_t rightCount) {
+    if (b < e) box.Extend(boxBin.Box()), cent.Extend(centBin.Box());
+  }
+
+  // Splits the node of `task` in `nodes` (or makes it a leaf), appending its children to
+  // `nodes` and `work`. The node's box is set; large nodes are binned on `threads` threads.
+  void Subdivide(NodeArray& nodes, const Task& task, std::vector<Task>& work, unsigned threads) {
+    const uint32_t ni = task.node;
+    const BuildNode node = nodes[ni];
+    if (node.count < kParallelNode) threads = 1;
+    if (node.count == 1) {
+      nodes[ni].leaf = true;
+      return;
+    }
+    // Children take their boxes from the split (the union of their primitives' boxes,
+    // whichever way it was found) and their centroid bounds from the pass that puts
+    // their primitives in place; small children need none.
+    auto addChildren = [&](uint32_t leftFirst, uint32_t leftCount, const Bounds3f& leftBox, const Bounds3f& leftCent,
+                           uint32_t rightFirst, uint32_t rightCount, const Bounds3f& rightBox, const Bounds3f& rightCent) {
       uint32_t left = uint32_t(nodes.size());
       BuildNode l, r;
+      l.box = leftBox;
       l.first = leftFirst;
       l.count = leftCount;
+      r.box = rightBox;
       r.first = rightFirst;
       r.count = rightCount;
       l.depth = r.depth = node.depth + 1;
@@ -284,11 +327,19 @@ class Builder {
       nodes.push_back(r);
       nodes[ni].child[0] = left;
       nodes[ni].child[1] = left + 1;
-      work.push_back(left + 1);
-      work.push_back(left);
+      work.push_back({left + 1, rightCent});
+      work.push_back({left, leftCent});
+    };
+    // Children whose bounds only a pass over their primitives can tell.
+    auto addScannedChildren = [&](uint32_t leftFirst, uint32_t leftCount, uint32_t rightFirst, uint32_t rightCount) {
+      Bounds3f lb, lc, rb, rc;
+      Scan(leftFirst, leftFirst + leftCount, lb, lc);
+      Scan(rightFirst, rightFirst + rightCount, rb, rc);
+      addChildren(leftFirst, leftCount, lb, lc, rightFirst, rightCount, rb, rc);
     };
 
-    Split best = FindSplit(node, centroids, threads);
+    const bool exact = node.count <= kExactSplitMax;
+    Split best = exact ? FindExactSplit(node) : FindSplit(node, task.centroids, threads);
     // Spatial splits are tried where the object split leaves overlapping children (or
     // found no plane at all), while the duplication budget lasts.
     SpatialSplit spatial;
@@ -297,33 +348,106 @@ class Builder {
       if (overlap > opt_.spatialOverlap * rootArea_) spatial = FindSpatialSplit(node);
     }
     const float leafCost = opt_.intersectionCost * float(node.count);
-    if (node.count <= opt_.maxLeafSize && !(std::min(best.cost, spatial.cost) < leafCost)) return makeLeaf();
+    if (node.count <= opt_.maxLeafSize && !(std::min(best.cost, spatial.cost) < leafCost)) {
+      nodes[ni].leaf = true;
+      return;
+    }
     if (spatial.cost < best.cost) {
       uint32_t leftCount = 0, rightFirst = 0, rightCount = 0;
       if (SplitSpatially(node, spatial, leftCount, rightFirst, rightCount))
-        return addChildren(node.first, leftCount, rightFirst, rightCount);
+        return addScannedChildren(node.first, leftCount, rightFirst, rightCount);
     }
+    const uint32_t end = node.first + node.count;
+    if (best.axis < 0) {
+      // No usable plane (a flat node, or all centroids coincide): split at the median
+      // along the widest centroid axis, which always makes progress and keeps leaves
+      // within maxLeafSize.
+      Bounds3f box, cent;
+      Scan(node.first, end, box, cent);
+      const glm::vec3 d = cent.Diagonal();
+      const int a = d.x >= d.y && d.x >= d.z ? 0 : (d.y >= d.z ? 1 : 2);
+      const uint32_t mid = node.first + node.count / 2;
+      std::nth_element(prims_.begin() + node.first, prims_.begin() + mid, prims_.begin() + end, CentroidLess{a});
+      return addScannedChildren(node.first, mid - node.first, mid, end - mid);
+    }
+    if (exact) {
+      // best.bin primitives, in centroid order along the axis, go left.
+      SortByCentroid(node.first, end, best.axis);
+      return addChildren(node.first, best.bin, best.left, {}, node.first + best.bin, node.count - best.bin, best.right, {});
+    }
+    Bounds3f leftCent, rightCent;
+    const uint32_t mid = PartitionByBin(node.first, end, task.centroids, best, leftCent, rightCent);
+    addChildren(node.first, mid - node.first, best.left, leftCent, mid, end - mid, best.right, rightCent);
+  }
 
-    uint32_t mid = node.first;
-    if (best.axis >= 0) {
-      const int a = best.axis;
-      const float lo = centroids.lo[a];
-      const float scale = float(opt_.bins) / (centroids.hi[a] - lo);
-      auto it = std::partition(prims_.begin() + node.first, prims_.begin() + node.first + node.count,
-                               [&](const BuildPrim& p) { return BinOf(p.Centroid(a), lo, scale) < best.bin; });
-      mid = uint32_t(it - prims_.begin());
+  // Insertion sort of prims_[b, e): a few primitives, so no call overhead.
+  void SortByCentroid(uint32_t b, uint32_t e, int axis) {
+    const CentroidLess less{axis};
+    for (uint32_t i = b + 1; i < e; ++i) {
+      const BuildPrim p = prims_[i];
+      uint32_t j = i;
+      for (; j > b && less(p, prims_[j - 1]); --j) prims_[j] = prims_[j - 1];
+      prims_[j] = p;
     }
-    if (mid == node.first || mid == node.first + node.count) {
-      // No usable plane (all centroids coincide, or there are only a few primitives
-      // too large for a leaf): split at the median along the widest centroid axis, which
-      // always makes progress and keeps leaves within maxLeafSize.
-      glm::vec3 d = centroids.Diagonal();
-      int a = d.x >= d.y && d.x >= d.z ? 0 : (d.y >= d.z ? 1 : 2);
-      mid = node.first + node.count / 2;
-      std::nth_element(prims_.begin() + node.first, prims_.begin() + mid, prims_.begin() + node.first + node.count,
-                       [&](const BuildPrim& p, const BuildPrim& q) { return p.Centroid(a) < q.Centroid(a); });
+  }
+
+  // Moves the primitives of [b, e) whose centroid bin along best.axis is below best.bin
+  // to the front (Hoare's two-pointer scheme) and returns where the right side starts;
+  // the centroid bounds of both sides are gathered on the way.
+  uint32_t PartitionByBin(uint32_t b, uint32_t e, const Bounds3f& centroids, const Split& best, Bounds3f& leftCent,
+                          Bounds3f& rightCent) {
+    const BinMap map(centroids, opt_.bins);
+    const int a = best.axis;
+    const int32_t bin = int32_t(best.bin);
+    Bin lc, rc;
+    uint32_t i = b, j = e;
+    while (true) {
+      Float4 ci = Splat4(0.0f), cj = ci;
+      while (i < j && map.Of(ci = prims_[i].Centroid4())[a] < bin) lc.Extend(ci, ci), ++i;
+      while (i < j && map.Of(cj = prims_[j - 1].Centroid4())[a] >= bin) rc.Extend(cj, cj), --j;
+      if (i == j) break;
+      // prims_[i] goes right and prims_[j - 1] left.
+      std::swap(prims_[i], prims_[j - 1]);
+      lc.Extend(cj, cj), rc.Extend(ci, ci);
+      ++i, --j;
     }
-    addChildren(node.first, mid - node.first, mid, node.first + node.count - mid);
+    leftCent = lc.Box();
+    rightCent = rc.Box();
+    return i;
+  }
+
+  // The exact SAH split of a small node: every position in the centroid order along each
+  // axis is a candidate (Split::bin = how many primitives go left). Costs as SweepBins.
+  Split FindExactSplit(const BuildNode& node) const {
+    Split best;
+    const uint32_t n = node.count;
+    const float parentArea = node.box.SurfaceArea();
+    if (!(parentArea > 0.0f)) return best;  // a flat node: the caller's median split
+    BuildPrim sorted[kExactSplitMax];
+    Bin right[kExactSplitMax];
+    for (int a = 0; a < 3; ++a) {
+      std::copy(prims_.begin() + node.first, prims_.begin() + node.first + n, sorted);
+      const CentroidLess less{a};
+      for (uint32_t i = 1; i < n; ++i) {
+        const BuildPrim p = sorted[i];
+        uint32_t j = i;
+        for (; j > 0 && less(p, sorted[j - 1]); --j) sorted[j] = sorted[j - 1];
+        sorted[j] = p;
+      }
+      Bin acc;
+      for (uint32_t k = n - 1; k > 0; --k) {
+        acc.Extend(Load4(&sorted[k].box.lo.x), Load4(&sorted[k].box.hi.x));
+        right[k] = acc;
+      }
+      acc = Bin{};
+      for (uint32_t k = 1; k < n; ++k) {
+        acc.Extend(Load4(&sorted[k - 1].box.lo.x), Load4(&sorted[k - 1].box.hi.x));
+        const float cost = opt_.traversalCost + opt_.intersectionCost *
+                                                    (acc.Area() * float(k) + right[k].Area() * float(n - k)) / parentArea;
+        if (cost < best.cost) best = {a, k, cost, acc.Box(), right[k].Box()};
+      }
+    }
+    return best;
   }
 
   // --- Spatial splits -----------------------------------------------------------------
@@ -445,36 +569,19 @@ class Builder {
     prims_ = std::move(packed);
   }
 
-  uint32_t BinOf(float c, float lo, float scale) const {
-    return std::min(opt_.bins - 1, uint32_t(std::max(0.0f, (c - lo) * scale)));
-  }
-
   Split FindSplit(const BuildNode& node, const Bounds3f& centroids, unsigned threads) const {
     Split best;
     const float parentArea = node.box.SurfaceArea();
     const uint32_t nb = opt_.bins;
-    float scale[3];
-    bool usable[3];
-    for (int a = 0; a < 3; ++a) {
-      const float extent = centroids.hi[a] - centroids.lo[a];
-      usable[a] = extent > 0.0f;
-      scale[a] = usable[a] ? float(nb) / extent : 0.0f;
-    }
-    const Float4 lo4{centroids.lo.x, centroids.lo.y, centroids.lo.z, 0.0f};
-    const Float4 scale4{scale[0], scale[1], scale[2], 0.0f};
-    const Int4 last4 = Int4{1, 1, 1, 1} * int32_t(nb - 1);
+    const BinMap map(centroids, nb);
     // One pass over the primitives bins all three axes (bins [a·nb, (a+1)·nb)). Each
     // thread fills its own scratch bins, reused across calls (no allocation per node);
     // merging min/max and counts is exact, so the result does not depend on `threads`.
-    // The three axes' bin indices come from one vector expression, the same float
-    // operations as BinOf (so partitioning agrees with binning); an unusable axis has
-    // scale 0 and lands in bin 0, which the sweep below never reads.
     auto binRange = [&](uint32_t b, uint32_t e, std::vector<Bin>& out) {
       out.assign(3 * nb, Bin{});
       for (uint32_t i = b; i < e; ++i) {
         const BuildPrim& p = prims_[i];
-        Int4 k = __builtin_convertvector(Max4((p.Centroid4() - lo4) * scale4, Splat4(0.0f)), Int4);
-        k = k < last4 ? k : last4;
+        const Int4 k = map.Of(p.Centroid4());
         const Float4 boxLo = Load4(&p.box.lo.x), boxHi = Load4(&p.box.hi.x);
         for (int a = 0; a < 3; ++a) {
           Bin& bin = out[a * nb + uint32_t(k[a])];
@@ -500,7 +607,7 @@ class Builder {
       all = &merged;
     }
     for (int a = 0; a < 3; ++a) {
-      if (!usable[a]) continue;
+      if (!map.Usable(a)) continue;
       const Bin* bins = all->data() + a * nb;
       auto count = [&](uint32_t b) { return bins[b].count; };
       SweepBins(bins, count, count, parentArea, [&](uint32_t b, float cost, const Bin& left, const Bin& right) {
