@@ -136,6 +136,9 @@ TEST(Bvh, InvariantsOnRandomSoups) {
       EXPECT_LE(rs.bvhStats.maxLeafPrims, leaf);
     }
   }
+  // Large enough that the top nodes are partitioned block-wise on several threads.
+  std::vector<SceneTriangle> soup = test::RandomSoup(100000, 99);
+  CheckInvariants(Prepare(soup, 4), soup, 4);
 }
 
 TEST(Bvh, SameTreeForAnyBuildThreadCount) {

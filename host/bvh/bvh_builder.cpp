@@ -27,7 +27,7 @@ namespace {
 struct BuildPrim {
   Bounds3f box;
   uint32_t index;
-  uint32_t pad = 0;
+  uint32_t pad;  // left uninitialised in bulk fills: nothing reads it
 
   float Centroid(int axis) const { return (box.lo[axis] + box.hi[axis]) * 0.5f; }
   Float4 Centroid4() const { return (Load4(&box.lo.x) + Load4(&box.hi.x)) * Splat4(0.5f); }
@@ -43,14 +43,16 @@ struct CentroidLess {
   }
 };
 
+// 36 bytes. The node array is allocated once for the largest possible tree and
+// filled in place, so its elements are left uninitialised until a parent writes them.
 struct BuildNode {
   Bounds3f box;
-  uint32_t first = 0, count = 0;          // leaf: primitive range in `prims`
-  uint32_t child[2] = {0, 0};             // inner: indices into the BuildNode array
-  uint32_t depth = 0;
-  bool leaf = false;
+  uint32_t first, count;  // the node's primitive range in prims_
+  uint32_t child;         // inner: the first child (the second follows it); leaf: 0
+                          // (the root is nobody's child)
+  bool IsLeaf() const { return child == 0; }
 };
-using NodeArray = HugeVector<BuildNode>;
+static_assert(sizeof(BuildNode) == 36);
 
 // A bin's box in lanes 0-2 of lo and hi; lane 3 is whatever the primitives carried.
 struct Bin {
@@ -156,89 +158,72 @@ class Builder {
  public:
   Builder(std::span<const Bounds3f> bounds, const BvhBuildOptions& o, std::span<const glm::vec3> vertices)
       : opt_(o), verts_(vertices), spatial_(o.spatialSplits && vertices.size() == 3 * bounds.size()) {
-    prims_.reserve(bounds.size());
-    for (uint32_t i = 0; i < bounds.size(); ++i)
-      prims_.push_back({bounds[i], i});
     // References stay below 2^28, what a leaf code can address.
     duplicatesLeft_ = spatial_ ? std::min<uint64_t>(uint64_t(double(o.maxDuplication) * double(bounds.size())),
                                                     (1u << 28) - 1 - bounds.size())
                                : 0;
+    // Spatial splits append references to prims_ as they go: one thread.
+    threads_ = spatial_ ? 1u : o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+    // The primitives, with the root's box and centroid bounds, on all threads.
+    const uint32_t n = uint32_t(bounds.size());
+    prims_.resize(n);
+    std::vector<Bin> boxes(threads_), cents(threads_);
+    ForChunks(0, n, threads_, [&](uint32_t b, uint32_t e, unsigned t) {
+      Bin box, cent;
+      for (uint32_t i = b; i < e; ++i) {
+        BuildPrim& p = prims_[i];
+        p.box = bounds[i];
+        p.index = i;
+        const Float4 c = p.Centroid4();
+        box.Extend(Load4(&p.box.lo.x), Load4(&p.box.hi.x));
+        cent.Extend(c, c);
+      }
+      boxes[t] = box;
+      cents[t] = cent;
+    });
+    // A tree over m references has at most 2m - 1 nodes.
+    nodes_.resize(2 * (n + duplicatesLeft_) - 1);
+    BuildNode& root = nodes_[0];
+    root = {{}, 0, n, 0};
+    rootCentroids_ = Bounds3f{};
+    for (unsigned t = 0; t < threads_; ++t) {
+      root.box.Extend(boxes[t].Box());
+      rootCentroids_.Extend(cents[t].Box());
+    }
+    rootArea_ = root.box.SurfaceArea();
   }
 
   Bvh Build() {
-    // Spatial splits append references to prims_ as they go: one thread.
-    const unsigned threads =
-        spatial_ ? 1u : opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency());
-    nodes_.reserve(2 * prims_.size());  // a binary tree over n leaves' worth has < 2n nodes
-    nodes_.push_back({});
-    nodes_[0].count = uint32_t(prims_.size());
-    // The root's box and centroid bounds; every other node gets them from its parent.
-    Task root{0, {}};
-    {
-      std::vector<Bounds3f> boxes(threads), cents(threads);
-      ForChunks(0, nodes_[0].count, threads, [&](uint32_t b, uint32_t e, unsigned t) { Scan(b, e, boxes[t], cents[t]); });
-      for (unsigned t = 0; t < threads; ++t) {
-        nodes_[0].box.Extend(boxes[t]);
-        root.centroids.Extend(cents[t]);
-      }
-    }
-    rootArea_ = nodes_[0].box.SurfaceArea();
+    const unsigned threads = threads_;
     // Phase 1, top levels: one node at a time, its binning spread over all threads.
     // Nodes below `small` primitives are deferred as independent subtrees.
     const uint32_t small = threads > 1 ? std::max(4096u, uint32_t(prims_.size() / (8 * threads))) : 0u;
-    std::vector<Task> work{root}, deferred;
+    uint32_t cursor = 1;  // next free node
+    std::vector<Task> work{{0, rootCentroids_}}, deferred;
     while (!work.empty()) {
       Task task = work.back();
       work.pop_back();
       if (nodes_[task.node].count < small) deferred.push_back(task);
-      else Subdivide(nodes_, task, work, threads);
+      else Subdivide(task, work, cursor, threads);
     }
-    // Phase 2: the subtrees, one per thread at a time, each into its own node array;
-    // they touch disjoint ranges of prims_. The tree does not depend on the thread
-    // count (only the order of nodes_ does, which Flatten does not see).
-    std::vector<NodeArray> subtrees(deferred.size());
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-      for (size_t k; (k = next.fetch_add(1)) < deferred.size();) {
-        NodeArray& local = subtrees[k];
-        local.push_back(nodes_[deferred[k].node]);
-        std::vector<Task> localWork{{0, deferred[k].centroids}};
-        while (!localWork.empty()) {
-          Task task = localWork.back();
-          localWork.pop_back();
-          Subdivide(local, task, localWork, 1);
-        }
-      }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::min<size_t>(threads, deferred.size()); ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
-    // Stitch: subtree k's local node j >= 1 goes to offset[k] + j, its local node 0
-    // replaces its root. The offsets follow k, so the result does not depend on which
-    // thread copies what; the copies (a serial half second for 1 M triangles) run on all
-    // threads.
-    std::vector<uint32_t> offset(deferred.size());
-    size_t total = nodes_.size();
+    // Phase 2: the subtrees, one per thread at a time. A subtree over c primitives has
+    // at most 2c - 2 nodes below its root: each gets such a range of nodes_ after the
+    // top levels' nodes, and its own range of prims_. The tree does not depend on the
+    // thread count (only where its nodes sit in nodes_ does, which Flatten does not see).
+    std::vector<uint32_t> start(deferred.size());
     for (size_t k = 0; k < deferred.size(); ++k) {
-      offset[k] = uint32_t(total) - 1;
-      total += subtrees[k].size() - 1;
+      start[k] = cursor;
+      cursor += 2 * nodes_[deferred[k].node].count - 2;
     }
-    nodes_.resize(total);
-    next = 0;
-    auto stitch = [&] {
-      for (size_t k; (k = next.fetch_add(1)) < deferred.size();) {
-        NodeArray local = std::move(subtrees[k]);
-        for (BuildNode& n : local)
-          if (!n.leaf) n.child[0] += offset[k], n.child[1] += offset[k];
-        nodes_[deferred[k].node] = local[0];
-        std::copy(local.begin() + 1, local.end(), nodes_.begin() + offset[k] + 1);
+    ParallelFor(deferred.size(), threads, [&](size_t k) {
+      uint32_t local = start[k];
+      std::vector<Task> localWork{deferred[k]};
+      while (!localWork.empty()) {
+        Task task = localWork.back();
+        localWork.pop_back();
+        Subdivide(task, localWork, local, 1);
       }
-    };
-    pool.clear();
-    for (unsigned t = 1; t < std::min<size_t>(threads, deferred.size()); ++t) pool.emplace_back(stitch);
-    stitch();
-    for (auto& t : pool) t.join();
+    });
     if (spatial_) CompactReferences();
     return Flatten();
   }
@@ -287,6 +272,19 @@ class Builder {
     for (auto& th : pool) th.join();
   }
 
+  // Runs f(k) for k in [0, n) on up to `threads` threads, each taking the next k.
+  template <class F>
+  static void ParallelFor(size_t n, unsigned threads, F&& f) {
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+      for (size_t k; (k = next.fetch_add(1)) < n;) f(k);
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < std::min<size_t>(threads, n); ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+  }
+
   // The box of primitives [b, e) and their centroids' bounds, extended into box and cent.
   void Scan(uint32_t b, uint32_t e, Bounds3f& box, Bounds3f& cent) const {
     Bin boxBin, centBin;  // lane by lane min/max
@@ -299,34 +297,24 @@ class Builder {
     if (b < e) box.Extend(boxBin.Box()), cent.Extend(centBin.Box());
   }
 
-  // Splits the node of `task` in `nodes` (or makes it a leaf), appending its children to
-  // `nodes` and `work`. The node's box is set; large nodes are binned on `threads` threads.
-  void Subdivide(NodeArray& nodes, const Task& task, std::vector<Task>& work, unsigned threads) {
+  // Splits the node of `task` (or leaves it a leaf): its children go to nodes_[cursor]
+  // and nodes_[cursor + 1], and onto `work`. The node's box, range and child (0) are set;
+  // large nodes are binned on `threads` threads.
+  void Subdivide(const Task& task, std::vector<Task>& work, uint32_t& cursor, unsigned threads) {
     const uint32_t ni = task.node;
-    const BuildNode node = nodes[ni];
+    const BuildNode node = nodes_[ni];
     if (node.count < kParallelNode) threads = 1;
-    if (node.count == 1) {
-      nodes[ni].leaf = true;
-      return;
-    }
+    if (node.count == 1) return;
     // Children take their boxes from the split (the union of their primitives' boxes,
     // whichever way it was found) and their centroid bounds from the pass that puts
     // their primitives in place; small children need none.
     auto addChildren = [&](uint32_t leftFirst, uint32_t leftCount, const Bounds3f& leftBox, const Bounds3f& leftCent,
                            uint32_t rightFirst, uint32_t rightCount, const Bounds3f& rightBox, const Bounds3f& rightCent) {
-      uint32_t left = uint32_t(nodes.size());
-      BuildNode l, r;
-      l.box = leftBox;
-      l.first = leftFirst;
-      l.count = leftCount;
-      r.box = rightBox;
-      r.first = rightFirst;
-      r.count = rightCount;
-      l.depth = r.depth = node.depth + 1;
-      nodes.push_back(l);
-      nodes.push_back(r);
-      nodes[ni].child[0] = left;
-      nodes[ni].child[1] = left + 1;
+      const uint32_t left = cursor;
+      cursor += 2;
+      nodes_[left] = {leftBox, leftFirst, leftCount, 0};
+      nodes_[left + 1] = {rightBox, rightFirst, rightCount, 0};
+      nodes_[ni].child = left;
       work.push_back({left + 1, rightCent});
       work.push_back({left, leftCent});
     };
@@ -348,10 +336,7 @@ class Builder {
       if (overlap > opt_.spatialOverlap * rootArea_) spatial = FindSpatialSplit(node);
     }
     const float leafCost = opt_.intersectionCost * float(node.count);
-    if (node.count <= opt_.maxLeafSize && !(std::min(best.cost, spatial.cost) < leafCost)) {
-      nodes[ni].leaf = true;
-      return;
-    }
+    if (node.count <= opt_.maxLeafSize && !(std::min(best.cost, spatial.cost) < leafCost)) return;
     if (spatial.cost < best.cost) {
       uint32_t leftCount = 0, rightFirst = 0, rightCount = 0;
       if (SplitSpatially(node, spatial, leftCount, rightFirst, rightCount))
@@ -376,7 +361,7 @@ class Builder {
       return addChildren(node.first, best.bin, best.left, {}, node.first + best.bin, node.count - best.bin, best.right, {});
     }
     Bounds3f leftCent, rightCent;
-    const uint32_t mid = PartitionByBin(node.first, end, task.centroids, best, leftCent, rightCent);
+    const uint32_t mid = PartitionByBin(node.first, end, task.centroids, best, threads, leftCent, rightCent);
     addChildren(node.first, mid - node.first, best.left, leftCent, mid, end - mid, best.right, rightCent);
   }
 
@@ -391,29 +376,89 @@ class Builder {
     }
   }
 
-  // Moves the primitives of [b, e) whose centroid bin along best.axis is below best.bin
-  // to the front (Hoare's two-pointer scheme) and returns where the right side starts;
-  // the centroid bounds of both sides are gathered on the way.
-  uint32_t PartitionByBin(uint32_t b, uint32_t e, const Bounds3f& centroids, const Split& best, Bounds3f& leftCent,
-                          Bounds3f& rightCent) {
-    const BinMap map(centroids, opt_.bins);
-    const int a = best.axis;
-    const int32_t bin = int32_t(best.bin);
-    Bin lc, rc;
+  // Moves the primitives of [b, e) whose centroid bin along `axis` is below `bin` to the
+  // front (Hoare's two-pointer scheme) and returns where the right side starts; the
+  // centroids of both sides are gathered into lc and rc on the way.
+  uint32_t PartitionRange(uint32_t b, uint32_t e, const BinMap& map, int axis, int32_t bin, Bin& lc, Bin& rc) {
     uint32_t i = b, j = e;
     while (true) {
       Float4 ci = Splat4(0.0f), cj = ci;
-      while (i < j && map.Of(ci = prims_[i].Centroid4())[a] < bin) lc.Extend(ci, ci), ++i;
-      while (i < j && map.Of(cj = prims_[j - 1].Centroid4())[a] >= bin) rc.Extend(cj, cj), --j;
-      if (i == j) break;
+      while (i < j && map.Of(ci = prims_[i].Centroid4())[axis] < bin) lc.Extend(ci, ci), ++i;
+      while (i < j && map.Of(cj = prims_[j - 1].Centroid4())[axis] >= bin) rc.Extend(cj, cj), --j;
+      if (i == j) return i;
       // prims_[i] goes right and prims_[j - 1] left.
       std::swap(prims_[i], prims_[j - 1]);
       lc.Extend(cj, cj), rc.Extend(ci, ci);
       ++i, --j;
     }
-    leftCent = lc.Box();
-    rightCent = rc.Box();
-    return i;
+  }
+
+  // Partitions [b, e) by best's plane (see PartitionRange). A large range is cut into
+  // fixed blocks, each partitioned on its own (on all threads); then the right-side
+  // primitives left of the final boundary trade places with the left-side primitives
+  // right of it, pairwise in position order. The blocks do not depend on the thread
+  // count, so neither does the resulting order.
+  uint32_t PartitionByBin(uint32_t b, uint32_t e, const Bounds3f& centroids, const Split& best, unsigned threads,
+                          Bounds3f& leftCent, Bounds3f& rightCent) {
+    const BinMap map(centroids, opt_.bins);
+    const int32_t bin = int32_t(best.bin);
+    if (e - b < kParallelNode) {
+      Bin lc, rc;
+      const uint32_t mid = PartitionRange(b, e, map, best.axis, bin, lc, rc);
+      leftCent = lc.Box(), rightCent = rc.Box();
+      return mid;
+    }
+    constexpr uint32_t kBlock = 1u << 14;
+    const uint32_t blocks = (e - b + kBlock - 1) / kBlock;
+    std::vector<uint32_t> split(blocks);  // where each block's right side starts
+    std::vector<Bin> lc(blocks), rc(blocks);
+    ParallelFor(blocks, threads, [&](size_t k) {
+      const uint32_t bb = b + uint32_t(k) * kBlock;
+      split[k] = PartitionRange(bb, std::min(e, bb + kBlock), map, best.axis, bin, lc[k], rc[k]);
+    });
+    uint32_t mid = b;
+    Bin left, right;
+    for (uint32_t k = 0; k < blocks; ++k) {
+      mid += split[k] - (b + k * kBlock);
+      left.Extend(lc[k].lo, lc[k].hi), right.Extend(rc[k].lo, rc[k].hi);
+    }
+    leftCent = left.Box(), rightCent = right.Box();
+    // The misplaced: right-side runs before mid and left-side runs after it, as
+    // intervals in position order; both hold the same number of primitives.
+    struct Run {
+      uint32_t first, count;
+    };
+    std::vector<Run> wrongRight, wrongLeft;
+    for (uint32_t k = 0; k < blocks; ++k) {
+      const uint32_t bb = b + k * kBlock, be = std::min(e, bb + kBlock);
+      const uint32_t rightEnd = std::min(be, mid), leftStart = std::max(bb, mid);
+      if (split[k] < rightEnd) wrongRight.push_back({split[k], rightEnd - split[k]});
+      if (split[k] > leftStart) wrongLeft.push_back({leftStart, split[k] - leftStart});
+    }
+    uint64_t misplaced = 0;
+    for (const Run& r : wrongRight) misplaced += r.count;
+    // Swap the i-th misplaced right with the i-th misplaced left, for i in one slice of
+    // [0, misplaced) per thread.
+    const unsigned slices = misplaced < kParallelNode ? 1u : threads;
+    ParallelFor(slices, slices, [&](size_t t) {
+      uint64_t i = misplaced * t / slices, end = misplaced * (t + 1) / slices;
+      // Finds run and offset of the i-th element of `runs`.
+      auto locate = [](const std::vector<Run>& runs, uint64_t i, size_t& run, uint32_t& offset) {
+        for (run = 0; i >= runs[run].count; ++run) i -= runs[run].count;
+        offset = uint32_t(i);
+      };
+      size_t rr, lr;
+      uint32_t ro, lo;
+      if (i == end) return;
+      locate(wrongRight, i, rr, ro);
+      locate(wrongLeft, i, lr, lo);
+      for (; i < end; ++i) {
+        std::swap(prims_[wrongRight[rr].first + ro], prims_[wrongLeft[lr].first + lo]);
+        if (++ro == wrongRight[rr].count) ++rr, ro = 0;
+        if (++lo == wrongLeft[lr].count) ++lr, lo = 0;
+      }
+    });
+    return mid;
   }
 
   // The exact SAH split of a small node: every position in the centroid order along each
@@ -559,8 +604,8 @@ class Builder {
     while (!stack.empty()) {
       BuildNode& n = nodes_[stack.back()];
       stack.pop_back();
-      if (!n.leaf) {
-        stack.insert(stack.end(), {n.child[1], n.child[0]});
+      if (!n.IsLeaf()) {
+        stack.insert(stack.end(), {n.child + 1, n.child});
         continue;
       }
       packed.insert(packed.end(), prims_.begin() + n.first, prims_.begin() + n.first + n.count);
@@ -620,85 +665,101 @@ class Builder {
   }
 
   Bvh Flatten() const {
-    // Subtree sizes, bottom-up: children always come after their parent in nodes_.
-    HugeVector<uint32_t> size(nodes_.size(), 1);
-    for (size_t i = nodes_.size(); i-- > 0;)
-      if (!nodes_[i].leaf) size[i] = 1 + size[nodes_[i].child[0]] + size[nodes_[i].child[1]];
-
     Bvh bvh;
-    // Partitioning kept every subtree's primitives contiguous in prims_, so a leaf's
-    // range [first, first + count) is valid in every child order.
-    bvh.primOrder.reserve(prims_.size());
-    for (const BuildPrim& p : prims_) bvh.primOrder.push_back(p.index);
-    const uint32_t count = uint32_t(nodes_.size());
-    bvh.copies = opt_.directionCopies && uint64_t(count) * sizeof(shader::BvhNode) * 8 <= opt_.maxCopiesBytes ? 8 : 1;
-    bvh.nodes.resize(size_t(count) * bvh.copies);
-    // The copies fill disjoint ranges of bvh.nodes: one thread each.
-    // (Small trees: a thread costs more than the copy.)
-    const unsigned threads = count < 16384 ? 1u : std::min<unsigned>(bvh.copies, opt_.threads ? opt_.threads : std::max(1u, std::thread::hardware_concurrency()));
-    std::atomic<uint32_t> nextCopy{0};
-    auto flatten = [&] {
-      for (uint32_t octant; (octant = nextCopy.fetch_add(1)) < bvh.copies;) FlattenCopy(size, octant, bvh);
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(flatten);
-    flatten();
-    for (auto& t : pool) t.join();
     BvhStats& st = bvh.stats;
-    const float rootArea = nodes_[0].box.SurfaceArea();
-    // Summed in depth-first order from the root (not storage order, which depends on the
-    // thread count), so the reported cost is the same to the last bit for any count.
-    std::vector<uint32_t> order{0};
-    while (!order.empty()) {
-      const BuildNode& n = nodes_[order.back()];
-      order.pop_back();
-      if (!n.leaf) order.insert(order.end(), {n.child[1], n.child[0]});
+    // One walk from the root (nodes_ has unused gaps): subtree sizes, which place second
+    // children in the flat layout, and the statistics. The cost is summed in this fixed
+    // order, so it is the same to the last bit for any thread count.
+    HugeVector<uint32_t> size(nodes_.size());
+    struct Visit {
+      uint32_t node, depth;
+      bool childrenDone;
+    };
+    std::vector<Visit> walk{{0, 0, false}};
+    while (!walk.empty()) {
+      const Visit v = walk.back();
+      walk.pop_back();
+      const BuildNode& n = nodes_[v.node];
+      if (v.childrenDone) {
+        size[v.node] = 1 + size[n.child] + size[n.child + 1];
+        continue;
+      }
       // Relative area; a flat scene (root area 0) counts every node as 1.
-      double rel = rootArea > 0.0f ? double(n.box.SurfaceArea()) / rootArea : 1.0;
-      st.depth = std::max(st.depth, n.depth);
-      if (n.leaf) {
+      const double rel = rootArea_ > 0.0f ? double(n.box.SurfaceArea()) / rootArea_ : 1.0;
+      st.depth = std::max(st.depth, v.depth);
+      if (n.IsLeaf()) {
+        size[v.node] = 1;
         ++st.leaves;
         st.maxLeafPrims = std::max(st.maxLeafPrims, n.count);
         st.sahCost += rel * opt_.intersectionCost * n.count;
-      } else {
-        st.sahCost += rel * opt_.traversalCost;
+        continue;
       }
+      st.sahCost += rel * opt_.traversalCost;
+      walk.push_back({v.node, v.depth, true});
+      walk.push_back({n.child + 1, v.depth + 1, false});
+      walk.push_back({n.child, v.depth + 1, false});
     }
+    const uint32_t count = size[0];
     st.nodes = count;
     st.references = uint32_t(prims_.size());
+
+    // Partitioning kept every subtree's primitives contiguous in prims_, so a leaf's
+    // range [first, first + count) is valid in every child order.
+    bvh.primOrder.resize(prims_.size());
+    for (size_t i = 0; i < prims_.size(); ++i) bvh.primOrder[i] = prims_[i].index;
+    bvh.copies = opt_.directionCopies && uint64_t(count) * sizeof(shader::BvhNode) * 8 <= opt_.maxCopiesBytes ? 8 : 1;
+    bvh.nodes.resize(size_t(count) * bvh.copies);
+    // Each copy's top levels are written here; below `spillBelow` nodes, subtrees are
+    // set aside and written by all threads (they fill disjoint ranges of bvh.nodes).
+    const unsigned threads = count < 16384 ? 1u : threads_;
+    const uint32_t spillBelow = threads > 1 ? std::max(4096u, count / (16 * threads)) : 0u;
+    std::vector<FlatItem> spilled;
+    for (uint32_t octant = 0; octant < bvh.copies; ++octant)
+      FlattenSubtree(size, {0, octant * count, shader::kInvalidIndex, octant}, spillBelow, spilled, bvh);
+    ParallelFor(spilled.size(), threads, [&](size_t k) {
+      std::vector<FlatItem> none;
+      FlattenSubtree(size, spilled[k], 0, none, bvh);
+    });
     return bvh;
   }
 
-  // Writes copy `octant` of the tree at nodes[octant * count ...], depth first, each
-  // inner node's children ordered near-first for rays whose direction signs are the
-  // octant's (bit 0: x < 0, bit 1: y < 0, bit 2: z < 0). Skip links are absolute.
-  void FlattenCopy(const HugeVector<uint32_t>& size, uint32_t octant, Bvh& bvh) const {
-    const uint32_t base = octant * uint32_t(nodes_.size());
-    struct Item { uint32_t node, flat, skip; };
-    std::vector<Item> stack{{0, base, shader::kInvalidIndex}};
+  // A subtree to write: build node `node` goes to bvh.nodes[flat] with skip link `skip`,
+  // in copy `octant`.
+  struct FlatItem {
+    uint32_t node, flat, skip, octant;
+  };
+
+  // Writes the subtree of `item` depth first, each inner node's children ordered
+  // near-first for rays whose direction signs are the octant's (bit 0: x < 0, bit 1:
+  // y < 0, bit 2: z < 0). Skip links are absolute. Subtrees of fewer than `spillBelow`
+  // nodes (below the item itself) go to `spilled` instead, to be written later.
+  void FlattenSubtree(const HugeVector<uint32_t>& size, FlatItem item, uint32_t spillBelow,
+                      std::vector<FlatItem>& spilled, Bvh& bvh) const {
+    std::vector<FlatItem> stack{item};
     while (!stack.empty()) {
-      Item it = stack.back();
+      FlatItem it = stack.back();
       stack.pop_back();
       const BuildNode& n = nodes_[it.node];
       shader::BvhNode& out = bvh.nodes[it.flat];
       out.lo = n.box.lo;
       out.hi = n.box.hi;
       out.skip = it.skip;
-      if (n.leaf) {
+      if (n.IsLeaf()) {
         out.leaf = (n.first << 4) | n.count;
         continue;
       }
       out.leaf = 0;
       // Near child first along the axis where the children's centres differ most.
-      uint32_t first = n.child[0], second = n.child[1];
+      uint32_t first = n.child, second = n.child + 1;
       glm::vec3 d = nodes_[second].box.Center() - nodes_[first].box.Center();
       glm::vec3 ad = glm::abs(d);
       int axis = ad.x >= ad.y && ad.x >= ad.z ? 0 : (ad.y >= ad.z ? 1 : 2);
-      bool negative = (octant >> axis) & 1u;
+      bool negative = (it.octant >> axis) & 1u;
       if ((d[axis] < 0.0f) != negative) std::swap(first, second);
-      uint32_t secondFlat = it.flat + 1 + size[first];
-      stack.push_back({second, secondFlat, it.skip});
-      stack.push_back({first, it.flat + 1, secondFlat});
+      const uint32_t secondFlat = it.flat + 1 + size[first];
+      for (const FlatItem& child : {FlatItem{second, secondFlat, it.skip, it.octant},
+                                    FlatItem{first, it.flat + 1, secondFlat, it.octant}})
+        (size[child.node] < spillBelow ? spilled : stack).push_back(child);
     }
   }
 
@@ -706,9 +767,11 @@ class Builder {
   std::span<const glm::vec3> verts_;  // three per primitive (spatial splits)
   bool spatial_ = false;
   uint64_t duplicatesLeft_ = 0;  // references spatial splits may still add
+  unsigned threads_ = 1;
   float rootArea_ = 0.0f;
+  Bounds3f rootCentroids_;
   HugeVector<BuildPrim> prims_;
-  NodeArray nodes_;
+  HugeVector<BuildNode> nodes_;
 };
 
 }  // namespace

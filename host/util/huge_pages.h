@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <new>
+#include <utility>
 #include <vector>
 
 #if defined(__linux__)
@@ -44,11 +45,22 @@ struct HugePageAllocator {
 #endif
     ::operator delete(p, std::align_val_t(alignof(T)));
   }
+  // resize() default-initialises: trivial elements are left unwritten, for arrays
+  // that are filled right after (a zero fill would touch every page twice).
+  template <class U>
+  void construct(U* p) noexcept(noexcept(::new (static_cast<void*>(p)) U)) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
   template <class U>
   bool operator==(const HugePageAllocator<U>&) const { return true; }
 };
 
-// A vector whose large buffers sit on huge pages.
+// A vector whose large buffers sit on huge pages; resize(n) leaves trivial elements
+// uninitialised.
 template <class T>
 using HugeVector = std::vector<T, HugePageAllocator<T>>;
 
