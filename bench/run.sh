@@ -40,7 +40,10 @@ Rays: 1024×1024 camera rays through pixel centres, then one cosine-weighted bou
 every hit ("diffuse"). Mrays/s; path tracing in Msamples/s at 256×256 × 16 spp, max depth
 32. `--threads` applies to every tracer (CPU threads, Embree's thread count, and
 `LP_NUM_THREADS` for lavapipe). "mismatches": rays whose hit distance differs between
-tracers by more than 1e-4 relative (grazing hits on shared edges).
+tracers by more than 1e-4 relative (grazing hits on shared edges). Build rates are the
+best of three builds, vkpt's with `--threads` threads and Embree's (BUILD_QUALITY_MEDIUM)
+with one; `--json` also gives vkpt's one-thread rate from the same run
+(`build_mtris_per_s_1t`).
 
 Timings on this shared 2-core machine vary by up to 2× from run to run; compare the
 tracers within one row (one run), not rows measured at different times.
@@ -48,8 +51,8 @@ tracers within one row (one run), not rows measured at different times.
 HEAD
   echo "Measured $(date -u +%Y-%m-%d) on: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')."
   echo
-  echo "| scene | threads | triangles | build Mtri/s | SAH | CPU camera | CPU diffuse | GPU camera | GPU diffuse | Embree camera | Embree diffuse | CPU PT | GPU PT | mismatches |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| scene | threads | triangles | build Mtri/s | Embree build Mtri/s (1 thread) | SAH | CPU camera | CPU diffuse | GPU camera | GPU diffuse | Embree camera | Embree diffuse | CPU PT | GPU PT | mismatches |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
   printf '%s\n' "${rows[@]}"
   cat <<'QUALITY'
 

@@ -210,6 +210,9 @@ class Builder {
     // at most 2c - 2 nodes below its root: each gets such a range of nodes_ after the
     // top levels' nodes, and its own range of prims_. The tree does not depend on the
     // thread count (only where its nodes sit in nodes_ does, which Flatten does not see).
+    // Largest first, so that no thread is left with a big one at the end.
+    std::stable_sort(deferred.begin(), deferred.end(),
+                     [&](const Task& a, const Task& b) { return nodes_[a.node].count > nodes_[b.node].count; });
     std::vector<uint32_t> start(deferred.size());
     for (size_t k = 0; k < deferred.size(); ++k) {
       start[k] = cursor;
