@@ -64,6 +64,11 @@ struct Bin {
     lo = Min4(lo, boxLo);
     hi = Max4(hi, boxHi);
   }
+  void Merge(const Bin& b) {
+    Extend(b.lo, b.hi);
+    count += b.count;
+  }
+  bool Empty() const { return !(lo[0] <= hi[0]); }
   Bounds3f Box() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
   // Bounds3f::SurfaceArea of Box(), for a bin that holds something.
   float Area() const {
@@ -89,8 +94,7 @@ struct Task {
 // An axis with no centroid extent has scale 0: everything lands in bin 0 and the sweep
 // skips the axis.
 struct BinMap {
-  Float4 lo, scale;
-  Int4 last;
+  Float4 lo, scale, last;
   BinMap(const Bounds3f& centroids, uint32_t nb) {
     float s[3];
     for (int a = 0; a < 3; ++a) {
@@ -99,12 +103,12 @@ struct BinMap {
     }
     lo = Float4{centroids.lo.x, centroids.lo.y, centroids.lo.z, 0.0f};
     scale = Float4{s[0], s[1], s[2], 0.0f};
-    last = Int4{1, 1, 1, 1} * int32_t(nb - 1);
+    last = Splat4(float(nb - 1));
   }
   bool Usable(int axis) const { return scale[axis] > 0.0f; }
+  // Clamped before the conversion: SSE2 has no integer min.
   Int4 Of(Float4 centroid) const {
-    const Int4 k = __builtin_convertvector(Max4((centroid - lo) * scale, Splat4(0.0f)), Int4);
-    return k < last ? k : last;
+    return __builtin_convertvector(Min4(Max4((centroid - lo) * scale, Splat4(0.0f)), last), Int4);
   }
 };
 
@@ -255,6 +259,8 @@ class Builder {
       acc.Extend(bins[b - 1].lo, bins[b - 1].hi);
       acc.count += enters(b - 1);
       if (acc.count == 0 || right[b].count == 0) continue;
+      // Past an empty bin the plane splits as the one before it did, at the same cost.
+      if (bins[b - 1].Empty() && enters(b - 1) == 0 && exits(b - 1) == 0) continue;
       float cost = opt_.traversalCost +
                    opt_.intersectionCost * (acc.Area() * float(acc.count) + right[b].Area() * float(right[b].count)) /
                        parentArea;
@@ -330,7 +336,8 @@ class Builder {
     };
 
     const bool exact = node.count <= kExactSplitMax;
-    Split best = exact ? FindExactSplit(node) : FindSplit(node, task.centroids, threads);
+    uint8_t order[kExactSplitMax];  // exact: the primitives in centroid order along best.axis
+    Split best = exact ? FindExactSplit(node, order) : FindSplit(node, task.centroids, threads);
     // Spatial splits are tried where the object split leaves overlapping children (or
     // found no plane at all), while the duplication budget lasts.
     SpatialSplit spatial;
@@ -360,23 +367,14 @@ class Builder {
     }
     if (exact) {
       // best.bin primitives, in centroid order along the axis, go left.
-      SortByCentroid(node.first, end, best.axis);
+      BuildPrim sorted[kExactSplitMax];
+      for (uint32_t k = 0; k < node.count; ++k) sorted[k] = prims_[node.first + order[k]];
+      std::copy(sorted, sorted + node.count, prims_.begin() + node.first);
       return addChildren(node.first, best.bin, best.left, {}, node.first + best.bin, node.count - best.bin, best.right, {});
     }
     Bounds3f leftCent, rightCent;
     const uint32_t mid = PartitionByBin(node.first, end, task.centroids, best, threads, leftCent, rightCent);
     addChildren(node.first, mid - node.first, best.left, leftCent, mid, end - mid, best.right, rightCent);
-  }
-
-  // Insertion sort of prims_[b, e): a few primitives, so no call overhead.
-  void SortByCentroid(uint32_t b, uint32_t e, int axis) {
-    const CentroidLess less{axis};
-    for (uint32_t i = b + 1; i < e; ++i) {
-      const BuildPrim p = prims_[i];
-      uint32_t j = i;
-      for (; j > b && less(p, prims_[j - 1]); --j) prims_[j] = prims_[j - 1];
-      prims_[j] = p;
-    }
   }
 
   // Moves the primitives of [b, e) whose centroid bin along `axis` is below `bin` to the
@@ -466,35 +464,47 @@ class Builder {
 
   // The exact SAH split of a small node: every position in the centroid order along each
   // axis is a candidate (Split::bin = how many primitives go left). Costs as SweepBins.
-  Split FindExactSplit(const BuildNode& node) const {
+  // `order` receives the node's primitives (offsets from node.first) in centroid order
+  // along the chosen axis.
+  Split FindExactSplit(const BuildNode& node, uint8_t order[kExactSplitMax]) const {
     Split best;
     const uint32_t n = node.count;
     const float parentArea = node.box.SurfaceArea();
     if (!(parentArea > 0.0f)) return best;  // a flat node: the caller's median split
-    BuildPrim sorted[kExactSplitMax];
-    Bin right[kExactSplitMax];
-    for (int a = 0; a < 3; ++a) {
-      std::copy(prims_.begin() + node.first, prims_.begin() + node.first + n, sorted);
-      const CentroidLess less{a};
-      for (uint32_t i = 1; i < n; ++i) {
-        const BuildPrim p = sorted[i];
-        uint32_t j = i;
-        for (; j > 0 && less(p, sorted[j - 1]); --j) sorted[j] = sorted[j - 1];
-        sorted[j] = p;
+    // Each primitive's rank along all three axes at once, by comparing every pair (the
+    // order of CentroidLess): no data-dependent branches, unlike a sort of so few items.
+    const BuildPrim* p = &prims_[node.first];
+    Float4 c[kExactSplitMax];
+    Int4 rank[kExactSplitMax];
+    for (uint32_t i = 0; i < n; ++i) c[i] = p[i].Centroid4(), rank[i] = Int4{0, 0, 0, 0};
+    for (uint32_t i = 0; i < n; ++i)
+      for (uint32_t j = i + 1; j < n; ++j) {
+        const Int4 tie = p[i].index < p[j].index ? Int4{-1, -1, -1, -1} : Int4{0, 0, 0, 0};
+        const Int4 iFirst = (c[i] < c[j]) | ((c[i] == c[j]) & tie);  // lanes: -1 or 0
+        rank[j] -= iFirst;
+        rank[i] += iFirst + 1;
       }
+    uint8_t sorted[3][kExactSplitMax];
+    for (uint32_t i = 0; i < n; ++i)
+      for (int a = 0; a < 3; ++a) sorted[a][rank[i][a]] = uint8_t(i);
+    Bin right[kExactSplitMax];
+    int bestAxis = -1;
+    for (int a = 0; a < 3; ++a) {
+      const uint8_t* s = sorted[a];
       Bin acc;
       for (uint32_t k = n - 1; k > 0; --k) {
-        acc.Extend(Load4(&sorted[k].box.lo.x), Load4(&sorted[k].box.hi.x));
+        acc.Extend(Load4(&p[s[k]].box.lo.x), Load4(&p[s[k]].box.hi.x));
         right[k] = acc;
       }
       acc = Bin{};
       for (uint32_t k = 1; k < n; ++k) {
-        acc.Extend(Load4(&sorted[k - 1].box.lo.x), Load4(&sorted[k - 1].box.hi.x));
+        acc.Extend(Load4(&p[s[k - 1]].box.lo.x), Load4(&p[s[k - 1]].box.hi.x));
         const float cost = opt_.traversalCost + opt_.intersectionCost *
                                                     (acc.Area() * float(k) + right[k].Area() * float(n - k)) / parentArea;
-        if (cost < best.cost) best = {a, k, cost, acc.Box(), right[k].Box()};
+        if (cost < best.cost) best = {a, k, cost, acc.Box(), right[k].Box()}, bestAxis = a;
       }
     }
+    if (bestAxis >= 0) std::copy(sorted[bestAxis], sorted[bestAxis] + n, order);
     return best;
   }
 
@@ -648,10 +658,7 @@ class Builder {
       ForChunks(node.first, node.count, threads, [&](uint32_t b, uint32_t e, unsigned t) { binRange(b, e, partial[t]); });
       merged.assign(3 * nb, Bin{});
       for (const std::vector<Bin>& mine : partial)
-        for (uint32_t k = 0; k < 3 * nb; ++k) {
-          merged[k].Extend(mine[k].lo, mine[k].hi);
-          merged[k].count += mine[k].count;
-        }
+        for (uint32_t k = 0; k < 3 * nb; ++k) merged[k].Merge(mine[k]);
       all = &merged;
     }
     for (int a = 0; a < 3; ++a) {
