@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
 #include <thread>
 #include <chrono>
 #include <cstddef>
@@ -77,15 +79,20 @@ struct Bin {
   }
 };
 
-// Nodes with at least this many primitives are binned on several threads.
-constexpr uint32_t kParallelNode = 1u << 15;
+// Nodes with at least this many primitives may be binned on several threads; splitting
+// one of at least kShareNode primitives may hand a child to another thread.
+constexpr uint32_t kParallelNode = 1u << 15, kShareNode = 1u << 12;
 
 // A small node is split exactly: every position in its centroid order is costed.
 constexpr uint32_t kExactSplitMax = 8;
 
 // A node waiting to be split, with its centroids' bounds (binning needs them).
+// The node's descendants go to nodes [range, range + 2·count − 2), the most a subtree
+// over `count` primitives can have: its children first, then the left child's range,
+// then the right child's. So every node's place follows from the tree alone, whichever
+// thread builds it. (Spatial splits can add references, so they allocate in order.)
 struct Task {
-  uint32_t node;
+  uint32_t node, range;
   Bounds3f centroids;
 };
 
@@ -199,38 +206,54 @@ class Builder {
 
   Bvh Build() {
     const unsigned threads = threads_;
-    // Phase 1, top levels: one node at a time, its binning spread over all threads.
-    // Nodes below `small` primitives are deferred as independent subtrees.
-    const uint32_t small = threads > 1 ? std::max(4096u, uint32_t(prims_.size() / (8 * threads))) : 0u;
-    uint32_t cursor = 1;  // next free node
-    std::vector<Task> work{{0, rootCentroids_}}, deferred;
-    while (!work.empty()) {
-      Task task = work.back();
-      work.pop_back();
-      if (nodes_[task.node].count < small) deferred.push_back(task);
-      else Subdivide(task, work, cursor, threads);
-    }
-    // Phase 2: the subtrees, one per thread at a time. A subtree over c primitives has
-    // at most 2c - 2 nodes below its root: each gets such a range of nodes_ after the
-    // top levels' nodes, and its own range of prims_. The tree does not depend on the
-    // thread count (only where its nodes sit in nodes_ does, which Flatten does not see).
-    // Largest first, so that no thread is left with a big one at the end.
-    std::stable_sort(deferred.begin(), deferred.end(),
-                     [&](const Task& a, const Task& b) { return nodes_[a.node].count > nodes_[b.node].count; });
-    std::vector<uint32_t> start(deferred.size());
-    for (size_t k = 0; k < deferred.size(); ++k) {
-      start[k] = cursor;
-      cursor += 2 * nodes_[deferred[k].node].count - 2;
-    }
-    ParallelFor(deferred.size(), threads, [&](size_t k) {
-      uint32_t local = start[k];
-      std::vector<Task> localWork{deferred[k]};
-      while (!localWork.empty()) {
-        Task task = localWork.back();
-        localWork.pop_back();
-        Subdivide(task, localWork, local, 1);
+    // Workers take subtrees from a shared list and build them depth first on their own.
+    // Splitting a node of at least kShareNode primitives while a thread is idle hands
+    // its right child to that thread; a node of at least kParallelNode primitives met
+    // while every other thread is idle (the root) is binned and partitioned on all
+    // threads. The tree does not depend on any of this (see Task).
+    std::mutex mutex;
+    std::condition_variable wake;
+    std::vector<Task> shared{{0, 1, rootCentroids_}};
+    unsigned busy = 0;  // workers holding a subtree
+    auto worker = [&] {
+      std::vector<Task> local;
+      for (;;) {
+        {
+          std::unique_lock lock(mutex);
+          wake.wait(lock, [&] { return !shared.empty() || busy == 0; });
+          if (shared.empty()) return;
+          local.push_back(shared.back());
+          shared.pop_back();
+          ++busy;
+        }
+        while (!local.empty()) {
+          const Task task = local.back();
+          local.pop_back();
+          const uint32_t count = nodes_[task.node].count;
+          unsigned inner = 1;
+          if (threads > 1 && count >= kParallelNode) {
+            std::lock_guard lock(mutex);
+            if (shared.empty() && busy == 1) inner = threads;
+          }
+          const size_t before = local.size();
+          Subdivide(task, local, inner);
+          if (threads > 1 && count >= kShareNode && local.size() == before + 2) {
+            std::lock_guard lock(mutex);
+            if (threads - busy > shared.size()) {
+              shared.push_back(local[before]);  // the right child
+              local.erase(local.begin() + before);
+              wake.notify_one();
+            }
+          }
+        }
+        std::lock_guard lock(mutex);
+        if (--busy == 0 && shared.empty()) wake.notify_all();
       }
-    });
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
     if (spatial_) CompactReferences();
     return Flatten();
   }
@@ -306,10 +329,10 @@ class Builder {
     if (b < e) box.Extend(boxBin.Box()), cent.Extend(centBin.Box());
   }
 
-  // Splits the node of `task` (or leaves it a leaf): its children go to nodes_[cursor]
-  // and nodes_[cursor + 1], and onto `work`. The node's box, range and child (0) are set;
-  // large nodes are binned on `threads` threads.
-  void Subdivide(const Task& task, std::vector<Task>& work, uint32_t& cursor, unsigned threads) {
+  // Splits the node of `task` (or leaves it a leaf): its children go to the start of
+  // its range, and onto `work`, right then left. The node's box, primitive range and
+  // child (0) are set; large nodes are binned on `threads` threads.
+  void Subdivide(const Task& task, std::vector<Task>& work, unsigned threads) {
     const uint32_t ni = task.node;
     const BuildNode node = nodes_[ni];
     if (node.count < kParallelNode) threads = 1;
@@ -319,13 +342,13 @@ class Builder {
     // their primitives in place; small children need none.
     auto addChildren = [&](uint32_t leftFirst, uint32_t leftCount, const Bounds3f& leftBox, const Bounds3f& leftCent,
                            uint32_t rightFirst, uint32_t rightCount, const Bounds3f& rightBox, const Bounds3f& rightCent) {
-      const uint32_t left = cursor;
-      cursor += 2;
+      uint32_t left = task.range;
+      if (spatial_) left = spatialCursor_, spatialCursor_ += 2;
       nodes_[left] = {leftBox, leftFirst, leftCount, 0};
       nodes_[left + 1] = {rightBox, rightFirst, rightCount, 0};
       nodes_[ni].child = left;
-      work.push_back({left + 1, rightCent});
-      work.push_back({left, leftCent});
+      work.push_back({left + 1, left + 2 * leftCount, rightCent});
+      work.push_back({left, left + 2, leftCent});
     };
     // Children whose bounds only a pass over their primitives can tell.
     auto addScannedChildren = [&](uint32_t leftFirst, uint32_t leftCount, uint32_t rightFirst, uint32_t rightCount) {
@@ -778,6 +801,7 @@ class Builder {
   bool spatial_ = false;
   uint64_t duplicatesLeft_ = 0;  // references spatial splits may still add
   unsigned threads_ = 1;
+  uint32_t spatialCursor_ = 1;  // the next free node, with spatial splits
   float rootArea_ = 0.0f;
   Bounds3f rootCentroids_;
   HugeVector<BuildPrim> prims_;
