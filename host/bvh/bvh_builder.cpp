@@ -697,24 +697,38 @@ class Builder {
     return best;
   }
 
-  Bvh Flatten() const {
-    Bvh bvh;
-    BvhStats& st = bvh.stats;
-    // One walk from the root (nodes_ has unused gaps): subtree sizes, which place second
-    // children in the flat layout, and the statistics. The cost is summed in this fixed
-    // order, so it is the same to the last bit for any thread count.
-    HugeVector<uint32_t> size(nodes_.size());
+  // What a walk over a subtree finds; depth counts edges from the subtree's root.
+  struct WalkStats {
+    double sahCost = 0.0;
+    uint32_t leaves = 0, maxLeafPrims = 0, depth = 0;
+  };
+
+  // One post-order walk of the subtree at `root` (nodes_ has unused gaps, so only a walk
+  // finds the nodes): subtree sizes, which place second children in the flat layout, and
+  // the statistics, summed in this fixed order. A node other than `root` for which
+  // walked(node) gives statistics was walked before: its size is set, its statistics
+  // are added as they are.
+  template <class Walked>
+  WalkStats Walk(uint32_t root, HugeVector<uint32_t>& size, Walked&& walked) const {
+    WalkStats st;
     struct Visit {
       uint32_t node, depth;
       bool childrenDone;
     };
-    std::vector<Visit> walk{{0, 0, false}};
+    std::vector<Visit> walk{{root, 0, false}};
     while (!walk.empty()) {
       const Visit v = walk.back();
       walk.pop_back();
       const BuildNode& n = nodes_[v.node];
       if (v.childrenDone) {
         size[v.node] = 1 + size[n.child] + size[n.child + 1];
+        continue;
+      }
+      if (const WalkStats* w = v.node != root ? walked(v.node) : nullptr) {
+        st.sahCost += w->sahCost;
+        st.leaves += w->leaves;
+        st.maxLeafPrims = std::max(st.maxLeafPrims, w->maxLeafPrims);
+        st.depth = std::max(st.depth, v.depth + w->depth);
         continue;
       }
       // Relative area; a flat scene (root area 0) counts every node as 1.
@@ -732,19 +746,54 @@ class Builder {
       walk.push_back({n.child + 1, v.depth + 1, false});
       walk.push_back({n.child, v.depth + 1, false});
     }
+    return st;
+  }
+
+  Bvh Flatten() const {
+    Bvh bvh;
+    const unsigned threads = nodes_[0].count < 16384 ? 1u : threads_;
+    // Subtrees below kWalkSplit primitives (under a larger parent) are walked first, on
+    // all threads, then the top of the tree. The cut does not depend on the thread
+    // count, so neither does the order in which the cost is summed: it is the same to
+    // the last bit.
+    constexpr uint32_t kWalkSplit = 4096;
+    std::vector<std::pair<uint32_t, uint32_t>> cut;  // (node, index into cutStats)
+    for (std::vector<uint32_t> stack{0}; !stack.empty();) {
+      const uint32_t i = stack.back();
+      stack.pop_back();
+      const BuildNode& n = nodes_[i];
+      if (i != 0 && n.count < kWalkSplit) cut.push_back({i, uint32_t(cut.size())});
+      else if (!n.IsLeaf()) stack.insert(stack.end(), {n.child + 1, n.child});
+    }
+    HugeVector<uint32_t> size(nodes_.size());
+    std::vector<WalkStats> cutStats(cut.size());
+    ParallelFor(cut.size(), threads, [&](size_t k) {
+      cutStats[k] = Walk(cut[k].first, size, [](uint32_t) -> const WalkStats* { return nullptr; });
+    });
+    std::sort(cut.begin(), cut.end());
+    const WalkStats top = Walk(0, size, [&](uint32_t node) -> const WalkStats* {
+      auto it = std::lower_bound(cut.begin(), cut.end(), std::make_pair(node, 0u));
+      return it != cut.end() && it->first == node ? &cutStats[it->second] : nullptr;
+    });
     const uint32_t count = size[0];
+    BvhStats& st = bvh.stats;
     st.nodes = count;
     st.references = uint32_t(prims_.size());
+    st.leaves = top.leaves;
+    st.maxLeafPrims = top.maxLeafPrims;
+    st.depth = top.depth;
+    st.sahCost = top.sahCost;
 
     // Partitioning kept every subtree's primitives contiguous in prims_, so a leaf's
     // range [first, first + count) is valid in every child order.
     bvh.primOrder.resize(prims_.size());
-    for (size_t i = 0; i < prims_.size(); ++i) bvh.primOrder[i] = prims_[i].index;
+    ForChunks(0, uint32_t(prims_.size()), threads, [&](uint32_t b, uint32_t e, unsigned) {
+      for (uint32_t i = b; i < e; ++i) bvh.primOrder[i] = prims_[i].index;
+    });
     bvh.copies = opt_.directionCopies && uint64_t(count) * sizeof(shader::BvhNode) * 8 <= opt_.maxCopiesBytes ? 8 : 1;
     bvh.nodes.resize(size_t(count) * bvh.copies);
     // Each copy's top levels are written here; below `spillBelow` nodes, subtrees are
     // set aside and written by all threads (they fill disjoint ranges of bvh.nodes).
-    const unsigned threads = count < 16384 ? 1u : threads_;
     const uint32_t spillBelow = threads > 1 ? std::max(4096u, count / (16 * threads)) : 0u;
     std::vector<FlatItem> spilled;
     for (uint32_t octant = 0; octant < bvh.copies; ++octant)
