@@ -325,6 +325,21 @@ TEST(Bvh, SpatialSplitsCutOverlapAndKeepHitsExact) {
 }
 
 // A triangle in several leaves is still one light: the emitter table must not change.
+TEST(Bvh, SpatialSplitsKeepWholeTrianglesOnceTheDuplicationBudgetIsSpent) {
+  // A budget of 20 duplicates runs out early: every later straddling triangle must go
+  // whole (with its full box) to one side, or the part on the other side is lost.
+  std::vector<SceneTriangle> slivers = Slivers(2000, 17);
+  Material m{};
+  m.baseColor = glm::vec3(0.5f);
+  BvhBuildOptions o;
+  o.spatialSplits = true;
+  o.maxDuplication = 0.01f;
+  RenderScene rs = PrepareRenderScene(test::MakeScene(slivers, {m}), o);
+  EXPECT_LE(rs.bvhStats.references, 2020u);
+  CheckInvariants(rs, slivers, 4, true);
+  CompareWithBruteForce(rs, 30000, 6);
+}
+
 TEST(Bvh, SpatialSplitsListEachEmitterOnce) {
   Material light{};
   light.emission = glm::vec3(2.0f);

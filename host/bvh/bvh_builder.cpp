@@ -131,6 +131,7 @@ struct SpatialSplit {
   int axis = -1;
   uint32_t bin = 0;
   float cost = std::numeric_limits<float>::infinity();
+  Bin left, right;  // the children's boxes and reference counts, every straddler split
 };
 
 Bounds3f Intersection(const Bounds3f& a, const Bounds3f& b) {
@@ -584,43 +585,64 @@ class Builder {
       }
       SweepBins(
           bins.data(), [&](uint32_t b) { return entries[b]; }, [&](uint32_t b) { return exits[b]; }, parentArea,
-          [&](uint32_t b, float cost, const Bin&, const Bin&) {
-            if (cost < best.cost) best = {a, b, cost};
+          [&](uint32_t b, float cost, const Bin& left, const Bin& right) {
+            if (cost < best.cost) best = {a, b, cost, left, right};
           });
     }
     return best;
   }
 
   // Performs a spatial split of `node`: its left references stay in place (there are
-  // at most as many), the right ones are appended to prims_; a straddling reference goes
-  // to both sides with its clipped bounds. False if one side would be empty.
+  // at most as many), the right ones are appended to prims_. A straddling reference is
+  // split in two clipped halves, or "unsplit" — kept whole on one side — where that
+  // costs less (Stich et al. 2009, §4.3: compare A_L·N_L + A_R·N_R with the whole
+  // reference added to either box and dropped from the other count), and always when
+  // the duplication budget is spent. False if one side would be empty.
   bool SplitSpatially(const BuildNode& node, const SpatialSplit& split, uint32_t& leftCount, uint32_t& rightFirst,
                       uint32_t& rightCount) {
     const int a = split.axis;
     const SpatialBins sb = BinsOf(node, a);
     const float plane = sb.Plane(split.bin), inf = std::numeric_limits<float>::infinity();
+    Bounds3f boxL = split.left.Box(), boxR = split.right.Box();
+    float nl = float(split.left.count), nr = float(split.right.count);
     std::vector<BuildPrim> left, right;
     for (uint32_t i = node.first; i < node.first + node.count; ++i) {
       const BuildPrim& p = prims_[i];
       const uint32_t b0 = sb.Of(p.box.lo[a]), b1 = sb.Of(p.box.hi[a]);
       if (b1 < split.bin) {
         left.push_back(p);
-      } else if (b0 >= split.bin) {
+        continue;
+      }
+      if (b0 >= split.bin) {
         right.push_back(p);
+        continue;
+      }
+      glm::vec3 v[3];
+      Vertices(p.index, v);
+      const Bounds3f l = Intersection(ClipTriangle(v, a, -inf, plane), p.box);
+      const Bounds3f r = Intersection(ClipTriangle(v, a, plane, inf), p.box);
+      if (l.Empty() || r.Empty()) {  // all on one side after all
+        (l.Empty() ? right : left).push_back(p);
+        continue;
+      }
+      Bounds3f wholeL = boxL, wholeR = boxR;
+      wholeL.Extend(p.box);
+      wholeR.Extend(p.box);
+      const float costSplit = duplicatesLeft_ > 0 ? boxL.SurfaceArea() * nl + boxR.SurfaceArea() * nr : inf;
+      const float costLeft = wholeL.SurfaceArea() * nl + boxR.SurfaceArea() * (nr - 1.0f);
+      const float costRight = boxL.SurfaceArea() * (nl - 1.0f) + wholeR.SurfaceArea() * nr;
+      if (costSplit <= costLeft && costSplit <= costRight) {
+        --duplicatesLeft_;
+        left.push_back({l, p.index});
+        right.push_back({r, p.index});
+      } else if (costLeft <= costRight) {
+        left.push_back(p);
+        boxL = wholeL;
+        nr -= 1.0f;
       } else {
-        glm::vec3 v[3];
-        Vertices(p.index, v);
-        Bounds3f l = Intersection(ClipTriangle(v, a, -inf, plane), p.box);
-        Bounds3f r = Intersection(ClipTriangle(v, a, plane, inf), p.box);
-        if (l.Empty() || (duplicatesLeft_ == 0 && !r.Empty())) {
-          right.push_back(r.Empty() ? p : BuildPrim{r, p.index});
-        } else if (r.Empty()) {
-          left.push_back({l, p.index});
-        } else {
-          --duplicatesLeft_;
-          left.push_back({l, p.index});
-          right.push_back({r, p.index});
-        }
+        right.push_back(p);
+        boxR = wholeR;
+        nl -= 1.0f;
       }
     }
     if (left.empty() || right.empty()) return false;
