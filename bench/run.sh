@@ -14,7 +14,7 @@ for threads in 1 2; do
   rows+=("$($bench --scene scenes/cornell.gltf --threads $threads --markdown)")
   if [ -f "$engine" ]; then rows+=("$($bench --scene "$engine" --threads $threads --markdown)"); fi
 done
-# Spatial splits (--spatial-splits; the build is single-threaded), one thread.
+# Spatial splits (--spatial-splits), one thread.
 rows+=("$($bench --procedural 1000000 --threads 1 --spatial-splits --markdown)")
 if [ -f "$engine" ]; then rows+=("$($bench --scene "$engine" --threads 1 --spatial-splits --markdown)"); fi
 quality=""

@@ -215,6 +215,35 @@ TEST(Bvh, SmallNodesSplitAtTheBestPositionInCentroidOrder) {
   }
 }
 
+TEST(Bvh, SameSpatialSplitTreeForAnyBuildThreadCount) {
+  // Spatial splits share the duplication budget out by subtree, so the tree does not
+  // depend on which thread builds what either.
+  std::vector<SceneTriangle> slivers = Slivers(60000, 31);
+  std::vector<Bounds3f> bounds;
+  std::vector<glm::vec3> vertices;
+  for (const SceneTriangle& t : slivers) {
+    Bounds3f b;
+    for (glm::vec3 p : {t.v0, t.v1, t.v2}) b.Extend(p);
+    bounds.push_back(b);
+    vertices.insert(vertices.end(), {t.v0, t.v1, t.v2});
+  }
+  BvhBuildOptions o;
+  o.spatialSplits = true;
+  o.threads = 1;
+  Bvh one = BuildBvh(bounds, o, vertices);
+  EXPECT_GT(one.stats.references, bounds.size());
+  for (unsigned threads : {2u, 3u}) {
+    o.threads = threads;
+    Bvh many = BuildBvh(bounds, o, vertices);
+    std::printf("spatial splits, %u threads: %.1f ms (1 thread: %.1f ms), %u references\n", threads, many.stats.buildMs,
+                one.stats.buildMs, many.stats.references);
+    ASSERT_EQ(many.nodes.size(), one.nodes.size());
+    EXPECT_EQ(0, std::memcmp(many.nodes.data(), one.nodes.data(), one.nodes.size() * sizeof(shader::BvhNode)));
+    EXPECT_EQ(many.primOrder, one.primOrder);
+    EXPECT_EQ(many.stats.sahCost, one.stats.sahCost);
+  }
+}
+
 TEST(Bvh, IdenticalTrianglesStillRespectLeafSize) {
   // 1000 copies of one triangle: no SAH plane separates them, the median split must.
   std::vector<SceneTriangle> tris(1000, SceneTriangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0});

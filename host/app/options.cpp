@@ -63,8 +63,8 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --leaf-size N      maximum triangles per BVH leaf, 1..15 [default: 4]
   --spatial-splits   let the BVH split space, not only triangle sets: a triangle may be
                      referenced from several leaves with its clipped bounds. Faster
-                     rays where long thin triangles overlap (CAD models); a slower,
-                     single-threaded build [default: off]
+                     rays where long thin triangles overlap (CAD models); a build
+                     several times slower [default: off]
   -v, --verbose      print what was loaded and which glTF features were ignored
   -h, --help         print this help and exit
   --version          print the version and exit

@@ -27,14 +27,16 @@ struct BvhBuildOptions {
   uint64_t maxCopiesBytes = uint64_t(128) << 20;
   // Spatial splits (Stich et al. 2009, "Spatial Splits in Bounding Volume Hierarchies"):
   // a node may also be divided by a plane that cuts triangles; each straddling triangle is
-  // then referenced from both sides, with the bounds of its part on that side. Boxes
-  // overlap less where triangles are long and thin (CAD models); the price is duplicated
-  // references and a single-threaded build. Needs the triangles' vertices.
+  // then referenced from both sides, with the bounds of its part on that side (or kept
+  // whole on one side where that costs less). Boxes overlap less where triangles are
+  // long and thin (CAD models); the price is duplicated references and a slower build.
+  // Needs the triangles' vertices.
   bool spatialSplits = false;
   // Spatial splits are tried only where the object split's children overlap by more than
   // this fraction of the root's surface area (the paper's α).
   float spatialOverlap = 1e-5f;
-  // Duplicated references allowed, as a fraction of the triangle count.
+  // Duplicated references allowed, as a fraction of the triangle count. The budget is
+  // shared out down the tree in proportion to the subtrees' sizes.
   float maxDuplication = 1.0f;
 };
 

@@ -87,12 +87,13 @@ constexpr uint32_t kParallelNode = 1u << 15, kShareNode = 1u << 12;
 constexpr uint32_t kExactSplitMax = 8;
 
 // A node waiting to be split, with its centroids' bounds (binning needs them).
-// The node's descendants go to nodes [range, range + 2·count − 2), the most a subtree
-// over `count` primitives can have: its children first, then the left child's range,
-// then the right child's. So every node's place follows from the tree alone, whichever
-// thread builds it. (Spatial splits can add references, so they allocate in order.)
+// A node to split. Its references sit in prims_[first, first + count) and may grow,
+// by spatial splits, into the `slack` free slots after them; its descendants go to
+// nodes [range, range + 2·(count + slack) − 2), the most a subtree over that many
+// references can have: its children first, then the left child's range, then the right
+// child's. So every node's place follows from the tree alone, whichever thread builds it.
 struct Task {
-  uint32_t node, range;
+  uint32_t node, range, slack;
   Bounds3f centroids;
 };
 
@@ -170,15 +171,15 @@ class Builder {
  public:
   Builder(std::span<const Bounds3f> bounds, const BvhBuildOptions& o, std::span<const glm::vec3> vertices)
       : opt_(o), verts_(vertices), spatial_(o.spatialSplits && vertices.size() == 3 * bounds.size()) {
-    // References stay below 2^28, what a leaf code can address.
-    duplicatesLeft_ = spatial_ ? std::min<uint64_t>(uint64_t(double(o.maxDuplication) * double(bounds.size())),
-                                                    (1u << 28) - 1 - bounds.size())
-                               : 0;
-    // Spatial splits append references to prims_ as they go: one thread.
-    threads_ = spatial_ ? 1u : o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-    // The primitives, with the root's box and centroid bounds, on all threads.
+    // The references spatial splits may add; the total stays below 2^28, what a leaf
+    // code can address.
     const uint32_t n = uint32_t(bounds.size());
-    prims_.resize(n);
+    duplicationBudget_ =
+        spatial_ ? uint32_t(std::min<uint64_t>(uint64_t(double(o.maxDuplication) * double(n)), (1u << 28) - 1 - n)) : 0;
+    threads_ = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+    // The primitives, with the root's box and centroid bounds, on all threads; the
+    // budget's slots after them stay untouched until used.
+    prims_.resize(n + duplicationBudget_);
     std::vector<Bin> boxes(threads_), cents(threads_);
     ForChunks(0, n, threads_, [&](uint32_t b, uint32_t e, unsigned t) {
       Bin box, cent;
@@ -194,7 +195,7 @@ class Builder {
       cents[t] = cent;
     });
     // A tree over m references has at most 2m - 1 nodes.
-    nodes_.resize(2 * (n + duplicatesLeft_) - 1);
+    nodes_.resize(2 * (n + duplicationBudget_) - 1);
     BuildNode& root = nodes_[0];
     root = {{}, 0, n, 0};
     rootCentroids_ = Bounds3f{};
@@ -214,7 +215,7 @@ class Builder {
     // threads. The tree does not depend on any of this (see Task).
     std::mutex mutex;
     std::condition_variable wake;
-    std::vector<Task> shared{{0, 1, rootCentroids_}};
+    std::vector<Task> shared{{0, 1, duplicationBudget_, rootCentroids_}};
     unsigned busy = 0;  // workers holding a subtree
     auto worker = [&] {
       std::vector<Task> local;
@@ -338,43 +339,50 @@ class Builder {
     const BuildNode node = nodes_[ni];
     if (node.count < kParallelNode) threads = 1;
     if (node.count == 1) return;
-    // Children take their boxes from the split (the union of their primitives' boxes,
-    // whichever way it was found) and their centroid bounds from the pass that puts
-    // their primitives in place; small children need none.
-    auto addChildren = [&](uint32_t leftFirst, uint32_t leftCount, const Bounds3f& leftBox, const Bounds3f& leftCent,
-                           uint32_t rightFirst, uint32_t rightCount, const Bounds3f& rightBox, const Bounds3f& rightCent) {
-      uint32_t left = task.range;
-      if (spatial_) left = spatialCursor_, spatialCursor_ += 2;
-      nodes_[left] = {leftBox, leftFirst, leftCount, 0};
+    // The children's references are at node.first, left then right (leftCount +
+    // rightCount <= count + slack). Children take their boxes from the split (the union
+    // of their references' boxes, whichever way it was found) and their centroid bounds
+    // from the pass that puts their references in place; small children need none.
+    // `slack` free slots, shared in proportion to the counts, follow the references:
+    // the right ones move up to leave the left child its share.
+    auto addChildren = [&](uint32_t leftCount, const Bounds3f& leftBox, const Bounds3f& leftCent, uint32_t rightCount,
+                           const Bounds3f& rightBox, const Bounds3f& rightCent, uint32_t slack) {
+      const uint32_t leftSlack = uint32_t(uint64_t(slack) * leftCount / (leftCount + rightCount));
+      const uint32_t rightFirst = node.first + leftCount + leftSlack;
+      if (leftSlack > 0)
+        std::copy_backward(prims_.begin() + node.first + leftCount, prims_.begin() + node.first + leftCount + rightCount,
+                           prims_.begin() + rightFirst + rightCount);
+      const uint32_t left = task.range;
+      nodes_[left] = {leftBox, node.first, leftCount, 0};
       nodes_[left + 1] = {rightBox, rightFirst, rightCount, 0};
       nodes_[ni].child = left;
-      work.push_back({left + 1, left + 2 * leftCount, rightCent});
-      work.push_back({left, left + 2, leftCent});
+      work.push_back({left + 1, left + 2 * (leftCount + leftSlack), slack - leftSlack, rightCent});
+      work.push_back({left, left + 2, leftSlack, leftCent});
     };
-    // Children whose bounds only a pass over their primitives can tell.
-    auto addScannedChildren = [&](uint32_t leftFirst, uint32_t leftCount, uint32_t rightFirst, uint32_t rightCount) {
+    // Children whose bounds only a pass over their references can tell.
+    auto addScannedChildren = [&](uint32_t leftCount, uint32_t rightCount, uint32_t slack) {
       Bounds3f lb, lc, rb, rc;
-      Scan(leftFirst, leftFirst + leftCount, lb, lc);
-      Scan(rightFirst, rightFirst + rightCount, rb, rc);
-      addChildren(leftFirst, leftCount, lb, lc, rightFirst, rightCount, rb, rc);
+      Scan(node.first, node.first + leftCount, lb, lc);
+      Scan(node.first + leftCount, node.first + leftCount + rightCount, rb, rc);
+      addChildren(leftCount, lb, lc, rightCount, rb, rc, slack);
     };
 
     const bool exact = node.count <= kExactSplitMax;
     uint8_t order[kExactSplitMax];  // exact: the primitives in centroid order along best.axis
     Split best = exact ? FindExactSplit(node, order) : FindSplit(node, task.centroids, threads);
     // Spatial splits are tried where the object split leaves overlapping children (or
-    // found no plane at all), while the duplication budget lasts.
+    // found no plane at all), while the node has slots for more references.
     SpatialSplit spatial;
-    if (spatial_ && duplicatesLeft_ > 0) {
+    if (spatial_ && task.slack > 0) {
       const float overlap = best.axis >= 0 ? Intersection(best.left, best.right).SurfaceArea() : node.box.SurfaceArea();
       if (overlap > opt_.spatialOverlap * rootArea_) spatial = FindSpatialSplit(node);
     }
     const float leafCost = opt_.intersectionCost * float(node.count);
     if (node.count <= opt_.maxLeafSize && !(std::min(best.cost, spatial.cost) < leafCost)) return;
     if (spatial.cost < best.cost) {
-      uint32_t leftCount = 0, rightFirst = 0, rightCount = 0;
-      if (SplitSpatially(node, spatial, leftCount, rightFirst, rightCount))
-        return addScannedChildren(node.first, leftCount, rightFirst, rightCount);
+      uint32_t leftCount = 0, rightCount = 0;
+      if (SplitSpatially(node, spatial, task.slack, leftCount, rightCount))
+        return addScannedChildren(leftCount, rightCount, task.slack - (leftCount + rightCount - node.count));
     }
     const uint32_t end = node.first + node.count;
     if (best.axis < 0) {
@@ -387,18 +395,18 @@ class Builder {
       const int a = d.x >= d.y && d.x >= d.z ? 0 : (d.y >= d.z ? 1 : 2);
       const uint32_t mid = node.first + node.count / 2;
       std::nth_element(prims_.begin() + node.first, prims_.begin() + mid, prims_.begin() + end, CentroidLess{a});
-      return addScannedChildren(node.first, mid - node.first, mid, end - mid);
+      return addScannedChildren(mid - node.first, end - mid, task.slack);
     }
     if (exact) {
       // best.bin primitives, in centroid order along the axis, go left.
       BuildPrim sorted[kExactSplitMax];
       for (uint32_t k = 0; k < node.count; ++k) sorted[k] = prims_[node.first + order[k]];
       std::copy(sorted, sorted + node.count, prims_.begin() + node.first);
-      return addChildren(node.first, best.bin, best.left, {}, node.first + best.bin, node.count - best.bin, best.right, {});
+      return addChildren(best.bin, best.left, {}, node.count - best.bin, best.right, {}, task.slack);
     }
     Bounds3f leftCent, rightCent;
     const uint32_t mid = PartitionByBin(node.first, end, task.centroids, best, threads, leftCent, rightCent);
-    addChildren(node.first, mid - node.first, best.left, leftCent, mid, end - mid, best.right, rightCent);
+    addChildren(mid - node.first, best.left, leftCent, end - mid, best.right, rightCent, task.slack);
   }
 
   // Moves the primitives of [b, e) whose centroid bin along `axis` is below `bin` to the
@@ -592,13 +600,13 @@ class Builder {
     return best;
   }
 
-  // Performs a spatial split of `node`: its left references stay in place (there are
-  // at most as many), the right ones are appended to prims_. A straddling reference is
-  // split in two clipped halves, or "unsplit" — kept whole on one side — where that
-  // costs less (Stich et al. 2009, §4.3: compare A_L·N_L + A_R·N_R with the whole
-  // reference added to either box and dropped from the other count), and always when
-  // the duplication budget is spent. False if one side would be empty.
-  bool SplitSpatially(const BuildNode& node, const SpatialSplit& split, uint32_t& leftCount, uint32_t& rightFirst,
+  // Performs a spatial split of `node`: the left references, then the right ones, are
+  // written from node.first on. A straddling reference is split in two clipped halves,
+  // or "unsplit" — kept whole on one side — where that costs less (Stich et al. 2009,
+  // §4.3: compare A_L·N_L + A_R·N_R with the whole reference added to either box and
+  // dropped from the other count), and always once the node's `slack` free slots are
+  // used up. False if one side would be empty.
+  bool SplitSpatially(const BuildNode& node, const SpatialSplit& split, uint32_t slack, uint32_t& leftCount,
                       uint32_t& rightCount) {
     const int a = split.axis;
     const SpatialBins sb = BinsOf(node, a);
@@ -628,11 +636,11 @@ class Builder {
       Bounds3f wholeL = boxL, wholeR = boxR;
       wholeL.Extend(p.box);
       wholeR.Extend(p.box);
-      const float costSplit = duplicatesLeft_ > 0 ? boxL.SurfaceArea() * nl + boxR.SurfaceArea() * nr : inf;
+      const float costSplit = slack > 0 ? boxL.SurfaceArea() * nl + boxR.SurfaceArea() * nr : inf;
       const float costLeft = wholeL.SurfaceArea() * nl + boxR.SurfaceArea() * (nr - 1.0f);
       const float costRight = boxL.SurfaceArea() * (nl - 1.0f) + wholeR.SurfaceArea() * nr;
       if (costSplit <= costLeft && costSplit <= costRight) {
-        --duplicatesLeft_;
+        --slack;
         left.push_back({l, p.index});
         right.push_back({r, p.index});
       } else if (costLeft <= costRight) {
@@ -647,10 +655,9 @@ class Builder {
     }
     if (left.empty() || right.empty()) return false;
     std::copy(left.begin(), left.end(), prims_.begin() + node.first);
+    std::copy(right.begin(), right.end(), prims_.begin() + node.first + left.size());
     leftCount = uint32_t(left.size());
-    rightFirst = uint32_t(prims_.size());
     rightCount = uint32_t(right.size());
-    prims_.insert(prims_.end(), right.begin(), right.end());
     return true;
   }
 
@@ -658,6 +665,7 @@ class Builder {
   // depth-first order (so the triangle array follows the tree, as without splits).
   void CompactReferences() {
     HugeVector<BuildPrim> packed;
+    packed.reserve(prims_.size());
     std::vector<uint32_t> stack{0};
     while (!stack.empty()) {
       BuildNode& n = nodes_[stack.back()];
@@ -870,9 +878,8 @@ class Builder {
   BvhBuildOptions opt_;
   std::span<const glm::vec3> verts_;  // three per primitive (spatial splits)
   bool spatial_ = false;
-  uint64_t duplicatesLeft_ = 0;  // references spatial splits may still add
+  uint32_t duplicationBudget_ = 0;  // references spatial splits may add in all
   unsigned threads_ = 1;
-  uint32_t spatialCursor_ = 1;  // the next free node, with spatial splits
   float rootArea_ = 0.0f;
   Bounds3f rootCentroids_;
   HugeVector<BuildPrim> prims_;
