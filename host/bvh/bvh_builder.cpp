@@ -1,18 +1,20 @@
 // Binned SAH builder (Wald 2007, "On fast Construction of SAH-based Bounding Volume
 // Hierarchies"): primitives are binned by centroid along each axis, the split plane with
 // the lowest surface-area-heuristic cost wins, and a node becomes a leaf when splitting
-// would not pay. The tree is built into a temporary array and then flattened into the
-// depth-first skip-link layout; the builder is iterative, so a pathological input
-// cannot overflow the call stack.
+// would not pay; nodes of a few primitives are split exactly (every position in centroid
+// order). Optionally, planes that cut triangles compete too (spatial splits). The tree is
+// built into a temporary array, where every node's place follows from the tree itself,
+// by workers that hand each other subtrees, and then flattened into the depth-first
+// skip-link layout. The tree is the same for any thread count; the builder is iterative,
+// so a pathological input cannot overflow the call stack.
 #include <algorithm>
-#include <array>
 #include <atomic>
-#include <condition_variable>
-#include <mutex>
-#include <thread>
 #include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <limits>
+#include <mutex>
+#include <thread>
 
 #include "bvh/bvh.h"
 #include "util/float4.h"
@@ -176,7 +178,9 @@ class Builder {
     const uint32_t n = uint32_t(bounds.size());
     duplicationBudget_ =
         spatial_ ? uint32_t(std::min<uint64_t>(uint64_t(double(o.maxDuplication) * double(n)), (1u << 28) - 1 - n)) : 0;
-    threads_ = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+    // Below kShareNode primitives no subtree is ever handed over: one thread, and no
+    // time spent starting others.
+    threads_ = n < kShareNode ? 1u : o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
     // The primitives, with the root's box and centroid bounds, on all threads; the
     // budget's slots after them stay untouched until used.
     prims_.resize(n + duplicationBudget_);
@@ -733,13 +737,23 @@ class Builder {
     uint32_t leaves = 0, maxLeafPrims = 0, depth = 0;
   };
 
+  // What the flat layout needs to know of an inner node: its subtree's size, which places
+  // the second child, and which child is nearer for rays going which way.
+  struct FlatInfo {
+    HugeVector<uint32_t> size;
+    // Bits 0-1: the axis along which the children's centres differ most; bit 2: set if
+    // the second child's centre is below the first's on it. Rays whose direction is
+    // negative on that axis visit the child with the lower centre first.
+    HugeVector<uint8_t> near;
+  };
+
   // One post-order walk of the subtree at `root` (nodes_ has unused gaps, so only a walk
-  // finds the nodes): subtree sizes, which place second children in the flat layout, and
-  // the statistics, summed in this fixed order. A node other than `root` for which
-  // walked(node) gives statistics was walked before: its size is set, its statistics
-  // are added as they are.
+  // finds the nodes): FlatInfo and the statistics, summed in this fixed order. A node
+  // other than `root` for which walked(node) gives statistics was walked before: its
+  // FlatInfo is set, its statistics are added as they are.
   template <class Walked>
-  WalkStats Walk(uint32_t root, HugeVector<uint32_t>& size, Walked&& walked) const {
+  WalkStats Walk(uint32_t root, FlatInfo& info, Walked&& walked) const {
+    HugeVector<uint32_t>& size = info.size;
     WalkStats st;
     struct Visit {
       uint32_t node, depth;
@@ -772,6 +786,10 @@ class Builder {
         continue;
       }
       st.sahCost += rel * opt_.traversalCost;
+      const glm::vec3 d = nodes_[n.child + 1].box.Center() - nodes_[n.child].box.Center();
+      const glm::vec3 ad = glm::abs(d);
+      const int axis = ad.x >= ad.y && ad.x >= ad.z ? 0 : (ad.y >= ad.z ? 1 : 2);
+      info.near[v.node] = uint8_t(axis | (d[axis] < 0.0f ? 4 : 0));
       walk.push_back({v.node, v.depth, true});
       walk.push_back({n.child + 1, v.depth + 1, false});
       walk.push_back({n.child, v.depth + 1, false});
@@ -795,17 +813,19 @@ class Builder {
       if (i != 0 && n.count < kWalkSplit) cut.push_back({i, uint32_t(cut.size())});
       else if (!n.IsLeaf()) stack.insert(stack.end(), {n.child + 1, n.child});
     }
-    HugeVector<uint32_t> size(nodes_.size());
+    FlatInfo info;
+    info.size.resize(nodes_.size());
+    info.near.resize(nodes_.size());
     std::vector<WalkStats> cutStats(cut.size());
     ParallelFor(cut.size(), threads, [&](size_t k) {
-      cutStats[k] = Walk(cut[k].first, size, [](uint32_t) -> const WalkStats* { return nullptr; });
+      cutStats[k] = Walk(cut[k].first, info, [](uint32_t) -> const WalkStats* { return nullptr; });
     });
     std::sort(cut.begin(), cut.end());
-    const WalkStats top = Walk(0, size, [&](uint32_t node) -> const WalkStats* {
+    const WalkStats top = Walk(0, info, [&](uint32_t node) -> const WalkStats* {
       auto it = std::lower_bound(cut.begin(), cut.end(), std::make_pair(node, 0u));
       return it != cut.end() && it->first == node ? &cutStats[it->second] : nullptr;
     });
-    const uint32_t count = size[0];
+    const uint32_t count = info.size[0];
     BvhStats& st = bvh.stats;
     st.nodes = count;
     st.references = uint32_t(prims_.size());
@@ -827,10 +847,10 @@ class Builder {
     const uint32_t spillBelow = threads > 1 ? std::max(4096u, count / (16 * threads)) : 0u;
     std::vector<FlatItem> spilled;
     for (uint32_t octant = 0; octant < bvh.copies; ++octant)
-      FlattenSubtree(size, {0, octant * count, shader::kInvalidIndex, octant}, spillBelow, spilled, bvh);
+      FlattenSubtree(info, {0, octant * count, shader::kInvalidIndex, octant}, spillBelow, spilled, bvh);
     ParallelFor(spilled.size(), threads, [&](size_t k) {
       std::vector<FlatItem> none;
-      FlattenSubtree(size, spilled[k], 0, none, bvh);
+      FlattenSubtree(info, spilled[k], 0, none, bvh);
     });
     return bvh;
   }
@@ -845,8 +865,9 @@ class Builder {
   // near-first for rays whose direction signs are the octant's (bit 0: x < 0, bit 1:
   // y < 0, bit 2: z < 0). Skip links are absolute. Subtrees of fewer than `spillBelow`
   // nodes (below the item itself) go to `spilled` instead, to be written later.
-  void FlattenSubtree(const HugeVector<uint32_t>& size, FlatItem item, uint32_t spillBelow,
-                      std::vector<FlatItem>& spilled, Bvh& bvh) const {
+  void FlattenSubtree(const FlatInfo& info, FlatItem item, uint32_t spillBelow, std::vector<FlatItem>& spilled,
+                      Bvh& bvh) const {
+    const HugeVector<uint32_t>& size = info.size;
     std::vector<FlatItem> stack{item};
     while (!stack.empty()) {
       FlatItem it = stack.back();
@@ -863,11 +884,8 @@ class Builder {
       out.leaf = 0;
       // Near child first along the axis where the children's centres differ most.
       uint32_t first = n.child, second = n.child + 1;
-      glm::vec3 d = nodes_[second].box.Center() - nodes_[first].box.Center();
-      glm::vec3 ad = glm::abs(d);
-      int axis = ad.x >= ad.y && ad.x >= ad.z ? 0 : (ad.y >= ad.z ? 1 : 2);
-      bool negative = (it.octant >> axis) & 1u;
-      if ((d[axis] < 0.0f) != negative) std::swap(first, second);
+      const uint32_t near = info.near[it.node];
+      if (((near >> 2) & 1u) != ((it.octant >> (near & 3u)) & 1u)) std::swap(first, second);
       const uint32_t secondFlat = it.flat + 1 + size[first];
       for (const FlatItem& child : {FlatItem{second, secondFlat, it.skip, it.octant},
                                     FlatItem{first, it.flat + 1, secondFlat, it.octant}})
