@@ -144,29 +144,45 @@ Bounds3f Intersection(const Bounds3f& a, const Bounds3f& b) {
   return r;
 }
 
-// Bounds of the part of triangle v[0..2] with lo <= p[axis] <= hi: the vertices inside
-// the slab and the points where edges cross its planes. Rounding in the crossings could
-// shave the box, so it is padded by a few ulps of its coordinates; the caller intersects
-// it with the reference's box, which stays conservative.
-Bounds3f ClipTriangle(const glm::vec3 v[3], int axis, float lo, float hi) {
-  Bounds3f b;
+// A box in lanes 0-2 of two vectors.
+struct Box4 {
+  Float4 lo, hi;
+  bool Empty() const { return (Mask4(lo <= hi) & 7) != 7; }
+};
+
+// The box of the part of triangle v[0..2] (x, y, z in lanes 0-2) with lo <= p[axis] <=
+// hi: the vertices inside the slab and the points where edges cross its planes (empty if
+// nothing is inside). The crossings are rounded: a caller that needs a conservative box
+// pads it (Conservative).
+inline Box4 ClipTriangle(const Float4 v[3], int axis, float lo, float hi) {
+  Float4 lo4 = Splat4(std::numeric_limits<float>::infinity());
+  Float4 hi4 = Splat4(-std::numeric_limits<float>::infinity());
+  // A crossing lies on its plane exactly: its `axis` lane is replaced by a mask (writing
+  // one lane of a register through memory would stall on the reload).
+  const Int4 onAxis = Int4{0, 1, 2, 3} == Int4{axis, axis, axis, axis};
   for (int i = 0; i < 3; ++i) {
-    const glm::vec3 p = v[i], q = v[(i + 1) % 3];
+    const Float4 p = v[i], q = v[(i + 1) % 3];
     const float pa = p[axis], qa = q[axis];
-    if (pa >= lo && pa <= hi) b.Extend(p);
+    if (pa >= lo && pa <= hi) lo4 = Min4(lo4, p), hi4 = Max4(hi4, p);
     for (float plane : {lo, hi}) {
       if ((pa < plane && qa > plane) || (pa > plane && qa < plane)) {
-        glm::vec3 x = p + (q - p) * ((plane - pa) / (qa - pa));
-        x[axis] = plane;
-        b.Extend(x);
+        const Float4 x = onAxis ? Splat4(plane) : p + (q - p) * Splat4((plane - pa) / (qa - pa));
+        lo4 = Min4(lo4, x), hi4 = Max4(hi4, x);
       }
     }
   }
+  return {lo4, hi4};
+}
+
+// A clipped part's box padded by a few ulps of its coordinates, so that rounding in the
+// crossings cannot shave it, then cut to the reference's box (which stays conservative).
+Bounds3f Conservative(const Box4& part, const Bounds3f& reference) {
+  Bounds3f b{{part.lo[0], part.lo[1], part.lo[2]}, {part.hi[0], part.hi[1], part.hi[2]}};
   if (b.Empty()) return b;
   const glm::vec3 pad = (glm::abs(b.lo) + glm::abs(b.hi)) * 4e-7f + glm::vec3(1e-30f);
   b.lo -= pad;
   b.hi += pad;
-  return b;
+  return Intersection(b, reference);
 }
 
 class Builder {
@@ -558,8 +574,11 @@ class Builder {
     return {node.box.lo[axis], float(opt_.bins) / extent, extent / float(opt_.bins), opt_.bins};
   }
 
-  void Vertices(uint32_t prim, glm::vec3 v[3]) const {
-    for (int k = 0; k < 3; ++k) v[k] = verts_[3 * size_t(prim) + k];
+  void Vertices(uint32_t prim, Float4 v[3]) const {
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3& p = verts_[3 * size_t(prim) + k];
+      v[k] = Float4{p.x, p.y, p.z, 0.0f};
+    }
   }
 
   // Every reference is counted where it enters (its first bin) and where it leaves (its
@@ -588,11 +607,15 @@ class Builder {
           bins[b0].Extend(Load4(&p.box.lo.x), Load4(&p.box.hi.x));
           continue;
         }
-        glm::vec3 v[3];
+        // The part in each bin, cut to the reference's box. These boxes only estimate
+        // costs (the split itself clips conservatively), so they are not padded.
+        Float4 v[3];
         Vertices(p.index, v);
+        const Float4 refLo = Load4(&p.box.lo.x), refHi = Load4(&p.box.hi.x);
         for (uint32_t b = b0; b <= b1; ++b) {
-          Bounds3f part = Intersection(ClipTriangle(v, a, b == b0 ? -inf : sb.Plane(b), b == b1 ? inf : sb.Plane(b + 1)), p.box);
-          if (!part.Empty()) bins[b].Extend(Float4{part.lo.x, part.lo.y, part.lo.z, 0.0f}, Float4{part.hi.x, part.hi.y, part.hi.z, 0.0f});
+          Box4 part = ClipTriangle(v, a, b == b0 ? -inf : sb.Plane(b), b == b1 ? inf : sb.Plane(b + 1));
+          part = {Max4(part.lo, refLo), Min4(part.hi, refHi)};
+          if (!part.Empty()) bins[b].Extend(part.lo, part.hi);
         }
       }
       SweepBins(
@@ -629,10 +652,10 @@ class Builder {
         right.push_back(p);
         continue;
       }
-      glm::vec3 v[3];
+      Float4 v[3];
       Vertices(p.index, v);
-      const Bounds3f l = Intersection(ClipTriangle(v, a, -inf, plane), p.box);
-      const Bounds3f r = Intersection(ClipTriangle(v, a, plane, inf), p.box);
+      const Bounds3f l = Conservative(ClipTriangle(v, a, -inf, plane), p.box);
+      const Bounds3f r = Conservative(ClipTriangle(v, a, plane, inf), p.box);
       if (l.Empty() || r.Empty()) {  // all on one side after all
         (l.Empty() ? right : left).push_back(p);
         continue;

@@ -32,6 +32,14 @@ inline Float4 Max4(Float4 a, Float4 b) { return Float4(_mm_max_ps(__m128(a), __m
 inline Float4 Min4(Float4 a, Float4 b) { return a < b ? a : b; }
 inline Float4 Max4(Float4 a, Float4 b) { return a > b ? a : b; }
 #endif
+// One bit per lane of a comparison's result (lane k -> bit k).
+inline int Mask4(Int4 m) {
+#if defined(__SSE__)
+  return _mm_movemask_ps(__m128(m));
+#else
+  return (m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8);
+#endif
+}
 inline Float4 SwapHalves4(Float4 v) {
 #if defined(__clang__)
   return __builtin_shufflevector(v, v, 2, 3, 0, 1);
