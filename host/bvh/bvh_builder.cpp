@@ -865,17 +865,49 @@ class Builder {
     });
     bvh.copies = opt_.directionCopies && uint64_t(count) * sizeof(shader::BvhNode) * 8 <= opt_.maxCopiesBytes ? 8 : 1;
     bvh.nodes.resize(size_t(count) * bvh.copies);
-    // Each copy's top levels are written here; below `spillBelow` nodes, subtrees are
-    // set aside and written by all threads (they fill disjoint ranges of bvh.nodes).
+    // Copy 0's top levels are written here; below `spillBelow` nodes, subtrees are set
+    // aside and written by all threads (they fill disjoint ranges of bvh.nodes).
     const uint32_t spillBelow = threads > 1 ? std::max(4096u, count / (16 * threads)) : 0u;
     std::vector<FlatItem> spilled;
-    for (uint32_t octant = 0; octant < bvh.copies; ++octant)
-      FlattenSubtree(info, {0, octant * count, shader::kInvalidIndex, octant}, spillBelow, spilled, bvh);
+    HugeVector<uint8_t> axis(bvh.copies > 1 ? count : 0);
+    FlattenSubtree(info, {0, 0, shader::kInvalidIndex, 0}, spillBelow, spilled, axis, bvh);
     ParallelFor(spilled.size(), threads, [&](size_t k) {
       std::vector<FlatItem> none;
-      FlattenSubtree(info, spilled[k], 0, none, bvh);
+      FlattenSubtree(info, spilled[k], 0, none, axis, bvh);
     });
+    // The other copies follow from copy 0, read in order from its compact array rather
+    // than from the build nodes spread over nodes_.
+    ParallelFor(bvh.copies - 1, threads, [&](size_t k) { DeriveCopy(uint32_t(k + 1), count, axis, bvh); });
     return bvh;
+  }
+
+  // Writes copy `octant` of the tree from copy 0 (octant 0, with each inner node's axis
+  // of child order in `axis`): a node's children are swapped where the octant's direction
+  // sign on that axis is negative. Skip links are absolute.
+  static void DeriveCopy(uint32_t octant, uint32_t count, const HugeVector<uint8_t>& axis, Bvh& bvh) {
+    const shader::BvhNode* from = bvh.nodes.data();
+    shader::BvhNode* to = bvh.nodes.data() + size_t(octant) * count;
+    const uint32_t base = octant * count, none = shader::kInvalidIndex;
+    struct Item {
+      uint32_t from, to, skip;  // skip: relative to the copy, or none
+    };
+    std::vector<Item> stack{{0, 0, none}};
+    while (!stack.empty()) {
+      const Item it = stack.back();
+      stack.pop_back();
+      const shader::BvhNode& n = from[it.from];
+      shader::BvhNode& out = to[it.to];
+      out = n;
+      out.skip = it.skip == none ? none : base + it.skip;
+      if (IsLeaf(n)) continue;
+      // Copy 0's children and their subtrees' sizes, from the skip links.
+      const uint32_t a = it.from + 1, b = from[a].skip, end = n.skip == none ? count : n.skip;
+      const bool swap = (octant >> axis[it.from]) & 1u;
+      const uint32_t first = swap ? b : a, second = swap ? a : b, firstSize = swap ? end - b : b - a;
+      const uint32_t secondTo = it.to + 1 + firstSize;
+      stack.push_back({second, secondTo, it.skip});
+      stack.push_back({first, it.to + 1, secondTo});
+    }
   }
 
   // A subtree to write: build node `node` goes to bvh.nodes[flat] with skip link `skip`,
@@ -887,9 +919,10 @@ class Builder {
   // Writes the subtree of `item` depth first, each inner node's children ordered
   // near-first for rays whose direction signs are the octant's (bit 0: x < 0, bit 1:
   // y < 0, bit 2: z < 0). Skip links are absolute. Subtrees of fewer than `spillBelow`
-  // nodes (below the item itself) go to `spilled` instead, to be written later.
+  // nodes (below the item itself) go to `spilled` instead, to be written later. `axis`,
+  // unless empty, receives each inner node's axis of child order at its flat index.
   void FlattenSubtree(const FlatInfo& info, FlatItem item, uint32_t spillBelow, std::vector<FlatItem>& spilled,
-                      Bvh& bvh) const {
+                      HugeVector<uint8_t>& axis, Bvh& bvh) const {
     const HugeVector<uint32_t>& size = info.size;
     std::vector<FlatItem> stack{item};
     while (!stack.empty()) {
@@ -909,6 +942,7 @@ class Builder {
       uint32_t first = n.child, second = n.child + 1;
       const uint32_t near = info.near[it.node];
       if (((near >> 2) & 1u) != ((it.octant >> (near & 3u)) & 1u)) std::swap(first, second);
+      if (!axis.empty()) axis[it.flat] = uint8_t(near & 3u);
       const uint32_t secondFlat = it.flat + 1 + size[first];
       for (const FlatItem& child : {FlatItem{second, secondFlat, it.skip, it.octant},
                                     FlatItem{first, it.flat + 1, secondFlat, it.octant}})
