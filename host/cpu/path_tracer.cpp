@@ -35,7 +35,9 @@ CpuRenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, c
   std::atomic<uint32_t> nextRow{0}, rowsDone{0};
   std::vector<SampleStats> perThread(threads);
   auto worker = [&](unsigned id) {
-    SampleStats& st = perThread[id];
+    // Counted locally: the threads' entries of perThread share a cache line, and
+    // updating them per sample would bounce it between cores.
+    SampleStats st;
     for (uint32_t y; (y = nextRow.fetch_add(1)) < params.height;) {
       for (uint32_t x = 0; x < params.width; ++x) {
         glm::dvec3 sum(0.0), sumSq(0.0);
@@ -57,6 +59,7 @@ CpuRenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, c
       }
       rowsDone.fetch_add(1);
     }
+    perThread[id] = st;
   };
 
   auto t0 = std::chrono::steady_clock::now();
