@@ -1,6 +1,6 @@
 // Bounding volume hierarchy over triangles: a binned-SAH builder (bvh_builder.cpp) and the
-// flattened depth-first layout with skip links that both renderers traverse
-// (see shader::BvhNode in shaders/shared/layout.h).
+// flattened depth-first layout with skip links that both renderers traverse (flatten.cpp;
+// see shader::BvhNode in shaders/shared/layout.h).
 #pragma once
 
 #include <cstdint>

@@ -3,12 +3,11 @@
 // the lowest surface-area-heuristic cost wins, and a node becomes a leaf when splitting
 // would not pay; nodes of a few primitives are split exactly (every position in centroid
 // order). Optionally, planes that cut triangles compete too (spatial splits). The tree is
-// built into a temporary array, where every node's place follows from the tree itself,
-// by workers that hand each other subtrees, and then flattened into the depth-first
-// skip-link layout. The tree is the same for any thread count; the builder is iterative,
-// so a pathological input cannot overflow the call stack.
+// built into a BuildTree (build_tree.h), where every node's place follows from the tree
+// itself, by workers that hand each other subtrees, and then laid out by flatten.cpp.
+// The tree is the same for any thread count; the builder is iterative, so a pathological
+// input cannot overflow the call stack.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstddef>
@@ -16,27 +15,12 @@
 #include <mutex>
 #include <thread>
 
-#include "bvh/bvh.h"
-#include "util/float4.h"
-#include "util/huge_pages.h"
+#include "bvh/build_tree.h"
 #include "util/error.h"
+#include "util/parallel.h"
 
 namespace vkpt {
 namespace {
-
-// 32 bytes, laid out so that 16-byte loads at box.lo and box.hi give x, y, z in lanes 0-2
-// (lane 3 holds the next field and is ignored). The centroid is not stored: it is
-// (lo + hi) / 2, computed where needed exactly as Bounds3f::Center does; every pass over
-// the primitives then moves a fifth less memory.
-struct BuildPrim {
-  Bounds3f box;
-  uint32_t index;
-  uint32_t pad;  // left uninitialised in bulk fills: nothing reads it
-
-  float Centroid(int axis) const { return (box.lo[axis] + box.hi[axis]) * 0.5f; }
-  Float4 Centroid4() const { return (Load4(&box.lo.x) + Load4(&box.hi.x)) * Splat4(0.5f); }
-};
-static_assert(sizeof(BuildPrim) == 32 && offsetof(Bounds3f, hi) == 12);
 
 // Orders primitives by centroid along `axis`, ties by index (so the order is unique).
 struct CentroidLess {
@@ -46,17 +30,6 @@ struct CentroidLess {
     return cp < cq || (cp == cq && p.index < q.index);
   }
 };
-
-// 36 bytes. The node array is allocated once for the largest possible tree and
-// filled in place, so its elements are left uninitialised until a parent writes them.
-struct BuildNode {
-  Bounds3f box;
-  uint32_t first, count;  // the node's primitive range in prims_
-  uint32_t child;         // inner: the first child (the second follows it); leaf: 0
-                          // (the root is nobody's child)
-  bool IsLeaf() const { return child == 0; }
-};
-static_assert(sizeof(BuildNode) == 36);
 
 // A bin's box in lanes 0-2 of lo and hi; lane 3 is whatever the primitives carried.
 struct Bin {
@@ -277,7 +250,7 @@ class Builder {
     worker();
     for (auto& t : pool) t.join();
     if (spatial_) CompactReferences();
-    return Flatten();
+    return FlattenTree({std::move(nodes_), std::move(prims_), rootArea_}, opt_, threads_);
   }
 
  private:
@@ -311,32 +284,6 @@ class Builder {
                        parentArea;
       consider(b, cost, acc, right[b]);
     }
-  }
-
-  // Runs f(begin, end, chunk) over [first, first + count) split into `threads` chunks.
-  template <class F>
-  static void ForChunks(uint32_t first, uint32_t count, unsigned threads, F&& f) {
-    std::vector<std::thread> pool;
-    const uint32_t per = (count + threads - 1) / threads;
-    for (unsigned t = 1; t < threads; ++t) {
-      uint32_t b = first + std::min(count, t * per), e = first + std::min(count, (t + 1) * per);
-      pool.emplace_back([&f, b, e, t] { f(b, e, t); });
-    }
-    f(first, first + std::min(count, per), 0u);
-    for (auto& th : pool) th.join();
-  }
-
-  // Runs f(k) for k in [0, n) on up to `threads` threads, each taking the next k.
-  template <class F>
-  static void ParallelFor(size_t n, unsigned threads, F&& f) {
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-      for (size_t k; (k = next.fetch_add(1)) < n;) f(k);
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::min<size_t>(threads, n); ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
   }
 
   // The box of primitives [b, e) and their centroids' bounds, extended into box and cent.
@@ -752,202 +699,6 @@ class Builder {
     // A flat parent (zero area) makes every cost NaN or ∞: fall back to the median split.
     if (!(parentArea > 0.0f)) best.axis = -1, best.cost = std::numeric_limits<float>::infinity();
     return best;
-  }
-
-  // What a walk over a subtree finds; depth counts edges from the subtree's root.
-  struct WalkStats {
-    double sahCost = 0.0;
-    uint32_t leaves = 0, maxLeafPrims = 0, depth = 0;
-  };
-
-  // What the flat layout needs to know of an inner node: its subtree's size, which places
-  // the second child, and which child is nearer for rays going which way.
-  struct FlatInfo {
-    HugeVector<uint32_t> size;
-    // Bits 0-1: the axis along which the children's centres differ most; bit 2: set if
-    // the second child's centre is below the first's on it. Rays whose direction is
-    // negative on that axis visit the child with the lower centre first.
-    HugeVector<uint8_t> near;
-  };
-
-  // One post-order walk of the subtree at `root` (nodes_ has unused gaps, so only a walk
-  // finds the nodes): FlatInfo and the statistics, summed in this fixed order. A node
-  // other than `root` for which walked(node) gives statistics was walked before: its
-  // FlatInfo is set, its statistics are added as they are.
-  template <class Walked>
-  WalkStats Walk(uint32_t root, FlatInfo& info, Walked&& walked) const {
-    HugeVector<uint32_t>& size = info.size;
-    WalkStats st;
-    struct Visit {
-      uint32_t node, depth;
-      bool childrenDone;
-    };
-    std::vector<Visit> walk{{root, 0, false}};
-    while (!walk.empty()) {
-      const Visit v = walk.back();
-      walk.pop_back();
-      const BuildNode& n = nodes_[v.node];
-      if (v.childrenDone) {
-        size[v.node] = 1 + size[n.child] + size[n.child + 1];
-        continue;
-      }
-      if (const WalkStats* w = v.node != root ? walked(v.node) : nullptr) {
-        st.sahCost += w->sahCost;
-        st.leaves += w->leaves;
-        st.maxLeafPrims = std::max(st.maxLeafPrims, w->maxLeafPrims);
-        st.depth = std::max(st.depth, v.depth + w->depth);
-        continue;
-      }
-      // Relative area; a flat scene (root area 0) counts every node as 1.
-      const double rel = rootArea_ > 0.0f ? double(n.box.SurfaceArea()) / rootArea_ : 1.0;
-      st.depth = std::max(st.depth, v.depth);
-      if (n.IsLeaf()) {
-        size[v.node] = 1;
-        ++st.leaves;
-        st.maxLeafPrims = std::max(st.maxLeafPrims, n.count);
-        st.sahCost += rel * opt_.intersectionCost * n.count;
-        continue;
-      }
-      st.sahCost += rel * opt_.traversalCost;
-      const glm::vec3 d = nodes_[n.child + 1].box.Center() - nodes_[n.child].box.Center();
-      const glm::vec3 ad = glm::abs(d);
-      const int axis = ad.x >= ad.y && ad.x >= ad.z ? 0 : (ad.y >= ad.z ? 1 : 2);
-      info.near[v.node] = uint8_t(axis | (d[axis] < 0.0f ? 4 : 0));
-      walk.push_back({v.node, v.depth, true});
-      walk.push_back({n.child + 1, v.depth + 1, false});
-      walk.push_back({n.child, v.depth + 1, false});
-    }
-    return st;
-  }
-
-  Bvh Flatten() const {
-    Bvh bvh;
-    const unsigned threads = nodes_[0].count < 16384 ? 1u : threads_;
-    // Subtrees below kWalkSplit primitives (under a larger parent) are walked first, on
-    // all threads, then the top of the tree. The cut does not depend on the thread
-    // count, so neither does the order in which the cost is summed: it is the same to
-    // the last bit.
-    constexpr uint32_t kWalkSplit = 4096;
-    std::vector<std::pair<uint32_t, uint32_t>> cut;  // (node, index into cutStats)
-    for (std::vector<uint32_t> stack{0}; !stack.empty();) {
-      const uint32_t i = stack.back();
-      stack.pop_back();
-      const BuildNode& n = nodes_[i];
-      if (i != 0 && n.count < kWalkSplit) cut.push_back({i, uint32_t(cut.size())});
-      else if (!n.IsLeaf()) stack.insert(stack.end(), {n.child + 1, n.child});
-    }
-    FlatInfo info;
-    info.size.resize(nodes_.size());
-    info.near.resize(nodes_.size());
-    std::vector<WalkStats> cutStats(cut.size());
-    ParallelFor(cut.size(), threads, [&](size_t k) {
-      cutStats[k] = Walk(cut[k].first, info, [](uint32_t) -> const WalkStats* { return nullptr; });
-    });
-    std::sort(cut.begin(), cut.end());
-    const WalkStats top = Walk(0, info, [&](uint32_t node) -> const WalkStats* {
-      auto it = std::lower_bound(cut.begin(), cut.end(), std::make_pair(node, 0u));
-      return it != cut.end() && it->first == node ? &cutStats[it->second] : nullptr;
-    });
-    const uint32_t count = info.size[0];
-    BvhStats& st = bvh.stats;
-    st.nodes = count;
-    st.references = uint32_t(prims_.size());
-    st.leaves = top.leaves;
-    st.maxLeafPrims = top.maxLeafPrims;
-    st.depth = top.depth;
-    st.sahCost = top.sahCost;
-
-    // Partitioning kept every subtree's primitives contiguous in prims_, so a leaf's
-    // range [first, first + count) is valid in every child order.
-    bvh.primOrder.resize(prims_.size());
-    ForChunks(0, uint32_t(prims_.size()), threads, [&](uint32_t b, uint32_t e, unsigned) {
-      for (uint32_t i = b; i < e; ++i) bvh.primOrder[i] = prims_[i].index;
-    });
-    bvh.copies = opt_.directionCopies && uint64_t(count) * sizeof(shader::BvhNode) * 8 <= opt_.maxCopiesBytes ? 8 : 1;
-    bvh.nodes.resize(size_t(count) * bvh.copies);
-    // Copy 0's top levels are written here; below `spillBelow` nodes, subtrees are set
-    // aside and written by all threads (they fill disjoint ranges of bvh.nodes).
-    const uint32_t spillBelow = threads > 1 ? std::max(4096u, count / (16 * threads)) : 0u;
-    std::vector<FlatItem> spilled;
-    HugeVector<uint8_t> axis(bvh.copies > 1 ? count : 0);
-    FlattenSubtree(info, {0, 0, shader::kInvalidIndex, 0}, spillBelow, spilled, axis, bvh);
-    ParallelFor(spilled.size(), threads, [&](size_t k) {
-      std::vector<FlatItem> none;
-      FlattenSubtree(info, spilled[k], 0, none, axis, bvh);
-    });
-    // The other copies follow from copy 0, read in order from its compact array rather
-    // than from the build nodes spread over nodes_.
-    ParallelFor(bvh.copies - 1, threads, [&](size_t k) { DeriveCopy(uint32_t(k + 1), count, axis, bvh); });
-    return bvh;
-  }
-
-  // Writes copy `octant` of the tree from copy 0 (octant 0, with each inner node's axis
-  // of child order in `axis`): a node's children are swapped where the octant's direction
-  // sign on that axis is negative. Skip links are absolute.
-  static void DeriveCopy(uint32_t octant, uint32_t count, const HugeVector<uint8_t>& axis, Bvh& bvh) {
-    const shader::BvhNode* from = bvh.nodes.data();
-    shader::BvhNode* to = bvh.nodes.data() + size_t(octant) * count;
-    const uint32_t base = octant * count, none = shader::kInvalidIndex;
-    struct Item {
-      uint32_t from, to, skip;  // skip: relative to the copy, or none
-    };
-    std::vector<Item> stack{{0, 0, none}};
-    while (!stack.empty()) {
-      const Item it = stack.back();
-      stack.pop_back();
-      const shader::BvhNode& n = from[it.from];
-      shader::BvhNode& out = to[it.to];
-      out = n;
-      out.skip = it.skip == none ? none : base + it.skip;
-      if (IsLeaf(n)) continue;
-      // Copy 0's children and their subtrees' sizes, from the skip links.
-      const uint32_t a = it.from + 1, b = from[a].skip, end = n.skip == none ? count : n.skip;
-      const bool swap = (octant >> axis[it.from]) & 1u;
-      const uint32_t first = swap ? b : a, second = swap ? a : b, firstSize = swap ? end - b : b - a;
-      const uint32_t secondTo = it.to + 1 + firstSize;
-      stack.push_back({second, secondTo, it.skip});
-      stack.push_back({first, it.to + 1, secondTo});
-    }
-  }
-
-  // A subtree to write: build node `node` goes to bvh.nodes[flat] with skip link `skip`,
-  // in copy `octant`.
-  struct FlatItem {
-    uint32_t node, flat, skip, octant;
-  };
-
-  // Writes the subtree of `item` depth first, each inner node's children ordered
-  // near-first for rays whose direction signs are the octant's (bit 0: x < 0, bit 1:
-  // y < 0, bit 2: z < 0). Skip links are absolute. Subtrees of fewer than `spillBelow`
-  // nodes (below the item itself) go to `spilled` instead, to be written later. `axis`,
-  // unless empty, receives each inner node's axis of child order at its flat index.
-  void FlattenSubtree(const FlatInfo& info, FlatItem item, uint32_t spillBelow, std::vector<FlatItem>& spilled,
-                      HugeVector<uint8_t>& axis, Bvh& bvh) const {
-    const HugeVector<uint32_t>& size = info.size;
-    std::vector<FlatItem> stack{item};
-    while (!stack.empty()) {
-      FlatItem it = stack.back();
-      stack.pop_back();
-      const BuildNode& n = nodes_[it.node];
-      shader::BvhNode& out = bvh.nodes[it.flat];
-      out.lo = n.box.lo;
-      out.hi = n.box.hi;
-      out.skip = it.skip;
-      if (n.IsLeaf()) {
-        out.leaf = (n.first << 4) | n.count;
-        continue;
-      }
-      out.leaf = 0;
-      // Near child first along the axis where the children's centres differ most.
-      uint32_t first = n.child, second = n.child + 1;
-      const uint32_t near = info.near[it.node];
-      if (((near >> 2) & 1u) != ((it.octant >> (near & 3u)) & 1u)) std::swap(first, second);
-      if (!axis.empty()) axis[it.flat] = uint8_t(near & 3u);
-      const uint32_t secondFlat = it.flat + 1 + size[first];
-      for (const FlatItem& child : {FlatItem{second, secondFlat, it.skip, it.octant},
-                                    FlatItem{first, it.flat + 1, secondFlat, it.octant}})
-        (size[child.node] < spillBelow ? spilled : stack).push_back(child);
-    }
   }
 
   BvhBuildOptions opt_;

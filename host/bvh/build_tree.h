@@ -1,0 +1,51 @@
+// The BVH as the builder leaves it (bvh_builder.cpp), before it is laid out for the
+// renderers (flatten.cpp): nodes in an array with unused gaps, each node's primitives a
+// range of the primitive array. Internal to host/bvh/.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "bvh/bvh.h"
+#include "util/bounds.h"
+#include "util/float4.h"
+#include "util/huge_pages.h"
+
+namespace vkpt {
+
+// 32 bytes, laid out so that 16-byte loads at box.lo and box.hi give x, y, z in lanes 0-2
+// (lane 3 holds the next field and is ignored). The centroid is not stored: it is
+// (lo + hi) / 2, computed where needed exactly as Bounds3f::Center does; every pass over
+// the primitives then moves a fifth less memory.
+struct BuildPrim {
+  Bounds3f box;
+  uint32_t index;
+  uint32_t pad;  // left uninitialised in bulk fills: nothing reads it
+
+  float Centroid(int axis) const { return (box.lo[axis] + box.hi[axis]) * 0.5f; }
+  Float4 Centroid4() const { return (Load4(&box.lo.x) + Load4(&box.hi.x)) * Splat4(0.5f); }
+};
+static_assert(sizeof(BuildPrim) == 32 && offsetof(Bounds3f, hi) == 12);
+
+// 36 bytes. The node array is allocated once for the largest possible tree and
+// filled in place, so its elements are left uninitialised until a parent writes them.
+struct BuildNode {
+  Bounds3f box;
+  uint32_t first, count;  // the node's primitive range in the prims array
+  uint32_t child;         // inner: the first child (the second follows it); leaf: 0
+                          // (the root is nobody's child)
+  bool IsLeaf() const { return child == 0; }
+};
+static_assert(sizeof(BuildNode) == 36);
+
+struct BuildTree {
+  HugeVector<BuildNode> nodes;  // the root at 0; only nodes reachable from it are valid
+  HugeVector<BuildPrim> prims;  // leaves' ranges index this; BuildPrim::index is the input's
+  float rootArea = 0.0f;        // the root box's surface area
+};
+
+// Lays the tree out as a Bvh (the flattened skip-link copies) with its statistics, on up
+// to `threads` threads; the result does not depend on the thread count.
+Bvh FlattenTree(const BuildTree& tree, const BvhBuildOptions& options, unsigned threads);
+
+}  // namespace vkpt
