@@ -171,6 +171,8 @@ int Run(const Options& o) {
   bvhOptions.maxLeafSize = o.leafSize;
   bvhOptions.spatialSplits = o.spatialSplits;
   bvhOptions.threads = o.threads;
+  // The direction-ordered copies are for the shader; the CPU walks its own layout.
+  bvhOptions.directionCopies = ctx != nullptr;
   RenderScene rs = PrepareRenderScene(scene, bvhOptions, !ctx || o.compare);
 
   if (o.verbose) PrintLoadReport(scene, rs, cam, camIndex);
