@@ -210,18 +210,19 @@ class Builder {
     std::condition_variable wake;
     std::vector<Task> shared{{0, 1, duplicationBudget_, rootCentroids_}};
     unsigned busy = 0;  // workers holding a subtree
-    auto worker = [&] {
+    FirstException error;  // after one, every worker stops
+    auto work = [&] {
       std::vector<Task> local;
       for (;;) {
         {
           std::unique_lock lock(mutex);
-          wake.wait(lock, [&] { return !shared.empty() || busy == 0; });
-          if (shared.empty()) return;
+          wake.wait(lock, [&] { return !shared.empty() || busy == 0 || error.Failed(); });
+          if (shared.empty() || error.Failed()) return;
           local.push_back(shared.back());
           shared.pop_back();
           ++busy;
         }
-        while (!local.empty()) {
+        while (!local.empty() && !error.Failed()) {
           const Task task = local.back();
           local.pop_back();
           const uint32_t count = nodes_[task.node].count;
@@ -245,10 +246,18 @@ class Builder {
         if (--busy == 0 && shared.empty()) wake.notify_all();
       }
     };
+    auto worker = [&] {
+      error.Run(work);
+      if (error.Failed()) {
+        std::lock_guard lock(mutex);
+        wake.notify_all();
+      }
+    };
     std::vector<std::thread> pool;
     for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
     worker();
     for (auto& t : pool) t.join();
+    error.Rethrow();
     if (spatial_) CompactReferences();
     return FlattenTree({std::move(nodes_), std::move(prims_), rootArea_}, opt_, threads_);
   }
