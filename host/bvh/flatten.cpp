@@ -78,7 +78,6 @@ class Flattener {
   }
 
  private:
-
   // What a walk over a subtree finds; depth counts edges from the subtree's root.
   struct WalkStats {
     double sahCost = 0.0;
