@@ -61,12 +61,12 @@ constexpr uint32_t kParallelNode = 1u << 15, kShareNode = 1u << 12;
 // A small node is split exactly: every position in its centroid order is costed.
 constexpr uint32_t kExactSplitMax = 8;
 
-// A node waiting to be split, with its centroids' bounds (binning needs them).
-// A node to split. Its references sit in prims_[first, first + count) and may grow,
-// by spatial splits, into the `slack` free slots after them; its descendants go to
-// nodes [range, range + 2·(count + slack) − 2), the most a subtree over that many
-// references can have: its children first, then the left child's range, then the right
-// child's. So every node's place follows from the tree alone, whichever thread builds it.
+// A node to split, with its centroids' bounds (binning needs them). Its references sit
+// in prims_[first, first + count) and may grow, by spatial splits, into the `slack` free
+// slots after them; its descendants go to nodes [range, range + 2·(count + slack) − 2),
+// the most a subtree over that many references can have: its children first, then the
+// left child's range, then the right child's. So every node's place follows from the
+// tree alone, whichever thread builds it.
 struct Task {
   uint32_t node, range, slack;
   Bounds3f centroids;
