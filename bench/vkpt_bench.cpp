@@ -54,6 +54,8 @@ struct Options {
   bool markdown = false;  // one row of bench/README.md's table
   std::string quality;    // --quality REF.pfm: time to reach relMSE <= kQualityTarget
   bool spatialSplits = false;
+  uint32_t leafSize = BvhBuildOptions{}.maxLeafSize;
+  float traversalCost = BvhBuildOptions{}.traversalCost;  // SAH cost of a node visit
 };
 
 // "What users feel" (the benchmark issue): seconds until an image's relMSE against a
@@ -64,7 +66,7 @@ constexpr int kBuildRuns = 3;
 [[noreturn]] void Usage(const std::string& why) {
   std::fprintf(stderr,
                "vkpt-bench: %s\nusage: vkpt-bench (--scene FILE | --procedural N) [--width W] [--height H] "
-               "[--threads N] [--spatial-splits] [--json | --markdown] [--quality REF.pfm]\n",
+               "[--threads N] [--spatial-splits] [--leaf-size N] [--traversal-cost C] [--json | --markdown] [--quality REF.pfm]\n",
                why.c_str());
   std::exit(2);
 }
@@ -93,6 +95,13 @@ Options Parse(int argc, char** argv) {
     else if (a == "--markdown") o.markdown = true;
     else if (a == "--quality") o.quality = value();
     else if (a == "--spatial-splits") o.spatialSplits = true;
+    else if (a == "--leaf-size") o.leafSize = Number("--leaf-size", value());
+    else if (a == "--traversal-cost") {
+      const char* v = value();
+      char* end = nullptr;
+      o.traversalCost = std::strtof(v, &end);
+      if (*end || !(o.traversalCost > 0.0f)) Usage(std::string("--traversal-cost expects a positive number, got \"") + v + "\"");
+    }
     else if (a == "-h" || a == "--help") Usage("benchmarks BVH build, traversal and path tracing");
     else Usage("unknown option \"" + a + "\"");
   }
@@ -379,6 +388,8 @@ int Quality(const Options& o, unsigned threads) {
   BvhBuildOptions bvhOptions;
   bvhOptions.threads = threads;
   bvhOptions.spatialSplits = o.spatialSplits;
+  bvhOptions.maxLeafSize = o.leafSize;
+  bvhOptions.traversalCost = o.traversalCost;
   RenderScene rs = PrepareRenderScene(scene, bvhOptions);
   const Camera cam = scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0];
   shader::FrameParams p = MakeFrameParams(rs, cam, ref.width, ref.height);
@@ -446,6 +457,8 @@ int Run(const Options& o) {
   BvhBuildOptions bvhOptions;
   bvhOptions.threads = threads;
   bvhOptions.spatialSplits = o.spatialSplits;
+  bvhOptions.maxLeafSize = o.leafSize;
+  bvhOptions.traversalCost = o.traversalCost;
   RenderScene rs = PrepareRenderScene(scene, bvhOptions);
   // Triangles of the scene (not references: spatial splits duplicate some).
   const double tris = double(scene.triangles.size() - rs.degenerateTriangles);

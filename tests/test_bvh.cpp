@@ -365,7 +365,7 @@ TEST(Bvh, SpatialSplitsKeepWholeTrianglesOnceTheDuplicationBudgetIsSpent) {
   o.maxDuplication = 0.01f;
   RenderScene rs = PrepareRenderScene(test::MakeScene(slivers, {m}), o);
   EXPECT_LE(rs.bvhStats.references, 2020u);
-  CheckInvariants(rs, slivers, 4, true);
+  CheckInvariants(rs, slivers, o.maxLeafSize, true);
   CompareWithBruteForce(rs, 30000, 6);
 }
 
@@ -388,7 +388,7 @@ TEST(Bvh, SpatialSplitsListEachEmitterOnce) {
 TEST(Bvh, TraversalMatchesBruteForceOnCorpusModel) {
   Scene scene = LoadGltf(test::CorpusPath("valid/Duck/glTF-Binary/Duck.glb"));
   RenderScene rs = PrepareRenderScene(scene);
-  CheckInvariants(rs, scene.triangles, 4);
+  CheckInvariants(rs, scene.triangles, BvhBuildOptions{}.maxLeafSize);
   CompareWithBruteForce(rs, 8000, 3);
 }
 

@@ -60,7 +60,7 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      (one number for grey) [default: 1 if the scene has no emissive
                      triangles, so any model is lit; else 0]
   --exposure STOPS   PNG only: scale radiance by 2^STOPS before sRGB encoding [default: 0]
-  --leaf-size N      maximum triangles per BVH leaf, 1..15 [default: 4]
+  --leaf-size N      maximum triangles per BVH leaf, 1..15 [default: 8]
   --spatial-splits   let the BVH split space, not only triangle sets: a triangle may be
                      referenced from several leaves with its clipped bounds. Faster
                      rays where long thin triangles overlap (CAD models); a build

@@ -34,7 +34,7 @@ struct Options {
   // Constant environment radiance; absent: white (1,1,1) for a scene without emissive
   // triangles (so any model is visible), black otherwise.
   std::optional<std::array<float, 3>> background;
-  uint32_t leafSize = 4;
+  uint32_t leafSize = 8;
   bool spatialSplits = false;
   bool verbose = false;
   bool help = false;
