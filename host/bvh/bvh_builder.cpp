@@ -173,19 +173,10 @@ class Builder {
     // The primitives, with the root's box and centroid bounds, on all threads; the
     // budget's slots after them stay untouched until used.
     prims_.resize(n + duplicationBudget_);
-    std::vector<Bin> boxes(threads_), cents(threads_);
+    std::vector<Bounds3f> boxes(threads_), cents(threads_);
     ForChunks(0, n, threads_, [&](uint32_t b, uint32_t e, unsigned t) {
-      Bin box, cent;
-      for (uint32_t i = b; i < e; ++i) {
-        BuildPrim& p = prims_[i];
-        p.box = bounds[i];
-        p.index = i;
-        const Float4 c = p.Centroid4();
-        box.Extend(Load4(&p.box.lo.x), Load4(&p.box.hi.x));
-        cent.Extend(c, c);
-      }
-      boxes[t] = box;
-      cents[t] = cent;
+      for (uint32_t i = b; i < e; ++i) prims_[i].box = bounds[i], prims_[i].index = i;
+      Scan(b, e, boxes[t], cents[t]);
     });
     // A tree over m references has at most 2m - 1 nodes.
     nodes_.resize(2 * (n + duplicationBudget_) - 1);
@@ -193,8 +184,8 @@ class Builder {
     root = {{}, 0, n, 0};
     rootCentroids_ = Bounds3f{};
     for (unsigned t = 0; t < threads_; ++t) {
-      root.box.Extend(boxes[t].Box());
-      rootCentroids_.Extend(cents[t].Box());
+      root.box.Extend(boxes[t]);
+      rootCentroids_.Extend(cents[t]);
     }
     rootArea_ = root.box.SurfaceArea();
   }
