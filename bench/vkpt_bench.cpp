@@ -110,6 +110,16 @@ Options Parse(int argc, char** argv) {
   return o;
 }
 
+// The BVH the options ask for, built on `threads` threads.
+BvhBuildOptions BuildOptions(const Options& o, unsigned threads) {
+  BvhBuildOptions b;
+  b.threads = threads;
+  b.spatialSplits = o.spatialSplits;
+  b.maxLeafSize = o.leafSize;
+  b.traversalCost = o.traversalCost;
+  return b;
+}
+
 // Runs f(i) for i in [0, n) on `threads` threads (dynamic chunks of 256).
 void ParallelFor(size_t n, unsigned threads, const std::function<void(size_t)>& f) {
   std::atomic<size_t> next{0};
@@ -385,11 +395,7 @@ std::optional<double> SecondsToQuality(const Image& ref, const std::function<std
 int Quality(const Options& o, unsigned threads) {
   Image ref = ReadPfm(o.quality);
   Scene scene = o.procedural ? ProceduralScene(o.procedural) : LoadGltf(o.scene);
-  BvhBuildOptions bvhOptions;
-  bvhOptions.threads = threads;
-  bvhOptions.spatialSplits = o.spatialSplits;
-  bvhOptions.maxLeafSize = o.leafSize;
-  bvhOptions.traversalCost = o.traversalCost;
+  const BvhBuildOptions bvhOptions = BuildOptions(o, threads);
   RenderScene rs = PrepareRenderScene(scene, bvhOptions);
   const Camera cam = scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0];
   shader::FrameParams p = MakeFrameParams(rs, cam, ref.width, ref.height);
@@ -454,11 +460,7 @@ int Run(const Options& o) {
   rep.threads = threads;
 
   Scene scene = o.procedural ? ProceduralScene(o.procedural) : LoadGltf(o.scene);
-  BvhBuildOptions bvhOptions;
-  bvhOptions.threads = threads;
-  bvhOptions.spatialSplits = o.spatialSplits;
-  bvhOptions.maxLeafSize = o.leafSize;
-  bvhOptions.traversalCost = o.traversalCost;
+  const BvhBuildOptions bvhOptions = BuildOptions(o, threads);
   RenderScene rs = PrepareRenderScene(scene, bvhOptions);
   // Triangles of the scene (not references: spatial splits duplicate some).
   const double tris = double(scene.triangles.size() - rs.degenerateTriangles);
