@@ -66,7 +66,7 @@ class Flattener {
     const uint32_t spillBelow = threads > 1 ? std::max(4096u, count / (16 * threads)) : 0u;
     std::vector<FlatItem> spilled;
     HugeVector<uint8_t> axis(bvh.copies > 1 ? count : 0);
-    FlattenSubtree(info, {0, 0, shader::kInvalidIndex, 0}, spillBelow, spilled, axis, bvh);
+    FlattenSubtree(info, {0, 0, shader::kInvalidIndex}, spillBelow, spilled, axis, bvh);
     ParallelFor(spilled.size(), threads, [&](size_t k) {
       std::vector<FlatItem> none;
       FlattenSubtree(info, spilled[k], 0, none, axis, bvh);
@@ -173,15 +173,15 @@ class Flattener {
     }
   }
 
-  // A subtree to write: build node `node` goes to bvh.nodes[flat] with skip link `skip`,
-  // in copy `octant`.
+  // A subtree of copy 0 to write: build node `node` goes to bvh.nodes[flat] with skip
+  // link `skip`.
   struct FlatItem {
-    uint32_t node, flat, skip, octant;
+    uint32_t node, flat, skip;
   };
 
-  // Writes the subtree of `item` depth first, each inner node's children ordered
-  // near-first for rays whose direction signs are the octant's (bit 0: x < 0, bit 1:
-  // y < 0, bit 2: z < 0). Skip links are absolute. Subtrees of fewer than `spillBelow`
+  // Writes the subtree of `item` into copy 0 depth first, each inner node's children
+  // ordered near-first for rays with positive direction components (octant 0; DeriveCopy
+  // makes the others). Skip links are absolute. Subtrees of fewer than `spillBelow`
   // nodes (below the item itself) go to `spilled` instead, to be written later. `axis`,
   // unless empty, receives each inner node's axis of child order at its flat index.
   void FlattenSubtree(const FlatInfo& info, FlatItem item, uint32_t spillBelow, std::vector<FlatItem>& spilled,
@@ -204,11 +204,10 @@ class Flattener {
       // Near child first along the axis where the children's centres differ most.
       uint32_t first = n.child, second = n.child + 1;
       const uint32_t near = info.near[it.node];
-      if (((near >> 2) & 1u) != ((it.octant >> (near & 3u)) & 1u)) std::swap(first, second);
+      if ((near >> 2) & 1u) std::swap(first, second);
       if (!axis.empty()) axis[it.flat] = uint8_t(near & 3u);
       const uint32_t secondFlat = it.flat + 1 + size[first];
-      for (const FlatItem& child : {FlatItem{second, secondFlat, it.skip, it.octant},
-                                    FlatItem{first, it.flat + 1, secondFlat, it.octant}})
+      for (const FlatItem& child : {FlatItem{second, secondFlat, it.skip}, FlatItem{first, it.flat + 1, secondFlat}})
         (size[child.node] < spillBelow ? spilled : stack).push_back(child);
     }
   }
