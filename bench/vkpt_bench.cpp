@@ -53,7 +53,7 @@ struct Options {
   bool json = false;
   bool markdown = false;  // one row of bench/README.md's table
   std::string quality;    // --quality REF.pfm: time to reach relMSE <= kQualityTarget
-  bool spatialSplits = false;
+  std::string splits = "object";  // --splits: the builder as compared with Embree's
   uint32_t leafSize = BvhBuildOptions{}.maxLeafSize;
   float traversalCost = BvhBuildOptions{}.traversalCost;  // SAH cost of a node visit
 };
@@ -66,7 +66,7 @@ constexpr int kBuildRuns = 3;
 [[noreturn]] void Usage(const std::string& why) {
   std::fprintf(stderr,
                "vkpt-bench: %s\nusage: vkpt-bench (--scene FILE | --procedural N) [--width W] [--height H] "
-               "[--threads N] [--spatial-splits] [--leaf-size N] [--traversal-cost C] [--json | --markdown] [--quality REF.pfm]\n",
+               "[--threads N] [--splits object|spatial|auto] [--leaf-size N] [--traversal-cost C] [--json | --markdown] [--quality REF.pfm]\n",
                why.c_str());
   std::exit(2);
 }
@@ -94,7 +94,10 @@ Options Parse(int argc, char** argv) {
     else if (a == "--json") o.json = true;
     else if (a == "--markdown") o.markdown = true;
     else if (a == "--quality") o.quality = value();
-    else if (a == "--spatial-splits") o.spatialSplits = true;
+    else if (a == "--splits") {
+      o.splits = value();
+      if (!ParseSplitMode(o.splits)) Usage("--splits must be object, spatial or auto, got \"" + o.splits + "\"");
+    }
     else if (a == "--leaf-size") o.leafSize = Number("--leaf-size", value());
     else if (a == "--traversal-cost") {
       const char* v = value();
@@ -114,7 +117,7 @@ Options Parse(int argc, char** argv) {
 BvhBuildOptions BuildOptions(const Options& o, unsigned threads) {
   BvhBuildOptions b;
   b.threads = threads;
-  b.spatialSplits = o.spatialSplits;
+  b.splits = *ParseSplitMode(o.splits);
   b.maxLeafSize = o.leafSize;
   b.traversalCost = o.traversalCost;
   return b;
@@ -552,7 +555,7 @@ int Run(const Options& o) {
   else if (o.markdown)
     PrintMarkdownRow(rep, (o.procedural ? "procedural " + std::to_string(o.procedural)
                                         : o.scene.substr(o.scene.find_last_of('/') + 1)) +
-                              (o.spatialSplits ? ", spatial splits" : ""));
+                              (o.splits == "object" ? "" : ", " + o.splits + " splits"));
   else PrintTable(rep);
   return 0;
 }

@@ -21,7 +21,7 @@ RenderScene Prepare(const std::vector<SceneTriangle>& tris, uint32_t leafSize = 
   m.baseColor = glm::vec3(0.5f);
   BvhBuildOptions o;
   o.maxLeafSize = leafSize;
-  o.spatialSplits = spatialSplits;
+  o.splits = spatialSplits ? SplitMode::kSpatial : SplitMode::kObject;
   return PrepareRenderScene(test::MakeScene(tris, {m}), o);
 }
 
@@ -37,6 +37,18 @@ std::vector<SceneTriangle> Slivers(uint32_t count, uint32_t seed) {
     tris.push_back({a, b, a + side, 0});
   }
   return tris;
+}
+
+// BuildBvh's input for triangles: their boxes, and their vertices for spatial splits.
+std::pair<std::vector<Bounds3f>, std::vector<glm::vec3>> BuildInput(const std::vector<SceneTriangle>& tris) {
+  std::pair<std::vector<Bounds3f>, std::vector<glm::vec3>> in;
+  for (const SceneTriangle& t : tris) {
+    Bounds3f b;
+    for (glm::vec3 v : {t.v0, t.v1, t.v2}) b.Extend(v);
+    in.first.push_back(b);
+    in.second.insert(in.second.end(), {t.v0, t.v1, t.v2});
+  }
+  return in;
 }
 
 Bounds3f TriBounds(const shader::Triangle& t) {
@@ -219,16 +231,9 @@ TEST(Bvh, SameSpatialSplitTreeForAnyBuildThreadCount) {
   // Spatial splits share the duplication budget out by subtree, so the tree does not
   // depend on which thread builds what either.
   std::vector<SceneTriangle> slivers = Slivers(60000, 31);
-  std::vector<Bounds3f> bounds;
-  std::vector<glm::vec3> vertices;
-  for (const SceneTriangle& t : slivers) {
-    Bounds3f b;
-    for (glm::vec3 p : {t.v0, t.v1, t.v2}) b.Extend(p);
-    bounds.push_back(b);
-    vertices.insert(vertices.end(), {t.v0, t.v1, t.v2});
-  }
+  const auto [bounds, vertices] = BuildInput(slivers);
   BvhBuildOptions o;
-  o.spatialSplits = true;
+  o.splits = SplitMode::kSpatial;
   o.threads = 1;
   Bvh one = BuildBvh(bounds, o, vertices);
   EXPECT_GT(one.stats.references, bounds.size());
@@ -361,7 +366,7 @@ TEST(Bvh, SpatialSplitsKeepWholeTrianglesOnceTheDuplicationBudgetIsSpent) {
   Material m{};
   m.baseColor = glm::vec3(0.5f);
   BvhBuildOptions o;
-  o.spatialSplits = true;
+  o.splits = SplitMode::kSpatial;
   o.maxDuplication = 0.01f;
   RenderScene rs = PrepareRenderScene(test::MakeScene(slivers, {m}), o);
   EXPECT_LE(rs.bvhStats.references, 2020u);
@@ -375,7 +380,7 @@ TEST(Bvh, SpatialSplitsListEachEmitterOnce) {
   Scene scene = test::MakeScene(Slivers(500, 3), {light});
   BvhBuildOptions o;
   RenderScene plain = PrepareRenderScene(scene, o);
-  o.spatialSplits = true;
+  o.splits = SplitMode::kSpatial;
   RenderScene split = PrepareRenderScene(scene, o);
   ASSERT_GT(split.triangles.size(), plain.triangles.size()) << "the test needs duplicated triangles";
   EXPECT_EQ(split.emitters.size(), plain.emitters.size());
@@ -383,6 +388,72 @@ TEST(Bvh, SpatialSplitsListEachEmitterOnce) {
   double pmf = 0.0;
   for (const shader::Emitter& e : split.emitters) pmf += e.pmf;
   EXPECT_NEAR(pmf, 1.0, 1e-6);
+}
+
+// Small triangles in a closed room of ten large wall triangles: the SAH's greedy split at
+// the root cuts the walls when spatial splits are allowed, and the whole tree costs more
+// than with object splits, which set the walls apart.
+std::vector<SceneTriangle> WalledRoom(uint32_t count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-0.8f, 0.8f);
+  std::vector<SceneTriangle> tris;
+  for (uint32_t i = 0; i < count; ++i) {
+    glm::vec3 c(u(rng), u(rng), u(rng));
+    tris.push_back({c, c + 0.01f * glm::vec3(u(rng), u(rng), u(rng)), c + 0.01f * glm::vec3(u(rng), u(rng), u(rng)), 0});
+  }
+  // Floor, ceiling and three walls of the cube [-1, 1]³, two triangles each.
+  const glm::vec3 p[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const int quads[5][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {3, 2, 6, 7}, {0, 3, 7, 4}};
+  for (const auto& q : quads) {
+    tris.push_back({p[q[0]], p[q[1]], p[q[2]], 0});
+    tris.push_back({p[q[0]], p[q[2]], p[q[3]], 0});
+  }
+  return tris;
+}
+
+// SplitMode::kAuto builds the tree of each mode and keeps the one with the lower SAH
+// cost, byte for byte as that mode alone builds it; a tie keeps the object tree.
+TEST(Bvh, AutoSplitsKeepTheTreeWithTheLowerSahCost) {
+  struct Case {
+    const char* name;
+    std::vector<SceneTriangle> tris;
+    SplitMode expected;
+  };
+  std::vector<SceneTriangle> quad = {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, 0}, {{0, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0}};
+  for (const Case& c : {Case{"slivers", Slivers(5000, 8), SplitMode::kSpatial},
+                        Case{"walled room", WalledRoom(20000, 9), SplitMode::kObject},
+                        Case{"one quad (a tie)", quad, SplitMode::kObject}}) {
+    SCOPED_TRACE(c.name);
+    const auto [bounds, vertices] = BuildInput(c.tris);
+    BvhBuildOptions o;
+    o.splits = SplitMode::kObject;
+    const Bvh object = BuildBvh(bounds, o, vertices);
+    o.splits = SplitMode::kSpatial;
+    const Bvh spatial = BuildBvh(bounds, o, vertices);
+    o.splits = SplitMode::kAuto;
+    const Bvh automatic = BuildBvh(bounds, o, vertices);
+    std::printf("%s: SAH cost %.3f with object splits, %.3f with spatial splits\n", c.name, object.stats.sahCost,
+                spatial.stats.sahCost);
+    EXPECT_FALSE(object.stats.spatialSplits);
+    EXPECT_TRUE(spatial.stats.spatialSplits);
+    const bool spatialWins = c.expected == SplitMode::kSpatial;
+    if (spatialWins) EXPECT_LT(spatial.stats.sahCost, object.stats.sahCost);
+    else EXPECT_GE(spatial.stats.sahCost, object.stats.sahCost);
+    const Bvh& kept = spatialWins ? spatial : object;
+    const Bvh& rejected = spatialWins ? object : spatial;
+    EXPECT_EQ(automatic.stats.spatialSplits, spatialWins);
+    EXPECT_EQ(automatic.stats.sahCost, kept.stats.sahCost);
+    EXPECT_EQ(automatic.stats.rejectedSahCost, rejected.stats.sahCost);
+    EXPECT_EQ(kept.stats.rejectedSahCost, 0.0);
+    ASSERT_EQ(automatic.nodes.size(), kept.nodes.size());
+    EXPECT_EQ(0, std::memcmp(automatic.nodes.data(), kept.nodes.data(), kept.nodes.size() * sizeof(shader::BvhNode)));
+    EXPECT_EQ(automatic.primOrder, kept.primOrder);
+    // Without vertices there is nothing to clip: every mode builds object splits.
+    const Bvh noVertices = BuildBvh(bounds, o, {});
+    EXPECT_FALSE(noVertices.stats.spatialSplits);
+    EXPECT_EQ(noVertices.stats.sahCost, object.stats.sahCost);
+    EXPECT_EQ(noVertices.stats.rejectedSahCost, 0.0);
+  }
 }
 
 TEST(Bvh, TraversalMatchesBruteForceOnCorpusModel) {

@@ -61,7 +61,7 @@ TEST(Cli, HelpListsEveryOption) {
     EXPECT_NE(r.out.find("usage:"), std::string::npos) << r.out;
     for (const char* opt : {"--scene", "--out", "--width", "--height", "--spp", "--seed", "--max-depth", "--rr-depth",
                             "--backend", "--device", "--list-devices", "--validation", "--batch", "--threads", "--compare", "--diff",
-                            "--camera", "--background", "--exposure", "--leaf-size", "--spatial-splits", "-v", "--verbose", "--help",
+                            "--camera", "--background", "--exposure", "--leaf-size", "--splits", "-v", "--verbose", "--help",
                             "--version"})
       EXPECT_NE(r.out.find(opt), std::string::npos) << flag << " output does not mention " << opt;
     EXPECT_NE(r.out.find(".png"), std::string::npos);
@@ -103,7 +103,7 @@ TEST(Cli, BadValuesAreUsageErrors) {
       {"--backend", "foo"},   {"--background", "1,2"}, {"--background", "1,2,3,4"}, {"--background", "-1"},
       {"--background", "a"},  {"--leaf-size", "16"},   {"--exposure", "nan"},    {"--seed", "-1"},
       {"--max-depth", "1.5"}, {"--camera", "x"},       {"--spp"},                {"--batch", "0"},
-      {"--device", ""},       {"--rr-depth", "1025"},
+      {"--device", ""},       {"--rr-depth", "1025"},      {"--splits", "sbvh"},
   };
   for (const std::vector<std::string>& c : cases) {
     std::vector<std::string> args = {"--scene", kCornell, "--out", out};
@@ -446,21 +446,41 @@ TEST(Cli, CompareReportsAgreementAndWritesHeatmap) {
   std::remove(heat.c_str());
 }
 
-// --spatial-splits on a CAD model (long thin triangles): more references than triangles,
+// --splits spatial on a CAD model (long thin triangles): more references than triangles,
 // and the CPU and Vulkan renders still agree.
 TEST(Cli, SpatialSplitsRenderAndAgree) {
   const std::string out = TempPath("cli-spatial.pfm");
   ProcessResult r = RunVkpt({"--scene", test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"),
-                             "--spatial-splits", "--compare", "--width", "40", "--height", "40", "--spp", "4", "--out", out},
+                             "--splits", "spatial", "--compare", "--width", "40", "--height", "40", "--spp", "4", "--out", out},
                             300.0);
   EXPECT_TRUE(r.ExitedWith(0)) << r.Describe();
   EXPECT_NE(r.out.find("-> agree"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("BVH: spatial splits, "), std::string::npos) << r.out;
   std::smatch m;
   ASSERT_TRUE(std::regex_search(r.out, m, std::regex("scene: (\\d+) triangles \\((\\d+) degenerate.*?(\\d+) triangle references")))
       << r.out;
   EXPECT_GT(std::stoul(m[3]), std::stoul(m[1]) - std::stoul(m[2])) << r.out;
   std::remove(out.c_str());
   std::remove((out.substr(0, out.size() - 4) + "-diff.png").c_str());
+}
+
+// By default both trees are built and the one with the lower SAH cost renders; the
+// summary names it and the other's cost. The Cornell box's walls enclose the scene:
+// spatial splits do not lower its SAH there, so the object tree is kept (a tie).
+TEST(Cli, DefaultSplitsAreChosenBySahCost) {
+  const std::string out = TempPath("cli-auto-splits.pfm");
+  ProcessResult r = RenderCornell(out, {});
+  ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m,
+                                std::regex("BVH: object splits \\(auto: spatial splits' SAH cost was ([0-9.]+)\\),.*"
+                                           "SAH cost ([0-9.]+),")))
+      << r.out;
+  EXPECT_GE(std::stod(m[1]), std::stod(m[2])) << r.out;
+  ProcessResult object = RenderCornell(out, {"--splits", "object"});
+  ASSERT_TRUE(object.ExitedWith(0)) << object.Describe();
+  EXPECT_NE(object.out.find("BVH: object splits, "), std::string::npos) << object.out;
+  std::remove(out.c_str());
 }
 
 TEST(Cli, DiffTellsSameFromDifferentImages) {

@@ -186,7 +186,7 @@ TEST_F(GpuTest, TraversalMatchesCpuOnRandomSoup) {
 TEST_F(GpuTest, TraversalMatchesCpuWithSpatialSplits) {
   Material m{};
   BvhBuildOptions o;
-  o.spatialSplits = true;
+  o.splits = SplitMode::kSpatial;
   RenderScene rs = PrepareRenderScene(test::MakeScene(test::RandomSoup(2000, 8), {m}), o);
   ASSERT_GT(rs.triangles.size() + rs.degenerateTriangles, 2000u) << "the test needs duplicated triangles";
   CompareTraversal(rs, 65536, 6, true);

@@ -169,7 +169,7 @@ int Run(const Options& o) {
   std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
   BvhBuildOptions bvhOptions;
   bvhOptions.maxLeafSize = o.leafSize;
-  bvhOptions.spatialSplits = o.spatialSplits;
+  bvhOptions.splits = o.splits;
   bvhOptions.threads = o.threads;
   // The direction-ordered copies are for the shader; the CPU walks its own layout.
   bvhOptions.directionCopies = ctx != nullptr;
@@ -222,10 +222,16 @@ int Run(const Options& o) {
               r.engine.c_str());
   std::printf("  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", r.seconds,
               samples / r.seconds * 1e-6, double(r.rays) / r.seconds * 1e-6, mean.x, mean.y, mean.z);
-  std::printf("  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %u nodes, %u leaves, depth %u, "
-              "%u triangle references, SAH cost %.3f, built in %.2f ms\n",
-              scene.triangles.size(), rs.degenerateTriangles, rs.emitters.size(), rs.bvhStats.nodes,
-              rs.bvhStats.leaves, rs.bvhStats.depth, rs.bvhStats.references, rs.bvhStats.sahCost, rs.bvhStats.buildMs);
+  const BvhStats& bvh = rs.bvhStats;
+  const char* kind = bvh.spatialSplits ? "spatial" : "object";
+  char choice[96] = "";
+  if (bvh.rejectedSahCost > 0.0)
+    std::snprintf(choice, sizeof choice, " (auto: %s splits' SAH cost was %.3f)", bvh.spatialSplits ? "object" : "spatial",
+                  bvh.rejectedSahCost);
+  std::printf("  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %s splits%s, %u nodes, %u leaves, "
+              "depth %u, %u triangle references, SAH cost %.3f, built in %.2f ms\n",
+              scene.triangles.size(), rs.degenerateTriangles, rs.emitters.size(), kind, choice, bvh.nodes, bvh.leaves,
+              bvh.depth, bvh.references, bvh.sahCost, bvh.buildMs);
   if (r.nonFinite)
     std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.nonFinite);
   if (r.cutShort)

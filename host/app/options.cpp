@@ -61,10 +61,11 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      triangles, so any model is lit; else 0]
   --exposure STOPS   PNG only: scale radiance by 2^STOPS before sRGB encoding [default: 0]
   --leaf-size N      maximum triangles per BVH leaf, 1..15 [default: 8]
-  --spatial-splits   let the BVH split space, not only triangle sets: a triangle may be
-                     referenced from several leaves with its clipped bounds. Faster
-                     rays where long thin triangles overlap (CAD models); a build
-                     several times slower [default: off]
+  --splits MODE      how the BVH divides the scene: object (each triangle in one leaf),
+                     spatial (planes may also cut triangles, which then sit in several
+                     leaves clipped: faster rays where long thin triangles overlap, as in
+                     CAD models; a build several times slower) or auto (build both, keep
+                     the tree with the lower SAH cost) [default: auto]
   -v, --verbose      print what was loaded and which glTF features were ignored
   -h, --help         print this help and exit
   --version          print the version and exit
@@ -117,6 +118,12 @@ Options ParseOptions(int argc, const char* const* argv) {
          for (size_t k = 0; k < 3; ++k) c[k] = ParseNumber(opt, parts[parts.size() == 1 ? 0 : k], 0.0f, 1e30f);
          o.background = c;
        }},
+      {"--splits",
+       [&](const std::string&, const std::string& v) {
+         std::optional<SplitMode> mode = ParseSplitMode(v);
+         if (!mode) throw UsageError("--splits must be auto, object or spatial, got \"" + v + "\"");
+         o.splits = *mode;
+       }},
       {"--backend",
        [&](const std::string&, const std::string& v) {
          if (v == "cpu") o.backend = Backend::Cpu;
@@ -139,7 +146,6 @@ Options ParseOptions(int argc, const char* const* argv) {
     if (arg == "-v" || arg == "--verbose") { o.verbose = true; continue; }
     if (arg == "--list-devices") { o.listDevices = true; continue; }
     if (arg == "--validation") { o.validation = true; continue; }
-    if (arg == "--spatial-splits") { o.spatialSplits = true; continue; }
     if (arg == "--compare") { o.compare = true; continue; }
     if (arg == "--diff") {
       if (inlineValue || i + 2 >= argc) throw UsageError("--diff needs two image files: --diff A.pfm B.pfm");

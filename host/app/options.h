@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "bvh/bvh.h"
+
 namespace vkpt {
 
 enum class Backend { Auto, Cpu, Vulkan };
@@ -35,7 +37,7 @@ struct Options {
   // triangles (so any model is visible), black otherwise.
   std::optional<std::array<float, 3>> background;
   uint32_t leafSize = 8;
-  bool spatialSplits = false;
+  SplitMode splits = SplitMode::kAuto;  // --splits
   bool verbose = false;
   bool help = false;
   bool version = false;

@@ -160,8 +160,9 @@ Bounds3f Conservative(const Box4& part, const Bounds3f& reference) {
 
 class Builder {
  public:
+  // `vertices`: three per primitive for spatial splits; empty for object splits only.
   Builder(std::span<const Bounds3f> bounds, const BvhBuildOptions& o, std::span<const glm::vec3> vertices)
-      : opt_(o), verts_(vertices), spatial_(o.spatialSplits && vertices.size() == 3 * bounds.size()) {
+      : opt_(o), verts_(vertices), spatial_(vertices.size() == 3 * bounds.size()) {
     // The references spatial splits may add; the total stays below 2^28, what a leaf
     // code can address.
     const uint32_t n = uint32_t(bounds.size());
@@ -250,7 +251,9 @@ class Builder {
     for (auto& t : pool) t.join();
     error.Rethrow();
     if (spatial_) CompactReferences();
-    return FlattenTree({std::move(nodes_), std::move(prims_), rootArea_}, opt_, threads_);
+    Bvh bvh = FlattenTree({std::move(nodes_), std::move(prims_), rootArea_}, opt_, threads_);
+    bvh.stats.spatialSplits = spatial_;
+    return bvh;
   }
 
  private:
@@ -725,7 +728,15 @@ Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& option
     throw Error("BVH build: expected three vertices per primitive");
   if (!(options.maxDuplication >= 0.0f)) throw Error("BVH build: the duplication budget must be >= 0");
   auto t0 = std::chrono::steady_clock::now();
-  Bvh bvh = Builder(primBounds, options, vertices).Build();
+  const std::span<const glm::vec3> noVertices;
+  Bvh bvh = Builder(primBounds, options, options.splits == SplitMode::kObject ? noVertices : vertices).Build();
+  if (options.splits == SplitMode::kAuto && !vertices.empty()) {
+    // The trees are compared whole, as laid out (the SAH comes from the layout). A tie
+    // goes to the object tree: as fast, with no duplicated references.
+    Bvh objectOnly = Builder(primBounds, options, noVertices).Build();
+    if (objectOnly.stats.sahCost <= bvh.stats.sahCost) std::swap(bvh, objectOnly);
+    bvh.stats.rejectedSahCost = objectOnly.stats.sahCost;
+  }
   bvh.stats.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return bvh;
 }

@@ -35,7 +35,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
     b.Extend(t.v0 + (t.v1 - t.v0));
     b.Extend(t.v0 + (t.v2 - t.v0));
     bounds.push_back(b);
-    if (options.spatialSplits) vertices.insert(vertices.end(), {t.v0, t.v0 + (t.v1 - t.v0), t.v0 + (t.v2 - t.v0)});
+    if (options.splits != SplitMode::kObject) vertices.insert(vertices.end(), {t.v0, t.v0 + (t.v1 - t.v0), t.v0 + (t.v2 - t.v0)});
     kept.push_back(i);
   }
   if (kept.empty()) throw Error(scene.path + ": every triangle of the scene is degenerate (zero area)");
