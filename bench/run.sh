@@ -43,7 +43,8 @@ every hit ("diffuse"). Mrays/s; path tracing in Msamples/s at 256×256 × 16 spp
 tracers by more than 1e-4 relative (grazing hits on shared edges). Build rates are the
 best of three builds, vkpt's with `--threads` threads and Embree's (BUILD_QUALITY_MEDIUM)
 with one; `--json` also gives vkpt's one-thread rate from the same run
-(`build_mtris_per_s_1t`). SAH costs count a node visit as 4 triangle tests (vkpt's
+(`build_mtris_per_s_1t`) and the run's peak host memory (`peak_rss_mib`: scene, trees,
+ray sets, lavapipe and Embree together; "GPU bytes per triangle" is what is uploaded). SAH costs count a node visit as 4 triangle tests (vkpt's
 default); `--leaf-size N` and `--traversal-cost C` change the tree for tuning runs.
 Trees use object splits unless a row says otherwise (`--splits spatial|auto`): that is
 the builder compared with Embree's; `vkpt` itself renders with `--splits auto`, which

@@ -4,6 +4,7 @@
 // Not a Google Benchmark binary on purpose: the figures only mean something as ratios
 // between tracers over *identical* ray sets, cross-checked hit for hit, reported as one
 // JSON object per run — a harness of repeated micro-benchmarks measures none of that.
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -355,6 +356,7 @@ void PrintTable(const Report& r) {
   line("CPU path tracing", "cpu_pt_msamples_s", "Msamples/s", nullptr);
   line("GPU path tracing", "gpu_pt_msamples_s", "Msamples/s", nullptr);
   line("hit mismatches between tracers", "hit_mismatches", "rays", nullptr);
+  line("peak host memory of the run (RSS)", "peak_rss_mib", "MiB", nullptr);
 }
 
 // relMSE = mean over pixels and channels of (a − r)² / (r² + 0.01).
@@ -551,6 +553,9 @@ int Run(const Options& o) {
   }
 #endif
   rep.Set("hit_mismatches", double(mismatches));
+  // The whole run's peak: scene, trees, ray sets and hits, lavapipe's and Embree's memory.
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) == 0) rep.Set("peak_rss_mib", double(usage.ru_maxrss) / 1024.0);
   if (o.json) PrintJson(rep);
   else if (o.markdown)
     PrintMarkdownRow(rep, (o.procedural ? "procedural " + std::to_string(o.procedural)
