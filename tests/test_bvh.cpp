@@ -456,6 +456,30 @@ TEST(Bvh, AutoSplitsKeepTheTreeWithTheLowerSahCost) {
   }
 }
 
+// Where the spatial tree's eight direction-ordered copies do not fit maxCopiesBytes but
+// the object tree's do, auto keeps the object tree although its SAH is higher.
+TEST(Bvh, AutoSplitsKeepTheDirectionCopies) {
+  const auto [bounds, vertices] = BuildInput(Slivers(5000, 8));
+  BvhBuildOptions o;
+  o.splits = SplitMode::kObject;
+  const Bvh object = BuildBvh(bounds, o, vertices);
+  o.splits = SplitMode::kSpatial;
+  const Bvh spatial = BuildBvh(bounds, o, vertices);
+  ASSERT_EQ(object.copies, 8u);
+  ASSERT_GT(spatial.stats.nodes, object.stats.nodes);
+  ASSERT_LT(spatial.stats.sahCost, object.stats.sahCost);
+  o.maxCopiesBytes = uint64_t(8) * object.stats.nodes * sizeof(shader::BvhNode);  // just the object tree's
+  o.splits = SplitMode::kAuto;
+  const Bvh automatic = BuildBvh(bounds, o, vertices);
+  EXPECT_EQ(automatic.copies, 8u);
+  EXPECT_FALSE(automatic.stats.spatialSplits);
+  EXPECT_EQ(automatic.stats.sahCost, object.stats.sahCost);
+  EXPECT_EQ(automatic.stats.rejectedSahCost, spatial.stats.sahCost);
+  // Without direction copies for either (the CPU's trees), the SAH decides again.
+  o.directionCopies = false;
+  EXPECT_TRUE(BuildBvh(bounds, o, vertices).stats.spatialSplits);
+}
+
 TEST(Bvh, TraversalMatchesBruteForceOnCorpusModel) {
   Scene scene = LoadGltf(test::CorpusPath("valid/Duck/glTF-Binary/Duck.glb"));
   RenderScene rs = PrepareRenderScene(scene);

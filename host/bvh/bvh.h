@@ -19,7 +19,8 @@ namespace vkpt {
 enum class SplitMode {
   kObject,   // planes between triangles' centroids: every triangle in exactly one leaf
   kSpatial,  // object planes and planes that cut triangles (SBVH)
-  kAuto,     // build both trees and keep the one with the lower SAH cost
+  kAuto,     // build both trees and keep the one with the lower SAH cost (but never
+             // one that lost its direction-ordered copies over one that kept them)
 };
 
 // "object", "spatial", "auto" (the command-line names); nullopt for anything else.
