@@ -44,8 +44,34 @@ struct BuildTree {
   float rootArea = 0.0f;        // the root box's surface area
 };
 
-// Lays the tree out as a Bvh (the flattened skip-link copies) with its statistics, on up
-// to `threads` threads; the result does not depend on the thread count.
-Bvh FlattenTree(const BuildTree& tree, const BvhBuildOptions& options, unsigned threads);
+// What the flat layout needs to know of a BuildTree's inner nodes, by node index: the
+// subtree's size (which places the second child), and which child is nearer for rays
+// going which way — bits 0-1: the axis along which the children's centres differ most;
+// bit 2: set if the second child's centre is below the first's on it (rays whose
+// direction is negative on that axis visit the child with the lower centre first).
+struct FlatInfo {
+  HugeVector<uint32_t> size;
+  HugeVector<uint8_t> near;
+};
+
+// A BuildTree on its way to a Bvh (flatten.cpp), in two steps: the constructor walks the
+// tree for its statistics (the SAH cost among them) and for FlatInfo; Write() lays it
+// out as the flattened skip-link copies. A caller choosing between trees (SplitMode::
+// kAuto) thus writes only the one it keeps. Both steps run on up to `threads` threads
+// and give the same result for any count.
+class TreeLayout {
+ public:
+  TreeLayout(BuildTree tree, const BvhBuildOptions& options, unsigned threads);
+  const BvhStats& Stats() const { return stats_; }
+  uint32_t Copies() const;  // flattened copies Write() makes: 8 while they fit, else 1
+  Bvh Write() const;
+
+ private:
+  BuildTree tree_;
+  BvhBuildOptions opt_;
+  unsigned threads_;
+  FlatInfo info_;
+  BvhStats stats_;
+};
 
 }  // namespace vkpt

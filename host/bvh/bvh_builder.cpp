@@ -191,7 +191,7 @@ class Builder {
     rootArea_ = root.box.SurfaceArea();
   }
 
-  Bvh Build() {
+  TreeLayout Build() {
     const unsigned threads = threads_;
     // Workers take subtrees from a shared list and build them depth first on their own.
     // Splitting a node of at least kShareNode primitives while a thread is idle hands
@@ -251,9 +251,7 @@ class Builder {
     for (auto& t : pool) t.join();
     error.Rethrow();
     if (spatial_) CompactReferences();
-    Bvh bvh = FlattenTree({std::move(nodes_), std::move(prims_), rootArea_}, opt_, threads_);
-    bvh.stats.spatialSplits = spatial_;
-    return bvh;
+    return TreeLayout({std::move(nodes_), std::move(prims_), rootArea_}, opt_, threads_);
   }
 
  private:
@@ -728,20 +726,28 @@ Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& option
     throw Error("BVH build: expected three vertices per primitive");
   if (!(options.maxDuplication >= 0.0f)) throw Error("BVH build: the duplication budget must be >= 0");
   auto t0 = std::chrono::steady_clock::now();
+  const bool spatial = options.splits != SplitMode::kObject && !vertices.empty();
   const std::span<const glm::vec3> noVertices;
-  Bvh bvh = Builder(primBounds, options, options.splits == SplitMode::kObject ? noVertices : vertices).Build();
-  if (options.splits == SplitMode::kAuto && !vertices.empty()) {
-    // The trees are compared whole, as laid out (the SAH comes from the layout). A tie
-    // goes to the object tree: as fast, with no duplicated references. So does a spatial
-    // tree too big for its direction-ordered copies when the object tree has them: a
-    // fixed traversal order costs diffuse rays ~24 % more box tests and ~40 % more
-    // triangle tests, more than spatial splits save (1–21 % of the SAH on the corpus).
-    Bvh objectOnly = Builder(primBounds, options, noVertices).Build();
-    const bool keepObject = objectOnly.copies != bvh.copies ? objectOnly.copies > bvh.copies
-                                                             : objectOnly.stats.sahCost <= bvh.stats.sahCost;
-    if (keepObject) std::swap(bvh, objectOnly);
-    bvh.stats.rejectedSahCost = objectOnly.stats.sahCost;
+  TreeLayout tree = Builder(primBounds, options, spatial ? vertices : noVertices).Build();
+  bool keptSpatial = spatial;
+  double rejectedSahCost = 0.0;
+  if (spatial && options.splits == SplitMode::kAuto) {
+    // The trees are compared as measured for their layout (the SAH comes from there);
+    // only the one kept is written. A tie goes to the object tree: as fast, with no
+    // duplicated references. So does a spatial tree too big for its direction-ordered
+    // copies when the object tree has them: a fixed traversal order costs diffuse rays
+    // ~24 % more box tests and ~40 % more triangle tests, more than spatial splits save
+    // (1–21 % of the SAH on the corpus).
+    TreeLayout objectOnly = Builder(primBounds, options, noVertices).Build();
+    const bool keepObject = objectOnly.Copies() != tree.Copies()
+                                ? objectOnly.Copies() > tree.Copies()
+                                : objectOnly.Stats().sahCost <= tree.Stats().sahCost;
+    rejectedSahCost = (keepObject ? tree : objectOnly).Stats().sahCost;
+    if (keepObject) tree = std::move(objectOnly), keptSpatial = false;
   }
+  Bvh bvh = tree.Write();
+  bvh.stats.spatialSplits = keptSpatial;
+  bvh.stats.rejectedSahCost = rejectedSahCost;
   bvh.stats.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return bvh;
 }

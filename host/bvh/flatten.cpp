@@ -1,6 +1,7 @@
-// Lays out a BuildTree for the renderers: subtree sizes and statistics by one walk, then
-// the depth-first skip-link layout (see bvh.h), in eight direction-ordered copies while
-// they fit. Every step runs on all threads and gives the same bytes for any count.
+// Lays out a BuildTree for the renderers (TreeLayout): subtree sizes and statistics by one
+// walk, then, when asked, the depth-first skip-link layout (see bvh.h), in eight
+// direction-ordered copies while they fit. Every step runs on all threads and gives the
+// same bytes for any count.
 #include <algorithm>
 #include <utility>
 #include <vector>
@@ -16,9 +17,9 @@ class Flattener {
   Flattener(const BuildTree& tree, const BvhBuildOptions& o, unsigned threads)
       : nodes_(tree.nodes), prims_(tree.prims), rootArea_(tree.rootArea), opt_(o), threads_(threads) {}
 
-  Bvh Flatten() const {
-    Bvh bvh;
-    const unsigned threads = nodes_[0].count < 16384 ? 1u : threads_;
+  // One walk over the tree: its statistics, and `info` for Write.
+  void Measure(FlatInfo& info, BvhStats& st) const {
+    const unsigned threads = Threads();
     // Subtrees below kWalkSplit primitives (under a larger parent) are walked first, on
     // all threads, then the top of the tree. The cut does not depend on the thread
     // count, so neither does the order in which the cost is summed: it is the same to
@@ -32,7 +33,6 @@ class Flattener {
       if (i != 0 && n.count < kWalkSplit) cut.push_back({i, uint32_t(cut.size())});
       else if (!n.IsLeaf()) stack.insert(stack.end(), {n.child + 1, n.child});
     }
-    FlatInfo info;
     info.size.resize(nodes_.size());
     info.near.resize(nodes_.size());
     std::vector<WalkStats> cutStats(cut.size());
@@ -44,22 +44,27 @@ class Flattener {
       auto it = std::lower_bound(cut.begin(), cut.end(), std::make_pair(node, 0u));
       return it != cut.end() && it->first == node ? &cutStats[it->second] : nullptr;
     });
-    const uint32_t count = info.size[0];
-    BvhStats& st = bvh.stats;
-    st.nodes = count;
+    st.nodes = info.size[0];
     st.references = uint32_t(prims_.size());
     st.leaves = top.leaves;
     st.maxLeafPrims = top.maxLeafPrims;
     st.depth = top.depth;
     st.sahCost = top.sahCost;
+  }
 
+  // The layout of a measured tree.
+  Bvh Write(const FlatInfo& info, const BvhStats& stats) const {
+    const unsigned threads = Threads();
+    const uint32_t count = stats.nodes;
+    Bvh bvh;
+    bvh.stats = stats;
     // Partitioning kept every subtree's primitives contiguous in prims_, so a leaf's
     // range [first, first + count) is valid in every child order.
     bvh.primOrder.resize(prims_.size());
     ForChunks(0, uint32_t(prims_.size()), threads, [&](uint32_t b, uint32_t e, unsigned) {
       for (uint32_t i = b; i < e; ++i) bvh.primOrder[i] = prims_[i].index;
     });
-    bvh.copies = opt_.directionCopies && uint64_t(count) * sizeof(shader::BvhNode) * 8 <= opt_.maxCopiesBytes ? 8 : 1;
+    bvh.copies = Copies(opt_, count);
     bvh.nodes.resize(size_t(count) * bvh.copies);
     // Copy 0's top levels are written here; below `spillBelow` nodes, subtrees are set
     // aside and written by all threads (they fill disjoint ranges of bvh.nodes).
@@ -77,21 +82,17 @@ class Flattener {
     return bvh;
   }
 
+  static uint32_t Copies(const BvhBuildOptions& o, uint32_t nodes) {
+    return o.directionCopies && uint64_t(nodes) * sizeof(shader::BvhNode) * 8 <= o.maxCopiesBytes ? 8 : 1;
+  }
+
  private:
+  unsigned Threads() const { return nodes_[0].count < 16384 ? 1u : threads_; }
+
   // What a walk over a subtree finds; depth counts edges from the subtree's root.
   struct WalkStats {
     double sahCost = 0.0;
     uint32_t leaves = 0, maxLeafPrims = 0, depth = 0;
-  };
-
-  // What the flat layout needs to know of an inner node: its subtree's size, which places
-  // the second child, and which child is nearer for rays going which way.
-  struct FlatInfo {
-    HugeVector<uint32_t> size;
-    // Bits 0-1: the axis along which the children's centres differ most; bit 2: set if
-    // the second child's centre is below the first's on it. Rays whose direction is
-    // negative on that axis visit the child with the lower centre first.
-    HugeVector<uint8_t> near;
   };
 
   // One post-order walk of the subtree at `root` (nodes_ has unused gaps, so only a walk
@@ -221,8 +222,13 @@ class Flattener {
 
 }  // namespace
 
-Bvh FlattenTree(const BuildTree& tree, const BvhBuildOptions& options, unsigned threads) {
-  return Flattener(tree, options, threads).Flatten();
+TreeLayout::TreeLayout(BuildTree tree, const BvhBuildOptions& options, unsigned threads)
+    : tree_(std::move(tree)), opt_(options), threads_(threads) {
+  Flattener(tree_, opt_, threads_).Measure(info_, stats_);
 }
+
+uint32_t TreeLayout::Copies() const { return Flattener::Copies(opt_, stats_.nodes); }
+
+Bvh TreeLayout::Write() const { return Flattener(tree_, opt_, threads_).Write(info_, stats_); }
 
 }  // namespace vkpt
