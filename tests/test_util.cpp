@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -33,6 +34,7 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
     r.err = "pipe failed";
     return r;
   }
+  const auto start = std::chrono::steady_clock::now();
   pid_t pid = fork();
   if (pid == 0) {
     dup2(outPipe[1], STDOUT_FILENO);
@@ -82,7 +84,10 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
   for (pollfd& f : fds)
     if (f.fd >= 0) close(f.fd);
   int status = 0;
-  waitpid(pid, &status, 0);
+  struct rusage usage {};
+  wait4(pid, &status, 0, &usage);
+  r.peakRssKiB = usage.ru_maxrss;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!r.timedOut) {
     if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
     else if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);

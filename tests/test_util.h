@@ -19,6 +19,8 @@ struct ProcessResult {
   int exitCode = -1;     // valid when !signaled && !timedOut
   int signal = 0;        // the terminating signal, if any
   bool timedOut = false;
+  double seconds = 0.0;  // wall time from start to exit
+  long peakRssKiB = 0;   // the child's peak resident memory
   std::string out, err;
   bool ExitedWith(int code) const { return !timedOut && signal == 0 && exitCode == code; }
   std::string Describe() const;  // for failure messages

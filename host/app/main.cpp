@@ -18,6 +18,7 @@
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared/sampling.h"
+#include "util/byte_size.h"
 #include "util/error.h"
 #include "vk/context.h"
 #include "vk/vk_renderer.h"
@@ -48,6 +49,8 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
               cam.name.c_str(), cam.position.x, cam.position.y, cam.position.z, cam.forward.x, cam.forward.y,
               cam.forward.z, cam.orthographic ? "orthographic ymag" : "perspective yfov(deg)",
               cam.orthographic ? cam.ymag : cam.yfov * 180.0 / M_PI);
+  std::printf("  memory: %s counted for the scene, of --max-memory %s\n", FormatBytes(scene.memoryCounted).c_str(),
+              FormatBytes(scene.memoryLimit).c_str());
   for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
   for (const std::string& f : scene.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
 }
@@ -144,7 +147,7 @@ int Run(const Options& o) {
   if (!o.diff.empty()) return Diff(o);
   CheckOutputPath(o.out);  // fail before a long render, not after
 
-  Scene scene = LoadGltf(o.scene);
+  Scene scene = LoadGltf(o.scene, o.load);
 
   uint32_t camIndex = o.camera.value_or(0);
   Camera cam;

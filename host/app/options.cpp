@@ -7,6 +7,8 @@
 #include <functional>
 #include <map>
 
+#include "util/byte_size.h"
+
 namespace vkpt {
 namespace {
 
@@ -66,6 +68,13 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      leaves clipped: faster rays where long thin triangles overlap, as in
                      CAD models; a build several times slower) or auto (build both, keep
                      the tree with the lower SAH cost) [default: auto]
+  --max-memory SIZE  host memory a scene may need (its files, decoded data, triangles
+                     through to the renderer's arrays), checked before it is read or
+                     allocated; bytes or K/M/G/T [default: half of physical RAM]
+  --allow-external-uris
+                     let the glTF read files outside its own folder (absolute paths,
+                     "..", file:// URLs, symbolic links leading out, the current
+                     directory); by default a glTF reads only files beside it
   -v, --verbose      print what was loaded and which glTF features were ignored
   -h, --help         print this help and exit
   --version          print the version and exit
@@ -124,6 +133,13 @@ Options ParseOptions(int argc, const char* const* argv) {
          if (!mode) throw UsageError("--splits must be auto, object or spatial, got \"" + v + "\"");
          o.splits = *mode;
        }},
+      {"--max-memory",
+       [&](const std::string& opt, const std::string& v) {
+         std::optional<uint64_t> bytes = ParseByteSize(v);
+         if (!bytes || *bytes < (uint64_t(1) << 20))
+           throw UsageError(opt + " expects a size of at least 1M (bytes, or with K, M, G or T), got \"" + v + "\"");
+         o.load.maxMemory = *bytes;
+       }},
       {"--backend",
        [&](const std::string&, const std::string& v) {
          if (v == "cpu") o.backend = Backend::Cpu;
@@ -147,6 +163,7 @@ Options ParseOptions(int argc, const char* const* argv) {
     if (arg == "--list-devices") { o.listDevices = true; continue; }
     if (arg == "--validation") { o.validation = true; continue; }
     if (arg == "--compare") { o.compare = true; continue; }
+    if (arg == "--allow-external-uris") { o.load.allowExternalUris = true; continue; }
     if (arg == "--diff") {
       if (inlineValue || i + 2 >= argc) throw UsageError("--diff needs two image files: --diff A.pfm B.pfm");
       o.diff = {argv[i + 1], argv[i + 2]};

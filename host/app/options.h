@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bvh/bvh.h"
+#include "scene/load_limits.h"
 
 namespace vkpt {
 
@@ -38,6 +39,7 @@ struct Options {
   std::optional<std::array<float, 3>> background;
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;  // --splits
+  LoadLimits load;                      // --max-memory, --allow-external-uris
   bool verbose = false;
   bool help = false;
   bool version = false;

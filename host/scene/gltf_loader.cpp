@@ -5,18 +5,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scene/glb_header.h"
+#include "scene/asset_access.h"
+#include "scene/external_uris.h"
 #include "scene/gltf_schema.h"
+#include "scene/scene_file.h"
+#include "util/byte_size.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -34,13 +35,21 @@ bool KeepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*,
   return true;
 }
 
-std::string ReadFileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open file: " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw Error(path + ": read error");
-  return ss.str();
+// Host memory per triangle of the instanced scene, from the loader's arrays through the
+// BVH builds (both trees with --splits auto) to the renderer's arrays and their device
+// copies: ~320 bytes measured on 1 M triangles (docs/design-notes.md), with a margin.
+constexpr uint64_t kBytesPerTriangle = 400;
+// Decoding an accessor holds each component as a double, then as a float.
+constexpr uint64_t kBytesPerDecodedComponent = 12;
+
+uint64_t SaturatingMul(uint64_t a, uint64_t b) { return b && a > UINT64_MAX / b ? UINT64_MAX : a * b; }
+
+// tinygltf's messages may quote a whole data URI: keep the first line's start.
+std::string Shorten(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  std::replace(s.begin(), s.end(), '\n', ';');
+  if (s.size() > 240) s = s.substr(0, 200) + "… (" + std::to_string(s.size()) + " characters)";
+  return s;
 }
 
 int ComponentSize(int componentType) {
@@ -71,8 +80,8 @@ int ComponentCount(int type) {
 // Reads and validates a glTF model; every check names the offending object.
 class Loader {
  public:
-  Loader(std::string path, const tinygltf::Model& model, Scene& scene)
-      : path_(std::move(path)), m_(model), scene_(scene) {}
+  Loader(std::string path, const tinygltf::Model& model, Scene& scene, MemoryBudget& budget)
+      : path_(std::move(path)), m_(model), scene_(scene), budget_(budget) {}
 
   void Run() {
     CheckAsset();
@@ -80,6 +89,8 @@ class Loader {
     for (size_t i = 0; i < m_.accessors.size(); ++i) CheckAccessor(int(i));
     CheckTexturesAndMaterials();
     LoadMaterials();
+    CheckNodeGraph();
+    ChargeGeometry();
     meshes_.resize(m_.meshes.size());
     for (size_t i = 0; i < m_.meshes.size(); ++i) DecodeMesh(int(i));
     CheckCameras();
@@ -438,6 +449,59 @@ class Loader {
     }
   }
 
+  // Triangles a primitive makes, from its accessors' counts (nothing is decoded).
+  uint64_t TriangleCount(const tinygltf::Primitive& prim) const {
+    auto pos = prim.attributes.find("POSITION");
+    size_t n = prim.indices >= 0 && size_t(prim.indices) < m_.accessors.size() ? m_.accessors[prim.indices].count
+               : pos != prim.attributes.end() && pos->second >= 0 && size_t(pos->second) < m_.accessors.size()
+                   ? m_.accessors[pos->second].count
+                   : 0;
+    if (prim.mode == TINYGLTF_MODE_TRIANGLES) return n / 3;
+    if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP || prim.mode == TINYGLTF_MODE_TRIANGLE_FAN) return n > 2 ? n - 2 : 0;
+    return 0;
+  }
+
+  uint64_t DecodedBytes(int accessor) const {
+    if (accessor < 0 || size_t(accessor) >= m_.accessors.size()) return 0;
+    const tinygltf::Accessor& a = m_.accessors[accessor];
+    return SaturatingMul(a.count, uint64_t(ComponentCount(a.type)) * kBytesPerDecodedComponent);
+  }
+
+  // How many times the scene instantiates each mesh (InstantiateScene's roots).
+  std::vector<uint64_t> MeshInstances() const {
+    std::vector<uint64_t> instances(m_.meshes.size(), 0);
+    std::vector<int> work = SceneRoots();
+    while (!work.empty()) {
+      int n = work.back();
+      work.pop_back();
+      if (n < 0 || size_t(n) >= m_.nodes.size()) continue;  // reported by InstantiateScene
+      int mesh = m_.nodes[n].mesh;
+      if (mesh >= 0 && size_t(mesh) < m_.meshes.size()) ++instances[mesh];
+      work.insert(work.end(), m_.nodes[n].children.begin(), m_.nodes[n].children.end());
+    }
+    return instances;
+  }
+
+  // The memory the meshes will take, counted before any is decoded: each primitive's
+  // positions and indices, and every triangle of every instance through to the renderer.
+  void ChargeGeometry() {
+    std::vector<uint64_t> instances = MeshInstances();
+    for (size_t i = 0; i < m_.meshes.size(); ++i) {
+      uint64_t decoded = 0, triangles = 0;
+      for (const tinygltf::Primitive& prim : m_.meshes[i].primitives) {
+        auto pos = prim.attributes.find("POSITION");
+        decoded += DecodedBytes(prim.indices) + (pos == prim.attributes.end() ? 0 : DecodedBytes(pos->second));
+        triangles += TriangleCount(prim);
+      }
+      std::string name = "meshes[" + std::to_string(i) + "]";
+      budget_.Charge(decoded, name + " (decoding its accessors)");
+      uint64_t total = SaturatingMul(triangles, instances[i]);
+      budget_.Charge(SaturatingMul(total, kBytesPerTriangle),
+                     name + " (" + std::to_string(triangles) + " triangles × " + std::to_string(instances[i]) +
+                         " instances = " + std::to_string(total) + " triangles)");
+    }
+  }
+
   void CheckCameras() {
     for (size_t i = 0; i < m_.cameras.size(); ++i) {
       const tinygltf::Camera& c = m_.cameras[i];
@@ -589,24 +653,23 @@ class Loader {
     parent_ = std::move(parent);
   }
 
+  // The roots of the scene to render: the default scene, else scene 0, else every root.
+  std::vector<int> SceneRoots() const {
+    if (m_.defaultScene >= 0 && size_t(m_.defaultScene) < m_.scenes.size()) return m_.scenes[m_.defaultScene].nodes;
+    if (m_.defaultScene == -1 && !m_.scenes.empty()) return m_.scenes[0].nodes;
+    return m_.defaultScene == -1 ? roots_ : std::vector<int>{};
+  }
+
   void InstantiateScene() {
-    CheckNodeGraph();
     for (size_t s = 0; s < m_.scenes.size(); ++s)
       for (int n : m_.scenes[s].nodes) {
         CheckIndex(n, m_.nodes, "scenes[" + std::to_string(s) + "].nodes");
         if (parent_[n] != -1) Fail("scenes[" + std::to_string(s) + "] lists nodes[" + std::to_string(n) + "], which is not a root node");
       }
-    std::vector<int> roots;
-    if (m_.defaultScene != -1) {
-      CheckIndex(m_.defaultScene, m_.scenes, "scene");
-      roots = m_.scenes[m_.defaultScene].nodes;
-    } else if (!m_.scenes.empty()) {
-      roots = m_.scenes[0].nodes;
-    } else {
-      roots = roots_;
-      if (!roots.empty()) scene_.warnings.push_back("the file defines no scene; rendering all root nodes");
-    }
-    for (int r : roots) InstantiateTree(r);
+    if (m_.defaultScene != -1) CheckIndex(m_.defaultScene, m_.scenes, "scene");
+    if (m_.scenes.empty() && !roots_.empty())
+      scene_.warnings.push_back("the file defines no scene; rendering all root nodes");
+    for (int r : SceneRoots()) InstantiateTree(r);
   }
 
   void NoteIgnoredFeatures() {
@@ -637,6 +700,7 @@ class Loader {
   std::string path_;
   const tinygltf::Model& m_;
   Scene& scene_;
+  MemoryBudget& budget_;
   bool quantized_ = false;
   uint32_t defaultMaterial_ = 0;
   std::vector<std::vector<DecodedPrimitive>> meshes_;
@@ -644,52 +708,63 @@ class Loader {
   std::vector<int> roots_;
 };
 
-}  // namespace
 
-Scene LoadGltf(const std::string& path) {
-  std::string bytes = ReadFileBytes(path);
-  if (bytes.empty()) throw Error(path + ": file is empty");
-  // Binary or text by content, not by extension: the magic "glTF" starts every GLB.
-  bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-  std::string_view json = bytes;
-  if (binary) {
-    json = CheckGlbHeader(path, bytes);
-  } else if (path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0) {
-    throw Error(path + ": not a binary glTF file (the GLB magic \"glTF\" is missing)");
-  }
+// The JSON is parsed and checked, and the files it names are listed, before tinygltf
+// opens any of them; the parse tree is freed before tinygltf builds its own.
+std::vector<ExternalUri> CheckJson(const std::string& path, std::string_view json) {
   if (json.size() >= 3 && std::memcmp(json.data(), "\xEF\xBB\xBF", 3) == 0)
     throw Error(path + ": the JSON starts with a UTF-8 byte-order mark, which glTF forbids");
-  CheckGltfSchema(path, json);
+  nlohmann::json doc = ParseGltfJson(path, json);
+  CheckGltfSchema(path, doc);
+  return ListExternalUris(doc);
+}
 
+tinygltf::Model ParseWithTinyGltf(const std::string& path, const SceneFile& file, AssetAccess& access,
+                                  std::vector<std::string>& warnings) {
   tinygltf::TinyGLTF gltf;
+  access.Install(gltf);
   gltf.SetImageLoader(KeepImageUndecoded, nullptr);
   tinygltf::Model model;
   std::string err, warn;
-  std::string baseDir;
-  if (size_t slash = path.find_last_of('/'); slash != std::string::npos) baseDir = path.substr(0, slash);
   bool ok = false;
   // tinygltf reports most problems through `err`, but some malformed input makes it
-  // throw (std::bad_alloc on a bogus URI, nlohmann-json exceptions): contain them all.
+  // throw (nlohmann-json exceptions, std::bad_alloc): contain them all.
   try {
-    ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn,
-                                            reinterpret_cast<const unsigned char*>(bytes.data()),
-                                            unsigned(bytes.size()), baseDir)
-                : gltf.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(file.bytes.data());
+    ok = file.binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes, unsigned(file.bytes.size()), access.BaseDir())
+                     : gltf.LoadASCIIFromString(&model, &err, &warn, file.bytes.data(), unsigned(file.bytes.size()),
+                                                access.BaseDir());
+  } catch (const std::bad_alloc&) {
+    throw;
   } catch (const std::exception& e) {
-    throw Error(path + ": malformed glTF (" + e.what() + ")");
+    throw Error(path + ": malformed glTF (" + Shorten(e.what()) + ")");
   }
-  auto trim = [](std::string s) {
-    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-    std::replace(s.begin(), s.end(), '\n', ';');
-    return s;
-  };
-  if (!ok) throw Error(path + ": " + (err.empty() ? std::string("malformed glTF") : trim(err)));
+  access.ThrowIfRefused();  // its message names the uri and the rule; tinygltf's would not
+  if (!ok) throw Error(path + ": " + (err.empty() ? std::string("malformed glTF") : Shorten(err)));
+  if (!warn.empty()) warnings.push_back("tinygltf: " + Shorten(warn));
+  return model;
+}
 
-  Scene scene;
-  scene.path = path;
-  if (!warn.empty()) scene.warnings.push_back("tinygltf: " + trim(warn));
-  Loader(path, model, scene).Run();
-  return scene;
+}  // namespace
+
+Scene LoadGltf(const std::string& path, const LoadLimits& limits) {
+  MemoryBudget budget(limits.maxMemory ? limits.maxMemory : DefaultMaxMemory(), path);
+  try {
+    SceneFile file = ReadSceneFile(path, budget);
+    AssetAccess access(path, CheckJson(path, file.json), limits, budget);
+    Scene scene;
+    scene.path = path;
+    tinygltf::Model model = ParseWithTinyGltf(path, file, access, scene.warnings);
+    file = SceneFile{};
+    for (const std::string& skipped : access.SkippedImages()) scene.warnings.push_back(skipped);
+    Loader(path, model, scene, budget).Run();
+    scene.memoryLimit = budget.Limit();
+    scene.memoryCounted = budget.Used();
+    return scene;
+  } catch (const std::bad_alloc&) {
+    throw Error(path + ": ran out of memory while loading, within --max-memory " + FormatBytes(budget.Limit()) +
+                " (the process may have a lower limit, e.g. ulimit -v)");
+  }
 }
 
 }  // namespace vkpt

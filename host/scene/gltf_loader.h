@@ -3,13 +3,16 @@
 
 #include <string>
 
+#include "scene/load_limits.h"
 #include "scene/scene.h"
 
 namespace vkpt {
 
 // Loads the default scene (else scene 0; with no scenes, every root node) of a glTF
-// file. Everything the renderer reads is validated first; any problem throws vkpt::Error
-// whose message starts with the file name.
-Scene LoadGltf(const std::string& path);
+// file. Everything the renderer reads is validated first, files are read only as
+// `limits` allow (scene/asset_access.h), and the memory the scene will need is counted
+// against limits.maxMemory before it is allocated; any problem throws vkpt::Error whose
+// message starts with the file name.
+Scene LoadGltf(const std::string& path, const LoadLimits& limits = {});
 
 }  // namespace vkpt

@@ -24,6 +24,16 @@ const std::set<std::string> kArrayProperties = {
 // Arrays whose elements are glTFids.
 const std::set<std::string> kIdArrays = {"nodes", "children", "joints"};
 
+// A JSON value as an error message shows it: scalars as written, containers and long
+// strings by their size (a value can be megabytes long).
+std::string Describe(const json& v) {
+  if (v.is_array()) return "an array of " + std::to_string(v.size()) + " elements";
+  if (v.is_object()) return "an object";
+  if (v.is_string() && v.get_ref<const std::string&>().size() > 40)
+    return "a string of " + std::to_string(v.get_ref<const std::string&>().size()) + " characters";
+  return v.dump();
+}
+
 void Walk(const std::string& path, const json& j, const std::string& where, bool inExtras) {
   if (j.is_object()) {
     for (const auto& [key, value] : j.items()) {
@@ -33,14 +43,14 @@ void Walk(const std::string& path, const json& j, const std::string& where, bool
       if (!extras) {
         if (kIdProperties.count(key) && !(value.is_number_integer() && value.get<long long>() >= 0) &&
             !value.is_object())  // "sampler"/"source" etc. are objects in some extensions
-          throw Error(path + ": " + at + " must be a non-negative integer index, got " + value.dump());
+          throw Error(path + ": " + at + " must be a non-negative integer index, got " + Describe(value));
         if (kArrayProperties.count(key) && !value.is_array() && !(key == "samplers" && value.is_object()))
-          throw Error(path + ": " + at + " must be an array, got " + value.dump().substr(0, 40));
+          throw Error(path + ": " + at + " must be an array, got " + Describe(value));
         bool idArray = kIdArrays.count(key) && value.is_array() && !value.empty() && !value[0].is_object();
         if (idArray)
           for (const json& id : value)
             if (!(id.is_number_integer() && id.get<long long>() >= 0))
-              throw Error(path + ": " + at + " must hold non-negative integer indices, got " + id.dump());
+              throw Error(path + ": " + at + " must hold non-negative integer indices, got " + Describe(id));
         if (key == "attributes" && value.is_object())
           for (const auto& [name, id] : value.items())
             if (!(id.is_number_integer() && id.get<long long>() >= 0))
@@ -55,7 +65,7 @@ void Walk(const std::string& path, const json& j, const std::string& where, bool
 
 }  // namespace
 
-void CheckGltfSchema(const std::string& path, std::string_view text) {
+json ParseGltfJson(const std::string& path, std::string_view text) {
   json doc;
   // glTF needs a handful of nesting levels (extras may hold more); refusing absurd depth
   // keeps both the parser and the walk below from exhausting the stack.
@@ -69,6 +79,10 @@ void CheckGltfSchema(const std::string& path, std::string_view text) {
   } catch (const json::exception& e) {
     throw Error(path + ": invalid JSON: " + e.what());
   }
+  return doc;
+}
+
+void CheckGltfSchema(const std::string& path, const json& doc) {
   if (!doc.is_object()) throw Error(path + ": the glTF JSON is not an object");
   Walk(path, doc, "", false);
 }

@@ -3,12 +3,18 @@
 // `"index": -1` or `"primitives": {}` would load as something its author did not write.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <string_view>
 
 namespace vkpt {
 
+// Parses the glTF JSON (nesting limited, so neither the parser nor a walk over the tree
+// can exhaust the stack); throws vkpt::Error naming `path` on invalid JSON.
+nlohmann::json ParseGltfJson(const std::string& path, std::string_view text);
+
 // Throws vkpt::Error naming `path` and the JSON location of the first violation.
-void CheckGltfSchema(const std::string& path, std::string_view json);
+void CheckGltfSchema(const std::string& path, const nlohmann::json& doc);
 
 }  // namespace vkpt

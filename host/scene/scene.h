@@ -46,6 +46,8 @@ struct Scene {
   // What a user should know about what was (not) loaded; printed by -v.
   std::vector<std::string> warnings;
   std::vector<std::string> ignoredFeatures;
+  // The loader's memory budget (--max-memory) and what it counted for this scene.
+  uint64_t memoryLimit = 0, memoryCounted = 0;
 };
 
 // A camera framing the whole scene, for files that define none: looks along −Z at the

@@ -4,13 +4,13 @@
 #include <cstring>
 #include <utility>
 
+#include "util/byte_size.h"
 #include "util/error.h"
 #include "vk/vk_check.h"
 
 namespace vkpt::vk {
 namespace {
 
-std::string MiB(VkDeviceSize bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
 
 uint32_t FindMemoryType(const Context& ctx, uint32_t typeBits, VkMemoryPropertyFlags want, const std::string& what) {
   const VkPhysicalDeviceMemoryProperties& mp = ctx.MemoryProperties();
@@ -55,7 +55,7 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
     alloc.memoryTypeIndex = FindMemoryType(ctx, req.memoryTypeBits, memory, what);
     VkResult r = vkAllocateMemory(ctx.Device(), &alloc, nullptr, &memory_);
     if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY)
-      throw Error("Vulkan: out of memory allocating the " + what + " buffer (" + MiB(size) + ") on " + ctx.DeviceName());
+      throw Error("Vulkan: out of memory allocating the " + what + " buffer (" + FormatBytes(size) + ") on " + ctx.DeviceName());
     VKPT_VK_CHECK(r);
     VKPT_VK_CHECK(vkBindBufferMemory(ctx.Device(), buffer_, memory_, 0));
     if (memory & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
@@ -94,8 +94,8 @@ void Buffer::Release() {
 Buffer UploadStorage(const Context& ctx, const void* data, size_t bytes, const std::string& what) {
   const VkDeviceSize limit = ctx.Properties().limits.maxStorageBufferRange;
   if (bytes > limit)
-    throw Error("the scene's " + what + " buffer needs " + MiB(bytes) + ", but " + ctx.DeviceName() +
-                " allows at most " + MiB(limit) +
+    throw Error("the scene's " + what + " buffer needs " + FormatBytes(bytes) + ", but " + ctx.DeviceName() +
+                " allows at most " + FormatBytes(limit) +
                 " per storage buffer (maxStorageBufferRange); render this scene with --backend cpu");
   return UploadDeviceLocal(ctx, data, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, what);
 }

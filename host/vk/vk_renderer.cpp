@@ -7,6 +7,7 @@
 
 #include "kPathTraceSpirv.h"
 #include "kTraceSpirv.h"
+#include "util/byte_size.h"
 #include "util/error.h"
 #include "vk/compute_pipeline.h"
 #include "vk/vk_check.h"
@@ -33,9 +34,9 @@ BufferBinding TexelBinding(uint32_t binding, const TexelBuffer& t) {
 Buffer Storage(const Context& ctx, VkDeviceSize size, const char* what) {
   const VkDeviceSize limit = ctx.Properties().limits.maxStorageBufferRange;
   if (size > limit)
-    throw Error("the image needs a " + std::to_string(size >> 20) + " MiB " + what + " buffer, but " + ctx.DeviceName() +
-                " allows at most " + std::to_string(limit >> 20) +
-                " MiB per storage buffer (maxStorageBufferRange); use a smaller --width/--height or --backend cpu");
+    throw Error("the image needs a " + FormatBytes(size) + " " + what + " buffer, but " + ctx.DeviceName() +
+                " allows at most " + FormatBytes(limit) +
+                " per storage buffer (maxStorageBufferRange); use a smaller --width/--height or --backend cpu");
   return Buffer(ctx, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
 }
