@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -26,7 +27,7 @@ std::string ProcessResult::Describe() const {
 }
 
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds, const std::string& cwd,
-                      const std::vector<std::string>& env) {
+                      const std::vector<std::string>& env, std::optional<uint64_t> fileSizeLimit) {
   ProcessResult r;
   int outPipe[2], errPipe[2];
   if (pipe(outPipe) != 0 || pipe(errPipe) != 0) {
@@ -43,6 +44,10 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
     dup2(devnull, STDIN_FILENO);
     if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(126);
     for (const std::string& kv : env) putenv(const_cast<char*>(kv.c_str()));
+    if (fileSizeLimit) {
+      rlimit limit{*fileSizeLimit, *fileSizeLimit};
+      if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(126);
+    }
     std::vector<char*> argv;
     std::string bin = VKPT_BINARY;
     argv.push_back(bin.data());
