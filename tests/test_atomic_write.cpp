@@ -4,7 +4,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -16,34 +15,18 @@ namespace vkpt {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string FreshDirectory(const std::string& name) {
-  const std::string dir = test::TempPath(name);
-  fs::remove_all(dir);
-  fs::create_directory(dir);
-  return dir;
-}
-
-std::vector<std::string> Listing(const std::string& dir) {
-  std::vector<std::string> names;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  return names;
-}
-
-std::vector<uint8_t> ReadBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using test::DirectoryListing;
+using test::FreshTempDirectory;
 
 TEST(AtomicWrite, WritesExactlyTheBytesAndReplacesTheOldFile) {
-  const std::string dir = FreshDirectory("atomic-bytes");
+  const std::string dir = FreshTempDirectory("atomic-bytes");
   const std::string path = dir + "/out.bin";
   std::vector<uint8_t> bytes(3 << 20);  // several MiB: more than one write(2) may take
   for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = uint8_t(i * 7 + (i >> 11));
   std::ofstream(path) << "old contents";
   WriteFileAtomically(path, bytes);
-  EXPECT_TRUE(ReadBytes(path) == bytes);
-  EXPECT_EQ(Listing(dir), std::vector<std::string>{"out.bin"});
+  EXPECT_TRUE(test::ReadFile(path) == std::string(bytes.begin(), bytes.end()));
+  EXPECT_EQ(DirectoryListing(dir), std::vector<std::string>{"out.bin"});
   fs::remove_all(dir);
 }
 
@@ -60,7 +43,7 @@ TEST(AtomicWrite, MissingDirectoryNamesTheFileAndTheError) {
 
 TEST(AtomicWrite, FailedRenameRemovesTheTemporary) {
   // The destination is a directory: everything succeeds up to rename(2), which fails.
-  const std::string dir = FreshDirectory("atomic-rename");
+  const std::string dir = FreshTempDirectory("atomic-rename");
   const std::string path = dir + "/out.bin";
   fs::create_directory(path);
   try {
@@ -70,7 +53,7 @@ TEST(AtomicWrite, FailedRenameRemovesTheTemporary) {
     EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
     EXPECT_NE(std::string(e.what()).find("Is a directory"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(Listing(dir), std::vector<std::string>{"out.bin"}) << "the temporary file was left behind";
+  EXPECT_EQ(DirectoryListing(dir), std::vector<std::string>{"out.bin"}) << "the temporary file was left behind";
   fs::remove_all(dir);
 }
 

@@ -7,9 +7,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 
 namespace vkpt::test {
@@ -18,6 +22,26 @@ std::string SourcePath(const std::string& relative) { return std::string(VKPT_SO
 std::string CorpusPath(const std::string& relative) { return std::string(VKPT_CORPUS_DIR) + "/" + relative; }
 std::string TempPath(const std::string& name) {
   return "/tmp/vkpt-test-" + std::to_string(::getpid()) + "-" + name;
+}
+
+std::string FreshTempDirectory(const std::string& name) {
+  const std::string dir = TempPath(name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directory(dir);
+  return dir;
+}
+
+std::vector<std::string> DirectoryListing(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(dir))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 std::string ProcessResult::Describe() const {

@@ -16,6 +16,9 @@ namespace vkpt::test {
 std::string SourcePath(const std::string& relative);  // <repo>/relative
 std::string CorpusPath(const std::string& relative);  // ../shared/gltf-corpus/relative
 std::string TempPath(const std::string& name);        // unique per test process
+std::string FreshTempDirectory(const std::string& name);           // TempPath(name), created empty
+std::vector<std::string> DirectoryListing(const std::string& dir);  // entry names, sorted
+std::string ReadFile(const std::string& path);                      // every byte
 
 struct ProcessResult {
   int exitCode = -1;     // valid when !signaled && !timedOut

@@ -3,10 +3,9 @@
 // partial image nor a temporary file behind; an existing image stays as it was.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +15,8 @@ namespace vkpt {
 namespace {
 
 namespace fs = std::filesystem;
+using test::DirectoryListing;
+using test::FreshTempDirectory;
 using test::ProcessResult;
 
 // Below every format's size at 48x48 pixels but above zero, so the writer sees a short
@@ -28,26 +29,6 @@ ProcessResult RenderCornell(const std::string& out, std::optional<uint64_t> file
                        60.0, "", {}, fileSizeLimit);
 }
 
-// A new, empty directory per test, so "nothing left behind" can be checked exactly.
-std::string FreshDirectory(const std::string& name) {
-  const std::string dir = test::TempPath(name);
-  fs::remove_all(dir);
-  fs::create_directory(dir);
-  return dir;
-}
-
-std::vector<std::string> Listing(const std::string& dir) {
-  std::vector<std::string> names;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 void ExpectWriteError(const ProcessResult& r, const std::string& out) {
   EXPECT_TRUE(r.ExitedWith(1)) << r.Describe();
   EXPECT_EQ(r.err.rfind("vkpt: error: " + out + ": ", 0), 0u) << r.err;
@@ -57,7 +38,8 @@ void ExpectWriteError(const ProcessResult& r, const std::string& out) {
 class WriteFailure : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(WriteFailure, FileSizeLimitExitsOneAndLeavesNoFile) {
-  const std::string dir = FreshDirectory("write-failure-" + GetParam());
+  // A new, empty directory per test, so "nothing left behind" can be checked exactly.
+  const std::string dir = FreshTempDirectory("write-failure-" + GetParam());
   const std::string out = dir + "/cornell." + GetParam();
   // Without the limit the image is written and is larger than the limit: the limit is
   // what makes the next run fail.
@@ -67,19 +49,19 @@ TEST_P(WriteFailure, FileSizeLimitExitsOneAndLeavesNoFile) {
   fs::remove(out);
 
   ExpectWriteError(RenderCornell(out, kFileSizeLimit), out);
-  EXPECT_EQ(Listing(dir), std::vector<std::string>{}) << "a partial image or a temporary file was left behind";
+  EXPECT_EQ(DirectoryListing(dir), std::vector<std::string>{}) << "a partial image or a temporary file was left behind";
   fs::remove_all(dir);
 }
 
 TEST_P(WriteFailure, FileSizeLimitKeepsThePreviousImage) {
-  const std::string dir = FreshDirectory("write-failure-keep-" + GetParam());
+  const std::string dir = FreshTempDirectory("write-failure-keep-" + GetParam());
   const std::string out = dir + "/cornell." + GetParam();
   const std::string previous = "the previous render, which a failed write must not touch\n";
   std::ofstream(out, std::ios::binary) << previous;
 
   ExpectWriteError(RenderCornell(out, kFileSizeLimit), out);
-  EXPECT_EQ(ReadAll(out), previous);
-  EXPECT_EQ(Listing(dir), std::vector<std::string>{"cornell." + GetParam()}) << "a temporary file was left behind";
+  EXPECT_EQ(test::ReadFile(out), previous);
+  EXPECT_EQ(DirectoryListing(dir), std::vector<std::string>{"cornell." + GetParam()}) << "a temporary file was left behind";
   fs::remove_all(dir);
 }
 
