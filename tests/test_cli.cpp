@@ -7,8 +7,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <regex>
 #include <string>
 #include <vector>
@@ -20,17 +18,14 @@ namespace vkpt {
 namespace {
 
 namespace fs = std::filesystem;
+using test::DirectoryListing;
 using test::ProcessResult;
+using test::ReadFile;
 using test::RunVkpt;
 using test::SourcePath;
 using test::TempPath;
 
 const std::string kCornell = SourcePath("scenes/cornell.gltf");
-
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 // Files in `dir` whose name starts with `prefix` (to catch leftover temporaries).
 std::vector<std::string> FilesStartingWith(const std::string& dir, const std::string& prefix) {
@@ -180,7 +175,7 @@ TEST(Cli, CameraZeroIsTheFileCamera) {
   const std::string a = TempPath("cli-cam-default.pfm"), b = TempPath("cli-cam-0.pfm");
   ASSERT_TRUE(RenderCornell(a).ExitedWith(0));
   ASSERT_TRUE(RenderCornell(b, {"--camera", "0"}).ExitedWith(0));
-  EXPECT_EQ(ReadAll(a), ReadAll(b));
+  EXPECT_EQ(ReadFile(a), ReadFile(b));
   std::remove(a.c_str());
   std::remove(b.c_str());
 }
@@ -225,9 +220,7 @@ TEST(Cli, OutputPathIsADirectoryLeavesNoTemporary) {
   EXPECT_NE(r.err.find(out), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_directory(out));
   EXPECT_TRUE(fs::is_empty(out));
-  std::vector<std::string> files;
-  for (const fs::directory_entry& e : fs::directory_iterator(parent)) files.push_back(e.path().filename().string());
-  EXPECT_EQ(files, std::vector<std::string>{"image.pfm"}) << "a temporary file was left behind";
+  EXPECT_EQ(DirectoryListing(parent), std::vector<std::string>{"image.pfm"}) << "a temporary file was left behind";
   fs::remove_all(parent);
 }
 
@@ -250,11 +243,9 @@ TEST(Cli, DefaultOutputIsSceneNamePngInWorkingDirectory) {
   fs::create_directory(dir);
   ProcessResult r = RunVkpt({"--scene", kCornell, "--width", "16", "--height", "16", "--spp", "1"}, 60.0, dir);
   EXPECT_TRUE(r.ExitedWith(0)) << r.Describe();
-  const std::string png = ReadAll(dir + "/cornell.png");
+  const std::string png = ReadFile(dir + "/cornell.png");
   EXPECT_EQ(png.substr(0, 4), "\x89PNG");
-  std::vector<std::string> files;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir)) files.push_back(e.path().filename().string());
-  EXPECT_EQ(files, std::vector<std::string>{"cornell.png"});
+  EXPECT_EQ(DirectoryListing(dir), std::vector<std::string>{"cornell.png"});
   fs::remove_all(dir);
 }
 
@@ -269,7 +260,7 @@ TEST(Cli, OutputFormatsHaveTheRightMagic) {
     std::remove(out.c_str());
     ProcessResult r = RenderCornell(out);
     ASSERT_TRUE(r.ExitedWith(0)) << c.ext << ": " << r.Describe();
-    std::string bytes = ReadAll(out);
+    std::string bytes = ReadFile(out);
     EXPECT_GT(bytes.size(), 24u * 24u / 4) << c.ext;
     EXPECT_EQ(bytes.substr(0, c.magic.size()), c.magic) << c.ext;
     EXPECT_TRUE(FilesStartingWith("/tmp", fs::path(out).filename().string() + ".partial").empty()) << c.ext;
@@ -334,7 +325,7 @@ TEST(Cli, SameSeedIsBitIdenticalAcrossThreadCounts) {
   ASSERT_TRUE(rc.ExitedWith(0)) << rc.Describe();
   EXPECT_TRUE(std::regex_search(ra.out, std::regex("\\(1 threads?\\)"))) << ra.out;
   EXPECT_TRUE(std::regex_search(rb.out, std::regex("\\(2 threads?\\)"))) << rb.out;
-  std::string ba = ReadAll(a), bb = ReadAll(b), bc = ReadAll(c);
+  std::string ba = ReadFile(a), bb = ReadFile(b), bc = ReadFile(c);
   ASSERT_GT(ba.size(), 48u * 48u * 12u);
   EXPECT_TRUE(ba == bb) << "--seed 7 differs between --threads 1 and --threads 2";
   EXPECT_FALSE(ba == bc) << "--seed 7 and --seed 8 gave the same image";
@@ -360,7 +351,7 @@ TEST(Cli, VulkanSameSeedIsBitIdentical) {
   ASSERT_TRUE(rb.ExitedWith(0)) << rb.Describe();
   ASSERT_TRUE(rc.ExitedWith(0)) << rc.Describe();
   EXPECT_NE(ra.out.find("vulkan"), std::string::npos) << ra.out;
-  std::string ba = ReadAll(a), bb = ReadAll(b), bc = ReadAll(c);
+  std::string ba = ReadFile(a), bb = ReadFile(b), bc = ReadFile(c);
   ASSERT_GT(ba.size(), 48u * 48u * 12u);
   EXPECT_TRUE(ba == bb) << "two Vulkan renders with --seed 7 differ";
   EXPECT_FALSE(ba == bc) << "--seed 7 and --seed 8 gave the same image";

@@ -7,9 +7,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 
 namespace vkpt::test {
@@ -20,6 +24,26 @@ std::string TempPath(const std::string& name) {
   return "/tmp/vkpt-test-" + std::to_string(::getpid()) + "-" + name;
 }
 
+std::string FreshTempDirectory(const std::string& name) {
+  const std::string dir = TempPath(name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directory(dir);
+  return dir;
+}
+
+std::vector<std::string> DirectoryListing(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(dir))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
 std::string ProcessResult::Describe() const {
   std::string s = timedOut ? "timed out" : signal ? "killed by signal " + std::to_string(signal)
                                                   : "exit code " + std::to_string(exitCode);
@@ -27,7 +51,7 @@ std::string ProcessResult::Describe() const {
 }
 
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds, const std::string& cwd,
-                      const std::vector<std::string>& env) {
+                      const std::vector<std::string>& env, std::optional<uint64_t> fileSizeLimit) {
   ProcessResult r;
   int outPipe[2], errPipe[2];
   if (pipe(outPipe) != 0 || pipe(errPipe) != 0) {
@@ -45,6 +69,10 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
     dup2(devnull, STDIN_FILENO);
     if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(126);
     for (const std::string& kv : env) putenv(const_cast<char*>(kv.c_str()));
+    if (fileSizeLimit) {
+      rlimit limit{*fileSizeLimit, *fileSizeLimit};
+      if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(126);
+    }
     std::vector<char*> argv;
     std::string bin = VKPT_BINARY;
     argv.push_back(bin.data());

@@ -2,6 +2,8 @@
 // Carlo tests, paths to the scenes and the corpus.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,9 @@ namespace vkpt::test {
 std::string SourcePath(const std::string& relative);  // <repo>/relative
 std::string CorpusPath(const std::string& relative);  // ../shared/gltf-corpus/relative
 std::string TempPath(const std::string& name);        // unique per test process
+std::string FreshTempDirectory(const std::string& name);           // TempPath(name), created empty
+std::vector<std::string> DirectoryListing(const std::string& dir);  // entry names, sorted
+std::string ReadFile(const std::string& path);                      // every byte
 
 struct ProcessResult {
   int exitCode = -1;     // valid when !signaled && !timedOut
@@ -28,9 +33,12 @@ struct ProcessResult {
 
 // Runs `build/vkpt args...`, killing it after timeoutSeconds. A non-empty `cwd` is the
 // child's working directory (for relative paths and the default output name); `env`
-// entries ("NAME=value") are set in the child's environment.
+// entries ("NAME=value") are set in the child's environment. A `fileSizeLimit` (bytes)
+// becomes the child's RLIMIT_FSIZE (`ulimit -f`): its file writes fail past that size,
+// as they would on a full disk.
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds = 120.0,
-                      const std::string& cwd = "", const std::vector<std::string>& env = {});
+                      const std::string& cwd = "", const std::vector<std::string>& env = {},
+                      std::optional<uint64_t> fileSizeLimit = std::nullopt);
 
 // Statistics.
 double ChiSquareSurvival(double statistic, double dof);  // P(X >= statistic), X ~ χ²(dof)

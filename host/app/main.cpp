@@ -1,6 +1,7 @@
 // vkpt: command-line front end. Data flows one way:
 //   glTF file → Scene (host/scene) → BVH + RenderScene (host/bvh, host/render)
 //   → renderer (host/cpu or host/vk) → Image (host/image) → file.
+#include <signal.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -254,6 +255,10 @@ int Run(const Options& o) {
 
 int main(int argc, char** argv) {
   using namespace vkpt;
+  // Past a file-size limit (ulimit -f) the kernel sends SIGXFSZ, whose default action
+  // kills vkpt mid-write with the temporary left behind; ignored, write(2) fails with
+  // EFBIG and the checked writer reports it and cleans up.
+  signal(SIGXFSZ, SIG_IGN);
   Options o;
   try {
     o = ParseOptions(argc, argv);

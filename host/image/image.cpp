@@ -1,24 +1,16 @@
 #include "image/image.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <unistd.h>
 
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_STATIC  // Debian's tinygltf links its own copy; keep ours private
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#include <stb_image_write.h>
-#pragma GCC diagnostic pop
-#include <tinyexr.h>
-
+#include "image/image_encode.h"
+#include "util/atomic_write.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -31,39 +23,6 @@ std::string Lower(std::string s) {
 
 bool EndsWith(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-// Each writer writes `file` (a temporary) and names `shown` (the user's path) in errors.
-void WritePfm(const Image& img, const std::string& file, const std::string& shown) {
-  FILE* f = std::fopen(file.c_str(), "wb");
-  if (!f) throw Error(shown + ": cannot create file: " + std::strerror(errno));
-  // PFM: "PF" = RGB, negative scale = little-endian, rows stored bottom to top.
-  std::fprintf(f, "PF\n%u %u\n-1.0\n", img.width, img.height);
-  bool ok = true;
-  for (uint32_t y = img.height; y-- > 0;)
-    ok &= std::fwrite(&img.pixels[size_t(y) * img.width], sizeof(glm::vec3), img.width, f) == img.width;
-  ok &= std::fclose(f) == 0;
-  if (!ok) throw Error(shown + ": write failed: " + std::strerror(errno));
-}
-
-void WritePng(const Image& img, const std::string& file, const std::string& shown, float exposure) {
-  const float scale = std::exp2(exposure);
-  std::vector<uint8_t> rgb(size_t(img.width) * img.height * 3);
-  for (size_t i = 0; i < img.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = LinearToSrgb8(img.pixels[i][c] * scale);
-  errno = 0;
-  if (!stbi_write_png(file.c_str(), int(img.width), int(img.height), 3, rgb.data(), int(img.width * 3)))
-    throw Error(shown + ": PNG write failed" + (errno ? std::string(": ") + std::strerror(errno) : ""));
-}
-
-void WriteExr(const Image& img, const std::string& file, const std::string& shown) {
-  const char* err = nullptr;
-  int rc = SaveEXR(&img.pixels[0].x, int(img.width), int(img.height), 3, /*save_as_fp16=*/0, file.c_str(), &err);
-  if (rc != TINYEXR_SUCCESS) {
-    std::string msg = err ? err : "unknown error";
-    if (err) FreeEXRErrorMessage(err);
-    throw Error(shown + ": EXR write failed: " + msg);
-  }
 }
 
 }  // namespace
@@ -97,24 +56,13 @@ uint8_t LinearToSrgb8(float linear) {
 void WriteImage(const Image& image, const std::string& path, float exposure) {
   ImageFormat format = FormatFromPath(path);
   if (image.pixels.empty()) throw Error(path + ": refusing to write an empty image");
-  std::string tmp = path + ".partial-" + std::to_string(::getpid());
-  // The temporary keeps the real extension last so writers that check it are happy.
-  tmp += path.substr(path.find_last_of('.'));
-  try {
-    switch (format) {
-      case ImageFormat::Png: WritePng(image, tmp, path, exposure); break;
-      case ImageFormat::Pfm: WritePfm(image, tmp, path); break;
-      case ImageFormat::Exr: WriteExr(image, tmp, path); break;
-    }
-  } catch (...) {
-    std::remove(tmp.c_str());
-    throw;
+  std::vector<uint8_t> bytes;
+  switch (format) {
+    case ImageFormat::Png: bytes = EncodePng(image, exposure); break;
+    case ImageFormat::Pfm: bytes = EncodePfm(image); break;
+    case ImageFormat::Exr: bytes = EncodeExr(image, path); break;
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    int e = errno;
-    std::remove(tmp.c_str());
-    throw Error(path + ": cannot write file: " + std::strerror(e));
-  }
+  WriteFileAtomically(path, bytes);
 }
 
 Image ReadPfm(const std::string& path) {

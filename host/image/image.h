@@ -30,8 +30,9 @@ ImageFormat FormatFromPath(const std::string& path);
 // directory exists and is writable; throws vkpt::Error naming the path otherwise.
 void CheckOutputPath(const std::string& path);
 
-// Writes atomically: to a temporary file beside `path`, renamed over it only when
-// complete, so an error never leaves a partial file that looks like a result.
+// Encodes in memory, then writes atomically (util/atomic_write.h): every write checked,
+// fsynced, renamed over `path` only when complete. On failure vkpt::Error names `path`
+// and the OS error, and neither a partial file nor a temporary is left behind.
 // `exposure` (stops) applies to PNG only; float formats stay linear and unscaled.
 void WriteImage(const Image& image, const std::string& path, float exposure = 0.0f);
 

@@ -1,0 +1,16 @@
+// The one place output files are written: complete or not at all.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace vkpt {
+
+// Writes `bytes` to a new temporary file beside `path` (same directory, so the rename is
+// atomic), checks every write, fsyncs, closes and renames it over `path`. On any failure
+// the temporary is removed, `path` is left as it was, and vkpt::Error names `path` and
+// the OS error. SIGINT/SIGTERM meanwhile also remove the temporary (TempFileGuard).
+void WriteFileAtomically(const std::string& path, std::span<const uint8_t> bytes);
+
+}  // namespace vkpt
