@@ -8,7 +8,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -20,7 +19,6 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cpu/path_tracer.h"
@@ -34,6 +32,7 @@
 #include "shared/sampling.h"
 #include "image/image.h"
 #include "util/error.h"
+#include "util/parallel.h"
 #include "vk/vk_renderer.h"
 
 #ifdef VKPT_HAVE_EMBREE
@@ -124,18 +123,8 @@ BvhBuildOptions BuildOptions(const Options& o, unsigned threads) {
   return b;
 }
 
-// Runs f(i) for i in [0, n) on `threads` threads (dynamic chunks of 256).
-void ParallelFor(size_t n, unsigned threads, const std::function<void(size_t)>& f) {
-  std::atomic<size_t> next{0};
-  auto work = [&] {
-    for (size_t begin; (begin = next.fetch_add(256)) < n;)
-      for (size_t i = begin; i < std::min(n, begin + 256); ++i) f(i);
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-}
+// Rays per ParallelFor step: one ray is too short a task to take from a shared counter.
+constexpr size_t kRayGrain = 256;
 
 // Camera rays through pixel centres, then one cosine-weighted bounce from every hit:
 // the same two ray sets for every tracer.
@@ -154,7 +143,7 @@ RaySets MakeRays(const RenderScene& rs, const shader::FrameParams& p, unsigned t
   std::vector<Hit> hits(r.camera.size());
   ParallelFor(hits.size(), threads, [&](size_t i) {
     hits[i] = IntersectClosest(rs, r.camera[i].origin, r.camera[i].dir, r.camera[i].tMax);
-  });
+  }, kRayGrain);
   for (size_t i = 0; i < hits.size(); ++i) {
     if (hits[i].t < 0.0f) continue;
     const shader::Triangle& t = rs.triangles[hits[i].triangle];
@@ -179,7 +168,7 @@ TraceRun TraceCpu(const RenderScene& rs, const std::vector<shader::RayQuery>& ra
   auto t0 = Clock::now();
   ParallelFor(rays.size(), threads, [&](size_t i) {
     run.t[i] = IntersectClosest(rs, rays[i].origin, rays[i].dir, rays[i].tMax).t;
-  });
+  }, kRayGrain);
   run.seconds = Seconds(t0);
   return run;
 }
@@ -262,7 +251,7 @@ struct Embree {
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(scene, &ctx, &rh);
       run.t[i] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1.0f : rh.ray.tfar;
-    });
+    }, kRayGrain);
     run.seconds = Seconds(t0);
     return run;
   }
@@ -457,7 +446,7 @@ int Quality(const Options& o, unsigned threads) {
 }
 
 int Run(const Options& o) {
-  unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = ThreadCount(o.threads);
   // lavapipe reads LP_NUM_THREADS when its device is created: set it first.
   setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
   if (!o.quality.empty()) return Quality(o, threads);

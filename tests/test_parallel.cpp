@@ -1,27 +1,69 @@
-// The thread helpers: every index runs once, and an exception on any thread reaches the
-// caller (a worker thread's exception would otherwise end the process).
+// The thread helpers and their users: every index runs once, and an exception on any
+// thread reaches the caller (a worker thread's exception would otherwise end the process).
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <new>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
+#include "cpu/path_tracer.h"
+#include "scene/gltf_loader.h"
+#include "test_util.h"
 #include "util/parallel.h"
+
+namespace vkpt {
+namespace {
+
+// While armed, every allocation fails (std::bad_alloc) on threads other than the one
+// that armed it: a worker's out-of-memory on demand. See operator new below.
+std::atomic<bool> gFailOtherThreads{false};
+std::thread::id gArmedBy;
+
+struct FailAllocationsOnOtherThreads {
+  FailAllocationsOnOtherThreads() {
+    gArmedBy = std::this_thread::get_id();
+    gFailOtherThreads = true;
+  }
+  ~FailAllocationsOnOtherThreads() { gFailOtherThreads = false; }
+};
+
+}  // namespace
+}  // namespace vkpt
+
+void* operator new(std::size_t size) {
+  if (vkpt::gFailOtherThreads.load(std::memory_order_relaxed) && std::this_thread::get_id() != vkpt::gArmedBy)
+    throw std::bad_alloc();
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace vkpt {
 namespace {
 
 TEST(Parallel, ForVisitsEveryIndexOnce) {
   for (unsigned threads : {1u, 2u, 5u}) {
-    std::vector<std::atomic<int>> seen(1000);
-    ParallelFor(seen.size(), threads, [&](size_t k) { seen[k]++; });
-    for (const auto& s : seen) EXPECT_EQ(s.load(), 1);
+    for (size_t grain : {size_t(1), size_t(7)}) {
+      std::vector<std::atomic<int>> seen(1000);
+      ParallelFor(seen.size(), threads, [&](size_t k) { seen[k]++; }, grain);
+      for (const auto& s : seen) EXPECT_EQ(s.load(), 1);
+    }
     std::vector<std::atomic<int>> chunks(1001);
     ForChunks(0, uint32_t(chunks.size()), threads, [&](uint32_t b, uint32_t e, unsigned) {
       for (uint32_t i = b; i < e; ++i) chunks[i]++;
     });
     for (const auto& s : chunks) EXPECT_EQ(s.load(), 1);
+    std::vector<double> reported;
+    std::vector<std::atomic<int>> rows(100);
+    ParallelForWithProgress(
+        rows.size(), threads, [&](size_t k) { rows[k]++; }, [&](double f) { reported.push_back(f); });
+    for (const auto& s : rows) EXPECT_EQ(s.load(), 1);
+    ASSERT_FALSE(reported.empty());
+    EXPECT_EQ(reported.back(), 1.0);
   }
 }
 
@@ -38,7 +80,61 @@ TEST(Parallel, ExceptionsOnAnyThreadReachTheCaller) {
                              if (e == 1000) throw std::runtime_error("chunk failed");
                            }),
                  std::runtime_error);
+    // The work runs on threads of its own; the progress reports must stop too.
+    EXPECT_THROW(ParallelForWithProgress(
+                     1000, threads,
+                     [](size_t k) {
+                       if (k == 777) throw std::bad_alloc();
+                     },
+                     [](double) {}),
+                 std::bad_alloc);
   }
+}
+
+// A RenderScene whose CPU tree is a chain of 100 pairs, each with the next pair and an
+// empty leaf as children, both boxes covering everything: every ray defers 100 leaves,
+// more than the traversal's inline stack holds, so it allocates (and the leaves hold
+// nothing, so every ray misses).
+RenderScene ChainScene() {
+  RenderScene rs = PrepareRenderScene(LoadGltf(test::SourcePath("scenes/cornell.gltf")));
+  constexpr uint32_t kPairs = 100, kEmptyLeaf = (0u << 4) | 1u;
+  rs.pairLayout = {};
+  rs.pairLayout.packets.resize(1);
+  for (uint32_t& index : rs.pairLayout.packets[0].index) index = shader::kInvalidIndex;
+  for (uint32_t i = 0; i < kPairs; ++i) {
+    BvhPairNode p{};
+    for (auto& axis : p.bounds) axis[0] = axis[1] = -1e30f, axis[2] = axis[3] = 1e30f;
+    p.child[0] = i + 1 < kPairs ? (i + 1) << 4 : kEmptyLeaf;
+    p.child[1] = kEmptyLeaf;
+    rs.pairLayout.pairs.push_back(p);
+  }
+  return rs;
+}
+
+TEST(Parallel, CpuRendererPassesAWorkersExceptionToTheCaller) {
+  const RenderScene rs = ChainScene();
+  shader::FrameParams p = MakeFrameParams(rs, DefaultCamera(Bounds3f{{-1, -1, -1}, {1, 1, 1}}), 8, 8);
+  p.sampleCount = 1;
+  p.maxDepth = 4;
+  CpuRenderOptions options;
+  options.threads = 1;
+  EXPECT_EQ(RenderCpu(rs, p, options).image.pixels.size(), 64u);  // the scene renders
+  // With progress reports the calling thread only reports; the rows run on a worker,
+  // whose traversal stack cannot grow.
+  options.progress = [](double) {};
+  FailAllocationsOnOtherThreads fail;
+  EXPECT_THROW(RenderCpu(rs, p, options), std::bad_alloc);
+}
+
+TEST(Parallel, CpuRendererPassesAProgressCallbacksExceptionToTheCaller) {
+  const RenderScene rs = PrepareRenderScene(LoadGltf(test::SourcePath("scenes/cornell.gltf")));
+  shader::FrameParams p = MakeFrameParams(rs, DefaultCamera(Bounds3f{{-1, -1, -1}, {1, 1, 1}}), 16, 16);
+  p.sampleCount = 1;
+  p.maxDepth = 4;
+  CpuRenderOptions options;
+  options.threads = 2;
+  options.progress = [](double) { throw std::runtime_error("progress display failed"); };
+  EXPECT_THROW(RenderCpu(rs, p, options), std::runtime_error);
 }
 
 }  // namespace

@@ -1,10 +1,11 @@
-// The BVH as the builder leaves it (bvh_builder.cpp), before it is laid out for the
+// The BVH as the builder leaves it (tree_builder.cpp), before it is laid out for the
 // renderers (flatten.cpp): nodes in an array with unused gaps, each node's primitives a
 // range of the primitive array. Internal to host/bvh/.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "bvh/bvh.h"
 #include "util/bounds.h"
@@ -43,6 +44,12 @@ struct BuildTree {
   HugeVector<BuildPrim> prims;  // leaves' ranges index this; BuildPrim::index is the input's
   float rootArea = 0.0f;        // the root box's surface area
 };
+
+// The binned SAH tree over primitive boxes `bounds` (tree_builder.cpp), built on
+// `threads` threads (the tree is the same for any count). `vertices`, three per
+// primitive, allow spatial splits; empty for object splits only.
+BuildTree BuildTreeOver(std::span<const Bounds3f> bounds, const BvhBuildOptions& options,
+                        std::span<const glm::vec3> vertices, unsigned threads);
 
 // What the flat layout needs to know of a BuildTree's inner nodes, by node index: the
 // subtree's size (which places the second child), and which child is nearer for rays

@@ -1,15 +1,14 @@
 // The CPU reference renderer: runs the shared estimator (shaders/shared/path.h) over
-// all pixels on a pool of threads.
+// all pixels, a row at a time on util/parallel.h's threads.
 #include "cpu/path_tracer.h"
 
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <thread>
-#include <vector>
 
 #include "cpu/cpu_path.h"
 #include "util/error.h"
+#include "util/parallel.h"
 
 namespace vkpt {
 
@@ -28,61 +27,41 @@ CpuRenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, c
   CpuRenderResult result;
   result.image = Image(params.width, params.height);
   result.image.variance.assign(result.image.pixels.size(), glm::vec3(0.0f));
-  unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  threads = std::min<unsigned>(threads, params.height);
+  const unsigned threads = std::min<unsigned>(ThreadCount(options.threads), params.height);
   result.threads = threads;
 
-  std::atomic<uint32_t> nextRow{0}, rowsDone{0};
-  std::vector<SampleStats> perThread(threads);
-  auto worker = [&](unsigned id) {
-    // Counted locally: the threads' entries of perThread share a cache line, and
-    // updating them per sample would bounce it between cores.
+  // Counted per row and added up once per row: per sample, the shared counters would
+  // bounce their cache line between cores.
+  std::atomic<uint64_t> rays{0}, nonFinite{0};
+  auto renderRow = [&](size_t y) {
     SampleStats st;
-    for (uint32_t y; (y = nextRow.fetch_add(1)) < params.height;) {
-      for (uint32_t x = 0; x < params.width; ++x) {
-        glm::dvec3 sum(0.0), sumSq(0.0);
-        for (uint32_t s = 0; s < params.sampleCount; ++s) {
-          glm::vec3 L = SampleRadiance(scene, params, x, y, params.sampleBegin + s, st);
-          if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z)) {
-            ++st.nonFinite;
-            continue;
-          }
-          sum += glm::dvec3(L);
-          sumSq += glm::dvec3(L) * glm::dvec3(L);
+    for (uint32_t x = 0; x < params.width; ++x) {
+      glm::dvec3 sum(0.0), sumSq(0.0);
+      for (uint32_t s = 0; s < params.sampleCount; ++s) {
+        glm::vec3 L = SampleRadiance(scene, params, x, uint32_t(y), params.sampleBegin + s, st);
+        if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z)) {
+          ++st.nonFinite;
+          continue;
         }
-        const double n = params.sampleCount;
-        glm::dvec3 mean = sum / n;
-        size_t i = size_t(y) * params.width + x;
-        result.image.pixels[i] = glm::vec3(mean);
-        // Unbiased sample variance divided by n: the variance of the pixel mean.
-        if (n > 1) result.image.variance[i] = glm::vec3(glm::max(sumSq / n - mean * mean, 0.0) / (n - 1.0));
+        sum += glm::dvec3(L);
+        sumSq += glm::dvec3(L) * glm::dvec3(L);
       }
-      rowsDone.fetch_add(1);
+      const double n = params.sampleCount;
+      glm::dvec3 mean = sum / n;
+      size_t i = y * params.width + x;
+      result.image.pixels[i] = glm::vec3(mean);
+      // Unbiased sample variance divided by n: the variance of the pixel mean.
+      if (n > 1) result.image.variance[i] = glm::vec3(glm::max(sumSq / n - mean * mean, 0.0) / (n - 1.0));
     }
-    perThread[id] = st;
+    rays.fetch_add(st.rays);
+    nonFinite.fetch_add(st.nonFinite);
   };
 
   auto t0 = std::chrono::steady_clock::now();
-  std::vector<std::thread> pool;
-  for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker, i);
-  if (options.progress) {
-    // The calling thread reports progress and then joins the work.
-    std::thread w0(worker, 0u);
-    while (rowsDone.load() < params.height) {
-      options.progress(double(rowsDone.load()) / params.height);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    w0.join();
-    options.progress(1.0);
-  } else {
-    worker(0);
-  }
-  for (auto& t : pool) t.join();
+  if (options.progress) ParallelForWithProgress(params.height, threads, renderRow, options.progress);
+  else ParallelFor(params.height, threads, renderRow);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  for (const SampleStats& st : perThread) {
-    result.stats.rays += st.rays;
-    result.stats.nonFinite += st.nonFinite;
-  }
+  result.stats = {rays.load(), nonFinite.load()};
   return result;
 }
 

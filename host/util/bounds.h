@@ -33,4 +33,9 @@ struct Bounds3f {
   }
 };
 
+// The box common to a and b (empty if they do not overlap).
+inline Bounds3f Intersection(const Bounds3f& a, const Bounds3f& b) {
+  return {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
+}
+
 }  // namespace vkpt
