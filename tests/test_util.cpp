@@ -51,7 +51,7 @@ std::string ProcessResult::Describe() const {
 }
 
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds, const std::string& cwd,
-                      const std::vector<std::string>& env, std::optional<uint64_t> fileSizeLimit) {
+                      const std::vector<std::string>& env, const ChildLimits& limits) {
   ProcessResult r;
   int outPipe[2], errPipe[2];
   if (pipe(outPipe) != 0 || pipe(errPipe) != 0) {
@@ -69,9 +69,9 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
     dup2(devnull, STDIN_FILENO);
     if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(126);
     for (const std::string& kv : env) putenv(const_cast<char*>(kv.c_str()));
-    if (fileSizeLimit) {
-      rlimit limit{*fileSizeLimit, *fileSizeLimit};
-      if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(126);
+    for (auto [resource, bytes] : {std::pair{RLIMIT_FSIZE, limits.fileSize}, {RLIMIT_AS, limits.addressSpace}}) {
+      rlimit limit{bytes.value_or(RLIM_INFINITY), bytes.value_or(RLIM_INFINITY)};
+      if (bytes && setrlimit(resource, &limit) != 0) _exit(126);
     }
     std::vector<char*> argv;
     std::string bin = VKPT_BINARY;

@@ -31,14 +31,20 @@ struct ProcessResult {
   std::string Describe() const;  // for failure messages
 };
 
+// Resource limits for the child, in bytes.
+struct ChildLimits {
+  // RLIMIT_FSIZE (`ulimit -f`): file writes fail past it, as they would on a full disk.
+  std::optional<uint64_t> fileSize;
+  // RLIMIT_AS (`ulimit -v`): allocations fail past it, as when memory runs out.
+  std::optional<uint64_t> addressSpace;
+};
+
 // Runs `build/vkpt args...`, killing it after timeoutSeconds. A non-empty `cwd` is the
 // child's working directory (for relative paths and the default output name); `env`
-// entries ("NAME=value") are set in the child's environment. A `fileSizeLimit` (bytes)
-// becomes the child's RLIMIT_FSIZE (`ulimit -f`): its file writes fail past that size,
-// as they would on a full disk.
+// entries ("NAME=value") are set in the child's environment.
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds = 120.0,
                       const std::string& cwd = "", const std::vector<std::string>& env = {},
-                      std::optional<uint64_t> fileSizeLimit = std::nullopt);
+                      const ChildLimits& limits = {});
 
 // Statistics.
 double ChiSquareSurvival(double statistic, double dof);  // P(X >= statistic), X ~ χ²(dof)

@@ -26,7 +26,7 @@ constexpr uint64_t kFileSizeLimit = 1024;
 ProcessResult RenderCornell(const std::string& out, std::optional<uint64_t> fileSizeLimit) {
   return test::RunVkpt({"--scene", test::SourcePath("scenes/cornell.gltf"), "--backend", "cpu", "--width", "48",
                         "--height", "48", "--spp", "1", "--out", out},
-                       60.0, "", {}, fileSizeLimit);
+                       60.0, "", {}, {.fileSize = fileSizeLimit});
 }
 
 void ExpectWriteError(const ProcessResult& r, const std::string& out) {
