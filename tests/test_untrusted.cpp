@@ -353,6 +353,18 @@ TEST(Messages, ProcessMemoryLimitIsReportedAsMemory) {
   EXPECT_EQ(parse.err.find("JSON"), std::string::npos);
 }
 
+TEST(Messages, EveryErrorIsOneShortLine) {
+  const std::string longPath = "/nonexistent" + std::string(3000, 'x') + ".gltf";
+  ProcessResult error = RunVkpt({"--scene", longPath, "--out", "/nonexistent/o.png"});
+  ProcessResult usage = RunVkpt({"--scene", "x.gltf", "--spp", std::string(3000, '9')});
+  EXPECT_TRUE(error.ExitedWith(1)) << error.Describe();
+  EXPECT_TRUE(usage.ExitedWith(2)) << usage.Describe();
+  for (const std::string& err : {error.err, usage.err}) {
+    EXPECT_LT(err.size(), 500u) << err;
+    EXPECT_EQ(err.find('\n'), err.size() - 1) << err;
+  }
+}
+
 TEST(Messages, UsageErrorForABadMemorySize) {
   ProcessResult r = RunVkpt({"--scene", "x.gltf", "--max-memory", "lots"});
   EXPECT_TRUE(r.ExitedWith(2)) << r.Describe();

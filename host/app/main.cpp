@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -253,6 +254,21 @@ int Run(const Options& o) {
 }  // namespace
 }  // namespace vkpt
 
+namespace vkpt {
+namespace {
+
+// Every error is one line of at most a few hundred characters, whatever a file or an
+// argument put into it.
+void PrintError(const char* kind, std::string what) {
+  std::replace(what.begin(), what.end(), '\n', ' ');
+  constexpr size_t kMaxLength = 480;
+  if (what.size() > kMaxLength) what = what.substr(0, kMaxLength - 80) + " … " + what.substr(what.size() - 60);
+  std::fprintf(stderr, "vkpt: %s: %s\n", kind, what.c_str());
+}
+
+}  // namespace
+}  // namespace vkpt
+
 int main(int argc, char** argv) {
   using namespace vkpt;
   // Past a file-size limit (ulimit -f) the kernel sends SIGXFSZ, whose default action
@@ -263,7 +279,7 @@ int main(int argc, char** argv) {
   try {
     o = ParseOptions(argc, argv);
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "vkpt: usage error: %s\n", e.what());
+    PrintError("usage error", e.what());
     return 2;
   }
   if (o.help) {
@@ -277,13 +293,11 @@ int main(int argc, char** argv) {
   try {
     return Run(o);
   } catch (const Error& e) {
-    std::fprintf(stderr, "vkpt: error: %s\n", e.what());
-    return 1;
+    PrintError("error", e.what());
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "vkpt: error: %s: out of memory\n", o.scene.c_str());
-    return 1;
+    PrintError("error", o.scene + ": out of memory");
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "vkpt: error: %s: %s\n", o.scene.c_str(), e.what());
-    return 1;
+    PrintError("error", o.scene + ": " + e.what());
   }
+  return 1;
 }
