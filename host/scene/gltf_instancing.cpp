@@ -1,0 +1,169 @@
+#include "scene/gltf_instancing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace vkpt {
+namespace {
+
+class Instancer {
+ public:
+  Instancer(const GltfSource& src, const std::vector<int>& parents,
+            const std::vector<std::vector<DecodedPrimitive>>& meshes, Scene& scene)
+      : src_(src), parents_(parents), meshes_(meshes), scene_(scene) {}
+
+  void Run() {
+    for (size_t s = 0; s < src_.m.scenes.size(); ++s)
+      for (int n : src_.m.scenes[s].nodes) {
+        src_.CheckIndex(n, src_.m.nodes, "scenes[" + std::to_string(s) + "].nodes");
+        if (parents_[n] != -1) src_.Fail("scenes[" + std::to_string(s) + "] lists nodes[" + std::to_string(n) + "], which is not a root node");
+      }
+    if (src_.m.defaultScene != -1) src_.CheckIndex(src_.m.defaultScene, src_.m.scenes, "scene");
+    if (src_.m.scenes.empty() && std::count(parents_.begin(), parents_.end(), -1) > 0)
+      scene_.warnings.push_back("the file defines no scene; rendering all root nodes");
+    for (int r : SceneRoots(src_, parents_)) InstantiateTree(r);
+  }
+
+ private:
+  glm::dmat4 LocalTransform(int nodeIndex) const {
+    const tinygltf::Node& n = src_.m.nodes[nodeIndex];
+    std::string name = "nodes[" + std::to_string(nodeIndex) + "]";
+    auto finite = [&](const std::vector<double>& v, size_t size, const char* field) {
+      if (v.empty()) return false;
+      if (v.size() != size) src_.Fail(name + "." + field + " must have " + std::to_string(size) + " numbers");
+      for (double x : v)
+        if (!std::isfinite(x)) src_.Fail(name + "." + field + " has a non-finite value");
+      return true;
+    };
+    if (finite(n.matrix, 16, "matrix")) return glm::make_mat4(n.matrix.data());  // column-major
+    glm::dmat4 t(1.0);
+    if (finite(n.translation, 3, "translation"))
+      t = glm::translate(glm::dmat4(1.0), glm::make_vec3(n.translation.data()));
+    glm::dmat4 r(1.0);
+    if (finite(n.rotation, 4, "rotation")) {
+      glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);  // (w, x, y, z)
+      double len = glm::length(q);
+      if (len < 1e-6) src_.Fail(name + ".rotation is not a unit quaternion");
+      r = glm::mat4_cast(q / len);
+    }
+    glm::dmat4 s(1.0);
+    if (finite(n.scale, 3, "scale")) s = glm::scale(glm::dmat4(1.0), glm::make_vec3(n.scale.data()));
+    return t * r * s;
+  }
+
+  void AddCamera(int cameraIndex, const glm::dmat4& world, const std::string& nodeName) {
+    const tinygltf::Camera& in = src_.m.cameras[cameraIndex];
+    Camera cam;
+    cam.name = in.name.empty() ? nodeName : in.name;
+    cam.position = glm::vec3(world[3]);
+    // The camera looks down its local −Z with +Y up; scale in the node is ignored.
+    glm::dvec3 fwd = -glm::dvec3(world[2]);
+    glm::dvec3 up = glm::dvec3(world[1]);
+    if (glm::length(fwd) < 1e-12 || glm::length(up) < 1e-12)
+      src_.Fail(nodeName + ": camera transform is degenerate");
+    fwd = glm::normalize(fwd);
+    up = glm::normalize(up - fwd * glm::dot(up, fwd));
+    cam.forward = glm::vec3(fwd);
+    cam.up = glm::vec3(up);
+    cam.right = glm::vec3(glm::normalize(glm::cross(fwd, up)));
+    if (in.type == "perspective") {
+      cam.yfov = float(in.perspective.yfov);
+      cam.aspectRatio = float(in.perspective.aspectRatio);
+    } else {
+      cam.orthographic = true;
+      cam.xmag = float(std::abs(in.orthographic.xmag));
+      cam.ymag = float(std::abs(in.orthographic.ymag));
+      cam.aspectRatio = cam.xmag / cam.ymag;
+    }
+    scene_.cameras.push_back(cam);
+  }
+
+  // Instantiates a root and its subtree. Iterative: a hierarchy thousands of levels
+  // deep must not overflow the call stack.
+  void InstantiateTree(int root) {
+    std::vector<std::pair<int, glm::dmat4>> work{{root, glm::dmat4(1.0)}};
+    while (!work.empty()) {
+      auto [node, parent] = work.back();
+      work.pop_back();
+      glm::dmat4 world = InstantiateNode(node, parent);
+      const std::vector<int>& children = src_.m.nodes[node].children;
+      for (auto it = children.rbegin(); it != children.rend(); ++it) work.push_back({*it, world});
+    }
+  }
+
+  // Adds one node's camera and mesh; returns its world transform.
+  glm::dmat4 InstantiateNode(int nodeIndex, const glm::dmat4& parent) {
+    const tinygltf::Node& n = src_.m.nodes[nodeIndex];
+    std::string name = "nodes[" + std::to_string(nodeIndex) + "]";
+    glm::dmat4 world = parent * LocalTransform(nodeIndex);
+    if (n.camera != -1) {
+      src_.CheckIndex(n.camera, src_.m.cameras, name + ".camera");
+      AddCamera(n.camera, world, name);
+    }
+    if (n.mesh != -1) {
+      src_.CheckIndex(n.mesh, src_.m.meshes, name + ".mesh");
+      // A mirroring transform (negative determinant) flips the winding; swap two
+      // vertices so the front face stays the one the author meant (glTF spec §3.7.4).
+      bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+      for (const DecodedPrimitive& prim : meshes_[n.mesh]) {
+        std::vector<glm::vec3> p(prim.positions.size());
+        for (size_t v = 0; v < p.size(); ++v) {
+          glm::dvec4 w = world * glm::dvec4(glm::dvec3(prim.positions[v]), 1.0);
+          if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z) || glm::any(glm::greaterThan(glm::abs(glm::dvec3(w)), glm::dvec3(1e30))))
+            src_.Fail(name + ": transformed position is not finite (mesh " + std::to_string(n.mesh) + ")");
+          p[v] = glm::vec3(w);
+        }
+        for (size_t k = 0; k < prim.indices.size(); k += 3) {
+          SceneTriangle t{p[prim.indices[k]], p[prim.indices[k + 1]], p[prim.indices[k + 2]], prim.material};
+          if (mirrored) std::swap(t.v1, t.v2);
+          scene_.bounds.Extend(t.v0);
+          scene_.bounds.Extend(t.v1);
+          scene_.bounds.Extend(t.v2);
+          scene_.triangles.push_back(t);
+        }
+      }
+    }
+    return world;
+  }
+
+  const GltfSource& src_;
+  const std::vector<int>& parents_;
+  const std::vector<std::vector<DecodedPrimitive>>& meshes_;
+  Scene& scene_;
+};
+
+}  // namespace
+
+std::vector<int> SceneRoots(const GltfSource& src, const std::vector<int>& parents) {
+  if (src.m.defaultScene >= 0 && size_t(src.m.defaultScene) < src.m.scenes.size()) return src.m.scenes[src.m.defaultScene].nodes;
+  if (src.m.defaultScene == -1 && !src.m.scenes.empty()) return src.m.scenes[0].nodes;
+  if (src.m.defaultScene != -1) return {};
+  std::vector<int> roots;
+  for (size_t i = 0; i < parents.size(); ++i)
+    if (parents[i] == -1) roots.push_back(int(i));
+  return roots;
+}
+
+std::vector<uint64_t> MeshInstances(const GltfSource& src, const std::vector<int>& roots) {
+  std::vector<uint64_t> instances(src.m.meshes.size(), 0);
+  std::vector<int> work = roots;
+  while (!work.empty()) {
+    int n = work.back();
+    work.pop_back();
+    if (n < 0 || size_t(n) >= src.m.nodes.size()) continue;  // reported by InstantiateScene
+    int mesh = src.m.nodes[n].mesh;
+    if (mesh >= 0 && size_t(mesh) < src.m.meshes.size()) ++instances[mesh];
+    work.insert(work.end(), src.m.nodes[n].children.begin(), src.m.nodes[n].children.end());
+  }
+  return instances;
+}
+
+void InstantiateScene(const GltfSource& src, const std::vector<int>& parents,
+                      const std::vector<std::vector<DecodedPrimitive>>& meshes, Scene& scene) {
+  Instancer(src, parents, meshes, scene).Run();
+}
+
+}  // namespace vkpt

@@ -1,0 +1,27 @@
+// The scene graph flattened (glTF 2.0 spec §3.5): every node of the rendered scene
+// with its world transform (TRS or matrix, parent × child), its mesh's triangles moved
+// to world space — winding kept where a transform mirrors — and its camera.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "scene/gltf_meshes.h"
+#include "scene/gltf_source.h"
+#include "scene/scene.h"
+
+namespace vkpt {
+
+// The roots of the scene to render: the default scene, else scene 0, else every root
+// node. `parents` comes from CheckNodeGraph.
+std::vector<int> SceneRoots(const GltfSource& src, const std::vector<int>& parents);
+
+// How many times the scene under `roots` instantiates each mesh.
+std::vector<uint64_t> MeshInstances(const GltfSource& src, const std::vector<int>& roots);
+
+// Adds the world-space triangles and cameras of the scene to `scene`. Iterative: a
+// hierarchy thousands of levels deep must not overflow the call stack.
+void InstantiateScene(const GltfSource& src, const std::vector<int>& parents,
+                      const std::vector<std::vector<DecodedPrimitive>>& meshes, Scene& scene);
+
+}  // namespace vkpt

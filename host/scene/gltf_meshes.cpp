@@ -1,0 +1,112 @@
+#include "scene/gltf_meshes.h"
+
+#include <cmath>
+
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_validate.h"
+
+namespace vkpt {
+namespace {
+
+// Index list of a primitive converted to a triangle list.
+std::vector<uint32_t> TriangleList(const GltfSource& src, const tinygltf::Primitive& prim, size_t vertexCount,
+                                   const std::string& name) {
+  std::vector<uint32_t> idx;
+  if (prim.indices >= 0) {
+    src.CheckIndex(prim.indices, src.m.accessors, name + ".indices");
+    const tinygltf::Accessor& a = src.m.accessors[prim.indices];
+    std::string an = "accessors[" + std::to_string(prim.indices) + "]";
+    if (a.type != TINYGLTF_TYPE_SCALAR || a.normalized ||
+        (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+      src.Fail(name + ".indices (" + an + ") must be unsigned byte/short/int SCALAR");
+    // The all-ones value is reserved for primitive restart, which glTF forbids.
+    const double restart = std::pow(2.0, 8.0 * ComponentSize(a.componentType)) - 1.0;
+    std::vector<double> raw = ReadAccessor(src, prim.indices);
+    idx.reserve(raw.size());
+    for (size_t k = 0; k < raw.size(); ++k) {
+      if (raw[k] == restart)
+        src.Fail(name + ".indices (" + an + ") element " + std::to_string(k) +
+             " is the primitive-restart value " + std::to_string((unsigned long long)restart) +
+             ", which glTF forbids");
+      if (raw[k] >= double(vertexCount))
+        src.Fail(name + ".indices (" + an + ") element " + std::to_string(k) + " is " +
+             std::to_string((unsigned long long)raw[k]) + ", but the primitive has only " +
+             std::to_string(vertexCount) + " vertices");
+      idx.push_back(uint32_t(raw[k]));
+    }
+  } else {
+    idx.resize(vertexCount);
+    for (size_t k = 0; k < vertexCount; ++k) idx[k] = uint32_t(k);
+  }
+  std::vector<uint32_t> tris;
+  switch (prim.mode) {
+    case TINYGLTF_MODE_TRIANGLES:
+      if (idx.size() % 3)
+        src.Fail(name + " has " + std::to_string(idx.size()) +
+             " triangle-list indices, which is not a multiple of 3");
+      return idx;
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
+      // Every other triangle swaps two vertices to keep the strip's winding.
+      for (size_t k = 2; k < idx.size(); ++k) {
+        bool odd = k % 2;
+        tris.insert(tris.end(), {idx[k - 2 + odd], idx[k - 1 - odd], idx[k]});
+      }
+      return tris;
+    case TINYGLTF_MODE_TRIANGLE_FAN:
+      for (size_t k = 2; k < idx.size(); ++k) tris.insert(tris.end(), {idx[k - 1], idx[k], idx[0]});
+      return tris;
+    default:
+      return {};
+  }
+}
+
+}  // namespace
+
+std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial,
+                                         std::vector<std::string>& warnings) {
+  std::vector<DecodedPrimitive> decoded;
+  const tinygltf::Mesh& mesh = src.m.meshes[meshIndex];
+  for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+    const tinygltf::Primitive& prim = mesh.primitives[p];
+    std::string name = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(p) + "]";
+    CheckPrimitive(src, prim, name);
+    auto pos = prim.attributes.find("POSITION");
+    const tinygltf::Accessor& pa = src.m.accessors[pos->second];
+    std::string pan = "accessors[" + std::to_string(pos->second) + "]";
+    if (prim.mode < TINYGLTF_MODE_TRIANGLES) {
+      warnings.push_back(name + ": points/lines primitive skipped (only triangles are rendered)");
+      continue;
+    }
+    DecodedPrimitive out;
+    std::vector<double> raw = ReadAccessor(src, pos->second);
+    out.positions.resize(pa.count);
+    for (size_t v = 0; v < pa.count; ++v) {
+      for (int c = 0; c < 3; ++c) {
+        double x = raw[v * 3 + c];
+        if (!std::isfinite(x) || std::abs(x) > 1e30)
+          src.Fail(name + ".attributes.POSITION (" + pan + ") element " + std::to_string(v) +
+               " is not a finite position");
+        out.positions[v][c] = float(x);
+      }
+    }
+    out.indices = TriangleList(src, prim, pa.count, name);
+    out.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial;
+    decoded.push_back(std::move(out));
+  }
+  return decoded;
+}
+
+uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim) {
+  auto pos = prim.attributes.find("POSITION");
+  size_t n = prim.indices >= 0 && size_t(prim.indices) < src.m.accessors.size() ? src.m.accessors[prim.indices].count
+             : pos != prim.attributes.end() && pos->second >= 0 && size_t(pos->second) < src.m.accessors.size()
+                 ? src.m.accessors[pos->second].count
+                 : 0;
+  if (prim.mode == TINYGLTF_MODE_TRIANGLES) return n / 3;
+  if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP || prim.mode == TINYGLTF_MODE_TRIANGLE_FAN) return n > 2 ? n - 2 : 0;
+  return 0;
+}
+
+}  // namespace vkpt

@@ -1,0 +1,29 @@
+// glTF mesh primitives (spec §3.7.2) as the renderer wants them: object-space positions
+// and a triangle list; strips and fans are converted, points and lines skipped.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/gltf_source.h"
+
+namespace vkpt {
+
+struct DecodedPrimitive {
+  std::vector<glm::vec3> positions;  // object space
+  std::vector<uint32_t> indices;     // triangle list, 3 per triangle
+  uint32_t material;
+};
+
+// Checks and decodes the triangle primitives of meshes[meshIndex]: positions finite,
+// indices in range and no primitive-restart values. Points and lines add a warning.
+std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial,
+                                         std::vector<std::string>& warnings);
+
+// Triangles a primitive makes, from its accessors' counts alone (nothing is decoded).
+uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim);
+
+}  // namespace vkpt

@@ -1,0 +1,144 @@
+#include "scene/gltf_validate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace vkpt {
+namespace {
+
+// Extensions vkpt understands; a file that *requires* any other one is refused, as the
+// glTF spec demands of a loader that does not implement it.
+const std::set<std::string> kSupportedRequiredExtensions = {
+    "KHR_materials_emissive_strength", "KHR_mesh_quantization", "KHR_texture_transform"};
+
+void CheckTextureRef(const GltfSource& src, int index, const std::string& what) {
+  if (index != -1) src.CheckIndex(index, src.m.textures, what);
+}
+
+}  // namespace
+
+void CheckAsset(const GltfSource& src) {
+  const std::string& v = src.m.asset.version;
+  if (v.empty()) src.Fail("asset.version is missing");
+  if (v.substr(0, v.find('.')) != "2")
+    src.Fail("asset.version is \"" + v + "\"; vkpt reads glTF 2.x only");
+  for (const std::string& ext : src.m.extensionsRequired)
+    if (!kSupportedRequiredExtensions.count(ext))
+      src.Fail("the file requires extension " + ext + ", which vkpt does not support");
+}
+
+void CheckBufferViews(const GltfSource& src) {
+  for (size_t i = 0; i < src.m.bufferViews.size(); ++i) {
+    const tinygltf::BufferView& bv = src.m.bufferViews[i];
+    std::string name = "bufferViews[" + std::to_string(i) + "]";
+    src.CheckIndex(bv.buffer, src.m.buffers, name + ".buffer");
+    size_t size = src.m.buffers[bv.buffer].data.size();
+    if (bv.byteLength == 0) src.Fail(name + ".byteLength is 0");
+    if (bv.byteOffset > size || bv.byteLength > size - bv.byteOffset)
+      src.Fail(name + " (offset " + std::to_string(bv.byteOffset) + ", length " +
+           std::to_string(bv.byteLength) + ") runs past the end of buffer " +
+           std::to_string(bv.buffer) + " (" + std::to_string(size) + " bytes)");
+    if (bv.byteStride != 0 && (bv.byteStride < 4 || bv.byteStride > 252 || bv.byteStride % 4))
+      src.Fail(name + ".byteStride is " + std::to_string(bv.byteStride) +
+           "; it must be a multiple of 4 in [4, 252]");
+  }
+}
+
+void CheckTexturesAndMaterials(const GltfSource& src) {
+  for (size_t i = 0; i < src.m.textures.size(); ++i) {
+    const tinygltf::Texture& t = src.m.textures[i];
+    std::string name = "textures[" + std::to_string(i) + "]";
+    if (t.source != -1) src.CheckIndex(t.source, src.m.images, name + ".source");
+    if (t.sampler != -1) src.CheckIndex(t.sampler, src.m.samplers, name + ".sampler");
+  }
+  for (size_t i = 0; i < src.m.images.size(); ++i) {
+    const tinygltf::Image& im = src.m.images[i];
+    if (im.bufferView != -1) src.CheckIndex(im.bufferView, src.m.bufferViews,
+                                        "images[" + std::to_string(i) + "].bufferView");
+  }
+  for (size_t i = 0; i < src.m.materials.size(); ++i) {
+    const tinygltf::Material& mat = src.m.materials[i];
+    std::string name = "materials[" + std::to_string(i) + "]";
+    CheckTextureRef(src, mat.pbrMetallicRoughness.baseColorTexture.index,
+                    name + ".pbrMetallicRoughness.baseColorTexture.index");
+    CheckTextureRef(src, mat.pbrMetallicRoughness.metallicRoughnessTexture.index,
+                    name + ".pbrMetallicRoughness.metallicRoughnessTexture.index");
+    CheckTextureRef(src, mat.normalTexture.index, name + ".normalTexture.index");
+    CheckTextureRef(src, mat.occlusionTexture.index, name + ".occlusionTexture.index");
+    CheckTextureRef(src, mat.emissiveTexture.index, name + ".emissiveTexture.index");
+  }
+}
+
+void CheckCameras(const GltfSource& src) {
+  for (size_t i = 0; i < src.m.cameras.size(); ++i) {
+    const tinygltf::Camera& c = src.m.cameras[i];
+    std::string name = "cameras[" + std::to_string(i) + "]";
+    if (c.type == "perspective") {
+      const auto& p = c.perspective;
+      if (!std::isfinite(p.yfov) || p.yfov <= 0.0 || p.yfov >= 3.14159)
+        src.Fail(name + ".perspective.yfov must be in (0, π)");
+      if (!std::isfinite(p.aspectRatio) || p.aspectRatio < 0.0)
+        src.Fail(name + ".perspective.aspectRatio must be > 0");
+    } else if (c.type == "orthographic") {
+      const auto& o = c.orthographic;
+      if (!std::isfinite(o.xmag) || !std::isfinite(o.ymag) || o.xmag == 0.0 || o.ymag == 0.0)
+        src.Fail(name + ".orthographic xmag/ymag must be finite and non-zero");
+    } else {
+      src.Fail(name + ".type \"" + c.type + "\" is neither perspective nor orthographic");
+    }
+  }
+}
+
+std::vector<int> CheckNodeGraph(const GltfSource& src) {
+  std::vector<int> parent(src.m.nodes.size(), -1);
+  for (size_t i = 0; i < src.m.nodes.size(); ++i) {
+    for (int c : src.m.nodes[i].children) {
+      src.CheckIndex(c, src.m.nodes, "nodes[" + std::to_string(i) + "].children");
+      if (parent[c] != -1 || c == int(i))
+        src.Fail("nodes[" + std::to_string(c) + "] has more than one parent or is its own child (node graph must be a tree)");
+      parent[c] = int(i);
+    }
+  }
+  std::vector<int> roots;
+  for (size_t i = 0; i < src.m.nodes.size(); ++i)
+    if (parent[i] == -1) roots.push_back(int(i));
+  // With at most one parent each, the nodes reachable from the roots form a forest; a
+  // node not reached lies on a cycle (its parent chain never ends). Linear time.
+  std::vector<char> reached(src.m.nodes.size(), 0);
+  std::vector<int> work = roots;
+  while (!work.empty()) {
+    int n = work.back();
+    work.pop_back();
+    reached[n] = 1;
+    for (int c : src.m.nodes[n].children) work.push_back(c);
+  }
+  for (size_t i = 0; i < src.m.nodes.size(); ++i)
+    if (!reached[i]) src.Fail("nodes[" + std::to_string(i) + "] is part of a cycle in the node hierarchy");
+  return parent;
+}
+
+void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name) {
+  const bool quantized = std::count(src.m.extensionsUsed.begin(), src.m.extensionsUsed.end(), "KHR_mesh_quantization") > 0;
+  if (prim.mode < TINYGLTF_MODE_POINTS || prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+    src.Fail(name + ".mode " + std::to_string(prim.mode) + " is not valid");
+  if (prim.material != -1) src.CheckIndex(prim.material, src.m.materials, name + ".material");
+  auto pos = prim.attributes.find("POSITION");
+  if (pos == prim.attributes.end()) src.Fail(name + " has no POSITION attribute");
+  for (const auto& [attr, acc] : prim.attributes)
+    src.CheckIndex(acc, src.m.accessors, name + ".attributes." + attr);
+  for (size_t t = 0; t < prim.targets.size(); ++t)
+    for (const auto& [attr, acc] : prim.targets[t])
+      src.CheckIndex(acc, src.m.accessors, name + ".targets[" + std::to_string(t) + "]." + attr);
+  const tinygltf::Accessor& pa = src.m.accessors[pos->second];
+  std::string pan = "accessors[" + std::to_string(pos->second) + "]";
+  if (pa.type != TINYGLTF_TYPE_VEC3 ||
+      (pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized))
+    src.Fail(name + ".attributes.POSITION (" + pan + ") must be a FLOAT VEC3 accessor");
+  for (const auto& [attr, acc] : prim.attributes)
+    if (src.m.accessors[acc].count != pa.count)
+      src.Fail(name + ": attribute " + attr + " has " + std::to_string(src.m.accessors[acc].count) +
+           " elements but POSITION has " + std::to_string(pa.count));
+}
+
+}  // namespace vkpt
