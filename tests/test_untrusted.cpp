@@ -279,6 +279,19 @@ TEST(Amplification, BudgetRefusalNamesTheLimit) {
   EXPECT_NE(ok.out.find("of --max-memory 200 MiB"), std::string::npos) << ok.out;
 }
 
+// --diff reads two images the same way: regular files only, pixels allocated only once
+// the file has shown it holds them.
+TEST(Amplification, DiffImagesAreCheckedBeforeAllocation) {
+  TempDir root;
+  const std::string fifo = root.path + "/a.pfm", huge = root.path + "/b.pfm", out = root.path + "/o.png";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  WriteFile(huge, "PF\n65536 65536\n-1.0\n" + std::string(64, '\0'));
+  EXPECT_TRUE(RefusedQuickly(RunVkpt({"--diff", fifo, huge, "--out", out}), out, {fifo + ": is a FIFO"}));
+  ProcessResult r = RunVkpt({"--diff", huge, huge, "--out", out});
+  EXPECT_TRUE(RefusedQuickly(r, out, {huge + ": PFM data is truncated (65536x65536 needs 51539607552 bytes"}));
+  EXPECT_LT(r.peakRssKiB, kSmallProcessKiB);
+}
+
 // JSON that is deep, or long, must cost linear time: a parser callback that rescans
 // arrays took 36 s for 300,000 nodes (quadratic); the bound is far above the ~3 s a
 // linear load of this file takes on a slow machine, and far below the quadratic time.

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <optional>
+#include <sstream>
 #include <unistd.h>
 
 #include "image/image_encode.h"
 #include "util/atomic_write.h"
 #include "util/error.h"
+#include "util/regular_file.h"
 
 namespace vkpt {
 namespace {
@@ -66,8 +68,14 @@ void WriteImage(const Image& image, const std::string& path, float exposure) {
 }
 
 Image ReadPfm(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open file: " + std::strerror(errno));
+  std::string problem;
+  std::optional<RegularFile> file = RegularFile::Open(path, &problem);
+  if (!file) throw Error(path + ": " + problem);
+  // The header is three text lines; nothing is allocated for pixels until the file's
+  // size has shown that they are there.
+  std::string head(size_t(std::min<uint64_t>(file->Size(), 256)), '\0');
+  if (!file->ReadAt(0, head.data(), head.size(), &problem)) throw Error(path + ": " + problem);
+  std::istringstream in(head);
   std::string magic;
   long long w = 0, h = 0;
   double scale = 0.0;
@@ -75,13 +83,16 @@ Image ReadPfm(const std::string& path) {
   in.get();  // the single whitespace after the scale
   if (!in || magic != "PF" || w <= 0 || h <= 0 || w > 65536 || h > 65536 || scale == 0.0)
     throw Error(path + ": not a 3-channel PFM image");
+  const uint64_t offset = uint64_t(in.tellg()), bytes = uint64_t(w) * uint64_t(h) * sizeof(glm::vec3);
+  if (file->Size() - offset < bytes)
+    throw Error(path + ": PFM data is truncated (" + std::to_string(w) + "x" + std::to_string(h) + " needs " +
+                std::to_string(bytes) + " bytes, the file holds " + std::to_string(file->Size() - offset) + ")");
   Image img{uint32_t(w), uint32_t(h)};
-  const bool swap = scale > 0.0;  // positive scale: big-endian data
-  for (uint32_t y = img.height; y-- > 0;) {
-    in.read(reinterpret_cast<char*>(&img.pixels[size_t(y) * img.width]), std::streamsize(sizeof(glm::vec3) * img.width));
-    if (!in) throw Error(path + ": PFM data is truncated");
-  }
-  if (swap)
+  const size_t row = sizeof(glm::vec3) * img.width;
+  for (uint32_t y = img.height; y-- > 0;)  // PFM stores the bottom row first
+    if (!file->ReadAt(offset + uint64_t(img.height - 1 - y) * row, &img.pixels[size_t(y) * img.width], row, &problem))
+      throw Error(path + ": " + problem);
+  if (scale > 0.0)  // positive scale: big-endian data
     for (glm::vec3& p : img.pixels)
       for (int c = 0; c < 3; ++c) {
         uint32_t u;

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <new>
 
-#include "scene/regular_file.h"
+#include "util/regular_file.h"
 #include "util/byte_size.h"
 #include "util/error.h"
 

@@ -5,7 +5,7 @@
 #include <new>
 
 #include "scene/glb_header.h"
-#include "scene/regular_file.h"
+#include "util/regular_file.h"
 #include "util/byte_size.h"
 #include "util/error.h"
 
