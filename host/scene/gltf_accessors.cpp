@@ -1,7 +1,9 @@
 #include "scene/gltf_accessors.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace vkpt {
 namespace {
@@ -20,32 +22,25 @@ void CheckRegion(const GltfSource& src, const std::string& name, int bufferView,
          std::to_string(bufferView) + "], which has " + std::to_string(bv.byteLength));
 }
 
-// Component `c` of element `i` of a region, converted to double; normalized integers
-// map to [0, 1] or [-1, 1] as the glTF spec defines.
+// One integer component; normalized, it maps to [0, 1] (unsigned) or [-1, 1] (signed,
+// the most negative value clamped) as the glTF spec defines (§3.11, "Animations").
+template <class T>
+double ReadInteger(const unsigned char* p, bool normalized) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return normalized ? std::max(double(v) / double(std::numeric_limits<T>::max()), -1.0) : double(v);
+}
+
 double ReadComponent(const unsigned char* p, int componentType, bool normalized) {
   switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: {
-      int8_t v; std::memcpy(&v, p, 1);
-      return normalized ? std::max(v / 127.0, -1.0) : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-      uint8_t v; std::memcpy(&v, p, 1);
-      return normalized ? v / 255.0 : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_SHORT: {
-      int16_t v; std::memcpy(&v, p, 2);
-      return normalized ? std::max(v / 32767.0, -1.0) : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-      uint16_t v; std::memcpy(&v, p, 2);
-      return normalized ? v / 65535.0 : v;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-      uint32_t v; std::memcpy(&v, p, 4);
-      return normalized ? v / 4294967295.0 : v;
-    }
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return ReadInteger<int8_t>(p, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return ReadInteger<uint8_t>(p, normalized);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return ReadInteger<int16_t>(p, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return ReadInteger<uint16_t>(p, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return ReadInteger<uint32_t>(p, normalized);
     default: {
-      float v; std::memcpy(&v, p, 4);
+      float v;
+      std::memcpy(&v, p, sizeof v);
       return v;
     }
   }
