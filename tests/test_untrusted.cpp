@@ -198,6 +198,11 @@ TEST(NotRegularFiles, AsAUriAreRefusedAtOnce) {
   WriteFile(scene, TriangleGltf("/dev/zero"));
   EXPECT_TRUE(RefusedQuickly(Render(scene, out, {"--allow-external-uris"}), out,
                              {"buffers[0].uri \"/dev/zero\" is a device"}));
+  WriteFile(root.path + "/tri.bin", TriangleBytes());
+  WriteFile(scene, TriangleGltf("tri.bin", "fifo.bin"));
+  EXPECT_TRUE(RefusedQuickly(Render(scene, out), out, {"images[0].uri \"fifo.bin\" is a FIFO"}));
+  WriteFile(scene, TriangleGltf("tri.bin", "dir.bin"));
+  EXPECT_TRUE(RefusedQuickly(Render(scene, out), out, {"images[0].uri \"dir.bin\" is a directory"}));
 }
 
 // ---------------------------------------------------------------------------------------
