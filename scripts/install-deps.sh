@@ -13,6 +13,7 @@ packages=(
   libstb-dev libtinyexr-dev             # PNG and EXR writers
   libgtest-dev                          # tests
   libembree-dev                         # vkpt-bench compares against Embree
+  clang-format                          # scripts/check-format.sh
 )
 
 missing=()

@@ -99,7 +99,9 @@ void CheckInvariants(const RenderScene& rs, const std::vector<SceneTriangle>& in
   ASSERT_TRUE(rs.nodeCopies == 1 || rs.nodeCopies == 8);
   ASSERT_EQ(rs.nodes.size(), size_t(perCopy) * rs.nodeCopies);
   EXPECT_EQ(rs.triangles.size(), rs.bvhStats.references);
-  if (!spatial) EXPECT_EQ(rs.triangles.size() + rs.degenerateTriangles, triangleCount);
+  if (!spatial) {
+    EXPECT_EQ(rs.triangles.size() + rs.degenerateTriangles, triangleCount);
+  }
   for (uint32_t copy = 0; copy < rs.nodeCopies; ++copy) {
     SCOPED_TRACE("copy " + std::to_string(copy));
     std::vector<int> seen(triangleCount, 0);
@@ -132,7 +134,9 @@ TEST(Bvh, DirectionCopiesAreNearFirst) {
       int axis = ad.x >= ad.y && ad.x >= ad.z ? 0 : (ad.y >= ad.z ? 1 : 2);
       bool negative = (copy >> axis) & 1u;
       // Positive rays: the second child lies further along +axis (and vice versa).
-      if (d[axis] != 0.0f) ASSERT_EQ(d[axis] > 0.0f, !negative) << "node " << i;
+      if (d[axis] != 0.0f) {
+        ASSERT_EQ(d[axis] > 0.0f, !negative) << "node " << i;
+      }
       ++checked;
     }
   EXPECT_GT(checked, 8u * 100u);

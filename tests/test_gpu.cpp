@@ -267,7 +267,9 @@ TEST_F(GpuTest, ImageDoesNotDependOnSamplesPerInvocation) {
     const vk::GpuRenderResult& r = results.back();
     EXPECT_EQ(r.cutShort, 0u);
     EXPECT_EQ(r.nonFinite, 0u);
-    if (run) EXPECT_EQ(r.samplesPerInvocation, run);
+    if (run) {
+      EXPECT_EQ(r.samplesPerInvocation, run);
+    }
   }
   EXPECT_GT(results.back().samplesPerInvocation, 1u) << "the adaptive run length must group samples on Cornell";
   for (size_t i = 1; i < results.size(); ++i) {

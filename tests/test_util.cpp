@@ -254,7 +254,8 @@ Scene MakeScene(const std::vector<SceneTriangle>& triangles, const std::vector<M
   s.path = "(test scene)";
   s.triangles = triangles;
   s.materials = materials;
-  for (size_t i = 0; i < materials.size(); ++i) s.materialNames.push_back("m" + std::to_string(i));
+  // Appended, not `"m" + std::to_string(i)`: that trips GCC 12's false -Wrestrict (bug 105651).
+  for (size_t i = 0; i < materials.size(); ++i) s.materialNames.push_back(std::string("m").append(std::to_string(i)));
   for (const SceneTriangle& t : triangles) {
     s.bounds.Extend(t.v0);
     s.bounds.Extend(t.v1);

@@ -34,9 +34,9 @@ struct ProcessResult {
 // Resource limits for the child, in bytes.
 struct ChildLimits {
   // RLIMIT_FSIZE (`ulimit -f`): file writes fail past it, as they would on a full disk.
-  std::optional<uint64_t> fileSize;
+  std::optional<uint64_t> fileSize{};  // {}: designated initializers may leave either out
   // RLIMIT_AS (`ulimit -v`): allocations fail past it, as when memory runs out.
-  std::optional<uint64_t> addressSpace;
+  std::optional<uint64_t> addressSpace{};
 };
 
 // Runs `build/vkpt args...`, killing it after timeoutSeconds. A non-empty `cwd` is the

@@ -138,7 +138,7 @@ std::optional<Sides> SplitSpatially(std::span<BuildPrim> slots, uint32_t count, 
       continue;
     }
     switch (place.Decide(p.box)) {
-      case Unsplitting::kBoth: left.push_back({l, p.index}), right.push_back({r, p.index}); break;
+      case Unsplitting::kBoth: left.push_back({l, p.index, 0}), right.push_back({r, p.index, 0}); break;
       case Unsplitting::kLeft: left.push_back(p); break;
       case Unsplitting::kRight: right.push_back(p); break;
     }
