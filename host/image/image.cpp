@@ -1,5 +1,6 @@
 #include "image/image.h"
 
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -8,7 +9,6 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
-#include <unistd.h>
 
 #include "image/image_encode.h"
 #include "util/atomic_write.h"

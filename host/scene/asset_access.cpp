@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <new>
 
-#include "util/regular_file.h"
 #include "util/byte_size.h"
 #include "util/error.h"
+#include "util/regular_file.h"
 
 namespace vkpt {
 namespace {

@@ -19,7 +19,7 @@ void CheckRegion(const GltfSource& src, const std::string& name, int bufferView,
   long double end = (long double)byteOffset + (long double)stride * (count - 1) + elemSize;
   if (end > (long double)bv.byteLength)
     src.Fail(name + " needs " + std::to_string((unsigned long long)end) + " bytes of bufferViews[" +
-         std::to_string(bufferView) + "], which has " + std::to_string(bv.byteLength));
+             std::to_string(bufferView) + "], which has " + std::to_string(bv.byteLength));
 }
 
 // One integer component; normalized, it maps to [0, 1] (unsigned) or [-1, 1] (signed,
@@ -78,7 +78,9 @@ int ComponentCount(int type) {
   }
 }
 
-size_t ElementSize(const tinygltf::Accessor& a) { return size_t(ComponentSize(a.componentType)) * ComponentCount(a.type); }
+size_t ElementSize(const tinygltf::Accessor& a) {
+  return size_t(ComponentSize(a.componentType)) * ComponentCount(a.type);
+}
 
 void CheckAccessor(const GltfSource& src, int index) {
   const tinygltf::Accessor& a = src.m.accessors[index];
@@ -95,8 +97,8 @@ void CheckAccessor(const GltfSource& src, int index) {
     const tinygltf::BufferView& bv = src.m.bufferViews[a.bufferView];
     size_t stride = bv.byteStride ? bv.byteStride : elem;
     if (stride < elem)
-      src.Fail(name + ": bufferViews[" + std::to_string(a.bufferView) + "].byteStride " +
-           std::to_string(stride) + " is smaller than the element size " + std::to_string(elem));
+      src.Fail(name + ": bufferViews[" + std::to_string(a.bufferView) + "].byteStride " + std::to_string(stride) +
+               " is smaller than the element size " + std::to_string(elem));
     if (a.byteOffset % ComponentSize(a.componentType))
       src.Fail(name + ".byteOffset is not a multiple of its component size");
     CheckRegion(src, name, a.bufferView, a.byteOffset, a.count, elem, stride);
@@ -106,19 +108,17 @@ void CheckAccessor(const GltfSource& src, int index) {
   if (a.sparse.isSparse) {
     const auto& s = a.sparse;
     if (s.count <= 0 || size_t(s.count) > a.count)
-      src.Fail(name + ".sparse.count " + std::to_string(s.count) + " is not in [1, " +
-           std::to_string(a.count) + "]");
+      src.Fail(name + ".sparse.count " + std::to_string(s.count) + " is not in [1, " + std::to_string(a.count) + "]");
     int isz = ComponentSize(s.indices.componentType);
     if (s.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
         s.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
         s.indices.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
       src.Fail(name + ".sparse.indices.componentType is not an unsigned integer type");
-    if (s.indices.byteOffset < 0 || s.values.byteOffset < 0)
-      src.Fail(name + ".sparse has a negative byteOffset");
-    CheckRegion(src, name + ".sparse.indices", s.indices.bufferView, size_t(s.indices.byteOffset),
-                size_t(s.count), size_t(isz), size_t(isz));
-    CheckRegion(src, name + ".sparse.values", s.values.bufferView, size_t(s.values.byteOffset),
-                size_t(s.count), elem, elem);
+    if (s.indices.byteOffset < 0 || s.values.byteOffset < 0) src.Fail(name + ".sparse has a negative byteOffset");
+    CheckRegion(src, name + ".sparse.indices", s.indices.bufferView, size_t(s.indices.byteOffset), size_t(s.count),
+                size_t(isz), size_t(isz));
+    CheckRegion(src, name + ".sparse.values", s.values.bufferView, size_t(s.values.byteOffset), size_t(s.count), elem,
+                elem);
   }
 }
 
@@ -143,12 +143,10 @@ std::vector<double> ReadAccessor(const GltfSource& src, int index) {
     for (int k = 0; k < s.count; ++k) {
       double target = ReadComponent(idx + k * isz, s.indices.componentType, false);
       if (target >= double(a.count))
-        src.Fail("accessors[" + std::to_string(index) + "].sparse index " +
-             std::to_string((unsigned long long)target) + " is out of range (count " +
-             std::to_string(a.count) + ")");
+        src.Fail("accessors[" + std::to_string(index) + "].sparse index " + std::to_string((unsigned long long)target) +
+                 " is out of range (count " + std::to_string(a.count) + ")");
       for (int c = 0; c < n; ++c)
-        out[size_t(target) * n + c] =
-            ReadComponent(val + (size_t(k) * n + c) * cs, a.componentType, a.normalized);
+        out[size_t(target) * n + c] = ReadComponent(val + (size_t(k) * n + c) * cs, a.componentType, a.normalized);
     }
   }
   return out;

@@ -19,7 +19,9 @@ class Instancer {
     for (size_t s = 0; s < src_.m.scenes.size(); ++s)
       for (int n : src_.m.scenes[s].nodes) {
         src_.CheckIndex(n, src_.m.nodes, "scenes[" + std::to_string(s) + "].nodes");
-        if (parents_[n] != -1) src_.Fail("scenes[" + std::to_string(s) + "] lists nodes[" + std::to_string(n) + "], which is not a root node");
+        if (parents_[n] != -1)
+          src_.Fail("scenes[" + std::to_string(s) + "] lists nodes[" + std::to_string(n) +
+                    "], which is not a root node");
       }
     if (src_.m.defaultScene != -1) src_.CheckIndex(src_.m.defaultScene, src_.m.scenes, "scene");
     if (src_.m.scenes.empty() && std::count(parents_.begin(), parents_.end(), -1) > 0)
@@ -62,8 +64,7 @@ class Instancer {
     // The camera looks down its local −Z with +Y up; scale in the node is ignored.
     glm::dvec3 fwd = -glm::dvec3(world[2]);
     glm::dvec3 up = glm::dvec3(world[1]);
-    if (glm::length(fwd) < 1e-12 || glm::length(up) < 1e-12)
-      src_.Fail(nodeName + ": camera transform is degenerate");
+    if (glm::length(fwd) < 1e-12 || glm::length(up) < 1e-12) src_.Fail(nodeName + ": camera transform is degenerate");
     fwd = glm::normalize(fwd);
     up = glm::normalize(up - fwd * glm::dot(up, fwd));
     cam.forward = glm::vec3(fwd);
@@ -112,7 +113,8 @@ class Instancer {
         std::vector<glm::vec3> p(prim.positions.size());
         for (size_t v = 0; v < p.size(); ++v) {
           glm::dvec4 w = world * glm::dvec4(glm::dvec3(prim.positions[v]), 1.0);
-          if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z) || glm::any(glm::greaterThan(glm::abs(glm::dvec3(w)), glm::dvec3(1e30))))
+          if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z) ||
+              glm::any(glm::greaterThan(glm::abs(glm::dvec3(w)), glm::dvec3(1e30))))
             src_.Fail(name + ": transformed position is not finite (mesh " + std::to_string(n.mesh) + ")");
           p[v] = glm::vec3(w);
         }
@@ -138,7 +140,8 @@ class Instancer {
 }  // namespace
 
 std::vector<int> SceneRoots(const GltfSource& src, const std::vector<int>& parents) {
-  if (src.m.defaultScene >= 0 && size_t(src.m.defaultScene) < src.m.scenes.size()) return src.m.scenes[src.m.defaultScene].nodes;
+  if (src.m.defaultScene >= 0 && size_t(src.m.defaultScene) < src.m.scenes.size())
+    return src.m.scenes[src.m.defaultScene].nodes;
   if (src.m.defaultScene == -1 && !src.m.scenes.empty()) return src.m.scenes[0].nodes;
   if (src.m.defaultScene != -1) return {};
   std::vector<int> roots;

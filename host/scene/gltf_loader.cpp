@@ -64,9 +64,9 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
     std::string name = "meshes[" + std::to_string(i) + "]";
     budget.Charge(decoded, name + " (decoding its accessors)");
     uint64_t total = SaturatingMul(triangles, instances[i]);
-    budget.Charge(SaturatingMul(total, kBytesPerTriangle),
-                   name + " (" + std::to_string(triangles) + " triangles × " + std::to_string(instances[i]) +
-                       " instances = " + std::to_string(total) + " triangles)");
+    budget.Charge(SaturatingMul(total, kBytesPerTriangle), name + " (" + std::to_string(triangles) + " triangles × " +
+                                                               std::to_string(instances[i]) +
+                                                               " instances = " + std::to_string(total) + " triangles)");
   }
 }
 
@@ -84,13 +84,15 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   if (metallic) ig.push_back("metallic/roughness: every surface is rendered as Lambertian (diffuse)");
   if (transparent) ig.push_back("alphaMode MASK/BLEND: surfaces are rendered opaque");
   if (normalTex) ig.push_back("normal maps");
-  if (!src.m.animations.empty()) ig.push_back(std::to_string(src.m.animations.size()) + " animation(s): the static pose is rendered");
+  if (!src.m.animations.empty())
+    ig.push_back(std::to_string(src.m.animations.size()) + " animation(s): the static pose is rendered");
   if (!src.m.skins.empty()) ig.push_back("skins: meshes are rendered unskinned");
   bool morph = false;
   for (const auto& mesh : src.m.meshes)
     for (const auto& p : mesh.primitives) morph |= !p.targets.empty();
   if (morph) ig.push_back("morph targets: the base mesh is rendered");
-  if (!src.m.lights.empty()) ig.push_back(std::to_string(src.m.lights.size()) + " KHR_lights_punctual light(s): only emissive triangles emit");
+  if (!src.m.lights.empty())
+    ig.push_back(std::to_string(src.m.lights.size()) + " KHR_lights_punctual light(s): only emissive triangles emit");
   for (const std::string& ext : src.m.extensionsUsed)
     if (ext != "KHR_materials_emissive_strength" && ext != "KHR_lights_punctual" && ext != "KHR_mesh_quantization")
       ig.push_back("extension " + ext);

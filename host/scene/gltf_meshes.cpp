@@ -27,13 +27,12 @@ std::vector<uint32_t> TriangleList(const GltfSource& src, const tinygltf::Primit
     idx.reserve(raw.size());
     for (size_t k = 0; k < raw.size(); ++k) {
       if (raw[k] == restart)
-        src.Fail(name + ".indices (" + an + ") element " + std::to_string(k) +
-             " is the primitive-restart value " + std::to_string((unsigned long long)restart) +
-             ", which glTF forbids");
+        src.Fail(name + ".indices (" + an + ") element " + std::to_string(k) + " is the primitive-restart value " +
+                 std::to_string((unsigned long long)restart) + ", which glTF forbids");
       if (raw[k] >= double(vertexCount))
         src.Fail(name + ".indices (" + an + ") element " + std::to_string(k) + " is " +
-             std::to_string((unsigned long long)raw[k]) + ", but the primitive has only " +
-             std::to_string(vertexCount) + " vertices");
+                 std::to_string((unsigned long long)raw[k]) + ", but the primitive has only " +
+                 std::to_string(vertexCount) + " vertices");
       idx.push_back(uint32_t(raw[k]));
     }
   } else {
@@ -44,8 +43,7 @@ std::vector<uint32_t> TriangleList(const GltfSource& src, const tinygltf::Primit
   switch (prim.mode) {
     case TINYGLTF_MODE_TRIANGLES:
       if (idx.size() % 3)
-        src.Fail(name + " has " + std::to_string(idx.size()) +
-             " triangle-list indices, which is not a multiple of 3");
+        src.Fail(name + " has " + std::to_string(idx.size()) + " triangle-list indices, which is not a multiple of 3");
       return idx;
     case TINYGLTF_MODE_TRIANGLE_STRIP:
       // Every other triangle swaps two vertices to keep the strip's winding.
@@ -57,8 +55,7 @@ std::vector<uint32_t> TriangleList(const GltfSource& src, const tinygltf::Primit
     case TINYGLTF_MODE_TRIANGLE_FAN:
       for (size_t k = 2; k < idx.size(); ++k) tris.insert(tris.end(), {idx[k - 1], idx[k], idx[0]});
       return tris;
-    default:
-      return {};
+    default: return {};
   }
 }
 
@@ -87,7 +84,7 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
         double x = raw[v * 3 + c];
         if (!std::isfinite(x) || std::abs(x) > 1e30)
           src.Fail(name + ".attributes.POSITION (" + pan + ") element " + std::to_string(v) +
-               " is not a finite position");
+                   " is not a finite position");
         out.positions[v][c] = float(x);
       }
     }

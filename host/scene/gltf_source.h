@@ -21,8 +21,7 @@ struct GltfSource {
   template <class T>
   void CheckIndex(int index, const std::vector<T>& array, const std::string& what) const {
     if (index < 0 || size_t(index) >= array.size())
-      Fail(what + " refers to index " + std::to_string(index) + ", but there are only " +
-           std::to_string(array.size()));
+      Fail(what + " refers to index " + std::to_string(index) + ", but there are only " + std::to_string(array.size()));
   }
 };
 

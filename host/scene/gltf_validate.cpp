@@ -9,8 +9,8 @@ namespace {
 
 // Extensions vkpt understands; a file that *requires* any other one is refused, as the
 // glTF spec demands of a loader that does not implement it.
-const std::set<std::string> kSupportedRequiredExtensions = {
-    "KHR_materials_emissive_strength", "KHR_mesh_quantization", "KHR_texture_transform"};
+const std::set<std::string> kSupportedRequiredExtensions = {"KHR_materials_emissive_strength", "KHR_mesh_quantization",
+                                                            "KHR_texture_transform"};
 
 void CheckTextureRef(const GltfSource& src, int index, const std::string& what) {
   if (index != -1) src.CheckIndex(index, src.m.textures, what);
@@ -21,8 +21,7 @@ void CheckTextureRef(const GltfSource& src, int index, const std::string& what) 
 void CheckAsset(const GltfSource& src) {
   const std::string& v = src.m.asset.version;
   if (v.empty()) src.Fail("asset.version is missing");
-  if (v.substr(0, v.find('.')) != "2")
-    src.Fail("asset.version is \"" + v + "\"; vkpt reads glTF 2.x only");
+  if (v.substr(0, v.find('.')) != "2") src.Fail("asset.version is \"" + v + "\"; vkpt reads glTF 2.x only");
   for (const std::string& ext : src.m.extensionsRequired)
     if (!kSupportedRequiredExtensions.count(ext))
       src.Fail("the file requires extension " + ext + ", which vkpt does not support");
@@ -36,12 +35,10 @@ void CheckBufferViews(const GltfSource& src) {
     size_t size = src.m.buffers[bv.buffer].data.size();
     if (bv.byteLength == 0) src.Fail(name + ".byteLength is 0");
     if (bv.byteOffset > size || bv.byteLength > size - bv.byteOffset)
-      src.Fail(name + " (offset " + std::to_string(bv.byteOffset) + ", length " +
-           std::to_string(bv.byteLength) + ") runs past the end of buffer " +
-           std::to_string(bv.buffer) + " (" + std::to_string(size) + " bytes)");
+      src.Fail(name + " (offset " + std::to_string(bv.byteOffset) + ", length " + std::to_string(bv.byteLength) +
+               ") runs past the end of buffer " + std::to_string(bv.buffer) + " (" + std::to_string(size) + " bytes)");
     if (bv.byteStride != 0 && (bv.byteStride < 4 || bv.byteStride > 252 || bv.byteStride % 4))
-      src.Fail(name + ".byteStride is " + std::to_string(bv.byteStride) +
-           "; it must be a multiple of 4 in [4, 252]");
+      src.Fail(name + ".byteStride is " + std::to_string(bv.byteStride) + "; it must be a multiple of 4 in [4, 252]");
   }
 }
 
@@ -54,8 +51,8 @@ void CheckTexturesAndMaterials(const GltfSource& src) {
   }
   for (size_t i = 0; i < src.m.images.size(); ++i) {
     const tinygltf::Image& im = src.m.images[i];
-    if (im.bufferView != -1) src.CheckIndex(im.bufferView, src.m.bufferViews,
-                                        "images[" + std::to_string(i) + "].bufferView");
+    if (im.bufferView != -1)
+      src.CheckIndex(im.bufferView, src.m.bufferViews, "images[" + std::to_string(i) + "].bufferView");
   }
   for (size_t i = 0; i < src.m.materials.size(); ++i) {
     const tinygltf::Material& mat = src.m.materials[i];
@@ -78,8 +75,7 @@ void CheckCameras(const GltfSource& src) {
       const auto& p = c.perspective;
       if (!std::isfinite(p.yfov) || p.yfov <= 0.0 || p.yfov >= 3.14159)
         src.Fail(name + ".perspective.yfov must be in (0, π)");
-      if (!std::isfinite(p.aspectRatio) || p.aspectRatio < 0.0)
-        src.Fail(name + ".perspective.aspectRatio must be > 0");
+      if (!std::isfinite(p.aspectRatio) || p.aspectRatio < 0.0) src.Fail(name + ".perspective.aspectRatio must be > 0");
     } else if (c.type == "orthographic") {
       const auto& o = c.orthographic;
       if (!std::isfinite(o.xmag) || !std::isfinite(o.ymag) || o.xmag == 0.0 || o.ymag == 0.0)
@@ -96,7 +92,8 @@ std::vector<int> CheckNodeGraph(const GltfSource& src) {
     for (int c : src.m.nodes[i].children) {
       src.CheckIndex(c, src.m.nodes, "nodes[" + std::to_string(i) + "].children");
       if (parent[c] != -1 || c == int(i))
-        src.Fail("nodes[" + std::to_string(c) + "] has more than one parent or is its own child (node graph must be a tree)");
+        src.Fail("nodes[" + std::to_string(c) +
+                 "] has more than one parent or is its own child (node graph must be a tree)");
       parent[c] = int(i);
     }
   }
@@ -119,26 +116,25 @@ std::vector<int> CheckNodeGraph(const GltfSource& src) {
 }
 
 void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name) {
-  const bool quantized = std::count(src.m.extensionsUsed.begin(), src.m.extensionsUsed.end(), "KHR_mesh_quantization") > 0;
+  const bool quantized =
+      std::count(src.m.extensionsUsed.begin(), src.m.extensionsUsed.end(), "KHR_mesh_quantization") > 0;
   if (prim.mode < TINYGLTF_MODE_POINTS || prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
     src.Fail(name + ".mode " + std::to_string(prim.mode) + " is not valid");
   if (prim.material != -1) src.CheckIndex(prim.material, src.m.materials, name + ".material");
   auto pos = prim.attributes.find("POSITION");
   if (pos == prim.attributes.end()) src.Fail(name + " has no POSITION attribute");
-  for (const auto& [attr, acc] : prim.attributes)
-    src.CheckIndex(acc, src.m.accessors, name + ".attributes." + attr);
+  for (const auto& [attr, acc] : prim.attributes) src.CheckIndex(acc, src.m.accessors, name + ".attributes." + attr);
   for (size_t t = 0; t < prim.targets.size(); ++t)
     for (const auto& [attr, acc] : prim.targets[t])
       src.CheckIndex(acc, src.m.accessors, name + ".targets[" + std::to_string(t) + "]." + attr);
   const tinygltf::Accessor& pa = src.m.accessors[pos->second];
   std::string pan = "accessors[" + std::to_string(pos->second) + "]";
-  if (pa.type != TINYGLTF_TYPE_VEC3 ||
-      (pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized))
+  if (pa.type != TINYGLTF_TYPE_VEC3 || (pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized))
     src.Fail(name + ".attributes.POSITION (" + pan + ") must be a FLOAT VEC3 accessor");
   for (const auto& [attr, acc] : prim.attributes)
     if (src.m.accessors[acc].count != pa.count)
       src.Fail(name + ": attribute " + attr + " has " + std::to_string(src.m.accessors[acc].count) +
-           " elements but POSITION has " + std::to_string(pa.count));
+               " elements but POSITION has " + std::to_string(pa.count));
 }
 
 }  // namespace vkpt

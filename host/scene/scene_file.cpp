@@ -5,9 +5,9 @@
 #include <new>
 
 #include "scene/glb_header.h"
-#include "util/regular_file.h"
 #include "util/byte_size.h"
 #include "util/error.h"
+#include "util/regular_file.h"
 
 namespace vkpt {
 namespace {
