@@ -408,7 +408,7 @@ int Quality(const Options& o, unsigned threads) {
     q.sampleCount = count;
     CpuRenderOptions opt;
     opt.threads = threads;
-    CpuRenderResult r = RenderCpu(rs, q, opt);
+    RenderResult r = RenderCpu(rs, q, opt);
     return std::make_pair(std::move(r.image), r.seconds);
   }, "cpu", &cpuSpp));
   rep.Set("cpu_spp_to_quality", double(cpuSpp));
@@ -422,7 +422,7 @@ int Quality(const Options& o, unsigned threads) {
       shader::FrameParams q = p;
       q.sampleBegin = begin;
       q.sampleCount = count;
-      vk::GpuRenderResult r = gpu.Render(q);
+      RenderResult r = gpu.Render(q);
       return std::make_pair(std::move(r.image), r.seconds);
     }, "gpu", &gpuSpp));
     rep.Set("gpu_spp_to_quality", double(gpuSpp));
@@ -501,7 +501,7 @@ int Run(const Options& o) {
   if (rs.emitters.empty()) pt.background = glm::vec3(1.0f);
   CpuRenderOptions cpuOpt;
   cpuOpt.threads = threads;
-  CpuRenderResult cpuPt = RenderCpu(rs, pt, cpuOpt);
+  RenderResult cpuPt = RenderCpu(rs, pt, cpuOpt);
   rep.Set("cpu_pt_msamples_s", 256.0 * 256.0 * pt.sampleCount / cpuPt.seconds * 1e-6);
 
   rep.Set("gpu_primary_mrays_s", std::nullopt);
@@ -515,7 +515,7 @@ int Run(const Options& o) {
     rep.Set("gpu_primary_mrays_s", mrays(rays.camera.size(), gCam.seconds));
     rep.Set("gpu_diffuse_mrays_s", mrays(rays.diffuse.size(), gDif.seconds));
     mismatches += Mismatches(cpuCam, gCam) + Mismatches(cpuDif, gDif);
-    vk::GpuRenderResult g = gpu.Render(pt);
+    RenderResult g = gpu.Render(pt);
     rep.Set("gpu_pt_msamples_s", 256.0 * 256.0 * pt.sampleCount / g.seconds * 1e-6);
   } catch (const Error& e) {
     std::fprintf(stderr, "vkpt-bench: GPU figures skipped: %s\n", e.what());

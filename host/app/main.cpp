@@ -57,14 +57,6 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
   for (const std::string& f : scene.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
 }
 
-struct Rendered {
-  Image image;
-  double seconds = 0.0;
-  uint64_t rays = 0, nonFinite = 0, cutShort = 0;
-  std::string engine;  // "cpu (2 threads)" or "vulkan: <device>"
-  uint32_t validationMessages = 0;
-};
-
 std::function<void(double)> ProgressLine() {
   if (!isatty(STDERR_FILENO)) return {};
   return [](double f) { std::fprintf(stderr, "\rrendering: %5.1f%%", 100.0 * f); };
@@ -74,27 +66,24 @@ void EndProgressLine() {
   if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r%*s\r", 20, "");
 }
 
-Rendered RenderOnCpu(const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
+RenderResult RenderOnCpu(const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
   CpuRenderOptions cpu;
   cpu.threads = o.threads;
   cpu.progress = ProgressLine();
-  CpuRenderResult r = RenderCpu(rs, params, cpu);
+  RenderResult r = RenderCpu(rs, params, cpu);
   EndProgressLine();
-  return {std::move(r.image), r.seconds, r.stats.rays, r.stats.nonFinite, 0,
-          "cpu (" + std::to_string(r.threads) + " threads)", 0};
+  return r;
 }
 
-Rendered RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
+RenderResult RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::FrameParams& params,
+                            const Options& o) {
   vk::GpuRenderer renderer(ctx, rs);
   vk::GpuRenderOptions gpu;
   gpu.batch = o.batch;
   gpu.progress = ProgressLine();
-  vk::GpuRenderResult r = renderer.Render(params, gpu);
+  RenderResult r = renderer.Render(params, gpu);
   EndProgressLine();
-  return {std::move(r.image), r.seconds, r.rays, r.nonFinite, r.cutShort,
-          "vulkan: " + ctx.DeviceName() + " (up to " + std::to_string(r.samplesPerInvocation) +
-              " samples per invocation)",
-          0};
+  return r;
 }
 
 int ListDevices() {
@@ -198,10 +187,10 @@ int Run(const Options& o) {
     std::fprintf(stderr, "vkpt: warning: %s: no emissive triangles and a black background; the image will be black\n",
                  o.scene.c_str());
 
-  std::optional<Rendered> reference;
+  std::optional<RenderResult> reference;
   if (o.compare) reference = RenderOnCpu(rs, params, o);
-  Rendered r = ctx ? RenderOnVulkan(*ctx, rs, params, o) : RenderOnCpu(rs, params, o);
-  if (ctx) r.validationMessages = ctx->ValidationMessages();
+  RenderResult r = ctx ? RenderOnVulkan(*ctx, rs, params, o) : RenderOnCpu(rs, params, o);
+  const uint32_t validationMessages = ctx ? ctx->ValidationMessages() : 0;
 
   WriteImage(r.image, o.out, o.exposure);
   int status = 0;
@@ -244,8 +233,8 @@ int Run(const Options& o) {
                  "vkpt: warning: %llu samples came near lavapipe's limit of 65535 loop iterations per SIMD group "
                  "and may have been cut short (image biased dark); use --backend cpu or a smaller --max-depth\n",
                  (unsigned long long)r.cutShort);
-  if (r.validationMessages) {
-    std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", r.validationMessages);
+  if (validationMessages) {
+    std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
     return 3;
   }
   return status;
