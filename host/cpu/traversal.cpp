@@ -119,8 +119,8 @@ Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tM
         case 3: {
           int nearChild = t[1] < t[0] ? 1 : 0;
           uint32_t far = p.child[1 - nearChild];
-          // Its record is needed only after the near subtree: fetch it meanwhile (1 M
-          // triangles, diffuse rays: +25 %; prefetching far leaves' triangles gave nothing).
+          // Its record is needed only after the near subtree: fetch it meanwhile. (Far
+          // leaves' triangles are not prefetched: docs/design-notes.md, "CPU prefetch".)
           if (!IsLeafCode(far)) __builtin_prefetch(&pairs[far >> 4]);
           push({far, t[1 - nearChild]});  // revisited later unless a closer hit culls it
           code = p.child[nearChild];

@@ -248,8 +248,7 @@ std::vector<std::pair<RegionResult, int>> RegionTests(const Image& a, const Imag
   return tests;
 }
 
-// The Šidák-corrected verdict over all tests (Šidák 1967, "Rectangular confidence
-// regions for the means of multivariate normal distributions"): with m independent tests
+// The Šidák-corrected verdict over all tests (Šidák 1967): with m independent tests
 // each at α', P(no false alarm) = (1 − α')^m = 1 − alpha. A test fails only when it is
 // also beyond the margin: with enough samples every tiny bias becomes significant, and
 // only differences that matter should fail.

@@ -51,9 +51,8 @@ Buffer Readback(const Context& ctx, VkDeviceSize size, const char* what) {
 // passes per sample in the last submission: a quarter of lavapipe's loop budget, so that
 // a run of unluckier samples still fits (a group past the budget is reported as cut
 // short, never silent). A run averages its samples' passes, so longer runs measure fewer
-// per sample and the run may grow from one submission to the next (Cornell 256²: 12
-// samples after the single-sample dispatch, then the whole 16-sample batch). Runs longer
-// than 32 gain nothing measurable.
+// per sample and the run may grow from one submission to the next. At most 32: longer
+// runs measured no gain (docs/design-notes.md, "GPU path regeneration").
 uint32_t RunLength(uint32_t passesPerSample) {
   return std::clamp<uint32_t>(shader::kLoopBudget / 4 / std::max(passesPerSample, 1u), 1u, 32u);
 }

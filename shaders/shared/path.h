@@ -27,7 +27,7 @@
 
 // A shader may define VKPT_LIGHT_SAMPLING as a specialization constant that is false
 // when the scene has no emitters: lavapipe runs an if's body even when no lane takes it,
-// so the constant lets its compiler drop the light-sampling code (2CylinderEngine: 5 %).
+// so the constant lets its compiler drop the light-sampling code.
 #ifndef VKPT_LIGHT_SAMPLING
 #define VKPT_LIGHT_SAMPLING true
 #endif
