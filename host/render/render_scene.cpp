@@ -99,7 +99,6 @@ shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& came
   p.emitterCount = uint32_t(scene.emitters.size());
   p.nodeCount = scene.bvhStats.nodes;
   p.nodeCopies = scene.nodeCopies;
-  p.triangleCount = uint32_t(scene.triangles.size());
   p.origin = camera.position;
   p.forward = camera.forward;
   p.up = camera.up;
