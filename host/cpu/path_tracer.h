@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "render/film.h"
+#include "image/film.h"
 #include "render/render_scene.h"
 
 namespace vkpt {
