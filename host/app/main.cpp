@@ -46,8 +46,10 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
   }
   std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", scene.bounds.lo.x, scene.bounds.lo.y,
               scene.bounds.lo.z, scene.bounds.hi.x, scene.bounds.hi.y, scene.bounds.hi.z);
+  char which[16] = "default";
+  if (!scene.cameras.empty()) std::snprintf(which, sizeof which, "#%u", camIndex);
   std::printf("  cameras: %zu; using %s \"%s\" at (%.6g, %.6g, %.6g) looking (%.4g, %.4g, %.4g), %s %.4g\n",
-              scene.cameras.size(), scene.cameras.empty() ? "default" : ("#" + std::to_string(camIndex)).c_str(),
+              scene.cameras.size(), which,
               cam.name.c_str(), cam.position.x, cam.position.y, cam.position.z, cam.forward.x, cam.forward.y,
               cam.forward.z, cam.orthographic ? "orthographic ymag" : "perspective yfov(deg)",
               cam.orthographic ? cam.ymag : cam.yfov * 180.0 / M_PI);
