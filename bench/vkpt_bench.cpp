@@ -408,7 +408,7 @@ int Quality(const Options& o, unsigned threads) {
     q.sampleCount = count;
     CpuRenderOptions opt;
     opt.threads = threads;
-    CpuRenderResult r = RenderCpu(rs, q, opt);
+    RenderResult r = RenderCpu(rs, q, opt);
     return std::make_pair(std::move(r.image), r.seconds);
   }, "cpu", &cpuSpp));
   rep.Set("cpu_spp_to_quality", double(cpuSpp));
@@ -422,7 +422,7 @@ int Quality(const Options& o, unsigned threads) {
       shader::FrameParams q = p;
       q.sampleBegin = begin;
       q.sampleCount = count;
-      vk::GpuRenderResult r = gpu.Render(q);
+      RenderResult r = gpu.Render(q);
       return std::make_pair(std::move(r.image), r.seconds);
     }, "gpu", &gpuSpp));
     rep.Set("gpu_spp_to_quality", double(gpuSpp));
@@ -445,6 +445,121 @@ int Quality(const Options& o, unsigned threads) {
   return 0;
 }
 
+double Mrays(size_t n, double seconds) { return double(n) / seconds * 1e-6; }
+
+// Build time: the best of kBuildRuns builds (the first in a process also pays the
+// kernel for fresh pages; this machine's timings drift). Embree's is timed the same way.
+// The one-thread figure is measured in the same run, for the thread scaling.
+void MeasureBuild(const Scene& scene, const RenderScene& rs, const BvhBuildOptions& bvhOptions, unsigned threads,
+                  double tris, Report& rep) {
+  auto bestBuildMs = [&](unsigned buildThreads, double first) {
+    BvhBuildOptions b = bvhOptions;
+    b.threads = buildThreads;
+    for (int k = 1; k < kBuildRuns; ++k) first = std::min(first, PrepareRenderScene(scene, b, false).bvhStats.buildMs);
+    return first;
+  };
+  const double buildMs = bestBuildMs(threads, rs.bvhStats.buildMs);
+  const double buildMs1 = threads == 1 ? buildMs : bestBuildMs(1, std::numeric_limits<double>::infinity());
+  rep.Set("build_ms", buildMs);
+  rep.Set("build_mtris_per_s", tris / buildMs * 1e-3);
+  rep.Set("build_mtris_per_s_1t", tris / buildMs1 * 1e-3);
+  rep.Set("sah_cost", rs.bvhStats.sahCost);
+  rep.Set("nodes", rs.bvhStats.nodes);
+  rep.Set("gpu_bytes_per_tri", (rs.triangles.size() * sizeof(shader::Triangle) + rs.nodes.size() * sizeof(shader::BvhNode)) / tris);
+}
+
+// Full path tracing: 256×256 × 16 spp (background 1 if the scene has no emitters).
+shader::FrameParams PathTraceFrame(const RenderScene& rs, const Camera& cam) {
+  shader::FrameParams pt = MakeFrameParams(rs, cam, 256, 256);
+  pt.sampleCount = 16;
+  pt.maxDepth = 32;
+  pt.rrDepth = 3;
+  if (rs.emitters.empty()) pt.background = glm::vec3(1.0f);
+  return pt;
+}
+
+// The CPU reference's closest hits on both ray sets (with `threads` threads) after a
+// one-thread run; every other tracer's hits are checked against them.
+struct CpuHits {
+  TraceRun camera, diffuse;
+};
+
+CpuHits MeasureCpu(const RenderScene& rs, const RaySets& rays, const shader::FrameParams& pt, unsigned threads,
+                   Report& rep) {
+  TraceRun cpuCam1 = TraceCpu(rs, rays.camera, 1), cpuDif1 = TraceCpu(rs, rays.diffuse, 1);
+  CpuHits hits{TraceCpu(rs, rays.camera, threads), TraceCpu(rs, rays.diffuse, threads)};
+  rep.Set("cpu_primary_mrays_s_1t", Mrays(rays.camera.size(), cpuCam1.seconds));
+  rep.Set("cpu_diffuse_mrays_s_1t", Mrays(rays.diffuse.size(), cpuDif1.seconds));
+  rep.Set("cpu_primary_mrays_s", Mrays(rays.camera.size(), hits.camera.seconds));
+  rep.Set("cpu_diffuse_mrays_s", Mrays(rays.diffuse.size(), hits.diffuse.seconds));
+  CpuRenderOptions cpuOpt;
+  cpuOpt.threads = threads;
+  RenderResult cpuPt = RenderCpu(rs, pt, cpuOpt);
+  rep.Set("cpu_pt_msamples_s", 256.0 * 256.0 * pt.sampleCount / cpuPt.seconds * 1e-6);
+  return hits;
+}
+
+// The Vulkan device's figures (null without one); returns the hits that differ from the CPU's.
+uint64_t MeasureGpu(const RenderScene& rs, const RaySets& rays, const shader::FrameParams& pt, const CpuHits& cpu,
+                    Report& rep) {
+  rep.Set("gpu_primary_mrays_s", std::nullopt);
+  rep.Set("gpu_diffuse_mrays_s", std::nullopt);
+  rep.Set("gpu_pt_msamples_s", std::nullopt);
+  uint64_t mismatches = 0;
+  try {
+    vk::Context ctx(vk::ContextOptions{});
+    rep.device = ctx.DeviceName();
+    vk::GpuRenderer gpu(ctx, rs);
+    TraceRun gCam = TraceGpu(gpu, rays.camera), gDif = TraceGpu(gpu, rays.diffuse);
+    rep.Set("gpu_primary_mrays_s", Mrays(rays.camera.size(), gCam.seconds));
+    rep.Set("gpu_diffuse_mrays_s", Mrays(rays.diffuse.size(), gDif.seconds));
+    mismatches += Mismatches(cpu.camera, gCam) + Mismatches(cpu.diffuse, gDif);
+    RenderResult g = gpu.Render(pt);
+    rep.Set("gpu_pt_msamples_s", 256.0 * 256.0 * pt.sampleCount / g.seconds * 1e-6);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vkpt-bench: GPU figures skipped: %s\n", e.what());
+    rep.device = "none";
+  }
+  return mismatches;
+}
+
+// Embree's figures (null without it); returns the hits that differ from the CPU's.
+uint64_t MeasureEmbree([[maybe_unused]] const RenderScene& rs, [[maybe_unused]] const RaySets& rays,
+                       [[maybe_unused]] const CpuHits& cpu, [[maybe_unused]] double tris,
+                       [[maybe_unused]] unsigned threads, Report& rep) {
+  for (const char* k : {"embree_primary_mrays_s", "embree_diffuse_mrays_s", "embree_primary_mrays_s_1t",
+                        "embree_diffuse_mrays_s_1t", "embree_build_mtris_per_s"})
+    rep.Set(k, std::nullopt);
+  uint64_t mismatches = 0;
+#ifdef VKPT_HAVE_EMBREE
+  Embree e1(rs, 1);
+  double buildSeconds = e1.buildSeconds;
+  for (int k = 1; k < kBuildRuns; ++k) buildSeconds = std::min(buildSeconds, Embree(rs, 1).buildSeconds);
+  rep.Set("embree_build_mtris_per_s", tris / buildSeconds * 1e-6);
+  TraceRun eCam1 = e1.Trace(rays.camera, 1), eDif1 = e1.Trace(rays.diffuse, 1);
+  rep.Set("embree_primary_mrays_s_1t", Mrays(rays.camera.size(), eCam1.seconds));
+  rep.Set("embree_diffuse_mrays_s_1t", Mrays(rays.diffuse.size(), eDif1.seconds));
+  Embree en(rs, threads);
+  TraceRun eCam = en.Trace(rays.camera, threads), eDif = en.Trace(rays.diffuse, threads);
+  rep.Set("embree_primary_mrays_s", Mrays(rays.camera.size(), eCam.seconds));
+  rep.Set("embree_diffuse_mrays_s", Mrays(rays.diffuse.size(), eDif.seconds));
+  mismatches += Mismatches(cpu.camera, eCam) + Mismatches(cpu.diffuse, eDif);
+#endif
+  return mismatches;
+}
+
+void PrintReport(const Options& o, Report& rep) {
+  // The whole run's peak: scene, trees, ray sets and hits, lavapipe's and Embree's memory.
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) == 0) rep.Set("peak_rss_mib", double(usage.ru_maxrss) / 1024.0);
+  if (o.json) PrintJson(rep);
+  else if (o.markdown)
+    PrintMarkdownRow(rep, (o.procedural ? "procedural " + std::to_string(o.procedural)
+                                        : o.scene.substr(o.scene.find_last_of('/') + 1)) +
+                              (o.splits == "object" ? "" : ", " + o.splits + " splits"));
+  else PrintTable(rep);
+}
+
 int Run(const Options& o) {
   const unsigned threads = ThreadCount(o.threads);
   // lavapipe reads LP_NUM_THREADS when its device is created: set it first.
@@ -460,97 +575,18 @@ int Run(const Options& o) {
   const double tris = double(scene.triangles.size() - rs.degenerateTriangles);
   rep.Set("tris", tris);
   rep.Set("references", double(rs.bvhStats.references));
-  // Build time: the best of kBuildRuns builds (the first in a process also pays the
-  // kernel for fresh pages; this machine's timings drift). Embree's is timed the same way.
-  // The one-thread figure is measured in the same run, for the thread scaling.
-  auto bestBuildMs = [&](unsigned buildThreads, double first) {
-    BvhBuildOptions b = bvhOptions;
-    b.threads = buildThreads;
-    for (int k = 1; k < kBuildRuns; ++k) first = std::min(first, PrepareRenderScene(scene, b, false).bvhStats.buildMs);
-    return first;
-  };
-  const double buildMs = bestBuildMs(threads, rs.bvhStats.buildMs);
-  const double buildMs1 = threads == 1 ? buildMs : bestBuildMs(1, std::numeric_limits<double>::infinity());
-  rep.Set("build_ms", buildMs);
-  rep.Set("build_mtris_per_s", tris / buildMs * 1e-3);
-  rep.Set("build_mtris_per_s_1t", tris / buildMs1 * 1e-3);
-  rep.Set("sah_cost", rs.bvhStats.sahCost);
-  rep.Set("nodes", rs.bvhStats.nodes);
-  rep.Set("gpu_bytes_per_tri", (rs.triangles.size() * sizeof(shader::Triangle) + rs.nodes.size() * sizeof(shader::BvhNode)) / tris);
+  MeasureBuild(scene, rs, bvhOptions, threads, tris, rep);
 
   const Camera cam = scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0];
-  shader::FrameParams p = MakeFrameParams(rs, cam, o.width, o.height);
-  RaySets rays = MakeRays(rs, p, threads);
+  RaySets rays = MakeRays(rs, MakeFrameParams(rs, cam, o.width, o.height), threads);
   rep.Set("rays_primary", double(rays.camera.size()));
   rep.Set("rays_diffuse", double(rays.diffuse.size()));
-
-  auto mrays = [](size_t n, double s) { return double(n) / s * 1e-6; };
-  TraceRun cpuCam1 = TraceCpu(rs, rays.camera, 1), cpuDif1 = TraceCpu(rs, rays.diffuse, 1);
-  TraceRun cpuCam = TraceCpu(rs, rays.camera, threads), cpuDif = TraceCpu(rs, rays.diffuse, threads);
-  rep.Set("cpu_primary_mrays_s_1t", mrays(rays.camera.size(), cpuCam1.seconds));
-  rep.Set("cpu_diffuse_mrays_s_1t", mrays(rays.diffuse.size(), cpuDif1.seconds));
-  rep.Set("cpu_primary_mrays_s", mrays(rays.camera.size(), cpuCam.seconds));
-  rep.Set("cpu_diffuse_mrays_s", mrays(rays.diffuse.size(), cpuDif.seconds));
-  uint64_t mismatches = 0;
-
-  // Full path tracing: 256×256 × 16 spp (background 1 if the scene has no emitters).
-  shader::FrameParams pt = MakeFrameParams(rs, cam, 256, 256);
-  pt.sampleCount = 16;
-  pt.maxDepth = 32;
-  pt.rrDepth = 3;
-  if (rs.emitters.empty()) pt.background = glm::vec3(1.0f);
-  CpuRenderOptions cpuOpt;
-  cpuOpt.threads = threads;
-  CpuRenderResult cpuPt = RenderCpu(rs, pt, cpuOpt);
-  rep.Set("cpu_pt_msamples_s", 256.0 * 256.0 * pt.sampleCount / cpuPt.seconds * 1e-6);
-
-  rep.Set("gpu_primary_mrays_s", std::nullopt);
-  rep.Set("gpu_diffuse_mrays_s", std::nullopt);
-  rep.Set("gpu_pt_msamples_s", std::nullopt);
-  try {
-    vk::Context ctx(vk::ContextOptions{});
-    rep.device = ctx.DeviceName();
-    vk::GpuRenderer gpu(ctx, rs);
-    TraceRun gCam = TraceGpu(gpu, rays.camera), gDif = TraceGpu(gpu, rays.diffuse);
-    rep.Set("gpu_primary_mrays_s", mrays(rays.camera.size(), gCam.seconds));
-    rep.Set("gpu_diffuse_mrays_s", mrays(rays.diffuse.size(), gDif.seconds));
-    mismatches += Mismatches(cpuCam, gCam) + Mismatches(cpuDif, gDif);
-    vk::GpuRenderResult g = gpu.Render(pt);
-    rep.Set("gpu_pt_msamples_s", 256.0 * 256.0 * pt.sampleCount / g.seconds * 1e-6);
-  } catch (const Error& e) {
-    std::fprintf(stderr, "vkpt-bench: GPU figures skipped: %s\n", e.what());
-    rep.device = "none";
-  }
-
-  for (const char* k : {"embree_primary_mrays_s", "embree_diffuse_mrays_s", "embree_primary_mrays_s_1t",
-                        "embree_diffuse_mrays_s_1t", "embree_build_mtris_per_s"})
-    rep.Set(k, std::nullopt);
-#ifdef VKPT_HAVE_EMBREE
-  {
-    Embree e1(rs, 1);
-    double buildSeconds = e1.buildSeconds;
-    for (int k = 1; k < kBuildRuns; ++k) buildSeconds = std::min(buildSeconds, Embree(rs, 1).buildSeconds);
-    rep.Set("embree_build_mtris_per_s", tris / buildSeconds * 1e-6);
-    TraceRun eCam1 = e1.Trace(rays.camera, 1), eDif1 = e1.Trace(rays.diffuse, 1);
-    rep.Set("embree_primary_mrays_s_1t", mrays(rays.camera.size(), eCam1.seconds));
-    rep.Set("embree_diffuse_mrays_s_1t", mrays(rays.diffuse.size(), eDif1.seconds));
-    Embree en(rs, threads);
-    TraceRun eCam = en.Trace(rays.camera, threads), eDif = en.Trace(rays.diffuse, threads);
-    rep.Set("embree_primary_mrays_s", mrays(rays.camera.size(), eCam.seconds));
-    rep.Set("embree_diffuse_mrays_s", mrays(rays.diffuse.size(), eDif.seconds));
-    mismatches += Mismatches(cpuCam, eCam) + Mismatches(cpuDif, eDif);
-  }
-#endif
+  const shader::FrameParams pt = PathTraceFrame(rs, cam);
+  const CpuHits cpu = MeasureCpu(rs, rays, pt, threads, rep);
+  uint64_t mismatches = MeasureGpu(rs, rays, pt, cpu, rep);
+  mismatches += MeasureEmbree(rs, rays, cpu, tris, threads, rep);
   rep.Set("hit_mismatches", double(mismatches));
-  // The whole run's peak: scene, trees, ray sets and hits, lavapipe's and Embree's memory.
-  rusage usage{};
-  if (getrusage(RUSAGE_SELF, &usage) == 0) rep.Set("peak_rss_mib", double(usage.ru_maxrss) / 1024.0);
-  if (o.json) PrintJson(rep);
-  else if (o.markdown)
-    PrintMarkdownRow(rep, (o.procedural ? "procedural " + std::to_string(o.procedural)
-                                        : o.scene.substr(o.scene.find_last_of('/') + 1)) +
-                              (o.splits == "object" ? "" : ", " + o.splits + " splits"));
-  else PrintTable(rep);
+  PrintReport(o, rep);
   return 0;
 }
 

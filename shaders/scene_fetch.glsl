@@ -2,12 +2,13 @@
 // uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per struct, the std430
 // layouts of shared/layout.h byte for byte).
 //
-// Why texels and not storage-buffer structs: lavapipe (Mesa 22.3) loads a storage buffer
-// lane by lane — a loop over the 8 SIMD lanes with a bounds-checked scalar load per
-// component — while a texel fetch is one vectorised gather. Diffuse rays traverse ~2×
-// faster this way (Cornell box, one thread: 2.5 -> 4.9 Mrays/s). Texel buffers also reach further: 2^27 texels
-// (2 GiB) on lavapipe against 128 MiB per storage buffer. An integer format keeps every
-// bit (skip links, float bits) exactly.
+// Why texels and not storage-buffer structs: lavapipe (Mesa 22.3) has no gathers for
+// either. It reads a 16-byte texel lane by lane — eight scalar loads and a transpose,
+// about 45 instructions per fetch — and a storage-buffer struct with a loop over the 8
+// SIMD lanes and a bounds-checked scalar load per component; the texel fetches measured
+// faster (docs/design-notes.md, "The scene in texel buffers"). Texel buffers also reach
+// further: 2^27 texels (2 GiB) on lavapipe against 128 MiB per storage buffer. An
+// integer format keeps every bit (skip links, float bits) exactly.
 #ifndef VKPT_SCENE_FETCH_GLSL
 #define VKPT_SCENE_FETCH_GLSL
 #include "shared/layout.h"

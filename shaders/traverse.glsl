@@ -37,7 +37,7 @@ uint RootFor(vec3 dir) {
 // its slowest lane's last iteration (one masked pass if no lane has anything to do).
 // gallivm also never branches around an if: its body runs masked even when no lane
 // takes it, so that last pass of a while loop costs a whole body. The traversal loops
-// are therefore do-while loops (Cornell: 14 % fewer instructions per path sample).
+// are therefore do-while loops (docs/design-notes.md, "Shader traversal loops").
 // GpuTest.TraversalCountsLoopPassesExactly checks this count against the limit itself.
 uint gLoopIterations = 0u;
 
@@ -97,8 +97,8 @@ HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit) {
   uint end = 0u;    // one past the current leaf's last triangle
   // Nodes are walked until a leaf (or the end), then its triangles are tested, in two
   // inner loops: on SIMD hardware one merged loop pays for both the box test and the
-  // triangle test on every pass in which lanes disagree (Aila & Laine 2009, "while-while").
-  // lavapipe, Cornell box: 20 % fewer instructions per path sample, diffuse rays +10 %.
+  // triangle test on every pass in which lanes disagree ("while-while" in Aila and Laine
+  // 2009, "Understanding the Efficiency of Ray Traversal on GPUs").
   do {
     uint nodeSteps = WalkToLeaf(origin, invDir, tMax, i, k, end);
     uint triangleSteps = 0u;

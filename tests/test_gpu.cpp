@@ -205,7 +205,8 @@ TEST_F(GpuTest, TraversalMatchesCpuOnLargeCorpusModel) {
 // a probe loop sized from it must end right at the limit, and one pass longer must be
 // cut (see VKPT_TEST_LOOP_BUDGET in trace.comp).
 TEST_F(GpuTest, TraversalCountsLoopPassesExactly) {
-  if (Gpu().DeviceName().find("llvmpipe") == std::string::npos) GTEST_SKIP() << "the loop limit is lavapipe's";
+  // The loop limit is lavapipe's, and the suite pins lavapipe (tests/CMakeLists.txt).
+  ASSERT_NE(Gpu().DeviceName().find("llvmpipe"), std::string::npos) << Gpu().DeviceName();
   Scene cornell = LoadGltf(std::string(VKPT_SOURCE_DIR) + "/scenes/cornell.gltf");
   std::vector<RenderScene> scenes;
   scenes.push_back(PrepareRenderScene(cornell));
@@ -242,7 +243,7 @@ TEST_F(GpuTest, LockstepCornellMatchesCpu) {
   FrameParams p = Params(rs, s, 128, 100, 4, 1);
   Image cpu = RenderCpu(rs, p).image;
   vk::GpuRenderer gpu(Gpu(), rs);
-  vk::GpuRenderResult g = gpu.Render(p);
+  RenderResult g = gpu.Render(p);
   EXPECT_EQ(g.nonFinite, 0u);
   ImageComparison c = CompareImages(cpu, g.image);
   std::printf("%s\n", c.Summary().c_str());
@@ -258,13 +259,13 @@ TEST_F(GpuTest, ImageDoesNotDependOnSamplesPerInvocation) {
   RenderScene rs = PrepareRenderScene(s);
   FrameParams p = Params(rs, s, 40, 24, 13, 3);
   vk::GpuRenderer gpu(Gpu(), rs);
-  std::vector<vk::GpuRenderResult> results;
+  std::vector<RenderResult> results;
   for (uint32_t run : {1u, 4u, 13u, 0u}) {
     vk::GpuRenderOptions o;
     o.samplesPerInvocation = run;
     o.batch = run ? 0 : 5;  // adaptive: one measuring dispatch, then batches of 5
     results.push_back(gpu.Render(p, o));
-    const vk::GpuRenderResult& r = results.back();
+    const RenderResult& r = results.back();
     EXPECT_EQ(r.cutShort, 0u);
     EXPECT_EQ(r.nonFinite, 0u);
     if (run) {
@@ -282,14 +283,15 @@ TEST_F(GpuTest, ImageDoesNotDependOnSamplesPerInvocation) {
 // A run of samples too long for lavapipe's loop limit must be reported as cut short,
 // never returned as a silently darker image.
 TEST_F(GpuTest, RunPastTheLoopLimitIsReported) {
-  if (Gpu().DeviceName().find("llvmpipe") == std::string::npos) GTEST_SKIP() << "the loop limit is lavapipe's";
+  // The loop limit is lavapipe's, and the suite pins lavapipe (tests/CMakeLists.txt).
+  ASSERT_NE(Gpu().DeviceName().find("llvmpipe"), std::string::npos) << Gpu().DeviceName();
   Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
   RenderScene rs = PrepareRenderScene(s);
   FrameParams p = Params(rs, s, 8, 8, 2000, 1);
   vk::GpuRenderer gpu(Gpu(), rs);
   vk::GpuRenderOptions o;
   o.samplesPerInvocation = p.sampleCount;
-  vk::GpuRenderResult r = gpu.Render(p, o);
+  RenderResult r = gpu.Render(p, o);
   std::printf("2000 samples per invocation: %llu of %u samples flagged as cut short\n",
               (unsigned long long)r.cutShort, 64 * p.sampleCount);
   EXPECT_GT(r.cutShort, 0u);
@@ -328,7 +330,7 @@ test::ZTest GpuFurnace(const uint32_t* spirv, size_t bytes, glm::dvec3* expected
   Scene s = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
   RenderScene rs = PrepareRenderScene(s);
   vk::GpuRenderer gpu(Gpu(), rs, spirv, bytes);
-  vk::GpuRenderResult r = gpu.Render(Params(rs, s, 32, 32, 128, 9, 200, 3));
+  RenderResult r = gpu.Render(Params(rs, s, 32, 32, 128, 9, 200, 3));
   EXPECT_EQ(r.nonFinite, 0u);
   *expected = test::FurnaceExpected(s, 200);
   return test::MeanAndError(r.image, *expected);
@@ -356,7 +358,7 @@ TEST_P(GpuCorpus, RendersOnTheGpu) {
   RenderScene rs = PrepareRenderScene(s);
   FrameParams p = Params(rs, s, 24, 24, 2, 1);
   vk::GpuRenderer gpu(Gpu(), rs);
-  vk::GpuRenderResult r = gpu.Render(p);
+  RenderResult r = gpu.Render(p);
   EXPECT_EQ(r.nonFinite, 0u);
   EXPECT_EQ(r.cutShort, 0u);
   // Lockstep with the CPU reference on the same seed.

@@ -28,11 +28,35 @@ using test::Agrees;
 using test::FurnaceExpected;
 using test::MeanAndError;
 
+// The film both renderers resolve their sums through: samples 1, 2, 6 give the mean 3
+// and the sample variance ((−2)² + (−1)² + 3²) / 2 = 7, so the mean's variance is 7/3.
+TEST(Render, FilmGivesMeanAndVarianceOfTheMean) {
+  Film film(2, 1, 3);
+  film.SetPixel(0, {glm::dvec3(1 + 2 + 6, 0, 3), glm::dvec3(1 + 4 + 36, 0, 3)});  // G: 0, 0, 0; B: 1, 1, 1
+  film.SetPixel(1, {glm::dvec3(3), glm::dvec3(3)});  // 1, 1, 1: no spread
+  Image image = film.TakeImage();
+  ASSERT_EQ(image.variance.size(), 2u);
+  EXPECT_FLOAT_EQ(image.pixels[0].x, 3.0f);
+  EXPECT_FLOAT_EQ(image.variance[0].x, 7.0f / 3.0f);
+  EXPECT_EQ(image.pixels[0].y, 0.0f);
+  EXPECT_EQ(image.variance[0].y, 0.0f);
+  EXPECT_FLOAT_EQ(image.pixels[0].z, 1.0f);
+  EXPECT_EQ(image.variance[0].z, 0.0f);  // samples 1, 1, 1
+  EXPECT_EQ(image.pixels[1], glm::vec3(1.0f));
+  EXPECT_EQ(image.variance[1], glm::vec3(0.0f));
+
+  Film single(1, 1, 1);  // one sample: no variance estimate, 0
+  single.SetPixel(0, {glm::dvec3(5.0), glm::dvec3(25.0)});
+  Image one = single.TakeImage();
+  EXPECT_EQ(one.pixels[0], glm::vec3(5.0f));
+  EXPECT_EQ(one.variance[0], glm::vec3(0.0f));
+}
+
 TEST(Render, FurnaceMatchesClosedForm) {
   Scene scene = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
   RenderScene rs = PrepareRenderScene(scene);
-  CpuRenderResult r = RenderCpu(rs, Params(scene, rs, 32, 32, 256, 200, 3));
-  EXPECT_EQ(r.stats.nonFinite, 0u);
+  RenderResult r = RenderCpu(rs, Params(scene, rs, 32, 32, 256, 200, 3));
+  EXPECT_EQ(r.nonFinite, 0u);
   glm::dvec3 expected = FurnaceExpected(scene, 200);
   EXPECT_NEAR(expected.y, 1.0, 1e-9);  // the scene's own statement: (0.5/0.7, 1, 2.5)
   EXPECT_TRUE(Agrees(MeanAndError(r.image, expected), expected, 1e-3, "furnace"));
@@ -42,10 +66,10 @@ TEST(Render, FurnaceHonoursDepthCapWithoutRoulette) {
   // D = 2 and roulette off: exactly Le(1 + ρ + ρ²) — pins down what --max-depth counts.
   Scene scene = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
   RenderScene rs = PrepareRenderScene(scene);
-  CpuRenderResult r = RenderCpu(rs, Params(scene, rs, 16, 16, 64, 2, 1000));
+  RenderResult r = RenderCpu(rs, Params(scene, rs, 16, 16, 64, 2, 1000));
   glm::dvec3 expected = FurnaceExpected(scene, 2);
   EXPECT_TRUE(Agrees(MeanAndError(r.image, expected), expected, 1e-3, "furnace D=2"));
-  CpuRenderResult r0 = RenderCpu(rs, Params(scene, rs, 8, 8, 4, 0, 1000));
+  RenderResult r0 = RenderCpu(rs, Params(scene, rs, 8, 8, 4, 0, 1000));
   for (const glm::vec3& p : r0.image.pixels) EXPECT_EQ(p, scene.materials[0].emission) << "D = 0: emission only";
 }
 
@@ -56,7 +80,7 @@ TEST(Render, FurnaceTestDetectsATwoPercentError) {
   glm::dvec3 expected = FurnaceExpected(scene, 200);
   scene.materials[0].baseColor *= 0.98f;
   RenderScene rs = PrepareRenderScene(scene);
-  CpuRenderResult r = RenderCpu(rs, Params(scene, rs, 32, 32, 256, 200, 3));
+  RenderResult r = RenderCpu(rs, Params(scene, rs, 32, 32, 256, 200, 3));
   EXPECT_FALSE(Agrees(MeanAndError(r.image, expected), expected, 1e-3, "furnace with wrong albedo (must fail)"));
 }
 
@@ -77,7 +101,7 @@ TEST(Render, ConvexObjectInUniformEnvironmentReflectsRhoTimesE) {
   RenderScene rs = PrepareRenderScene(scene);
   shader::FrameParams p = Params(scene, rs, 24, 24, 8, 5, 3);
   p.background = glm::vec3(2.0f, 1.0f, 0.5f);
-  CpuRenderResult r = RenderCpu(rs, p);
+  RenderResult r = RenderCpu(rs, p);
   glm::vec3 onObject = m.baseColor * p.background;
   int object = 0, env = 0;
   for (const glm::vec3& px : r.image.pixels) {
@@ -97,8 +121,8 @@ TEST(Render, CornellBoxLooksLikeTheCornellBox) {
   RenderScene rs = PrepareRenderScene(scene);
   ASSERT_EQ(rs.emitters.size(), 2u);
   EXPECT_NEAR(rs.emitters[0].area + rs.emitters[1].area, 13650.0, 1e-2);
-  CpuRenderResult r = RenderCpu(rs, Params(scene, rs, 64, 64, 16, 32, 3));
-  EXPECT_EQ(r.stats.nonFinite, 0u);
+  RenderResult r = RenderCpu(rs, Params(scene, rs, 64, 64, 16, 32, 3));
+  EXPECT_EQ(r.nonFinite, 0u);
   // Mean of the left and right image columns: red wall left, green wall right.
   glm::dvec3 left(0.0), right(0.0);
   float brightest = 0.0f;

@@ -46,8 +46,10 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
   }
   std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", scene.bounds.lo.x, scene.bounds.lo.y,
               scene.bounds.lo.z, scene.bounds.hi.x, scene.bounds.hi.y, scene.bounds.hi.z);
+  char which[16] = "default";
+  if (!scene.cameras.empty()) std::snprintf(which, sizeof which, "#%u", camIndex);
   std::printf("  cameras: %zu; using %s \"%s\" at (%.6g, %.6g, %.6g) looking (%.4g, %.4g, %.4g), %s %.4g\n",
-              scene.cameras.size(), scene.cameras.empty() ? "default" : ("#" + std::to_string(camIndex)).c_str(),
+              scene.cameras.size(), which,
               cam.name.c_str(), cam.position.x, cam.position.y, cam.position.z, cam.forward.x, cam.forward.y,
               cam.forward.z, cam.orthographic ? "orthographic ymag" : "perspective yfov(deg)",
               cam.orthographic ? cam.ymag : cam.yfov * 180.0 / M_PI);
@@ -56,14 +58,6 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
   for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
   for (const std::string& f : scene.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
 }
-
-struct Rendered {
-  Image image;
-  double seconds = 0.0;
-  uint64_t rays = 0, nonFinite = 0, cutShort = 0;
-  std::string engine;  // "cpu (2 threads)" or "vulkan: <device>"
-  uint32_t validationMessages = 0;
-};
 
 std::function<void(double)> ProgressLine() {
   if (!isatty(STDERR_FILENO)) return {};
@@ -74,27 +68,24 @@ void EndProgressLine() {
   if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r%*s\r", 20, "");
 }
 
-Rendered RenderOnCpu(const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
+RenderResult RenderOnCpu(const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
   CpuRenderOptions cpu;
   cpu.threads = o.threads;
   cpu.progress = ProgressLine();
-  CpuRenderResult r = RenderCpu(rs, params, cpu);
+  RenderResult r = RenderCpu(rs, params, cpu);
   EndProgressLine();
-  return {std::move(r.image), r.seconds, r.stats.rays, r.stats.nonFinite, 0,
-          "cpu (" + std::to_string(r.threads) + " threads)", 0};
+  return r;
 }
 
-Rendered RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
+RenderResult RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::FrameParams& params,
+                            const Options& o) {
   vk::GpuRenderer renderer(ctx, rs);
   vk::GpuRenderOptions gpu;
   gpu.batch = o.batch;
   gpu.progress = ProgressLine();
-  vk::GpuRenderResult r = renderer.Render(params, gpu);
+  RenderResult r = renderer.Render(params, gpu);
   EndProgressLine();
-  return {std::move(r.image), r.seconds, r.rays, r.nonFinite, r.cutShort,
-          "vulkan: " + ctx.DeviceName() + " (up to " + std::to_string(r.samplesPerInvocation) +
-              " samples per invocation)",
-          0};
+  return r;
 }
 
 int ListDevices() {
@@ -144,45 +135,44 @@ int Diff(const Options& o) {
   return c.statisticallyAgree ? 0 : 4;
 }
 
-int Run(const Options& o) {
-  if (o.listDevices) return ListDevices();
-  if (!o.diff.empty()) return Diff(o);
-  CheckOutputPath(o.out);  // fail before a long render, not after
-
-  Scene scene = LoadGltf(o.scene, o.load);
-
-  uint32_t camIndex = o.camera.value_or(0);
-  Camera cam;
+// The camera --camera names (the scene's first, or a default one framing the scene if
+// it has none); its index goes to *index.
+Camera ChooseCamera(const Scene& scene, const Options& o, uint32_t* index) {
+  *index = o.camera.value_or(0);
   if (scene.cameras.empty()) {
     if (o.camera) throw Error(o.scene + ": --camera " + std::to_string(*o.camera) + " given, but the scene has no cameras");
-    cam = DefaultCamera(scene.bounds);
-  } else {
-    if (camIndex >= scene.cameras.size())
-      throw Error(o.scene + ": --camera " + std::to_string(camIndex) + " is out of range; the scene has " +
-                  std::to_string(scene.cameras.size()) + " camera(s)");
-    cam = scene.cameras[camIndex];
+    return DefaultCamera(scene.bounds);
   }
-  // Resolution: what the user said; the missing side follows the camera's aspect ratio.
+  if (*index >= scene.cameras.size())
+    throw Error(o.scene + ": --camera " + std::to_string(*index) + " is out of range; the scene has " +
+                std::to_string(scene.cameras.size()) + " camera(s)");
+  return scene.cameras[*index];
+}
+
+// Resolution: what the user said; the missing side follows the camera's aspect ratio.
+glm::uvec2 ImageSize(const Camera& cam, const Options& o) {
   float aspect = cam.aspectRatio > 0.0f ? cam.aspectRatio : 1.0f;
   uint32_t width = o.width.value_or(o.height ? uint32_t(std::lround(*o.height * aspect)) : 512u);
   uint32_t height = o.height.value_or(uint32_t(std::lround(width / aspect)));
-  width = std::max(1u, std::min(width, 16384u));
-  height = std::max(1u, std::min(height, 16384u));
+  return {std::max(1u, std::min(width, 16384u)), std::max(1u, std::min(height, 16384u))};
+}
 
-  // The device before the scene's arrays: without one (auto backend) the CPU renders, and
-  // only then does the scene need the CPU's BVH layout.
-  std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
+// The BVH and the renderers' arrays. `gpu`: a Vulkan device will render, so the shader's
+// direction-ordered copies of the tree are built; the CPU's layout only where the CPU
+// renders (no device, or --compare).
+RenderScene PrepareForRender(const Scene& scene, const Options& o, bool gpu) {
   BvhBuildOptions bvhOptions;
   bvhOptions.maxLeafSize = o.leafSize;
   bvhOptions.splits = o.splits;
   bvhOptions.threads = o.threads;
-  // The direction-ordered copies are for the shader; the CPU walks its own layout.
-  bvhOptions.directionCopies = ctx != nullptr;
-  RenderScene rs = PrepareRenderScene(scene, bvhOptions, !ctx || o.compare);
+  bvhOptions.directionCopies = gpu;
+  return PrepareRenderScene(scene, bvhOptions, !gpu || o.compare);
+}
 
-  if (o.verbose) PrintLoadReport(scene, rs, cam, camIndex);
-
-  shader::FrameParams params = MakeFrameParams(rs, cam, width, height);
+// The frame constants from the options; a scene without emitters is lit by a white
+// environment unless --background says otherwise (and is warned about if that is black).
+shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, glm::uvec2 size, const Options& o) {
+  shader::FrameParams params = MakeFrameParams(rs, cam, size.x, size.y);
   params.seed = o.seed;
   params.sampleBegin = 0;
   params.sampleCount = o.spp;
@@ -197,28 +187,26 @@ int Run(const Options& o) {
   if (rs.emitters.empty() && MaxComponent(params.background) <= 0.0f)
     std::fprintf(stderr, "vkpt: warning: %s: no emissive triangles and a black background; the image will be black\n",
                  o.scene.c_str());
+  return params;
+}
 
-  std::optional<Rendered> reference;
-  if (o.compare) reference = RenderOnCpu(rs, params, o);
-  Rendered r = ctx ? RenderOnVulkan(*ctx, rs, params, o) : RenderOnCpu(rs, params, o);
-  if (ctx) r.validationMessages = ctx->ValidationMessages();
+// --compare: the CPU reference (A) against the Vulkan render (B), with a heat map beside
+// the output. Same seed, same estimator: the backends must agree pixel by pixel
+// (lockstep) and in every region's mean (statistics); 4 if they do not, else 0.
+int CompareBackends(const RenderResult& reference, const RenderResult& r, const Options& o) {
+  ImageComparison c = CompareImages(reference.image, r.image);
+  WriteImage(DifferenceHeatmap(reference.image, r.image), DiffPath(o.out));
+  std::printf("vkpt: --compare: A = %s (%.3f s), B = %s (%.3f s), seed %u\n%s\n  heat map: %s\n",
+              reference.engine.c_str(), reference.seconds, r.engine.c_str(), r.seconds, o.seed, c.Summary().c_str(),
+              DiffPath(o.out).c_str());
+  if (c.lockstepAgree && c.statisticallyAgree) return 0;
+  std::fprintf(stderr, "vkpt: --compare: the CPU and Vulkan images DISAGREE\n");
+  return 4;
+}
 
-  WriteImage(r.image, o.out, o.exposure);
-  int status = 0;
-  if (reference) {
-    ImageComparison c = CompareImages(reference->image, r.image);
-    WriteImage(DifferenceHeatmap(reference->image, r.image), DiffPath(o.out));
-    std::printf("vkpt: --compare: A = %s (%.3f s), B = %s (%.3f s), seed %u\n%s\n  heat map: %s\n",
-                reference->engine.c_str(), reference->seconds, r.engine.c_str(), r.seconds, o.seed,
-                c.Summary().c_str(), DiffPath(o.out).c_str());
-    // Same seed, same estimator: the backends must agree pixel by pixel (lockstep) and
-    // in every region's mean (statistics).
-    if (!c.lockstepAgree || !c.statisticallyAgree) {
-      std::fprintf(stderr, "vkpt: --compare: the CPU and Vulkan images DISAGREE\n");
-      status = 4;
-    }
-  }
-
+// The summary after a render: rates, the image's mean, the scene and its BVH, warnings.
+void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderResult& r, const Options& o) {
+  const uint32_t width = r.image.width, height = r.image.height;
   const double samples = double(width) * height * o.spp;
   glm::dvec3 mean(0.0);
   for (const glm::vec3& p : r.image.pixels) mean += glm::dvec3(p);
@@ -244,18 +232,38 @@ int Run(const Options& o) {
                  "vkpt: warning: %llu samples came near lavapipe's limit of 65535 loop iterations per SIMD group "
                  "and may have been cut short (image biased dark); use --backend cpu or a smaller --max-depth\n",
                  (unsigned long long)r.cutShort);
-  if (r.validationMessages) {
-    std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", r.validationMessages);
+}
+
+int Run(const Options& o) {
+  if (o.listDevices) return ListDevices();
+  if (!o.diff.empty()) return Diff(o);
+  CheckOutputPath(o.out);  // fail before a long render, not after
+
+  Scene scene = LoadGltf(o.scene, o.load);
+  uint32_t camIndex = 0;
+  const Camera cam = ChooseCamera(scene, o, &camIndex);
+  const glm::uvec2 size = ImageSize(cam, o);
+  // The device before the scene's arrays: without one (auto backend) the CPU renders, and
+  // only then does the scene need the CPU's BVH layout.
+  std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
+  const RenderScene rs = PrepareForRender(scene, o, ctx != nullptr);
+  if (o.verbose) PrintLoadReport(scene, rs, cam, camIndex);
+  const shader::FrameParams params = FrameFromOptions(rs, cam, size, o);
+
+  std::optional<RenderResult> reference;
+  if (o.compare) reference = RenderOnCpu(rs, params, o);
+  RenderResult r = ctx ? RenderOnVulkan(*ctx, rs, params, o) : RenderOnCpu(rs, params, o);
+  const uint32_t validationMessages = ctx ? ctx->ValidationMessages() : 0;
+
+  WriteImage(r.image, o.out, o.exposure);
+  const int status = reference ? CompareBackends(*reference, r, o) : 0;
+  PrintRenderReport(scene, rs, r, o);
+  if (validationMessages) {
+    std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
     return 3;
   }
   return status;
 }
-
-}  // namespace
-}  // namespace vkpt
-
-namespace vkpt {
-namespace {
 
 // Every error is one line of at most a few hundred characters, whatever a file or an
 // argument put into it.

@@ -34,20 +34,24 @@ inline std::optional<SplitMode> ParseSplitMode(std::string_view name) {
 struct BvhBuildOptions {
   uint32_t maxLeafSize = 8;  // 1..shader::kMaxLeafSize
   uint32_t bins = 16;        // SAH candidate planes per axis = bins - 1
-  // The SAH's cost of visiting a node, in triangle tests. Measured (1 M procedural
-  // triangles, one thread, with leaves of up to 8): from 1 to 4, lavapipe's camera rays
-  // went from 38 % to 54 % of Embree's rate and diffuse rays from 32–38 % to 44 %, the
-  // CPU's diffuse rays from 58–63 % to 68–78 % (its leaves are tested four triangles at
-  // a time, so leaves of one or two waste lanes), path tracing on 2CylinderEngine +3–6 %,
-  // with a third of the nodes. Costs then count node visits as 4 triangle tests.
+  // The SAH's cost of visiting a node, in triangle tests (the surface area heuristic of
+  // Goldsmith and Salmon 1987, "Automatic Creation of Object Hierarchies for Ray
+  // Tracing", and MacDonald and Booth 1990, "Heuristics for Ray Tracing Using Space
+  // Subdivision"). 4, not 1: the tree gets fewer nodes and fuller leaves, and both
+  // tracers ran faster so — the CPU tests a leaf's triangles four at a time, so leaves
+  // of one or two waste lanes (docs/design-notes.md, "SAH node cost"). SAH costs
+  // therefore count a node visit as 4 triangle tests.
   float traversalCost = 4.0f;
   float intersectionCost = 1.0f;
   // Eight copies of the flattened tree, one per ray-direction octant, each ordered
   // near-child-first for its octant, so the stackless skip-link walk visits near
   // subtrees first (fewer boxes behind an early hit). Only while all eight fit in
-  // maxCopiesBytes (Vulkan guarantees 128 MiB per storage buffer); else one copy.
+  // maxCopiesBytes; else one copy.
   bool directionCopies = true;
   unsigned threads = 0;  // build threads; 0 = all cores. The tree is the same for any count.
+  // Not a device limit (the nodes are a texel buffer, checked against
+  // maxTexelBufferElements on upload): on large trees the copies cost build time and
+  // memory for little gain (docs/design-notes.md, "Direction-ordered BVH copies").
   uint64_t maxCopiesBytes = uint64_t(128) << 20;
   // Spatial splits (Stich et al. 2009, "Spatial Splits in Bounding Volume Hierarchies"):
   // a node may also be divided by a plane that cuts triangles; each straddling triangle is
@@ -56,10 +60,10 @@ struct BvhBuildOptions {
   // long and thin (CAD models); the price is duplicated references and a slower build.
   // Needs the triangles' vertices (without them every mode builds object splits).
   // kAuto exists because the split chosen at each node is only locally the cheapest: on
-  // most models spatial splits lower the whole tree's SAH (corpus: 1–21 %; rays 3–40 %
-  // faster), but where a few large triangles enclose everything (a room's walls) the root's
-  // spatial split cuts them, and both subtrees carry the pieces (+10 % SAH on the
-  // procedural scene), where an object split would have set them apart.
+  // most models spatial splits lower the whole tree's SAH, but where a few large
+  // triangles enclose everything (a room's walls) the root's spatial split cuts them, and
+  // both subtrees carry the pieces, where an object split would have set them apart
+  // (docs/design-notes.md, "Spatial splits and --splits auto").
   SplitMode splits = SplitMode::kObject;
   // Spatial splits are tried only where the object split's children overlap by more than
   // this fraction of the root's surface area (the paper's α).

@@ -21,38 +21,40 @@ glm::vec3 SampleRadiance(const RenderScene& scene, const FrameParams& params, ui
   return s.radiance;
 }
 
-CpuRenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, const CpuRenderOptions& options) {
+namespace {
+
+// Pixel (x, y)'s samples, summed in sample order (so the sums are the same for any
+// thread count); non-finite samples are counted and left out.
+PixelSums SamplePixel(const RenderScene& scene, const FrameParams& params, uint32_t x, uint32_t y,
+                      SampleStats& stats) {
+  PixelSums sums;
+  for (uint32_t s = 0; s < params.sampleCount; ++s) {
+    glm::vec3 L = SampleRadiance(scene, params, x, y, params.sampleBegin + s, stats);
+    if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z)) {
+      ++stats.nonFinite;
+      continue;
+    }
+    sums.sum += glm::dvec3(L);
+    sums.sumOfSquares += glm::dvec3(L) * glm::dvec3(L);
+  }
+  return sums;
+}
+
+}  // namespace
+
+RenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, const CpuRenderOptions& options) {
   if (scene.pairLayout.pairs.empty() && scene.pairLayout.packets.empty())
     throw Error("the CPU renderer needs a RenderScene prepared with forCpu = true");
-  CpuRenderResult result;
-  result.image = Image(params.width, params.height);
-  result.image.variance.assign(result.image.pixels.size(), glm::vec3(0.0f));
+  Film film(params.width, params.height, params.sampleCount);
   const unsigned threads = std::min<unsigned>(ThreadCount(options.threads), params.height);
-  result.threads = threads;
 
   // Counted per row and added up once per row: per sample, the shared counters would
   // bounce their cache line between cores.
   std::atomic<uint64_t> rays{0}, nonFinite{0};
   auto renderRow = [&](size_t y) {
     SampleStats st;
-    for (uint32_t x = 0; x < params.width; ++x) {
-      glm::dvec3 sum(0.0), sumSq(0.0);
-      for (uint32_t s = 0; s < params.sampleCount; ++s) {
-        glm::vec3 L = SampleRadiance(scene, params, x, uint32_t(y), params.sampleBegin + s, st);
-        if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z)) {
-          ++st.nonFinite;
-          continue;
-        }
-        sum += glm::dvec3(L);
-        sumSq += glm::dvec3(L) * glm::dvec3(L);
-      }
-      const double n = params.sampleCount;
-      glm::dvec3 mean = sum / n;
-      size_t i = y * params.width + x;
-      result.image.pixels[i] = glm::vec3(mean);
-      // Unbiased sample variance divided by n: the variance of the pixel mean.
-      if (n > 1) result.image.variance[i] = glm::vec3(glm::max(sumSq / n - mean * mean, 0.0) / (n - 1.0));
-    }
+    for (uint32_t x = 0; x < params.width; ++x)
+      film.SetPixel(y * params.width + x, SamplePixel(scene, params, x, uint32_t(y), st));
     rays.fetch_add(st.rays);
     nonFinite.fetch_add(st.nonFinite);
   };
@@ -60,8 +62,13 @@ CpuRenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, c
   auto t0 = std::chrono::steady_clock::now();
   if (options.progress) ParallelForWithProgress(params.height, threads, renderRow, options.progress);
   else ParallelFor(params.height, threads, renderRow);
+  RenderResult result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  result.stats = {rays.load(), nonFinite.load()};
+  result.image = film.TakeImage();
+  result.rays = rays.load();
+  result.nonFinite = nonFinite.load();
+  result.threads = threads;
+  result.engine = "cpu (" + std::to_string(threads) + " threads)";
   return result;
 }
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "image/image.h"
+#include "image/film.h"
 #include "render/render_scene.h"
 
 namespace vkpt {
@@ -25,17 +25,10 @@ struct CpuRenderOptions {
   std::function<void(double)> progress;
 };
 
-struct CpuRenderResult {
-  Image image;  // mean and variance of the mean per pixel
-  SampleStats stats;
-  double seconds = 0.0;
-  unsigned threads = 0;
-};
-
 // Renders samples [params.sampleBegin, params.sampleBegin + params.sampleCount) of every
 // pixel. Each pixel's samples are summed in a fixed order, so the image is bit-identical
 // for any thread count.
-CpuRenderResult RenderCpu(const RenderScene& scene, const shader::FrameParams& params,
-                          const CpuRenderOptions& options = {});
+RenderResult RenderCpu(const RenderScene& scene, const shader::FrameParams& params,
+                       const CpuRenderOptions& options = {});
 
 }  // namespace vkpt

@@ -58,15 +58,7 @@ int IntersectPacket(const TrianglePacket& p, const RaySlabs& r, float tMax, Floa
   return (ok[0] & 1) | (ok[1] & 2) | (ok[2] & 4) | (ok[3] & 8);
 }
 
-// Depth of the explicit stack. The builder bounds nothing about depth, so the stack
-// grows on the heap past this (pathological trees only).
-constexpr int kInlineStack = 64;
-
-template <bool kAnyHit>
-Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax) {
-  Hit hit{-1.0f, 0.0f, 0.0f, shader::kInvalidIndex};
-  const std::vector<BvhPairNode>& pairs = scene.pairLayout.pairs;
-  const std::vector<TrianglePacket>& packets = scene.pairLayout.packets;
+RaySlabs MakeSlabs(glm::vec3 origin, glm::vec3 dir) {
   const glm::vec3 inv = shader::SafeInverse(dir);
   RaySlabs slabs;
   for (int axis = 0; axis < 3; ++axis) {
@@ -74,42 +66,88 @@ Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tM
     slabs.dir[axis] = Splat4(dir[axis]);
     slabs.invDir[axis] = Splat4(inv[axis]);
   }
-  // Deferred far children (pair index << 4, or a leaf code) with their entry distances:
-  // a popped entry beyond the closest hit found since is dropped without another test.
+  return slabs;
+}
+
+// The deferred far children of the walk (pair index << 4, or a leaf code) with their
+// entry distances, so that one beyond the closest hit found since is dropped without
+// another box test. The first kInline entries live on the call stack; the builder bounds
+// nothing about depth, so deeper ones (pathological trees only) go to the heap.
+class DeferredStack {
+ public:
+  void Push(uint32_t code, float tEnter) {
+    if (top_ < kInline) inline_[top_++] = {code, tEnter};
+    else overflow_.push_back({code, tEnter});
+  }
+
+  // Pops until an entry still in front of the closest hit (tMax) and sets `code` to it;
+  // false once none is left. The box test's exit slack (1 + 2γ₃) is applied to tMax so
+  // culling stays as conservative as the test itself.
+  bool PopInFront(float tMax, uint32_t& code) {
+    Entry e;
+    while (Pop(e))
+      if (e.tEnter <= tMax * 1.0000004f) {
+        code = e.code;
+        return true;
+      }
+    return false;
+  }
+
+ private:
+  static constexpr int kInline = 64;
   struct Entry {
     uint32_t code;
     float tEnter;
   };
-  Entry inlineStack[kInlineStack];
-  std::vector<Entry> overflow;
-  int top = 0;
-  auto push = [&](Entry e) {
-    if (top < kInlineStack) inlineStack[top++] = e;
-    else overflow.push_back(e);
-  };
-  auto pop = [&](Entry& e) {
-    if (!overflow.empty()) { e = overflow.back(); overflow.pop_back(); return true; }
-    if (top == 0) return false;
-    e = inlineStack[--top];
-    return true;
-  };
 
+  bool Pop(Entry& e) {
+    if (!overflow_.empty()) {
+      e = overflow_.back();
+      overflow_.pop_back();
+      return true;
+    }
+    if (top_ == 0) return false;
+    e = inline_[--top_];
+    return true;
+  }
+
+  Entry inline_[kInline];
+  std::vector<Entry> overflow_;
+  int top_ = 0;
+};
+
+// Tests the triangles of leaf `code`, lanes in order, each against the closest hit so far
+// (the scalar loop's result), narrowing tMax. True when an any-hit query has its hit.
+template <bool kAnyHit>
+bool TestLeaf(const std::vector<TrianglePacket>& packets, uint32_t code, const RaySlabs& slabs, float& tMax,
+              Hit& hit) {
+  for (uint32_t k = code >> 4, e = k + ((code & 15u) + 3) / 4; k < e; ++k) {
+    Float4 t, b1, b2;
+    const int mask = IntersectPacket(packets[k], slabs, tMax, t, b1, b2);
+    for (int lane = 0; lane < 4; ++lane) {
+      if (!(mask >> lane & 1) || !(t[lane] < tMax)) continue;
+      hit = {t[lane], b1[lane], b2[lane], packets[k].index[lane]};
+      if (kAnyHit) return true;
+      tMax = t[lane];
+    }
+  }
+  return false;
+}
+
+// The ordered walk over the child pairs: both children's boxes at once, the nearer
+// entered first, the farther deferred.
+template <bool kAnyHit>
+Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax) {
+  Hit hit{-1.0f, 0.0f, 0.0f, shader::kInvalidIndex};
+  const std::vector<BvhPairNode>& pairs = scene.pairLayout.pairs;
+  const RaySlabs slabs = MakeSlabs(origin, dir);
+  DeferredStack deferred;
   // The root's own box is not tested: its children's boxes cull as well. A single-leaf
   // tree has no pairs; its leaf is the whole walk.
   uint32_t code = scene.pairLayout.rootLeaf;
   for (;;) {
     if (IsLeafCode(code)) {
-      for (uint32_t k = code >> 4, e = k + ((code & 15u) + 3) / 4; k < e; ++k) {
-        Float4 t, b1, b2;
-        const int mask = IntersectPacket(packets[k], slabs, tMax, t, b1, b2);
-        // Lanes in order, each against the closest hit so far: the scalar loop's result.
-        for (int lane = 0; lane < 4; ++lane) {
-          if (!(mask >> lane & 1) || !(t[lane] < tMax)) continue;
-          hit = {t[lane], b1[lane], b2[lane], packets[k].index[lane]};
-          if (kAnyHit) return hit;
-          tMax = t[lane];
-        }
-      }
+      if (TestLeaf<kAnyHit>(scene.pairLayout.packets, code, slabs, tMax, hit)) return hit;
     } else {
       const BvhPairNode& p = pairs[code >> 4];
       float t[2];
@@ -119,25 +157,17 @@ Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tM
         case 3: {
           int nearChild = t[1] < t[0] ? 1 : 0;
           uint32_t far = p.child[1 - nearChild];
-          // Its record is needed only after the near subtree: fetch it meanwhile (1 M
-          // triangles, diffuse rays: +25 %; prefetching far leaves' triangles gave nothing).
+          // Its record is needed only after the near subtree: fetch it meanwhile. (Far
+          // leaves' triangles are not prefetched: docs/design-notes.md, "CPU prefetch".)
           if (!IsLeafCode(far)) __builtin_prefetch(&pairs[far >> 4]);
-          push({far, t[1 - nearChild]});  // revisited later unless a closer hit culls it
+          deferred.Push(far, t[1 - nearChild]);  // revisited later unless a closer hit culls it
           code = p.child[nearChild];
           continue;
         }
         default: break;
       }
     }
-    // Pop until an entry still in front of the closest hit. The box test's exit slack
-    // (1 + 2γ₃) is applied to tMax so culling stays as conservative as the test itself.
-    Entry e;
-    bool found = false;
-    while (pop(e)) {
-      if (e.tEnter <= tMax * 1.0000004f) { found = true; break; }
-    }
-    if (!found) break;
-    code = e.code;
+    if (!deferred.PopInFront(tMax, code)) break;
   }
   return hit;
 }

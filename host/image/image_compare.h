@@ -6,11 +6,12 @@
 //    the *fraction* of channels beyond a tolerance, never the maximum error.
 //  * Statistical: the images are independent estimates of the same expectation (different
 //    seeds or code paths). Pixels are then compared by region with Welch z-tests on the
-//    region means, Šidák-corrected over all regions × channels, and a significant
-//    difference only fails when it is also larger than a small relative margin (so that
-//    very long renders do not fail on differences nobody can see).
-//
-// See /work/shared/notes/engineering-facts.md, "Comparing two Monte Carlo images".
+//    region means (Welch 1947, "The generalization of 'Student's' problem when several
+//    different population variances are involved"), Šidák-corrected over all regions ×
+//    channels (Šidák 1967, "Rectangular confidence regions for the means of multivariate
+//    normal distributions"), and a significant difference only fails when it is also
+//    larger than a small relative margin (so that very long renders do not fail on
+//    differences nobody can see).
 #pragma once
 
 #include <array>

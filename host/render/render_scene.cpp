@@ -13,17 +13,25 @@ bool IsDegenerate(const SceneTriangle& t) {
   return !(glm::length(glm::cross(e1, e2)) > 1e-6f * glm::length(e1) * glm::length(e2));
 }
 
-RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {
-  RenderScene rs;
+namespace {
+
+// The BVH builder's input: the boxes of the scene's non-degenerate triangles, their
+// indices in the scene, and (for spatial splits) their vertices as the GPU stores them.
+struct BuildInput {
   std::vector<Bounds3f> bounds;
-  std::vector<glm::vec3> vertices;  // for spatial splits: as the GPU stores them
+  std::vector<glm::vec3> vertices;
   std::vector<uint32_t> kept;
-  bounds.reserve(scene.triangles.size());
-  kept.reserve(scene.triangles.size());
+  uint32_t degenerate = 0;
+};
+
+BuildInput CollectBuildInput(const Scene& scene, const BvhBuildOptions& options) {
+  BuildInput in;
+  in.bounds.reserve(scene.triangles.size());
+  in.kept.reserve(scene.triangles.size());
   for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
     const SceneTriangle& t = scene.triangles[i];
     if (IsDegenerate(t)) {
-      ++rs.degenerateTriangles;
+      ++in.degenerate;
       continue;
     }
     // The box also holds v0 + e1 and v0 + e2 as stored for the GPU (they can differ
@@ -34,19 +42,20 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
     b.Extend(t.v2);
     b.Extend(t.v0 + (t.v1 - t.v0));
     b.Extend(t.v0 + (t.v2 - t.v0));
-    bounds.push_back(b);
-    if (options.splits != SplitMode::kObject) vertices.insert(vertices.end(), {t.v0, t.v0 + (t.v1 - t.v0), t.v0 + (t.v2 - t.v0)});
-    kept.push_back(i);
+    in.bounds.push_back(b);
+    if (options.splits != SplitMode::kObject)
+      in.vertices.insert(in.vertices.end(), {t.v0, t.v0 + (t.v1 - t.v0), t.v0 + (t.v2 - t.v0)});
+    in.kept.push_back(i);
   }
-  if (kept.empty()) throw Error(scene.path + ": every triangle of the scene is degenerate (zero area)");
-  Bvh bvh = BuildBvh(bounds, options, vertices);
+  return in;
+}
 
-  rs.nodes = std::move(bvh.nodes);
-  rs.nodeCopies = bvh.copies;
-  rs.bvhStats = bvh.stats;
-  rs.materials = scene.materials;
-  rs.triangles.reserve(bvh.primOrder.size());
-  for (uint32_t k : bvh.primOrder) {
+// The triangles in BVH leaf order (primOrder indexes `kept`), as v0, e1, e2.
+std::vector<shader::Triangle> LeafOrderTriangles(const Scene& scene, const std::vector<uint32_t>& primOrder,
+                                                 const std::vector<uint32_t>& kept) {
+  std::vector<shader::Triangle> triangles;
+  triangles.reserve(primOrder.size());
+  for (uint32_t k : primOrder) {
     const uint32_t src = kept[k];
     const SceneTriangle& t = scene.triangles[src];
     shader::Triangle g{};
@@ -55,16 +64,18 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
     g.e2 = t.v2 - t.v0;
     g.material = t.material;
     g.sourceIndex = src;
-    rs.triangles.push_back(g);
+    triangles.push_back(g);
   }
-  if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
+  return triangles;
+}
 
-  // Emitter table: every emissive triangle with non-zero area, chosen with probability
-  // proportional to its emitted power (area × luminance, doubled when it emits from both
-  // faces), so bright large lights get most samples. A triangle that spatial splits put in
-  // several leaves is one emitter (its first copy): counting it twice would double its light.
+// Emitter table: every emissive triangle with non-zero area, chosen with probability
+// proportional to its emitted power (area × luminance, doubled when it emits from both
+// faces), so bright large lights get most samples. A triangle that spatial splits put in
+// several leaves is one emitter (its first copy): counting it twice would double its light.
+void BuildEmitterTable(size_t sceneTriangles, RenderScene& rs) {
   std::vector<double> weight;
-  std::vector<bool> listed(scene.triangles.size(), false);
+  std::vector<bool> listed(sceneTriangles, false);
   for (uint32_t i = 0; i < rs.triangles.size(); ++i) {
     const shader::Triangle& t = rs.triangles[i];
     if (listed[t.sourceIndex]) continue;
@@ -91,6 +102,24 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
     rs.emitters[k].pmf = cdf - prevCdf;
     prevCdf = cdf;
   }
+}
+
+}  // namespace
+
+RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {
+  BuildInput in = CollectBuildInput(scene, options);
+  if (in.kept.empty()) throw Error(scene.path + ": every triangle of the scene is degenerate (zero area)");
+  Bvh bvh = BuildBvh(in.bounds, options, in.vertices);
+
+  RenderScene rs;
+  rs.degenerateTriangles = in.degenerate;
+  rs.nodes = std::move(bvh.nodes);
+  rs.nodeCopies = bvh.copies;
+  rs.bvhStats = bvh.stats;
+  rs.materials = scene.materials;
+  rs.triangles = LeafOrderTriangles(scene, bvh.primOrder, in.kept);
+  if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
+  BuildEmitterTable(scene.triangles.size(), rs);
   return rs;
 }
 
@@ -99,7 +128,6 @@ shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& came
   p.emitterCount = uint32_t(scene.emitters.size());
   p.nodeCount = scene.bvhStats.nodes;
   p.nodeCopies = scene.nodeCopies;
-  p.triangleCount = uint32_t(scene.triangles.size());
   p.origin = camera.position;
   p.forward = camera.forward;
   p.up = camera.up;

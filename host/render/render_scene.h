@@ -31,7 +31,7 @@ struct RenderScene {
 bool IsDegenerate(const SceneTriangle& t);
 
 // `forCpu`: also lay the tree out for the CPU tracer (pairLayout). A render on the GPU alone
-// skips it: for 1 M triangles it is ~0.4 s and ~110 MB that nothing would read.
+// skips it: on a large scene it costs time and memory that nothing would read.
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {}, bool forCpu = true);
 
 // The frame constants for a scene, camera and image size; seed, sample range, depths and

@@ -1,7 +1,7 @@
 // An allocator for large, short-lived arrays (the BVH builder's primitives and nodes)
 // that asks Linux for transparent huge pages. With 4 KiB pages, first touching a
-// 100 MB array takes ~25k page faults; measured on this project's 2-core VM they were a
-// third of a 1 M-triangle build (690 ms with 4 KiB pages, 410 ms with 2 MiB pages).
+// 100 MB array takes ~25k page faults, a large part of a big build's time
+// (docs/design-notes.md, "Huge pages for the BVH build").
 // Debian's default THP mode is "madvise", so the pages must be asked for; Embree does
 // the same. Small allocations, and systems without madvise, get plain operator new.
 #pragma once

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstring>
 #include <numeric>
+#include <string>
 
 #include "kPathTraceSpirv.h"
 #include "kTraceSpirv.h"
@@ -50,9 +51,8 @@ Buffer Readback(const Context& ctx, VkDeviceSize size, const char* what) {
 // passes per sample in the last submission: a quarter of lavapipe's loop budget, so that
 // a run of unluckier samples still fits (a group past the budget is reported as cut
 // short, never silent). A run averages its samples' passes, so longer runs measure fewer
-// per sample and the run may grow from one submission to the next (Cornell 256²: 12
-// samples after the single-sample dispatch, then the whole 16-sample batch). Runs longer
-// than 32 gain nothing measurable.
+// per sample and the run may grow from one submission to the next. At most 32: longer
+// runs measured no gain (docs/design-notes.md, "GPU path regeneration").
 uint32_t RunLength(uint32_t passesPerSample) {
   return std::clamp<uint32_t>(shader::kLoopBudget / 4 / std::max(passesPerSample, 1u), 1u, 32u);
 }
@@ -69,6 +69,85 @@ uint32_t TileRowStride(uint32_t n) {
   return stride;
 }
 
+// pathtrace.comp's per-render buffers: per pixel Σf and Σf² (two vec4) and the counters
+// (rays, non-finite samples, samples cut short); the frame constants; the loop passes
+// per sample of the last submission's worst SIMD group.
+struct FrameBuffers {
+  Buffer accum, counters, params, loopStats;
+};
+
+FrameBuffers MakeFrameBuffers(const Context& ctx, uint64_t pixels) {
+  FrameBuffers b;
+  b.accum = Storage(ctx, pixels * 2 * sizeof(glm::vec4), "accumulation");
+  b.counters = Storage(ctx, pixels * sizeof(glm::uvec4), "counter");
+  b.params = Buffer(ctx, sizeof(shader::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                    VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "frame params");
+  b.loopStats = Buffer(ctx, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "loop statistics");
+  return b;
+}
+
+// Samples per pixel per submission: options.batch, or about 2^20 paths.
+uint32_t BatchSize(const GpuRenderOptions& options, const shader::FrameParams& frame) {
+  const uint64_t pixels = uint64_t(frame.width) * frame.height;
+  if (options.batch) return std::min(options.batch, frame.sampleCount);
+  return uint32_t(std::clamp<uint64_t>((1u << 20) / std::max<uint64_t>(pixels, 1), 1, std::max(frame.sampleCount, 1u)));
+}
+
+// Adds every sample of `frame` into b.accum and b.counters: submissions of `BatchSize`
+// samples per pixel, each a series of dispatches of `run` samples per invocation.
+void DispatchSamples(const Context& ctx, const ComputePipeline& pipeline, const FrameBuffers& b,
+                     const shader::FrameParams& frame, const GpuRenderOptions& options, RenderResult& result) {
+  const uint32_t batch = BatchSize(options, frame);
+  // Until a dispatch has measured the scene's loop passes, one sample per invocation,
+  // and the first submission holds just that one dispatch.
+  uint32_t run = options.samplesPerInvocation ? options.samplesPerInvocation : 1u;
+  bool measured = options.samplesPerInvocation != 0;
+  const uint32_t groupsX = (frame.width + kWorkgroup - 1) / kWorkgroup;
+  const uint32_t groupsY = (frame.height + kWorkgroup - 1) / kWorkgroup;
+  const uint32_t tileRowStride = TileRowStride(groupsY);
+  for (uint32_t done = 0; done < frame.sampleCount;) {
+    shader::FrameParams p = frame;
+    p.tileRowStride = tileRowStride;
+    p.sampleBegin = frame.sampleBegin + done;
+    p.sampleCount = measured ? std::min(batch, frame.sampleCount - done) : 1u;
+    std::memcpy(b.params.Mapped(), &p, sizeof p);  // the previous batch has finished: safe to overwrite
+    std::memset(b.loopStats.Mapped(), 0, sizeof(uint32_t));  // measure this submission's runs alone
+    ctx.Submit([&](VkCommandBuffer cb) {
+      for (uint32_t s = 0; s < p.sampleCount; s += run) {
+        ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
+        const uint32_t push[2] = {s, std::min(run, p.sampleCount - s)};
+        pipeline.Dispatch(cb, groupsX, groupsY, 1, push);
+      }
+      HostReadBarrier(cb);  // for loopStats
+    });
+    result.samplesPerInvocation = std::max(result.samplesPerInvocation, std::min(run, p.sampleCount));
+    if (!options.samplesPerInvocation) {
+      run = RunLength(*static_cast<const uint32_t*>(b.loopStats.Mapped()));
+      measured = true;
+    }
+    done += p.sampleCount;
+    ++result.batches;
+    if (options.progress) options.progress(double(done) / frame.sampleCount);
+  }
+}
+
+// The read-back sums through a Film into result.image; the counters into result's.
+void ResolveSums(const Buffer& accumHost, const Buffer& countersHost, const shader::FrameParams& frame,
+                 RenderResult& result) {
+  const auto* sums = static_cast<const glm::vec4*>(accumHost.Mapped());
+  const auto* count = static_cast<const glm::uvec4*>(countersHost.Mapped());
+  const uint64_t pixels = uint64_t(frame.width) * frame.height;
+  Film film(frame.width, frame.height, frame.sampleCount);
+  for (uint64_t i = 0; i < pixels; ++i) {
+    film.SetPixel(i, {glm::dvec3(glm::vec3(sums[2 * i])), glm::dvec3(glm::vec3(sums[2 * i + 1]))});
+    result.rays += count[i].x;
+    result.nonFinite += count[i].y;
+    result.cutShort += count[i].z;
+  }
+  result.image = film.TakeImage();
+}
+
 }  // namespace
 
 GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv, size_t spirvBytes)
@@ -82,86 +161,34 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
-GpuRenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {
-  const uint64_t pixels = uint64_t(frame.width) * frame.height;
-  Buffer accum = Storage(ctx_, pixels * 2 * sizeof(glm::vec4), "accumulation");
-  Buffer counters = Storage(ctx_, pixels * sizeof(glm::uvec4), "counter");
-  Buffer params(ctx_, sizeof(shader::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "frame params");
-  Buffer loopStats(ctx_, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "loop statistics");
+RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {
+  FrameBuffers b = MakeFrameBuffers(ctx_, uint64_t(frame.width) * frame.height);
   ComputePipeline pipeline(ctx_, spirv_, spirvBytes_,
-                           {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.Handle()},
+                           {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.Handle()},
                             TexelBinding(shader::kBindingTriangles, triangles_),
                             TexelBinding(shader::kBindingNodes, nodes_),
                             TexelBinding(shader::kBindingMaterials, materials_),
                             TexelBinding(shader::kBindingEmitters, emitters_),
-                            {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, accum.Handle()},
-                            {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counters.Handle()},
-                            {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, loopStats.Handle()}},
+                            {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
+                            {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
+                            {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
                            "pathtrace", 2 * sizeof(uint32_t), {frame.emitterCount > 0 ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
-    vkCmdFillBuffer(cb, accum.Handle(), 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cb, counters.Handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);
   });
 
-  const uint32_t batch = options.batch ? std::min(options.batch, frame.sampleCount)
-                                       : uint32_t(std::clamp<uint64_t>((1u << 20) / std::max<uint64_t>(pixels, 1), 1,
-                                                                        std::max(frame.sampleCount, 1u)));
-  GpuRenderResult result;
-  // Until a dispatch has measured the scene's loop passes, one sample per invocation,
-  // and the first submission holds just that one dispatch.
-  uint32_t run = options.samplesPerInvocation ? options.samplesPerInvocation : 1u;
-  bool measured = options.samplesPerInvocation != 0;
-  const uint32_t groupsX = (frame.width + kWorkgroup - 1) / kWorkgroup;
-  const uint32_t groupsY = (frame.height + kWorkgroup - 1) / kWorkgroup;
-  const uint32_t tileRowStride = TileRowStride(groupsY);
+  RenderResult result;
   auto t0 = std::chrono::steady_clock::now();
-  for (uint32_t done = 0; done < frame.sampleCount;) {
-    shader::FrameParams p = frame;
-    p.tileRowStride = tileRowStride;
-    p.sampleBegin = frame.sampleBegin + done;
-    p.sampleCount = measured ? std::min(batch, frame.sampleCount - done) : 1u;
-    std::memcpy(params.Mapped(), &p, sizeof p);  // the previous batch has finished: safe to overwrite
-    std::memset(loopStats.Mapped(), 0, sizeof(uint32_t));  // measure this submission's runs alone
-    ctx_.Submit([&](VkCommandBuffer cb) {
-      for (uint32_t s = 0; s < p.sampleCount; s += run) {
-        ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
-        const uint32_t push[2] = {s, std::min(run, p.sampleCount - s)};
-        pipeline.Dispatch(cb, groupsX, groupsY, 1, push);
-      }
-      HostReadBarrier(cb);  // for loopStats
-    });
-    result.samplesPerInvocation = std::max(result.samplesPerInvocation, std::min(run, p.sampleCount));
-    if (!options.samplesPerInvocation) {
-      run = RunLength(*static_cast<const uint32_t*>(loopStats.Mapped()));
-      measured = true;
-    }
-    done += p.sampleCount;
-    ++result.batches;
-    if (options.progress) options.progress(double(done) / frame.sampleCount);
-  }
-
-  Buffer accumHost = Readback(ctx_, accum.Size(), "accumulation readback");
-  Buffer countersHost = Readback(ctx_, counters.Size(), "counter readback");
-  ctx_.Submit([&](VkCommandBuffer cb) { CopyToHost(cb, {{&accum, &accumHost}, {&counters, &countersHost}}); });
+  DispatchSamples(ctx_, pipeline, b, frame, options, result);
+  Buffer accumHost = Readback(ctx_, b.accum.Size(), "accumulation readback");
+  Buffer countersHost = Readback(ctx_, b.counters.Size(), "counter readback");
+  ctx_.Submit([&](VkCommandBuffer cb) { CopyToHost(cb, {{&b.accum, &accumHost}, {&b.counters, &countersHost}}); });
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  const auto* sums = static_cast<const glm::vec4*>(accumHost.Mapped());
-  const auto* count = static_cast<const glm::uvec4*>(countersHost.Mapped());
-  result.image = Image(frame.width, frame.height);
-  result.image.variance.assign(pixels, glm::vec3(0.0f));
-  const double n = frame.sampleCount;
-  for (uint64_t i = 0; i < pixels; ++i) {
-    glm::dvec3 mean = glm::dvec3(glm::vec3(sums[2 * i])) / n;
-    glm::dvec3 meanSq = glm::dvec3(glm::vec3(sums[2 * i + 1])) / n;
-    result.image.pixels[i] = glm::vec3(mean);
-    // As on the CPU: the unbiased sample variance over n, i.e. the variance of the mean.
-    if (n > 1) result.image.variance[i] = glm::vec3(glm::max(meanSq - mean * mean, 0.0) / (n - 1.0));
-    result.rays += count[i].x;
-    result.nonFinite += count[i].y;
-    result.cutShort += count[i].z;
-  }
+  ResolveSums(accumHost, countersHost, frame, result);
+  result.engine = "vulkan: " + ctx_.DeviceName() + " (up to " + std::to_string(result.samplesPerInvocation) +
+                  " samples per invocation)";
   return result;
 }
 

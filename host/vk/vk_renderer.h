@@ -1,5 +1,6 @@
-// The Vulkan backend: the scene uploaded once as storage buffers, then pathtrace.comp
-// dispatched in batches of samples per pixel, then the per-pixel sums read back.
+// The Vulkan backend: the scene uploaded once into device-local buffers read as texel
+// buffers, then pathtrace.comp dispatched in batches of samples per pixel into per-pixel
+// sums (storage buffers), which are read back and resolved by a Film (image/film.h).
 #pragma once
 
 #include <cstdint>
@@ -8,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "image/image.h"
+#include "image/film.h"
 #include "render/render_scene.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -27,24 +28,12 @@ struct GpuRenderOptions {
   std::function<void(double)> progress;  // finished fraction, after every batch
 };
 
-struct GpuRenderResult {
-  Image image;  // mean and variance of the mean per pixel
-  uint64_t rays = 0;
-  uint64_t nonFinite = 0;
-  // Samples whose SIMD group came near lavapipe's 65535-loop-iteration limit, so they
-  // may have been ended early (biased dark). 0 for any sane scene; reported if not.
-  uint64_t cutShort = 0;
-  double seconds = 0.0;  // dispatches and readback, not upload or pipeline creation
-  uint32_t batches = 0;
-  uint32_t samplesPerInvocation = 0;  // the longest run used
-};
-
 class GpuRenderer {
  public:
   // Uploads the scene. `spirv` defaults to the embedded pathtrace.comp; tests pass
   // deliberately wrong variants.
   GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv = nullptr, size_t spirvBytes = 0);
-  GpuRenderResult Render(const shader::FrameParams& params, const GpuRenderOptions& options = {});
+  RenderResult Render(const shader::FrameParams& params, const GpuRenderOptions& options = {});
 
   // Closest hits of a batch of rays with the shader's traversal (trace.comp, or a test
   // variant of it). `seconds`, if given, receives the time of the dispatch alone (no

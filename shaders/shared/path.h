@@ -27,7 +27,7 @@
 
 // A shader may define VKPT_LIGHT_SAMPLING as a specialization constant that is false
 // when the scene has no emitters: lavapipe runs an if's body even when no lane takes it,
-// so the constant lets its compiler drop the light-sampling code (2CylinderEngine: 5 %).
+// so the constant lets its compiler drop the light-sampling code.
 #ifndef VKPT_LIGHT_SAMPLING
 #define VKPT_LIGHT_SAMPLING true
 #endif
@@ -87,6 +87,39 @@ VKPT_FN PathState StartPath(FrameParams params, uint px, uint py, uint sampleInd
   return s;
 }
 
+// Next-event estimation at vertex `bounce` (at p, shading normal n, reflectance
+// baseColor): samples a point on an emitter and, if it can contribute, sets the shadow
+// ray from `origin` to it and the contribution it carries if unoccluded.
+VKPT_FN void SampleLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s, uint bounce, vec3 p, vec3 n,
+                         vec3 origin, vec3 baseColor) {
+  // One stratified 2-D sample picks the emitter *and* the point on it: us.x chooses
+  // the CDF interval and is then stretched back to [0,1) within it (pbrt-v4's
+  // SampleDiscrete remapping). The points thus stay stratified over the union of all
+  // emitters (a quad light's two triangles, say), not just within the one picked.
+  vec2 us = Sample2D(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
+  uint k = PickEmitter(VKPT_SCENE_ARG params.emitterCount, us.x);
+  Emitter e = VKPT_EMITTER(k);
+  float cdfBelow = k > 0u ? VKPT_EMITTER(k - 1u).cdf : 0.0f;
+  us.x = min((us.x - cdfBelow) / (e.cdf - cdfBelow), kOneMinusEpsilon);
+  Triangle light = VKPT_TRIANGLE(e.triangle);
+  Material lightMat = VKPT_MATERIAL(light.material);
+  vec2 b = SampleUniformTriangle(us.x, us.y);
+  vec3 x = light.v0 + b.x * light.e1 + b.y * light.e2;
+  vec3 nl = normalize(cross(light.e1, light.e2));
+  bool twoSided = (lightMat.flags & kMaterialDoubleSided) != 0u;
+  float w = LightSampleWeight(p, n, x, nl, twoSided, e.pmf, e.area);
+  if (w > 0.0f) {
+    // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
+    // unnormalised direction: the emitter itself then lies beyond tMax.
+    vec3 target = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl);
+    s.result.rays += 1u;
+    s.shadowPending = true;
+    s.shadowRay.origin = origin;
+    s.shadowRay.dir = target - origin;
+    s.lightContribution = s.throughput * (baseColor * kInvPi) * lightMat.emission * w;
+  }
+}
+
 // The path's ray s.ray has found `hit`: adds what is seen there, samples a light (setting
 // s.shadowPending and the shadow ray if the sample can contribute) and the continuation
 // s.ray. Returns false if no further closest-hit ray follows (the pending shadow ray, if
@@ -115,34 +148,8 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   vec3 origin = OffsetRayOrigin(p, n);
 
   vec4 ul = Random4(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
-  if (VKPT_LIGHT_SAMPLING && params.emitterCount > 0u && MaxComponent(baseColor) > 0.0f) {
-    // One stratified 2-D sample picks the emitter *and* the point on it: us.x chooses
-    // the CDF interval and is then stretched back to [0,1) within it (pbrt-v4's
-    // SampleDiscrete remapping). The points thus stay stratified over the union of all
-    // emitters (a quad light's two triangles, say), not just within the one picked.
-    vec2 us = Sample2D(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
-    uint k = PickEmitter(VKPT_SCENE_ARG params.emitterCount, us.x);
-    Emitter e = VKPT_EMITTER(k);
-    float cdfBelow = k > 0u ? VKPT_EMITTER(k - 1u).cdf : 0.0f;
-    us.x = min((us.x - cdfBelow) / (e.cdf - cdfBelow), kOneMinusEpsilon);
-    Triangle light = VKPT_TRIANGLE(e.triangle);
-    Material lightMat = VKPT_MATERIAL(light.material);
-    vec2 b = SampleUniformTriangle(us.x, us.y);
-    vec3 x = light.v0 + b.x * light.e1 + b.y * light.e2;
-    vec3 nl = normalize(cross(light.e1, light.e2));
-    bool twoSided = (lightMat.flags & kMaterialDoubleSided) != 0u;
-    float w = LightSampleWeight(p, n, x, nl, twoSided, e.pmf, e.area);
-    if (w > 0.0f) {
-      // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
-      // unnormalised direction: the emitter itself then lies beyond tMax.
-      vec3 target = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl);
-      s.result.rays += 1u;
-      s.shadowPending = true;
-      s.shadowRay.origin = origin;
-      s.shadowRay.dir = target - origin;
-      s.lightContribution = s.throughput * (baseColor * kInvPi) * lightMat.emission * w;
-    }
-  }
+  if (VKPT_LIGHT_SAMPLING && params.emitterCount > 0u && MaxComponent(baseColor) > 0.0f)
+    SampleLight(VKPT_SCENE_ARG params, s, bounce, p, n, origin, baseColor);
 
   // Cosine-weighted bounce: f·cos θ / pdf = (ρ/π)·cos θ / (cos θ/π) = ρ.
   s.throughput *= baseColor;
