@@ -38,7 +38,7 @@ static_assert(offsetof(FrameParams, origin) == 0 && offsetof(FrameParams, tanHal
 static_assert(offsetof(FrameParams, right) == 16 && offsetof(FrameParams, aspect) == 28);
 static_assert(offsetof(FrameParams, up) == 32 && offsetof(FrameParams, width) == 44);
 static_assert(offsetof(FrameParams, forward) == 48 && offsetof(FrameParams, height) == 60);
-static_assert(offsetof(FrameParams, seed) == 64 && offsetof(FrameParams, triangleCount) == 92);
+static_assert(offsetof(FrameParams, seed) == 64 && offsetof(FrameParams, pad0) == 92);
 static_assert(offsetof(FrameParams, background) == 96 && offsetof(FrameParams, orthographic) == 108);
 static_assert(offsetof(FrameParams, nodeCopies) == 112);
 
