@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -41,6 +42,31 @@ std::string ReadFileBytes(const std::string& path) {
   ss << in.rdbuf();
   if (in.bad()) throw Error(path + ": read error");
   return ss.str();
+}
+
+// tinygltf's own file reading opens whatever a URI resolves to: a URI that
+// percent-decodes to a NUL byte ("%!Q...", tinygltf's issue 416) names the scene's folder
+// once the path is cut at the NUL, a folder's size reads as 2^63 - 1 on ext4, and
+// tinygltf then allocates that much (std::bad_alloc; under AddressSanitizer an abort).
+// External buffers and images are read here instead: regular files only, no NUL.
+bool RegularFileExists(const std::string& path, void*) {
+  std::error_code ec;
+  return path.find('\0') == std::string::npos && std::filesystem::is_regular_file(path, ec);
+}
+
+bool ReadRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  auto fail = [&](const std::string& what) {
+    if (err) *err += what + ": " + path + "\n";
+    return false;
+  };
+  if (!RegularFileExists(path, nullptr)) return fail("not a regular file");
+  std::error_code ec;
+  std::uintmax_t size = std::filesystem::file_size(path, ec);
+  std::ifstream in(path, std::ios::binary);
+  if (ec || !in) return fail("cannot open");
+  out->resize(size);
+  if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) return fail("cannot read");
+  return true;
 }
 
 int ComponentSize(int componentType) {
@@ -663,6 +689,7 @@ Scene LoadGltf(const std::string& path) {
 
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(KeepImageUndecoded, nullptr);
+  gltf.SetFsCallbacks({&RegularFileExists, &tinygltf::ExpandFilePath, &ReadRegularFile, &tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string err, warn;
   std::string baseDir;
