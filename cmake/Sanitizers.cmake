@@ -5,7 +5,7 @@
 # they name the leak suppressions for the Vulkan driver and validation layer
 # (tests/sanitizers/lsan.supp).
 #
-# The build type "Sanitize" (-O1 -g1) is the default of sanitizer builds (see
+# The build type "Sanitize" (-O1 -g1) is the default of sanitizer and fuzz builds (see
 # CMakeLists.txt): with ASan+UBSan it compiles in half the time of -O2 -g, and its stack
 # traces still have file:line.
 set(VKPT_SANITIZE "" CACHE STRING
