@@ -33,7 +33,7 @@ namespace fs = std::filesystem;
 
 // The fuzzer's own limits (tests/fuzz/run.sh) are 5 s per input and 1 GiB per
 // allocation; the replay allows twice the time, for slower machines.
-constexpr auto kTimeLimit = std::chrono::seconds(10);
+const auto kTimeLimit = std::chrono::seconds(static_cast<int>(10 * test::kTimeScale));
 constexpr long kMemoryLimitMiB = 1024;
 
 struct Regression {
