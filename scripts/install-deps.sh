@@ -14,7 +14,10 @@ packages=(
   libgtest-dev                          # tests
   libembree-dev                         # vkpt-bench compares against Embree
   clang-format                          # scripts/check-format.sh
+  clang-14 libclang-rt-14-dev           # the loader fuzzer: clang++ and libFuzzer's runtime
+  llvm-14                               # llvm-symbolizer: sanitizer reports with file:line
 )
+# (g++'s AddressSanitizer and UBSan runtimes, libasan8 and libubsan1, come with g++.)
 
 missing=()
 for p in "${packages[@]}"; do

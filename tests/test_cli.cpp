@@ -365,8 +365,8 @@ TEST(Cli, VulkanSameSeedIsBitIdentical) {
 TEST(Cli, ListDevicesShowsLavapipe) {
   ProcessResult r = RunVkpt({"--list-devices"}, 60.0);
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
-  EXPECT_TRUE(std::regex_search(r.out, std::regex("^0: llvmpipe .*\\(CPU, Vulkan 1\\.[0-9]+\\)$",
-                                                  std::regex::multiline)))
+  EXPECT_TRUE(
+      std::regex_search(r.out, std::regex("^0: llvmpipe .*\\(CPU, Vulkan 1\\.[0-9]+\\)$", std::regex::multiline)))
       << r.out;
   EXPECT_EQ(r.out.find("no Vulkan devices"), std::string::npos) << r.out;
 }

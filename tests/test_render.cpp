@@ -33,7 +33,7 @@ using test::MeanAndError;
 TEST(Render, FilmGivesMeanAndVarianceOfTheMean) {
   Film film(2, 1, 3);
   film.SetPixel(0, {glm::dvec3(1 + 2 + 6, 0, 3), glm::dvec3(1 + 4 + 36, 0, 3)});  // G: 0, 0, 0; B: 1, 1, 1
-  film.SetPixel(1, {glm::dvec3(3), glm::dvec3(3)});  // 1, 1, 1: no spread
+  film.SetPixel(1, {glm::dvec3(3), glm::dvec3(3)});                               // 1, 1, 1: no spread
   Image image = film.TakeImage();
   ASSERT_EQ(image.variance.size(), 2u);
   EXPECT_FLOAT_EQ(image.pixels[0].x, 3.0f);

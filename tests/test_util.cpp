@@ -84,7 +84,7 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
   }
   close(outPipe[1]);
   close(errPipe[1]);
-  auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds);
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds * kTimeScale);
   pollfd fds[2] = {{outPipe[0], POLLIN, 0}, {errPipe[0], POLLIN, 0}};
   std::string* sinks[2] = {&r.out, &r.err};
   int open = 2;

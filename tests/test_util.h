@@ -13,6 +13,13 @@
 
 namespace vkpt::test {
 
+// Time limits inside tests are multiplied by this: 1, or 4 in a sanitizer build
+// (VKPT_SANITIZE), where code runs several times slower.
+#ifndef VKPT_TIME_SCALE
+#define VKPT_TIME_SCALE 1
+#endif
+constexpr double kTimeScale = VKPT_TIME_SCALE;
+
 std::string SourcePath(const std::string& relative);  // <repo>/relative
 std::string CorpusPath(const std::string& relative);  // ../shared/gltf-corpus/relative
 std::string TempPath(const std::string& name);        // unique per test process
@@ -39,9 +46,9 @@ struct ChildLimits {
   std::optional<uint64_t> addressSpace{};
 };
 
-// Runs `build/vkpt args...`, killing it after timeoutSeconds. A non-empty `cwd` is the
-// child's working directory (for relative paths and the default output name); `env`
-// entries ("NAME=value") are set in the child's environment.
+// Runs `build/vkpt args...`, killing it after timeoutSeconds × kTimeScale. A non-empty
+// `cwd` is the child's working directory (for relative paths and the default output
+// name); `env` entries ("NAME=value") are set in the child's environment.
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds = 120.0,
                       const std::string& cwd = "", const std::vector<std::string>& env = {},
                       const ChildLimits& limits = {});

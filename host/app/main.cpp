@@ -49,9 +49,9 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
   char which[16] = "default";
   if (!scene.cameras.empty()) std::snprintf(which, sizeof which, "#%u", camIndex);
   std::printf("  cameras: %zu; using %s \"%s\" at (%.6g, %.6g, %.6g) looking (%.4g, %.4g, %.4g), %s %.4g\n",
-              scene.cameras.size(), which,
-              cam.name.c_str(), cam.position.x, cam.position.y, cam.position.z, cam.forward.x, cam.forward.y,
-              cam.forward.z, cam.orthographic ? "orthographic ymag" : "perspective yfov(deg)",
+              scene.cameras.size(), which, cam.name.c_str(), cam.position.x, cam.position.y, cam.position.z,
+              cam.forward.x, cam.forward.y, cam.forward.z,
+              cam.orthographic ? "orthographic ymag" : "perspective yfov(deg)",
               cam.orthographic ? cam.ymag : cam.yfov * 180.0 / M_PI);
   std::printf("  memory: %s counted for the scene, of --max-memory %s\n", FormatBytes(scene.memoryCounted).c_str(),
               FormatBytes(scene.memoryLimit).c_str());

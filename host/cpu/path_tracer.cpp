@@ -25,8 +25,7 @@ namespace {
 
 // Pixel (x, y)'s samples, summed in sample order (so the sums are the same for any
 // thread count); non-finite samples are counted and left out.
-PixelSums SamplePixel(const RenderScene& scene, const FrameParams& params, uint32_t x, uint32_t y,
-                      SampleStats& stats) {
+PixelSums SamplePixel(const RenderScene& scene, const FrameParams& params, uint32_t x, uint32_t y, SampleStats& stats) {
   PixelSums sums;
   for (uint32_t s = 0; s < params.sampleCount; ++s) {
     glm::vec3 L = SampleRadiance(scene, params, x, y, params.sampleBegin + s, stats);

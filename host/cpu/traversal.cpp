@@ -119,8 +119,7 @@ class DeferredStack {
 // Tests the triangles of leaf `code`, lanes in order, each against the closest hit so far
 // (the scalar loop's result), narrowing tMax. True when an any-hit query has its hit.
 template <bool kAnyHit>
-bool TestLeaf(const std::vector<TrianglePacket>& packets, uint32_t code, const RaySlabs& slabs, float& tMax,
-              Hit& hit) {
+bool TestLeaf(const std::vector<TrianglePacket>& packets, uint32_t code, const RaySlabs& slabs, float& tMax, Hit& hit) {
   for (uint32_t k = code >> 4, e = k + ((code & 15u) + 3) / 4; k < e; ++k) {
     Float4 t, b1, b2;
     const int mask = IntersectPacket(packets[k], slabs, tMax, t, b1, b2);

@@ -27,8 +27,7 @@ class Film {
  public:
   // Every pixel's sums are over `samplesPerPixel` samples. A sample a renderer discards
   // (non-finite) still counts in n: it adds 0 to both sums.
-  Film(uint32_t width, uint32_t height, uint32_t samplesPerPixel)
-      : image_(width, height), n_(samplesPerPixel) {
+  Film(uint32_t width, uint32_t height, uint32_t samplesPerPixel) : image_(width, height), n_(samplesPerPixel) {
     image_.variance.assign(image_.pixels.size(), glm::vec3(0.0f));
   }
 
@@ -56,10 +55,10 @@ struct RenderResult {
   // Vulkan: samples whose SIMD group came near lavapipe's 65535-loop-iteration limit, so
   // they may have been ended early (biased dark). 0 for any sane scene; reported if not.
   uint64_t cutShort = 0;
-  double seconds = 0.0;    // rendering alone (Vulkan: dispatches and readback)
-  std::string engine;      // for reports: "cpu (2 threads)", "vulkan: <device> (up to …)"
-  unsigned threads = 0;    // CPU: threads used
-  uint32_t batches = 0;    // Vulkan: submissions
+  double seconds = 0.0;               // rendering alone (Vulkan: dispatches and readback)
+  std::string engine;                 // for reports: "cpu (2 threads)", "vulkan: <device> (up to …)"
+  unsigned threads = 0;               // CPU: threads used
+  uint32_t batches = 0;               // Vulkan: submissions
   uint32_t samplesPerInvocation = 0;  // Vulkan: the longest run of samples per invocation
 };
 

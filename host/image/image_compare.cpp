@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
-#include <utility>
 #include <sstream>
+#include <utility>
 
 #include "util/error.h"
 

@@ -111,7 +111,7 @@ void DispatchSamples(const Context& ctx, const ComputePipeline& pipeline, const 
     p.tileRowStride = tileRowStride;
     p.sampleBegin = frame.sampleBegin + done;
     p.sampleCount = measured ? std::min(batch, frame.sampleCount - done) : 1u;
-    std::memcpy(b.params.Mapped(), &p, sizeof p);  // the previous batch has finished: safe to overwrite
+    std::memcpy(b.params.Mapped(), &p, sizeof p);            // the previous batch has finished: safe to overwrite
     std::memset(b.loopStats.Mapped(), 0, sizeof(uint32_t));  // measure this submission's runs alone
     ctx.Submit([&](VkCommandBuffer cb) {
       for (uint32_t s = 0; s < p.sampleCount; s += run) {

@@ -125,7 +125,7 @@ struct FrameParams {
   uint rrDepth;
   uint emitterCount;
   uint nodeCount;  // per copy
-  uint pad0;          // places background on the 16-byte boundary std430 gives a vec3
+  uint pad0;       // places background on the 16-byte boundary std430 gives a vec3
   vec3 background;    // radiance arriving from every direction no triangle blocks
   uint orthographic;  // 1: parallel rays; tanHalfFovY then holds the half view height
   uint nodeCopies;    // 1, or 8 direction-ordered copies of the BVH (see bvh.h)
