@@ -39,6 +39,16 @@ void* operator new(std::size_t size) {
   if (void* p = std::malloc(size ? size : 1)) return p;
   throw std::bad_alloc();
 }
+// The nothrow form too: code that allocates with it (LLVM inside lavapipe) frees with the
+// plain operator delete below, so both must come from malloc — under AddressSanitizer a
+// nothrow new of its own would be freed here with free(), an alloc-dealloc mismatch.
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  try {
+    return ::operator new(size);
+  } catch (const std::bad_alloc&) {
+    return nullptr;
+  }
+}
 // Not inlined: inlined into std::allocator, GCC 12 would see free() on memory from
 // operator new and warn (-Wmismatched-new-delete), not knowing this new is malloc.
 [[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
