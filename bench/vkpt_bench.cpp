@@ -396,7 +396,7 @@ int Quality(const Options& o, unsigned threads) {
   p.seed = 1;  // the reference should use another seed
   p.maxDepth = 32;
   p.rrDepth = 3;
-  if (rs.emitters.empty()) p.background = glm::vec3(1.0f);
+  if (rs.lights.empty()) p.background = glm::vec3(1.0f);
   Report rep;
   rep.threads = threads;
   std::fprintf(stderr, "vkpt-bench: time to relMSE <= %.1e against %s (%ux%u)\n", kQualityTarget, o.quality.c_str(),
@@ -468,13 +468,13 @@ void MeasureBuild(const Scene& scene, const RenderScene& rs, const BvhBuildOptio
   rep.Set("gpu_bytes_per_tri", (rs.triangles.size() * sizeof(shader::Triangle) + rs.nodes.size() * sizeof(shader::BvhNode)) / tris);
 }
 
-// Full path tracing: 256×256 × 16 spp (background 1 if the scene has no emitters).
+// Full path tracing: 256×256 × 16 spp (background 1 if the scene has no lights).
 shader::FrameParams PathTraceFrame(const RenderScene& rs, const Camera& cam) {
   shader::FrameParams pt = MakeFrameParams(rs, cam, 256, 256);
   pt.sampleCount = 16;
   pt.maxDepth = 32;
   pt.rrDepth = 3;
-  if (rs.emitters.empty()) pt.background = glm::vec3(1.0f);
+  if (rs.lights.empty()) pt.background = glm::vec3(1.0f);
   return pt;
 }
 

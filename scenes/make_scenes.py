@@ -90,17 +90,23 @@ class Gltf:
                                            count=count, type=type_, **extra))
 
     def material(self, name, base, emissive=None, strength=None):
+        # Lambertian, as the GAMES101 reference and the furnace's analytic answer assume:
+        # KHR_materials_specular with specularFactor 0 removes glTF's specular layer.
         mat = {'name': name, 'doubleSided': False,
                'pbrMetallicRoughness': {'baseColorFactor': list(base) + [1.0],
-                                        'metallicFactor': 0.0, 'roughnessFactor': 1.0}}
+                                        'metallicFactor': 0.0, 'roughnessFactor': 1.0},
+               'extensions': {'KHR_materials_specular': {'specularFactor': 0.0}}}
+        self.use('KHR_materials_specular')
         if emissive:
             mat['emissiveFactor'] = list(emissive)
         if strength is not None:
-            ext = 'KHR_materials_emissive_strength'
-            mat['extensions'] = {ext: {'emissiveStrength': strength}}
-            if ext not in self.doc.setdefault('extensionsUsed', []):
-                self.doc['extensionsUsed'].append(ext)
+            mat['extensions']['KHR_materials_emissive_strength'] = {'emissiveStrength': strength}
+            self.use('KHR_materials_emissive_strength')
         return self._add('materials', mat)
+
+    def use(self, extension):
+        if extension not in self.doc.setdefault('extensionsUsed', []):
+            self.doc['extensionsUsed'].append(extension)
 
     def mesh(self, name, tris, material):
         # Flat shading: vertices are shared only where position AND face normal

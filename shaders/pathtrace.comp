@@ -36,15 +36,17 @@ layout(push_constant) uniform Push {
   uint samples;
 };
 
-// 0 when the scene has no emitters (set by the host): see shared/path.h.
-layout(constant_id = 0) const uint kSceneHasEmitters = 1u;
-#define VKPT_LIGHT_SAMPLING (kSceneHasEmitters != 0u)
+// 0 when the scene has no lights (set by the host): see shared/path.h.
+layout(constant_id = 0) const uint kSceneHasLights = 1u;
+#define VKPT_LIGHT_SAMPLING (kSceneHasLights != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
 #define VKPT_TRIANGLE(i) FetchTriangle(i)
 #define VKPT_MATERIAL(i) FetchMaterial(i)
-#define VKPT_EMITTER(i) FetchEmitter(i)
+#define VKPT_LIGHT(i) FetchLight(i)
+#define VKPT_LIGHT_CDF(i) FetchLightCdf(i)
+#define VKPT_GGX_ALBEDO_PAIR(k) FetchGgxAlbedoPair(k)
 
 #include "traverse.glsl"
 
@@ -83,7 +85,7 @@ void main() {
     // bounce rays share the traversal loops instead of waiting for each other.
     bool shadow = path.shadowPending;
     Ray ray = shadow ? path.shadowRay : path.ray;
-    HitRecord hit = TraceRay(ray.origin, ray.dir, shadow ? 1.0f : kInfinity, shadow);
+    HitRecord hit = TraceRay(ray.origin, ray.dir, shadow ? path.shadowTMax : kInfinity, shadow);
     if (shadow) AddLightIfVisible(path, hit.t >= 0.0f);
     else more = ShadeHit(params, path, hit);
     if (!more && !path.shadowPending) {
@@ -104,9 +106,9 @@ void main() {
       }
     }
   }
-  // Loops outside traversal: this loop (≤ one pass per ray) and the emitter binary
-  // search (≤ log2(emitters) + 2 per ray), bounded per lane and summed.
-  uint smallLoops = rays * (3u + uint(findMSB(max(params.emitterCount, 1u))));
+  // Loops outside traversal: this loop (≤ one pass per ray) and the light binary
+  // search (≤ log2(lights) + 2 per ray), bounded per lane and summed.
+  uint smallLoops = rays * (3u + uint(findMSB(max(params.lightCount, 1u))));
   uint groupPasses = subgroupAdd(gLoopIterations) + subgroupAdd(smallLoops);
   if (subgroupElect()) atomicMax(maxPassesPerSample, (groupPasses + samples - 1u) / samples);
   if (!inside) return;

@@ -1,4 +1,4 @@
-// The scene for the shaders: triangles, BVH nodes, materials and emitters read from
+// The scene for the shaders: triangles, BVH nodes, materials and lights read from
 // uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per struct, the std430
 // layouts of shared/layout.h byte for byte).
 //
@@ -16,7 +16,8 @@
 layout(binding = kBindingTriangles) uniform usamplerBuffer triangleTexels;
 layout(binding = kBindingNodes) uniform usamplerBuffer nodeTexels;
 layout(binding = kBindingMaterials) uniform usamplerBuffer materialTexels;
-layout(binding = kBindingEmitters) uniform usamplerBuffer emitterTexels;
+layout(binding = kBindingLights) uniform usamplerBuffer lightTexels;
+layout(binding = kBindingGgxAlbedo) uniform usamplerBuffer ggxAlbedoTexels;
 
 BvhNode FetchNode(uint i) {
   uvec4 a = texelFetch(nodeTexels, int(kTexelsPerNode * i));
@@ -39,7 +40,7 @@ Triangle FetchTriangle(uint k) {
   t.e1 = uintBitsToFloat(b.xyz);
   t.sourceIndex = b.w;
   t.e2 = uintBitsToFloat(c.xyz);
-  t.pad0 = c.w;
+  t.light = c.w;
   return t;
 }
 
@@ -47,26 +48,47 @@ Material FetchMaterial(uint m) {
   uvec4 a = texelFetch(materialTexels, int(kTexelsPerMaterial * m));
   uvec4 b = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 1u));
   uvec4 c = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 2u));
+  uvec4 d = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 3u));
   Material mat;
   mat.baseColor = uintBitsToFloat(a.xyz);
   mat.metallic = uintBitsToFloat(a.w);
   mat.emission = uintBitsToFloat(b.xyz);
   mat.roughness = uintBitsToFloat(b.w);
-  mat.flags = c.x;
-  mat.pad0 = c.y;
-  mat.pad1 = c.z;
-  mat.pad2 = c.w;
+  mat.specularColor = uintBitsToFloat(c.xyz);
+  mat.specular = uintBitsToFloat(c.w);
+  mat.ior = uintBitsToFloat(d.x);
+  mat.flags = d.y;
+  mat.pad0 = d.z;
+  mat.pad1 = d.w;
   return mat;
 }
 
-Emitter FetchEmitter(uint e) {
-  uvec4 a = texelFetch(emitterTexels, int(kTexelsPerEmitter * e));
-  Emitter em;
-  em.triangle = a.x;
-  em.cdf = uintBitsToFloat(a.y);
-  em.pmf = uintBitsToFloat(a.z);
-  em.area = uintBitsToFloat(a.w);
-  return em;
+Light FetchLight(uint i) {
+  uvec4 a = texelFetch(lightTexels, int(kTexelsPerLight * i));
+  uvec4 b = texelFetch(lightTexels, int(kTexelsPerLight * i + 1u));
+  uvec4 c = texelFetch(lightTexels, int(kTexelsPerLight * i + 2u));
+  uvec4 d = texelFetch(lightTexels, int(kTexelsPerLight * i + 3u));
+  Light l;
+  l.position = uintBitsToFloat(a.xyz);
+  l.triangle = a.w;
+  l.direction = uintBitsToFloat(b.xyz);
+  l.type = b.w;
+  l.radiance = uintBitsToFloat(c.xyz);
+  l.extent = uintBitsToFloat(c.w);
+  l.cdf = uintBitsToFloat(d.x);
+  l.pmf = uintBitsToFloat(d.y);
+  l.cosOuter = uintBitsToFloat(d.z);
+  l.cosInner = uintBitsToFloat(d.w);
+  return l;
+}
+
+// The binary search over the CDF reads one texel per step.
+float FetchLightCdf(uint i) { return uintBitsToFloat(texelFetch(lightTexels, int(kTexelsPerLight * i + 3u)).x); }
+
+// Pair k of shared/ggx_albedo_table.h's kGgxAlbedo (two pairs per texel).
+vec2 FetchGgxAlbedoPair(uint k) {
+  uvec4 t = texelFetch(ggxAlbedoTexels, int(k >> 1u));
+  return uintBitsToFloat((k & 1u) == 0u ? t.xy : t.zw);
 }
 
 #endif

@@ -378,7 +378,7 @@ TEST(Bvh, SpatialSplitsKeepWholeTrianglesOnceTheDuplicationBudgetIsSpent) {
   CompareWithBruteForce(rs, 30000, 6);
 }
 
-TEST(Bvh, SpatialSplitsListEachEmitterOnce) {
+TEST(Bvh, SpatialSplitsListEachLightOnce) {
   Material light{};
   light.emission = glm::vec3(2.0f);
   Scene scene = test::MakeScene(Slivers(500, 3), {light});
@@ -387,10 +387,10 @@ TEST(Bvh, SpatialSplitsListEachEmitterOnce) {
   o.splits = SplitMode::kSpatial;
   RenderScene split = PrepareRenderScene(scene, o);
   ASSERT_GT(split.triangles.size(), plain.triangles.size()) << "the test needs duplicated triangles";
-  EXPECT_EQ(split.emitters.size(), plain.emitters.size());
+  EXPECT_EQ(split.lights.size(), plain.lights.size());
   EXPECT_NEAR(split.totalEmittedPower, plain.totalEmittedPower, 1e-9 * plain.totalEmittedPower);
   double pmf = 0.0;
-  for (const shader::Emitter& e : split.emitters) pmf += e.pmf;
+  for (const shader::Light& l : split.lights) pmf += l.pmf;
   EXPECT_NEAR(pmf, 1.0, 1e-6);
 }
 

@@ -67,7 +67,7 @@ FrameParams Params(const RenderScene& rs, const Scene& scene, uint32_t w, uint32
   p.sampleCount = spp;
   p.maxDepth = maxDepth;
   p.rrDepth = rrDepth;
-  if (rs.emitters.empty()) p.background = glm::vec3(1.0f);
+  if (rs.lights.empty()) p.background = glm::vec3(1.0f);
   return p;
 }
 

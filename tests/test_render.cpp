@@ -119,8 +119,8 @@ TEST(Render, ConvexObjectInUniformEnvironmentReflectsRhoTimesE) {
 TEST(Render, CornellBoxLooksLikeTheCornellBox) {
   Scene scene = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
   RenderScene rs = PrepareRenderScene(scene);
-  ASSERT_EQ(rs.emitters.size(), 2u);
-  EXPECT_NEAR(rs.emitters[0].area + rs.emitters[1].area, 13650.0, 1e-2);
+  ASSERT_EQ(rs.lights.size(), 2u);
+  EXPECT_NEAR(rs.lights[0].extent + rs.lights[1].extent, 13650.0, 1e-2);
   RenderResult r = RenderCpu(rs, Params(scene, rs, 64, 64, 16, 32, 3));
   EXPECT_EQ(r.nonFinite, 0u);
   // Mean of the left and right image columns: red wall left, green wall right.

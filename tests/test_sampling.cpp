@@ -97,9 +97,9 @@ TEST(Sampling, TriangleSamplingIsUniformInArea) {
   EXPECT_GT(p, 0.01);
 }
 
-// Emitter selection: probabilities ∝ area × luminance (× 2 if two-sided), and the
+// Light selection: triangle probabilities ∝ area × luminance (× 2 if two-sided), and the
 // table's pmf is exactly what the CDF search realises.
-TEST(Sampling, EmitterSelectionFollowsPower) {
+TEST(Sampling, LightSelectionFollowsPower) {
   std::vector<SceneTriangle> tris;
   std::vector<Material> mats;
   std::mt19937 rng(4);
@@ -114,26 +114,26 @@ TEST(Sampling, EmitterSelectionFollowsPower) {
     tris.push_back({o, o + glm::vec3(s, 0, 0), o + glm::vec3(0, s * 0.7f, 0), uint32_t(i)});
   }
   RenderScene rs = PrepareRenderScene(test::MakeScene(tris, mats));
-  ASSERT_EQ(rs.emitters.size(), 32u);
+  ASSERT_EQ(rs.lights.size(), 32u);
   double total = 0.0;
   std::vector<double> power;
-  for (const Emitter& e : rs.emitters) {
-    const Material& m = rs.materials[rs.triangles[e.triangle].material];
-    double w = e.area * Luminance(m.emission) * ((m.flags & kMaterialDoubleSided) ? 2.0 : 1.0);
+  for (const Light& l : rs.lights) {
+    const Material& m = rs.materials[rs.triangles[l.triangle].material];
+    double w = l.extent * Luminance(m.emission) * ((m.flags & kMaterialDoubleSided) ? 2.0 : 1.0);
     power.push_back(w);
     total += w;
   }
-  std::vector<double> observed(rs.emitters.size(), 0.0), expected;
-  for (size_t k = 0; k < rs.emitters.size(); ++k) {
-    EXPECT_NEAR(rs.emitters[k].pmf, power[k] / total, 1e-6);
-    expected.push_back(kSamples * double(rs.emitters[k].pmf));
+  std::vector<double> observed(rs.lights.size(), 0.0), expected;
+  for (size_t k = 0; k < rs.lights.size(); ++k) {
+    EXPECT_NEAR(rs.lights[k].pmf, power[k] / total, 1e-6);
+    expected.push_back(kSamples * double(rs.lights[k].pmf));
   }
-  EXPECT_EQ(rs.emitters.back().cdf, 1.0f);
-  for (uint32_t i = 0; i < kSamples; ++i) observed[PickEmitter(rs, uint32_t(rs.emitters.size()), Random4(1u, i, 0u, 1u).x)] += 1.0;
+  EXPECT_EQ(rs.lights.back().cdf, 1.0f);
+  for (uint32_t i = 0; i < kSamples; ++i) observed[PickLight(rs, uint32_t(rs.lights.size()), Random4(1u, i, 0u, 1u).x)] += 1.0;
   double stat;
   int dof;
   double p = test::ChiSquareTest(observed, expected, &stat, &dof);
-  std::printf("emitter choice: chi2 = %.1f, dof = %d, p = %.4f (alpha 0.01)\n", stat, dof, p);
+  std::printf("light choice: chi2 = %.1f, dof = %d, p = %.4f (alpha 0.01)\n", stat, dof, p);
   EXPECT_GT(p, 0.01);
 }
 

@@ -36,8 +36,8 @@ using shader::MaxComponent;
 
 void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& cam, uint32_t camIndex) {
   std::printf("scene: %s\n", scene.path.c_str());
-  std::printf("  triangles: %zu, materials: %zu (incl. default), emissive triangles: %zu\n", scene.triangles.size(),
-              scene.materials.size(), rs.emitters.size());
+  std::printf("  triangles: %zu, materials: %zu (incl. default), lights: %zu\n", scene.triangles.size(),
+              scene.materials.size(), rs.lights.size());
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
     std::printf("  material %zu \"%s\": baseColor (%.4g, %.4g, %.4g) emission (%.6g, %.6g, %.6g)%s\n", i,
@@ -169,7 +169,7 @@ RenderScene PrepareForRender(const Scene& scene, const Options& o, bool gpu) {
   return PrepareRenderScene(scene, bvhOptions, !gpu || o.compare);
 }
 
-// The frame constants from the options; a scene without emitters is lit by a white
+// The frame constants from the options; a scene without lights is lit by a white
 // environment unless --background says otherwise (and is warned about if that is black).
 shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, glm::uvec2 size, const Options& o) {
   shader::FrameParams params = MakeFrameParams(rs, cam, size.x, size.y);
@@ -180,12 +180,12 @@ shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, g
   params.rrDepth = o.rrDepth;
   if (o.background) {
     params.background = glm::vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]);
-  } else if (rs.emitters.empty()) {
+  } else if (rs.lights.empty()) {
     params.background = glm::vec3(1.0f);
-    if (o.verbose) std::printf("  no emissive triangles: lit by a white environment (see --background)\n");
+    if (o.verbose) std::printf("  no lights: lit by a white environment (see --background)\n");
   }
-  if (rs.emitters.empty() && MaxComponent(params.background) <= 0.0f)
-    std::fprintf(stderr, "vkpt: warning: %s: no emissive triangles and a black background; the image will be black\n",
+  if (rs.lights.empty() && MaxComponent(params.background) <= 0.0f)
+    std::fprintf(stderr, "vkpt: warning: %s: no lights and a black background; the image will be black\n",
                  o.scene.c_str());
   return params;
 }
@@ -223,7 +223,7 @@ void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderRe
                   bvh.rejectedSahCost);
   std::printf("  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %s splits%s, %u nodes, %u leaves, "
               "depth %u, %u triangle references, SAH cost %.3f, built in %.2f ms\n",
-              scene.triangles.size(), rs.degenerateTriangles, rs.emitters.size(), kind, choice, bvh.nodes, bvh.leaves,
+              scene.triangles.size(), rs.degenerateTriangles, rs.lights.size(), kind, choice, bvh.nodes, bvh.leaves,
               bvh.depth, bvh.references, bvh.sahCost, bvh.buildMs);
   if (r.nonFinite)
     std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.nonFinite);

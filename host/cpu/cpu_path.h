@@ -10,7 +10,8 @@
 #define VKPT_SCENE_ARG scene,
 #define VKPT_TRIANGLE(i) scene.triangles[i]
 #define VKPT_MATERIAL(i) scene.materials[i]
-#define VKPT_EMITTER(i) scene.emitters[i]
+#define VKPT_LIGHT(i) scene.lights[i]
+#define VKPT_LIGHT_CDF(i) scene.lights[i].cdf
 
 namespace vkpt::shader {
 

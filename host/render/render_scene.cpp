@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "render/light_table.h"
 #include "shared/sampling.h"
 #include "util/error.h"
 
@@ -69,41 +70,6 @@ std::vector<shader::Triangle> LeafOrderTriangles(const Scene& scene, const std::
   return triangles;
 }
 
-// Emitter table: every emissive triangle with non-zero area, chosen with probability
-// proportional to its emitted power (area × luminance, doubled when it emits from both
-// faces), so bright large lights get most samples. A triangle that spatial splits put in
-// several leaves is one emitter (its first copy): counting it twice would double its light.
-void BuildEmitterTable(size_t sceneTriangles, RenderScene& rs) {
-  std::vector<double> weight;
-  std::vector<bool> listed(sceneTriangles, false);
-  for (uint32_t i = 0; i < rs.triangles.size(); ++i) {
-    const shader::Triangle& t = rs.triangles[i];
-    if (listed[t.sourceIndex]) continue;
-    listed[t.sourceIndex] = true;
-    const shader::Material& m = rs.materials[t.material];
-    double area = 0.5 * glm::length(glm::dvec3(glm::cross(t.e1, t.e2)));
-    double lum = shader::Luminance(m.emission);
-    if (!(area > 0.0) || !(lum > 0.0)) continue;
-    double w = area * lum * ((m.flags & shader::kMaterialDoubleSided) ? 2.0 : 1.0);
-    rs.emitters.push_back({i, 0.0f, 0.0f, float(area)});
-    weight.push_back(w);
-  }
-  double total = 0.0;
-  for (double w : weight) total += w;
-  rs.totalEmittedPower = total * shader::kPi;
-  double running = 0.0;
-  float prevCdf = 0.0f;
-  for (size_t k = 0; k < rs.emitters.size(); ++k) {
-    running += weight[k];
-    float cdf = k + 1 == rs.emitters.size() ? 1.0f : float(running / total);
-    rs.emitters[k].cdf = cdf;
-    // The probability a uniform u ∈ [0,1) really lands in [prevCdf, cdf): what the
-    // estimator must divide by.
-    rs.emitters[k].pmf = cdf - prevCdf;
-    prevCdf = cdf;
-  }
-}
-
 }  // namespace
 
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {
@@ -119,13 +85,13 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   rs.materials = scene.materials;
   rs.triangles = LeafOrderTriangles(scene, bvh.primOrder, in.kept);
   if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
-  BuildEmitterTable(scene.triangles.size(), rs);
+  BuildLightTable(scene.triangles.size(), rs);
   return rs;
 }
 
 shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height) {
   shader::FrameParams p{};
-  p.emitterCount = uint32_t(scene.emitters.size());
+  p.lightCount = uint32_t(scene.lights.size());
   p.nodeCount = scene.bvhStats.nodes;
   p.nodeCopies = scene.nodeCopies;
   p.origin = camera.position;

@@ -1,6 +1,6 @@
 // What a renderer consumes: the Scene's triangles in BVH leaf order as shader::Triangle,
 // the BVH in two layouts (flattened skip links for the GPU, child pairs for the CPU),
-// materials and the emitter table for light sampling. The shader-layout vectors are
+// materials and the light table for light sampling. The shader-layout vectors are
 // uploaded verbatim by the Vulkan backend; the CPU reference reads them directly.
 #pragma once
 
@@ -19,10 +19,10 @@ struct RenderScene {
   uint32_t nodeCopies = 1;
   BvhPairLayout pairLayout;  // the first copy of `nodes`, for the CPU tracer (if asked for)
   std::vector<shader::Material> materials;
-  std::vector<shader::Emitter> emitters;  // empty: the scene is dark
+  std::vector<shader::Light> lights;  // empty: the scene is dark (render/light_table.h)
   BvhStats bvhStats;
   uint32_t degenerateTriangles = 0;  // dropped: zero area (see IsDegenerate)
-  double totalEmittedPower = 0.0;  // Σ π · area · luminance(Le) (×2 for two-sided)
+  double totalEmittedPower = 0.0;  // Σ of the lights' power estimates
 };
 
 // A triangle whose edges are parallel to float precision has no area to hit or emit

@@ -70,18 +70,24 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
   }
 }
 
+// Extensions whose every property vkpt renders.
+bool IsRenderedExtension(const std::string& ext) {
+  static const char* const kRendered[] = {"KHR_materials_emissive_strength", "KHR_materials_ior",
+                                          "KHR_materials_specular",          "KHR_materials_unlit",
+                                          "KHR_lights_punctual",             "KHR_mesh_quantization"};
+  return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
+}
+
 // What the file uses that vkpt does not render yet (printed by -v).
 void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   auto& ig = scene.ignoredFeatures;
   if (!src.m.textures.empty())
     ig.push_back(std::to_string(src.m.textures.size()) + " texture(s): materials use their constant factors");
-  bool normalTex = false, transparent = false, metallic = false;
+  bool normalTex = false, transparent = false;
   for (const tinygltf::Material& mat : src.m.materials) {
     normalTex |= mat.normalTexture.index >= 0;
     transparent |= mat.alphaMode != "OPAQUE";
-    metallic |= mat.pbrMetallicRoughness.metallicFactor > 0.0;
   }
-  if (metallic) ig.push_back("metallic/roughness: every surface is rendered as Lambertian (diffuse)");
   if (transparent) ig.push_back("alphaMode MASK/BLEND: surfaces are rendered opaque");
   if (normalTex) ig.push_back("normal maps");
   if (!src.m.animations.empty())
@@ -94,8 +100,7 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   if (!src.m.lights.empty())
     ig.push_back(std::to_string(src.m.lights.size()) + " KHR_lights_punctual light(s): only emissive triangles emit");
   for (const std::string& ext : src.m.extensionsUsed)
-    if (ext != "KHR_materials_emissive_strength" && ext != "KHR_lights_punctual" && ext != "KHR_mesh_quantization")
-      ig.push_back("extension " + ext);
+    if (!IsRenderedExtension(ext)) ig.push_back("extension " + ext);
 }
 
 // The phases of a load, in the order that makes each safe: the structure is checked

@@ -4,49 +4,104 @@
 #include <cmath>
 
 namespace vkpt {
+namespace {
+
+// Reads one material's factors, each checked against the range its schema gives.
+class MaterialReader {
+ public:
+  MaterialReader(const GltfSource& src, const tinygltf::Material& in, std::string name)
+      : src_(src), in_(in), name_(std::move(name)) {}
+
+  Material Read() const {
+    const auto& pbr = in_.pbrMetallicRoughness;
+    Material mat{};
+    mat.baseColor = Color(pbr.baseColorFactor, 4, "pbrMetallicRoughness.baseColorFactor", 1.0);
+    mat.metallic = float(Unit(pbr.metallicFactor, "pbrMetallicRoughness.metallicFactor"));
+    mat.roughness = float(Unit(pbr.roughnessFactor, "pbrMetallicRoughness.roughnessFactor"));
+    const double strength = ExtensionNumber("KHR_materials_emissive_strength", "emissiveStrength", 1.0);
+    if (strength < 0.0) Fail("KHR_materials_emissive_strength.emissiveStrength must be >= 0");
+    mat.emission = Color(in_.emissiveFactor, 3, "emissiveFactor", 1.0) * float(strength);
+
+    mat.specular = float(Unit(ExtensionNumber("KHR_materials_specular", "specularFactor", 1.0),
+                              "KHR_materials_specular.specularFactor"));
+    mat.specularColor = glm::vec3(1.0f);
+    if (const tinygltf::Value* c = ExtensionField("KHR_materials_specular", "specularColorFactor"))
+      mat.specularColor = Color(NumberArray(*c, "KHR_materials_specular.specularColorFactor"), 3,
+                                "KHR_materials_specular.specularColorFactor", INFINITY);
+    const double ior = ExtensionNumber("KHR_materials_ior", "ior", 1.5);
+    if (!(ior == 0.0 || (ior >= 1.0 && std::isfinite(ior))))
+      Fail("KHR_materials_ior.ior must be 0 or a finite number >= 1");
+    mat.ior = float(ior);
+    mat.flags = (in_.doubleSided ? shader::kMaterialDoubleSided : 0u) |
+                (in_.extensions.count("KHR_materials_unlit") ? shader::kMaterialUnlit : 0u);
+    return mat;
+  }
+
+ private:
+  [[noreturn]] void Fail(const std::string& what) const { src_.Fail(name_ + "." + what); }
+
+  double Unit(double v, const char* field) const {
+    if (!std::isfinite(v) || v < 0.0 || v > 1.0) Fail(std::string(field) + " is not in [0, 1]");
+    return v;
+  }
+
+  // The first three numbers of a colour factor of `size` numbers, each in [0, max].
+  glm::vec3 Color(const std::vector<double>& v, size_t size, const char* field, double max) const {
+    if (v.size() != size) Fail(std::string(field) + " must have " + std::to_string(size) + " numbers");
+    glm::vec3 c;
+    for (int i = 0; i < 3; ++i) {
+      if (!std::isfinite(v[i]) || v[i] < 0.0 || v[i] > max)
+        Fail(std::string(field) + "[" + std::to_string(i) + "] is " +
+             (max == 1.0 ? "not in [0, 1]" : "negative or not finite"));
+      c[i] = float(v[i]);
+    }
+    return c;
+  }
+
+  const tinygltf::Value* ExtensionField(const char* extension, const char* field) const {
+    auto it = in_.extensions.find(extension);
+    if (it == in_.extensions.end() || !it->second.IsObject() || !it->second.Has(field)) return nullptr;
+    return &it->second.Get(field);
+  }
+
+  double ExtensionNumber(const char* extension, const char* field, double absent) const {
+    const tinygltf::Value* v = ExtensionField(extension, field);
+    if (!v) return absent;
+    if (!v->IsNumber() || !std::isfinite(v->GetNumberAsDouble()))
+      Fail(std::string(extension) + "." + field + " is not a finite number");
+    return v->GetNumberAsDouble();
+  }
+
+  std::vector<double> NumberArray(const tinygltf::Value& v, const char* field) const {
+    if (!v.IsArray()) Fail(std::string(field) + " is not an array");
+    std::vector<double> out;
+    for (size_t i = 0; i < v.ArrayLen(); ++i) {
+      if (!v.Get(int(i)).IsNumber()) Fail(std::string(field) + " holds a value that is not a number");
+      out.push_back(v.Get(int(i)).GetNumberAsDouble());
+    }
+    return out;
+  }
+
+  const GltfSource& src_;
+  const tinygltf::Material& in_;
+  std::string name_;
+};
+
+}  // namespace
 
 uint32_t LoadMaterials(const GltfSource& src, Scene& scene) {
   for (size_t i = 0; i < src.m.materials.size(); ++i) {
     const tinygltf::Material& in = src.m.materials[i];
     std::string name = "materials[" + std::to_string(i) + "]";
-    const auto& pbr = in.pbrMetallicRoughness;
-    Material mat{};
-    if (pbr.baseColorFactor.size() != 4) src.Fail(name + ".baseColorFactor must have 4 numbers");
-    for (int c = 0; c < 3; ++c) {
-      double v = pbr.baseColorFactor[c];
-      if (!std::isfinite(v) || v < 0.0 || v > 1.0)
-        src.Fail(name + ".baseColorFactor[" + std::to_string(c) + "] is not in [0, 1]");
-      mat.baseColor[c] = float(v);
-    }
-    double strength = 1.0;
-    auto it = in.extensions.find("KHR_materials_emissive_strength");
-    if (it != in.extensions.end() && it->second.Has("emissiveStrength")) {
-      const tinygltf::Value& s = it->second.Get("emissiveStrength");
-      if (!s.IsNumber() || !std::isfinite(s.GetNumberAsDouble()) || s.GetNumberAsDouble() < 0.0)
-        src.Fail(name + ": KHR_materials_emissive_strength.emissiveStrength is not a number >= 0");
-      strength = s.GetNumberAsDouble();
-    }
-    if (in.emissiveFactor.size() != 3) src.Fail(name + ".emissiveFactor must have 3 numbers");
-    for (int c = 0; c < 3; ++c) {
-      double v = in.emissiveFactor[c];
-      if (!std::isfinite(v) || v < 0.0) src.Fail(name + ".emissiveFactor has a negative or non-finite value");
-      mat.emission[c] = float(v * strength);
-    }
-    if (!std::isfinite(pbr.metallicFactor) || !std::isfinite(pbr.roughnessFactor))
-      src.Fail(name + ": metallicFactor/roughnessFactor is not finite");
-    mat.metallic = float(std::clamp(pbr.metallicFactor, 0.0, 1.0));
-    mat.roughness = float(std::clamp(pbr.roughnessFactor, 0.0, 1.0));
-    mat.flags = in.doubleSided ? shader::kMaterialDoubleSided : 0u;
-    scene.materials.push_back(mat);
+    scene.materials.push_back(MaterialReader(src, in, name).Read());
     scene.materialNames.push_back(in.name.empty() ? name : in.name);
   }
-  // glTF's default material for primitives without one: white, rough, one-sided.
+  // glTF's default material for primitives without one: the defaults of every factor,
+  // a white, fully rough metal, one-sided.
   const uint32_t defaultMaterial = uint32_t(scene.materials.size());
-  Material def{};
-  def.baseColor = glm::vec3(1.0f);
-  def.metallic = 1.0f;
-  def.roughness = 1.0f;
-  scene.materials.push_back(def);
+  tinygltf::Material def;
+  def.emissiveFactor = {0.0, 0.0, 0.0};  // set by tinygltf's parser, not its constructor
+  scene.materials.push_back(MaterialReader(src, def, "(default material)").Read());
   scene.materialNames.push_back("(default)");
   return defaultMaterial;
 }

@@ -1,5 +1,6 @@
-// glTF materials as vkpt renders them today: base colour, emission (with
-// KHR_materials_emissive_strength), double-sidedness; metallic and roughness are kept.
+// glTF materials as shared/bsdf.h renders them: the metallic-roughness factors, emission
+// (× KHR_materials_emissive_strength), KHR_materials_ior, KHR_materials_specular,
+// KHR_materials_unlit and double-sidedness.
 #pragma once
 
 #include <cstdint>

@@ -12,23 +12,27 @@ static_assert(sizeof(vec3) == 12 && alignof(vec3) == 4, "glm::vec3 must be 3 pac
 static_assert(sizeof(Triangle) == 48);
 static_assert(offsetof(Triangle, v0) == 0 && offsetof(Triangle, material) == 12);
 static_assert(offsetof(Triangle, e1) == 16 && offsetof(Triangle, sourceIndex) == 28);
-static_assert(offsetof(Triangle, e2) == 32 && offsetof(Triangle, pad0) == 44);
+static_assert(offsetof(Triangle, e2) == 32 && offsetof(Triangle, light) == 44);
 
 static_assert(sizeof(BvhNode) == 32);
 static_assert(offsetof(BvhNode, lo) == 0 && offsetof(BvhNode, skip) == 12);
 static_assert(offsetof(BvhNode, hi) == 16 && offsetof(BvhNode, leaf) == 28);
 
-static_assert(sizeof(Material) == 48);
+static_assert(sizeof(Material) == 64);
 static_assert(offsetof(Material, baseColor) == 0 && offsetof(Material, metallic) == 12);
 static_assert(offsetof(Material, emission) == 16 && offsetof(Material, roughness) == 28);
-static_assert(offsetof(Material, flags) == 32);
+static_assert(offsetof(Material, specularColor) == 32 && offsetof(Material, specular) == 44);
+static_assert(offsetof(Material, ior) == 48 && offsetof(Material, flags) == 52);
 
-static_assert(sizeof(Emitter) == 16);
-static_assert(offsetof(Emitter, cdf) == 4 && offsetof(Emitter, pmf) == 8 && offsetof(Emitter, area) == 12);
+static_assert(sizeof(Light) == 64);
+static_assert(offsetof(Light, position) == 0 && offsetof(Light, triangle) == 12);
+static_assert(offsetof(Light, direction) == 16 && offsetof(Light, type) == 28);
+static_assert(offsetof(Light, radiance) == 32 && offsetof(Light, extent) == 44);
+static_assert(offsetof(Light, cdf) == 48 && offsetof(Light, cosInner) == 60);
 
 static_assert(sizeof(RayQuery) == 32);
 static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(BvhNode) == 16 * kTexelsPerNode);
-static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Emitter) == 16 * kTexelsPerEmitter);
+static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Light) == 16 * kTexelsPerLight);
 
 static_assert(offsetof(RayQuery, tMax) == 12 && offsetof(RayQuery, dir) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, triangle) == 12);

@@ -8,6 +8,7 @@
 
 #include "kPathTraceSpirv.h"
 #include "kTraceSpirv.h"
+#include "shared/ggx_albedo_table.h"
 #include "util/byte_size.h"
 #include "util/error.h"
 #include "vk/compute_pipeline.h"
@@ -157,7 +158,8 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       triangles_(UploadArray<shader::Triangle>(ctx, scene.triangles, "triangles")),
       nodes_(UploadArray<shader::BvhNode>(ctx, scene.nodes, "BVH nodes")),
       materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
-      emitters_(UploadArray<shader::Emitter>(ctx, scene.emitters, "emitters")),
+      lights_(UploadArray<shader::Light>(ctx, scene.lights, "lights")),
+      ggxAlbedo_(UploadArray<float>(ctx, shader::kGgxAlbedo, "GGX albedo table")),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
@@ -168,11 +170,12 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             TexelBinding(shader::kBindingTriangles, triangles_),
                             TexelBinding(shader::kBindingNodes, nodes_),
                             TexelBinding(shader::kBindingMaterials, materials_),
-                            TexelBinding(shader::kBindingEmitters, emitters_),
+                            TexelBinding(shader::kBindingLights, lights_),
+                            TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
-                           "pathtrace", 2 * sizeof(uint32_t), {frame.emitterCount > 0 ? 1u : 0u});
+                           "pathtrace", 2 * sizeof(uint32_t), {frame.lightCount > 0 ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);

@@ -1,7 +1,7 @@
 // The pieces of the path-tracing estimator that the CPU reference (host/cpu/) and the
-// compute shader must compute identically: camera rays and the next-event-estimation
-// weight. Traversal is deliberately *not* shared (each side has its own), so that a
-// traversal bug cannot hide in both.
+// compute shader must compute identically: rays and camera rays. Traversal is
+// deliberately *not* shared (each side has its own), so that a traversal bug cannot hide
+// in both.
 #ifndef VKPT_ESTIMATOR_H
 #define VKPT_ESTIMATOR_H
 #include "prelude.h"
@@ -16,7 +16,6 @@ struct Ray {
   vec3 origin;
   vec3 dir;
 };
-
 
 // Ray through pixel (px, py) at sub-pixel offset (jx, jy) ∈ [0,1)²; row 0 is the top
 // of the image. A box filter of one pixel: every sample has weight 1.
@@ -33,31 +32,6 @@ VKPT_FN Ray GenerateCameraRay(FrameParams p, uint px, uint py, float jx, float j
     r.dir = normalize(p.forward + film);
   }
   return r;
-}
-
-// Radiance-to-contribution factor of one light sample for next-event estimation.
-// The rendering equation's integral over directions is rewritten over the emitter's area
-// (dω = cos θ' dA / r², GAMES101 lecture 16), so a point x sampled with area density
-// pdfA = pmf / area contributes
-//     f · Le · cos θ · cos θ' / (r² · pdfA)
-// where θ is at the shading point (normal n, facing the viewer) and θ' at the emitter
-// (normal nl). This returns cos θ · cos θ' / (r² · pdfA), or 0 when the emitter faces
-// away (one-sided emitters emit from their front face only) or the light is below the
-// surface.
-VKPT_FN float LightSampleWeight(vec3 p, vec3 n, vec3 x, vec3 nl, bool twoSided, float pmf, float area) {
-  vec3 d = x - p;
-  float dist2 = dot(d, d);
-  if (!(dist2 > 0.0f)) return 0.0f;
-  vec3 wi = d * inversesqrt(dist2);
-  float cosSurface = dot(n, wi);
-  float cosLight = -dot(nl, wi);
-  if (twoSided) cosLight = abs(cosLight);
-#ifdef VKPT_MUTANT_NO_LIGHT_COSINE
-  // Deliberately wrong (test builds only): forgets cos θ' at the emitter.
-  if (cosLight > 0.0f) cosLight = 1.0f;
-#endif
-  if (cosSurface <= 0.0f || cosLight <= 0.0f) return 0.0f;
-  return cosSurface * cosLight * area / (dist2 * pmf);
 }
 
 VKPT_END_NAMESPACE

@@ -16,7 +16,7 @@ const uint kBindingParams = 0u;     // uniform FrameParams
 const uint kBindingTriangles = 1u;  // texel buffer of Triangle
 const uint kBindingNodes = 2u;      // texel buffer of BvhNode
 const uint kBindingMaterials = 3u;  // texel buffer of Material
-const uint kBindingEmitters = 4u;   // texel buffer of Emitter
+const uint kBindingLights = 4u;     // texel buffer of Light
 const uint kBindingAccum = 5u;      // buffer vec4[2 per pixel]: Σ L, Σ L²
 const uint kBindingCounters = 6u;   // buffer uvec4[] per pixel: rays, non-finite, cut short, 0
 // The trace-only kernel (trace.comp) reuses kBindingTriangles and kBindingNodes, plus:
@@ -24,6 +24,10 @@ const uint kBindingRays = 7u;       // readonly buffer RayQuery[]
 const uint kBindingHits = 8u;       // buffer HitRecord[]
 // pathtrace.comp again:
 const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample of a SIMD group
+const uint kBindingGgxAlbedo = 13u; // texel buffer of the GGX albedo table (shared/ggx_albedo.h)
+
+// Grid points per axis of the GGX albedo table (shared/ggx_albedo.h).
+const uint kGgxAlbedoSize = 64u;
 
 // lavapipe ends a shader once its SIMD group has run 65535 loop passes in total
 // (traverse.glsl); pathtrace.comp keeps clear of it by a margin for the small loops not
@@ -41,7 +45,7 @@ struct Triangle {
   vec3 e1;  // v1 - v0
   uint sourceIndex;  // index of the triangle in the Scene (before BVH reordering)
   vec3 e2;  // v2 - v0
-  uint pad0;
+  uint light;  // its entry in the Light table if it emits, else kInvalidIndex (for MIS)
 };
 
 // A flattened BVH node (32 bytes) in depth-first order with skip links.
@@ -59,36 +63,51 @@ struct BvhNode {
 const uint kMaxLeafSize = 15u;
 
 const uint kMaterialDoubleSided = 1u;
+const uint kMaterialUnlit = 2u;  // KHR_materials_unlit: shows baseColor, reflects nothing
 
-// Lambertian reflectance plus emission. metallic/roughness are carried for the
-// BSDFs to come; the current estimator reads baseColor and emission only.
+// A glTF metallic-roughness material (shared/bsdf.h) plus emission.
 struct Material {
   vec3 baseColor;
   float metallic;
   vec3 emission;  // emitted radiance Le = emissiveFactor * emissiveStrength
   float roughness;
-  uint flags;  // kMaterialDoubleSided
+  vec3 specularColor;  // KHR_materials_specular: tints the dielectric F0
+  float specular;      // KHR_materials_specular: scales F0 and F90 (0: no specular layer)
+  float ior;           // KHR_materials_ior (1.5 when absent; 0: Fresnel is 1)
+  uint flags;          // kMaterialDoubleSided | kMaterialUnlit
   uint pad0;
   uint pad1;
-  uint pad2;
 };
 
-// One emissive triangle of the light-sampling distribution (next-event estimation).
-// Triangles are chosen with probability pmf ∝ area * luminance(Le); cdf is the
-// inclusive running sum (the last one is exactly 1).
-struct Emitter {
-  uint triangle;  // index into the leaf-ordered Triangle array
+// Light types (shared/lights.h).
+const uint kLightTriangle = 0u;          // emits from its front face
+const uint kLightTwoSidedTriangle = 1u;  // emits from both faces (double-sided material)
+const uint kLightPoint = 2u;
+const uint kLightSpot = 3u;
+const uint kLightDirectional = 4u;
+
+// One light of the light-sampling distribution (next-event estimation). Lights are chosen
+// with probability pmf ∝ estimated power; cdf is the inclusive running sum (the last one
+// is exactly 1).
+struct Light {
+  vec3 position;  // point, spot: where it is
+  uint triangle;  // triangles: index into the leaf-ordered Triangle array
+  vec3 direction; // spot, directional: unit, the way light travels; triangles: unit front normal
+  uint type;      // kLight*
+  vec3 radiance;  // triangles: Le; point, spot: intensity I; directional: irradiance E
+  float extent;   // triangles: area; point, spot: range (0: unlimited)
   float cdf;
   float pmf;
-  float area;
+  float cosOuter;  // spot: cosines of the outer and inner cone angles
+  float cosInner;
 };
 
 // The shaders read the scene arrays above as RGBA32UI texels (shaders/scene_fetch.glsl):
 // 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
 const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
-const uint kTexelsPerMaterial = 3u;
-const uint kTexelsPerEmitter = 1u;
+const uint kTexelsPerMaterial = 4u;
+const uint kTexelsPerLight = 4u;
 
 // A ray for the trace-only kernel: closest hit along origin + t·dir, t ∈ (0, tMax).
 struct RayQuery {
@@ -123,7 +142,7 @@ struct FrameParams {
   uint sampleCount;  // samples per pixel in this dispatch
   uint maxDepth;
   uint rrDepth;
-  uint emitterCount;
+  uint lightCount;
   uint nodeCount;  // per copy
   uint pad0;       // places background on the 16-byte boundary std430 gives a vec3
   vec3 background;    // radiance arriving from every direction no triangle blocks

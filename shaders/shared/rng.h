@@ -100,9 +100,9 @@ VKPT_FN vec2 Sample2D(uint seed, uint pixel, uint sampleIndex, uint pair) {
 
 // How the estimator spends its dimensions (groups of four), identically on CPU and GPU.
 // Pair kGroupCamera of Sample2D: film jitter. At path vertex `bounce` (0 = camera hit):
-//   Random4(LightGroup): w: Russian roulette (x, y, z unused)
-//   Sample2D(LightGroup): the emitter and the point on it
-//   Sample2D(BsdfGroup):  the scattered direction
+//   Random4(LightGroup): x: the BSDF lobe, w: Russian roulette (y, z unused)
+//   Sample2D(LightGroup): the light and the point on it
+//   Sample2D(BsdfGroup):  the scattered direction within the lobe
 const uint kGroupCamera = 0u;
 VKPT_FN uint LightGroup(uint bounce) { return 1u + 2u * bounce; }
 VKPT_FN uint BsdfGroup(uint bounce) { return 2u + 2u * bounce; }

@@ -30,6 +30,15 @@ VKPT_FN Frame FrameFromNormal(vec3 n) {
 }
 
 VKPT_FN vec3 FrameToWorld(Frame f, vec3 v) { return f.t * v.x + f.b * v.y + f.n * v.z; }
+VKPT_FN vec3 WorldToFrame(Frame f, vec3 v) { return vec3(dot(v, f.t), dot(v, f.b), dot(v, f.n)); }
+
+// Veach's power heuristic (β = 2) for the sample of density pdfA against pdfB, written
+// as 1 / (1 + (pdfB/pdfA)²) so that large densities (a small, distant light) cannot
+// overflow a square.
+VKPT_FN float PowerHeuristic(float pdfA, float pdfB) {
+  float r = pdfB / pdfA;
+  return pdfA > 0.0f ? 1.0f / (1.0f + r * r) : 0.0f;
+}
 
 // Cosine-weighted direction on the hemisphere around +z (Malley's method: uniform on
 // the unit disk, projected up). pdf(ω) = cos θ / π, so for a Lambertian BRDF ρ/π the

@@ -1,0 +1,122 @@
+// Light sampling for next-event estimation, and the density of a direction that BSDF
+// sampling found a light along (for multiple importance sampling). Every light of the
+// scene — emissive triangles and KHR_lights_punctual point, spot and directional lights —
+// is one entry of one table, chosen with probability ∝ its estimated power
+// (host/render/light_table.cpp).
+//
+// Units: emission is radiance; a punctual light's intensity (candela in glTF) is radiant
+// intensity I and a directional light's (lux) irradiance E, 1:1, so a point light of
+// intensity I lights a Lambert surface at distance r to ρ/π · I cos θ / r².
+//
+// Scene access (see path.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i).
+#ifndef VKPT_LIGHTS_H
+#define VKPT_LIGHTS_H
+#include "prelude.h"
+#include "layout.h"
+#include "sampling.h"
+#include "intersect.h"
+#include "estimator.h"
+
+VKPT_BEGIN_NAMESPACE
+
+struct LightSample {
+  vec3 wi;          // unit direction from the shading point to the light
+  float pdf;        // solid-angle density, light choice included; for delta lights the choice's pmf
+  vec3 radiance;    // Li arriving along ωi (delta lights: I·falloff/r² or E, to divide by pdf alike)
+  bool delta;       // a point, spot or directional light: no BSDF sample can hit it
+  Ray shadowRay;    // must be unoccluded for t < shadowTMax
+  float shadowTMax;
+};
+
+// The light whose CDF interval holds u ∈ [0,1): smallest k with u < cdf[k].
+VKPT_FN uint PickLight(VKPT_SCENE_PARAM uint count, float u) {
+  uint lo = 0u;
+  uint hi = count - 1u;
+  while (lo < hi) {
+    uint mid = (lo + hi) / 2u;
+    if (u < VKPT_LIGHT_CDF(mid)) hi = mid;
+    else lo = mid + 1u;
+  }
+  return lo;
+}
+
+// Solid-angle density of reaching a point of emissive triangle light `l` at distance
+// `dist` along a direction making cosine `cosLight` with its normal: pmf · dist² / (area cos θ').
+VKPT_FN float TriangleLightPdf(Light l, float dist, float cosLight) {
+  return cosLight > 0.0f ? l.pmf * dist * dist / (l.extent * cosLight) : 0.0f;
+}
+
+// KHR_lights_punctual's spot cone: smoothstep-free quadratic falloff between the outer
+// and inner cone, as the extension's reference implementation computes it.
+VKPT_FN float SpotFalloff(Light l, vec3 wiFromLight) {
+  float cd = dot(l.direction, wiFromLight);
+  float scale = 1.0f / max(0.001f, l.cosInner - l.cosOuter);
+  float a = clamp((cd - l.cosOuter) * scale, 0.0f, 1.0f);
+  return a * a;
+}
+
+// KHR_lights_punctual's recommended range window: 1 at the light, 0 from `range` on.
+VKPT_FN float RangeFalloff(float range, float dist) {
+  if (range <= 0.0f) return 1.0f;
+  float x = dist / range;
+  float x2 = x * x;
+  return clamp(1.0f - x2 * x2, 0.0f, 1.0f);
+}
+
+// Samples a light for the shading point p (geometric normal ng on the side the path
+// arrived from) with u ∈ [0,1)²: u.x picks the light and is then stretched back to
+// [0,1) within its CDF interval (pbrt-v4's SampleDiscrete), so the point on a triangle
+// light stays stratified over the union of all triangles. pdf = 0: no contribution.
+VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 ng, vec2 u) {
+  uint k = PickLight(VKPT_SCENE_ARG params.lightCount, u.x);
+  Light l = VKPT_LIGHT(k);
+  float cdfBelow = k > 0u ? VKPT_LIGHT_CDF(k - 1u) : 0.0f;
+  u.x = min((u.x - cdfBelow) / (l.cdf - cdfBelow), kOneMinusEpsilon);
+  vec3 origin = OffsetRayOrigin(p, ng);
+  LightSample ls;
+  bool triangle = l.type <= kLightTwoSidedTriangle;
+  ls.delta = !triangle;
+  ls.shadowRay.origin = origin;
+  ls.shadowTMax = 1.0f;
+  if (triangle) {
+    Triangle tri = VKPT_TRIANGLE(l.triangle);
+    vec2 b = SampleUniformTriangle(u.x, u.y);
+    vec3 x = tri.v0 + b.x * tri.e1 + b.y * tri.e2;
+    vec3 nl = l.direction;
+    vec3 d = x - p;
+    float dist = length(d);
+    ls.wi = d / dist;
+    float cosLight = -dot(nl, ls.wi);
+    if (l.type == kLightTwoSidedTriangle) cosLight = abs(cosLight);
+#ifdef VKPT_MUTANT_NO_LIGHT_COSINE
+    // Deliberately wrong (test builds only): forgets cos θ' at the emitter.
+    if (cosLight > 0.0f) cosLight = 1.0f;
+#endif
+    ls.pdf = TriangleLightPdf(l, dist, cosLight);
+    ls.radiance = l.radiance;
+    // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
+    // unnormalised direction: the emitter itself then lies beyond tMax.
+    ls.shadowRay.dir = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl) - origin;
+  } else if (l.type == kLightDirectional) {
+    ls.wi = -l.direction;
+    ls.pdf = l.pmf;
+    ls.radiance = l.radiance;
+    ls.shadowRay.dir = ls.wi;
+    ls.shadowTMax = kInfinity;
+  } else {  // point or spot
+    vec3 d = l.position - p;
+    float dist2 = dot(d, d);
+    float dist = sqrt(dist2);
+    ls.wi = d / dist;
+    float falloff = RangeFalloff(l.extent, dist) / dist2;
+    if (l.type == kLightSpot) falloff *= SpotFalloff(l, -ls.wi);
+    ls.pdf = dist2 > 0.0f ? l.pmf : 0.0f;
+    ls.radiance = l.radiance * falloff;
+    ls.shadowRay.dir = l.position - origin;
+  }
+  return ls;
+}
+
+VKPT_END_NAMESPACE
+
+#endif
