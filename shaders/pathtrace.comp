@@ -45,10 +45,13 @@ layout(constant_id = 0) const uint kSceneHasEmitters = 1u;
 #define VKPT_TRIANGLE(i) FetchTriangle(i)
 #define VKPT_MATERIAL(i) FetchMaterial(i)
 #define VKPT_EMITTER(i) FetchEmitter(i)
+#define VKPT_SHADING(i) FetchShading(i)
 
 #include "traverse.glsl"
 
 #include "shared/path.h"
+// Not read by path.h yet; included so that it is compiled as GLSL on every build.
+#include "shared/shading_normal.h"
 
 void main() {
   gNodeCount = params.nodeCount;

@@ -1,6 +1,6 @@
-// The scene for the shaders: triangles, BVH nodes, materials and emitters read from
-// uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per struct, the std430
-// layouts of shared/layout.h byte for byte).
+// The scene for the shaders: triangles, BVH nodes, materials, emitters and shading
+// normals read from uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per
+// struct, the std430 layouts of shared/layout.h byte for byte).
 //
 // Why texels and not storage-buffer structs: lavapipe (Mesa 22.3) has no gathers for
 // either. It reads a 16-byte texel lane by lane — eight scalar loads and a transpose,
@@ -17,6 +17,7 @@ layout(binding = kBindingTriangles) uniform usamplerBuffer triangleTexels;
 layout(binding = kBindingNodes) uniform usamplerBuffer nodeTexels;
 layout(binding = kBindingMaterials) uniform usamplerBuffer materialTexels;
 layout(binding = kBindingEmitters) uniform usamplerBuffer emitterTexels;
+layout(binding = kBindingShading) uniform usamplerBuffer shadingTexels;
 
 BvhNode FetchNode(uint i) {
   uvec4 a = texelFetch(nodeTexels, int(kTexelsPerNode * i));
@@ -67,6 +68,17 @@ Emitter FetchEmitter(uint e) {
   em.pmf = uintBitsToFloat(a.z);
   em.area = uintBitsToFloat(a.w);
   return em;
+}
+
+// i: a Triangle's sourceIndex (the triangle's index in the Scene).
+TriangleShading FetchShading(uint i) {
+  uvec4 a = texelFetch(shadingTexels, int(kTexelsPerShading * i));
+  TriangleShading s;
+  s.n0 = a.x;
+  s.n1 = a.y;
+  s.n2 = a.z;
+  s.flags = a.w;
+  return s;
 }
 
 #endif

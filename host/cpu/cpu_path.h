@@ -11,6 +11,7 @@
 #define VKPT_TRIANGLE(i) scene.triangles[i]
 #define VKPT_MATERIAL(i) scene.materials[i]
 #define VKPT_EMITTER(i) scene.emitters[i]
+#define VKPT_SHADING(i) scene.shading[i]
 
 namespace vkpt::shader {
 

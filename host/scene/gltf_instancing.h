@@ -1,6 +1,7 @@
 // The scene graph flattened (glTF 2.0 spec §3.5): every node of the rendered scene
 // with its world transform (TRS or matrix, parent × child), its mesh's triangles moved
-// to world space — winding kept where a transform mirrors — and its camera.
+// to world space — winding kept where a transform mirrors, normals by the inverse
+// transpose — and its camera.
 #pragma once
 
 #include <cstdint>

@@ -52,13 +52,15 @@ uint64_t DecodedBytes(const GltfSource& src, int accessor) {
 }
 
 // The memory the meshes will take, counted before any is decoded: each primitive's
-// positions and indices, and every triangle of every instance through to the renderer.
+// positions, normals and indices, and every triangle of every instance through to the
+// renderer.
 void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, MemoryBudget& budget) {
   for (size_t i = 0; i < src.m.meshes.size(); ++i) {
     uint64_t decoded = 0, triangles = 0;
     for (const tinygltf::Primitive& prim : src.m.meshes[i].primitives) {
-      auto pos = prim.attributes.find("POSITION");
-      decoded += DecodedBytes(src, prim.indices) + (pos == prim.attributes.end() ? 0 : DecodedBytes(src, pos->second));
+      decoded += DecodedBytes(src, prim.indices);
+      for (const char* attr : {"POSITION", "NORMAL"})
+        if (auto it = prim.attributes.find(attr); it != prim.attributes.end()) decoded += DecodedBytes(src, it->second);
       triangles += TriangleCount(src, prim);
     }
     std::string name = "meshes[" + std::to_string(i) + "]";

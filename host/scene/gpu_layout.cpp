@@ -26,6 +26,10 @@ static_assert(offsetof(Material, flags) == 32);
 static_assert(sizeof(Emitter) == 16);
 static_assert(offsetof(Emitter, cdf) == 4 && offsetof(Emitter, pmf) == 8 && offsetof(Emitter, area) == 12);
 
+static_assert(sizeof(TriangleShading) == 16 * kTexelsPerShading);
+static_assert(offsetof(TriangleShading, n1) == 4 && offsetof(TriangleShading, n2) == 8);
+static_assert(offsetof(TriangleShading, flags) == 12);
+
 static_assert(sizeof(RayQuery) == 32);
 static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(BvhNode) == 16 * kTexelsPerNode);
 static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Emitter) == 16 * kTexelsPerEmitter);

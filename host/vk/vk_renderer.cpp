@@ -158,6 +158,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       nodes_(UploadArray<shader::BvhNode>(ctx, scene.nodes, "BVH nodes")),
       materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
       emitters_(UploadArray<shader::Emitter>(ctx, scene.emitters, "emitters")),
+      shading_(UploadArray<shader::TriangleShading>(ctx, scene.shading, "shading normals")),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
@@ -169,6 +170,7 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             TexelBinding(shader::kBindingNodes, nodes_),
                             TexelBinding(shader::kBindingMaterials, materials_),
                             TexelBinding(shader::kBindingEmitters, emitters_),
+                            TexelBinding(shader::kBindingShading, shading_),
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},

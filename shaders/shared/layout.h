@@ -24,6 +24,7 @@ const uint kBindingRays = 7u;       // readonly buffer RayQuery[]
 const uint kBindingHits = 8u;       // buffer HitRecord[]
 // pathtrace.comp again:
 const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample of a SIMD group
+const uint kBindingShading = 10u;   // texel buffer of TriangleShading, indexed by Triangle.sourceIndex
 
 // lavapipe ends a shader once its SIMD group has run 65535 loop passes in total
 // (traverse.glsl); pathtrace.comp keeps clear of it by a margin for the small loops not
@@ -73,6 +74,17 @@ struct Material {
   uint pad2;
 };
 
+const uint kShadingHasNormals = 1u;
+
+// Per scene triangle (indexed by Triangle::sourceIndex, so spatial-split copies share it):
+// vertex normals as octahedral unit vectors, two snorm16 each (Cigolle et al. 2014).
+struct TriangleShading {
+  uint n0;
+  uint n1;
+  uint n2;
+  uint flags;  // kShadingHasNormals; without it n0..n2 are 0 and the triangle is flat
+};
+
 // One emissive triangle of the light-sampling distribution (next-event estimation).
 // Triangles are chosen with probability pmf ∝ area * luminance(Le); cdf is the
 // inclusive running sum (the last one is exactly 1).
@@ -89,6 +101,7 @@ const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
 const uint kTexelsPerMaterial = 3u;
 const uint kTexelsPerEmitter = 1u;
+const uint kTexelsPerShading = 1u;
 
 // A ray for the trace-only kernel: closest hit along origin + t·dir, t ∈ (0, tMax).
 struct RayQuery {
