@@ -30,8 +30,9 @@ bool KeepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*,
 
 // Host memory per triangle of the instanced scene, from the loader's arrays through the
 // BVH builds (both trees with --splits auto) to the renderer's arrays and their device
-// copies: ~320 bytes measured on 1 M triangles (docs/design-notes.md), with a margin.
-constexpr uint64_t kBytesPerTriangle = 400;
+// copies: up to ~490 bytes measured on 1 M triangles with vertex normals
+// (docs/design-notes.md), with a margin.
+constexpr uint64_t kBytesPerTriangle = 560;
 // Decoding an accessor holds each component as a double, then as a float.
 constexpr uint64_t kBytesPerDecodedComponent = 12;
 
