@@ -7,6 +7,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "scene/gltf_lights.h"
+
 namespace vkpt {
 namespace {
 
@@ -96,7 +98,7 @@ class Instancer {
     }
   }
 
-  // Adds one node's camera and mesh; returns its world transform.
+  // Adds one node's camera, light and mesh; returns its world transform.
   glm::dmat4 InstantiateNode(int nodeIndex, const glm::dmat4& parent) {
     const tinygltf::Node& n = src_.m.nodes[nodeIndex];
     std::string name = "nodes[" + std::to_string(nodeIndex) + "]";
@@ -105,6 +107,8 @@ class Instancer {
       src_.CheckIndex(n.camera, src_.m.cameras, name + ".camera");
       AddCamera(n.camera, world, name);
     }
+    if (int light = NodeLight(src_, nodeIndex); light != -1)
+      scene_.lights.push_back(PlaceLight(src_, light, world, name));
     if (n.mesh != -1) {
       src_.CheckIndex(n.mesh, src_.m.meshes, name + ".mesh");
       // A mirroring transform (negative determinant) flips the winding; swap two

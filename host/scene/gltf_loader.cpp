@@ -9,6 +9,7 @@
 #include "scene/external_uris.h"
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_instancing.h"
+#include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_meshes.h"
 #include "scene/gltf_schema.h"
@@ -94,8 +95,6 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   for (const auto& mesh : src.m.meshes)
     for (const auto& p : mesh.primitives) morph |= !p.targets.empty();
   if (morph) ig.push_back("morph targets: the base mesh is rendered");
-  if (!src.m.lights.empty())
-    ig.push_back(std::to_string(src.m.lights.size()) + " KHR_lights_punctual light(s): only emissive triangles emit");
   for (const std::string& ext : src.m.extensionsUsed)
     if (ext != "KHR_materials_emissive_strength" && ext != "KHR_lights_punctual" && ext != "KHR_mesh_quantization")
       ig.push_back("extension " + ext);
@@ -114,6 +113,7 @@ void BuildScene(const GltfSource& src, Scene& scene, MemoryBudget& budget) {
   std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
   for (size_t i = 0; i < src.m.meshes.size(); ++i) meshes[i] = DecodeMesh(src, int(i), defaultMaterial, scene.warnings);
   CheckCameras(src);
+  CheckLights(src);
   InstantiateScene(src, parents, meshes, scene);
   if (scene.triangles.empty()) src.Fail("the scene contains no triangles to render");
   NoteIgnoredFeatures(src, scene);
