@@ -47,6 +47,7 @@ layout(constant_id = 0) const uint kSceneHasLights = 1u;
 #define VKPT_LIGHT(i) FetchLight(i)
 #define VKPT_LIGHT_CDF(i) FetchLightCdf(i)
 #define VKPT_GGX_ALBEDO_PAIR(k) FetchGgxAlbedoPair(k)
+#define VKPT_SHADING(i) FetchShading(i)
 
 #include "traverse.glsl"
 

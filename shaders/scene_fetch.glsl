@@ -1,6 +1,6 @@
-// The scene for the shaders: triangles, BVH nodes, materials and lights read from
-// uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per struct, the std430
-// layouts of shared/layout.h byte for byte).
+// The scene for the shaders: triangles, BVH nodes, materials, lights and shading
+// normals read from uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per
+// struct, the std430 layouts of shared/layout.h byte for byte).
 //
 // Why texels and not storage-buffer structs: lavapipe (Mesa 22.3) has no gathers for
 // either. It reads a 16-byte texel lane by lane — eight scalar loads and a transpose,
@@ -18,6 +18,7 @@ layout(binding = kBindingNodes) uniform usamplerBuffer nodeTexels;
 layout(binding = kBindingMaterials) uniform usamplerBuffer materialTexels;
 layout(binding = kBindingLights) uniform usamplerBuffer lightTexels;
 layout(binding = kBindingGgxAlbedo) uniform usamplerBuffer ggxAlbedoTexels;
+layout(binding = kBindingShading) uniform usamplerBuffer shadingTexels;
 
 BvhNode FetchNode(uint i) {
   uvec4 a = texelFetch(nodeTexels, int(kTexelsPerNode * i));
@@ -89,6 +90,17 @@ float FetchLightCdf(uint i) { return uintBitsToFloat(texelFetch(lightTexels, int
 vec2 FetchGgxAlbedoPair(uint k) {
   uvec4 t = texelFetch(ggxAlbedoTexels, int(k >> 1u));
   return uintBitsToFloat((k & 1u) == 0u ? t.xy : t.zw);
+}
+
+// i: a Triangle's sourceIndex (the triangle's index in the Scene).
+TriangleShading FetchShading(uint i) {
+  uvec4 a = texelFetch(shadingTexels, int(kTexelsPerShading * i));
+  TriangleShading s;
+  s.n0 = a.x;
+  s.n1 = a.y;
+  s.n2 = a.z;
+  s.flags = a.w;
+  return s;
 }
 
 #endif

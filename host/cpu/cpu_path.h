@@ -12,6 +12,7 @@
 #define VKPT_MATERIAL(i) scene.materials[i]
 #define VKPT_LIGHT(i) scene.lights[i]
 #define VKPT_LIGHT_CDF(i) scene.lights[i].cdf
+#define VKPT_SHADING(i) scene.shading[i]
 
 namespace vkpt::shader {
 

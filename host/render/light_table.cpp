@@ -24,9 +24,35 @@ void SetDistribution(const std::vector<double>& power, std::vector<shader::Light
 
 }  // namespace
 
-void BuildLightTable(size_t sceneTriangles, RenderScene& rs) {
+shader::Light PunctualLightEntry(const PunctualLight& p) {
+  shader::Light l{};
+  l.position = p.position;
+  l.direction = p.direction;
+  l.radiance = p.intensity;
+  l.extent = p.range;
+  l.cosInner = p.cosInner;
+  l.cosOuter = p.cosOuter;
+  l.triangle = shader::kInvalidIndex;
+  switch (p.type) {
+    case PunctualLight::Type::kPoint: l.type = shader::kLightPoint; break;
+    case PunctualLight::Type::kSpot: l.type = shader::kLightSpot; break;
+    case PunctualLight::Type::kDirectional: l.type = shader::kLightDirectional; break;
+  }
+  return l;
+}
+
+double PunctualPower(const shader::Light& l, double sceneRadius) {
+  double lum = shader::Luminance(l.radiance);
+  switch (l.type) {
+    case shader::kLightPoint: return 4.0 * shader::kPi * lum;
+    case shader::kLightSpot: return 2.0 * shader::kPi * (1.0 - 0.5 * (l.cosInner + l.cosOuter)) * lum;
+    default: return shader::kPi * sceneRadius * sceneRadius * lum;
+  }
+}
+
+void BuildLightTable(const Scene& scene, RenderScene& rs) {
   std::vector<double> power;
-  std::vector<uint32_t> lightOfSource(sceneTriangles, shader::kInvalidIndex);
+  std::vector<uint32_t> lightOfSource(scene.triangles.size(), shader::kInvalidIndex);
   for (uint32_t i = 0; i < rs.triangles.size(); ++i) {
     shader::Triangle& t = rs.triangles[i];
     t.light = lightOfSource[t.sourceIndex];
@@ -46,6 +72,14 @@ void BuildLightTable(size_t sceneTriangles, RenderScene& rs) {
     t.light = lightOfSource[t.sourceIndex] = uint32_t(rs.lights.size());
     rs.lights.push_back(l);
     power.push_back(shader::kPi * area * lum * (twoSided ? 2.0 : 1.0));
+  }
+  const double sceneRadius = 0.5 * glm::length(glm::dvec3(scene.bounds.hi - scene.bounds.lo));
+  for (const PunctualLight& p : scene.lights) {
+    shader::Light l = PunctualLightEntry(p);
+    double phi = PunctualPower(l, sceneRadius);
+    if (!(phi > 0.0)) continue;  // black, or a spot of zero cone: it lights nothing
+    rs.lights.push_back(l);
+    power.push_back(phi);
   }
   rs.totalEmittedPower = 0.0;
   for (double p : power) rs.totalEmittedPower += p;

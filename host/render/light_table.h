@@ -7,9 +7,12 @@
 namespace vkpt {
 
 // Fills rs.lights from the emissive triangles of rs.triangles (one entry per scene
-// triangle: spatial-split copies are one light) and sets each triangle's `light`.
-// Power estimates: a triangle emits π · area · luminance(Le), twice that when it is
-// two-sided (pbrt-v4's DiffuseAreaLight::Phi).
-void BuildLightTable(size_t sceneTriangles, RenderScene& rs);
+// triangle: spatial-split copies are one light) and the scene's punctual lights, and sets
+// each triangle's `light`. Power estimates (pbrt-v4's Light::Phi), in luminance:
+//   triangle     π · area · Le, twice that when two-sided
+//   point        4π · I
+//   spot         2π · (1 − (cos inner + cos outer)/2) · I
+//   directional  π · R² · E, R the radius of the scene's bounding sphere
+void BuildLightTable(const Scene& scene, RenderScene& rs);
 
 }  // namespace vkpt

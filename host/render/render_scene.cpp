@@ -3,8 +3,10 @@
 #include <cmath>
 
 #include "render/light_table.h"
+#include "render/octahedral.h"
 #include "shared/sampling.h"
 #include "util/error.h"
+#include "util/parallel.h"
 
 namespace vkpt {
 
@@ -70,6 +72,26 @@ std::vector<shader::Triangle> LeafOrderTriangles(const Scene& scene, const std::
   return triangles;
 }
 
+// The scene's vertex normals, octahedrally encoded (shared/shading_normal.h); triangles
+// without them stay flat (all zero). Encoding tries four candidates per normal, which
+// on 10 M triangles is worth the threads.
+std::vector<shader::TriangleShading> TriangleShadings(const Scene& scene, unsigned threads) {
+  if (!scene.normals.empty() && scene.normals.size() != scene.triangles.size())
+    throw Error(scene.path + ": " + std::to_string(scene.normals.size()) + " vertex normal triples for " +
+                std::to_string(scene.triangles.size()) + " triangles");
+  std::vector<shader::TriangleShading> shading(scene.triangles.size(), shader::TriangleShading{0, 0, 0, 0});
+  ParallelFor(
+      scene.normals.size(), ThreadCount(threads),
+      [&](size_t i) {
+        const VertexNormals& n = scene.normals[i];
+        if (n.Present())
+          shading[i] = {EncodeOctahedral(n.n0), EncodeOctahedral(n.n1), EncodeOctahedral(n.n2),
+                        shader::kShadingHasNormals};
+      },
+      4096);
+  return shading;
+}
+
 }  // namespace
 
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {
@@ -85,7 +107,8 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   rs.materials = scene.materials;
   rs.triangles = LeafOrderTriangles(scene, bvh.primOrder, in.kept);
   if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
-  BuildLightTable(scene.triangles.size(), rs);
+  BuildLightTable(scene, rs);
+  rs.shading = TriangleShadings(scene, options.threads);
   return rs;
 }
 

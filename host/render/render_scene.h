@@ -1,7 +1,8 @@
 // What a renderer consumes: the Scene's triangles in BVH leaf order as shader::Triangle,
 // the BVH in two layouts (flattened skip links for the GPU, child pairs for the CPU),
-// materials and the light table for light sampling. The shader-layout vectors are
-// uploaded verbatim by the Vulkan backend; the CPU reference reads them directly.
+// materials, the light table for light sampling and per-triangle shading normals. The
+// shader-layout vectors are uploaded verbatim by the Vulkan backend; the CPU reference
+// reads them directly.
 #pragma once
 
 #include <vector>
@@ -20,6 +21,9 @@ struct RenderScene {
   BvhPairLayout pairLayout;  // the first copy of `nodes`, for the CPU tracer (if asked for)
   std::vector<shader::Material> materials;
   std::vector<shader::Light> lights;  // empty: the scene is dark (render/light_table.h)
+  // One per Scene triangle, degenerate ones included, so that Triangle::sourceIndex
+  // indexes it directly (and spatial-split copies of a triangle share it).
+  std::vector<shader::TriangleShading> shading;
   BvhStats bvhStats;
   uint32_t degenerateTriangles = 0;  // dropped: zero area (see IsDegenerate)
   double totalEmittedPower = 0.0;  // Σ of the lights' power estimates

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+
+#include "scene/gltf_lights.h"
 
 namespace vkpt {
 namespace {
@@ -95,7 +98,7 @@ class Instancer {
     }
   }
 
-  // Adds one node's camera and mesh; returns its world transform.
+  // Adds one node's camera, light and mesh; returns its world transform.
   glm::dmat4 InstantiateNode(int nodeIndex, const glm::dmat4& parent) {
     const tinygltf::Node& n = src_.m.nodes[nodeIndex];
     std::string name = "nodes[" + std::to_string(nodeIndex) + "]";
@@ -104,11 +107,15 @@ class Instancer {
       src_.CheckIndex(n.camera, src_.m.cameras, name + ".camera");
       AddCamera(n.camera, world, name);
     }
+    if (int light = NodeLight(src_, nodeIndex); light != -1)
+      scene_.lights.push_back(PlaceLight(src_, light, world, name));
     if (n.mesh != -1) {
       src_.CheckIndex(n.mesh, src_.m.meshes, name + ".mesh");
       // A mirroring transform (negative determinant) flips the winding; swap two
       // vertices so the front face stays the one the author meant (glTF spec §3.7.4).
       bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+      // Normals stay perpendicular to the surface under the inverse transpose.
+      const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(world));
       for (const DecodedPrimitive& prim : meshes_[n.mesh]) {
         std::vector<glm::vec3> p(prim.positions.size());
         for (size_t v = 0; v < p.size(); ++v) {
@@ -118,17 +125,48 @@ class Instancer {
             src_.Fail(name + ": transformed position is not finite (mesh " + std::to_string(n.mesh) + ")");
           p[v] = glm::vec3(w);
         }
+        std::vector<glm::vec3> nw(prim.normals.size());
+        for (size_t v = 0; v < nw.size(); ++v) nw[v] = WorldNormal(normalMatrix, prim.normals[v]);
         for (size_t k = 0; k < prim.indices.size(); k += 3) {
-          SceneTriangle t{p[prim.indices[k]], p[prim.indices[k + 1]], p[prim.indices[k + 2]], prim.material};
-          if (mirrored) std::swap(t.v1, t.v2);
-          scene_.bounds.Extend(t.v0);
-          scene_.bounds.Extend(t.v1);
-          scene_.bounds.Extend(t.v2);
-          scene_.triangles.push_back(t);
+          const uint32_t i0 = prim.indices[k], i1 = prim.indices[k + 1], i2 = prim.indices[k + 2];
+          SceneTriangle t{p[i0], p[i1], p[i2], prim.material};
+          VertexNormals vn;
+          if (!nw.empty()) vn = {nw[i0], nw[i1], nw[i2]};
+          if (mirrored) {
+            std::swap(t.v1, t.v2);
+            std::swap(vn.n1, vn.n2);
+          }
+          AddTriangle(t, vn);
         }
       }
     }
     return world;
+  }
+
+  // A triangle with any vertex normal that did not survive its transform is shaded flat:
+  // a normal that vanishes or overflows (a singular or extreme scale) has no direction
+  // left to interpolate, but the geometry is still fine.
+  void AddTriangle(const SceneTriangle& t, VertexNormals vn) {
+    const glm::vec3 zero(0.0f);
+    if (vn.n0 == zero || vn.n1 == zero || vn.n2 == zero) vn = VertexNormals{};
+    // The parallel array starts with the first triangle that has normals, flat entries
+    // filling in for the triangles before it.
+    if (vn.Present() || !scene_.normals.empty()) {
+      scene_.normals.resize(scene_.triangles.size());
+      scene_.normals.push_back(vn);
+    }
+    scene_.bounds.Extend(t.v0);
+    scene_.bounds.Extend(t.v1);
+    scene_.bounds.Extend(t.v2);
+    scene_.triangles.push_back(t);
+  }
+
+  // The unit world-space normal, or zero when the transform leaves it no direction.
+  static glm::vec3 WorldNormal(const glm::dmat3& normalMatrix, const glm::vec3& n) {
+    glm::dvec3 w = normalMatrix * glm::dvec3(n);
+    double len = glm::length(w);
+    if (!(len > 0.0) || !std::isfinite(len)) return glm::vec3(0.0f);
+    return glm::vec3(w / len);
   }
 
   const GltfSource& src_;

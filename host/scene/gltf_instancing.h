@@ -1,6 +1,7 @@
 // The scene graph flattened (glTF 2.0 spec §3.5): every node of the rendered scene
 // with its world transform (TRS or matrix, parent × child), its mesh's triangles moved
-// to world space — winding kept where a transform mirrors — and its camera.
+// to world space — winding kept where a transform mirrors, normals by the inverse
+// transpose — its camera and its light.
 #pragma once
 
 #include <cstdint>
@@ -19,7 +20,7 @@ std::vector<int> SceneRoots(const GltfSource& src, const std::vector<int>& paren
 // How many times the scene under `roots` instantiates each mesh.
 std::vector<uint64_t> MeshInstances(const GltfSource& src, const std::vector<int>& roots);
 
-// Adds the world-space triangles and cameras of the scene to `scene`. Iterative: a
+// Adds the world-space triangles, cameras and lights of the scene to `scene`. Iterative: a
 // hierarchy thousands of levels deep must not overflow the call stack.
 void InstantiateScene(const GltfSource& src, const std::vector<int>& parents,
                       const std::vector<std::vector<DecodedPrimitive>>& meshes, Scene& scene);

@@ -9,6 +9,7 @@
 #include "scene/external_uris.h"
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_instancing.h"
+#include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_meshes.h"
 #include "scene/gltf_schema.h"
@@ -30,8 +31,9 @@ bool KeepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*,
 
 // Host memory per triangle of the instanced scene, from the loader's arrays through the
 // BVH builds (both trees with --splits auto) to the renderer's arrays and their device
-// copies: ~320 bytes measured on 1 M triangles (docs/design-notes.md), with a margin.
-constexpr uint64_t kBytesPerTriangle = 400;
+// copies: up to ~490 bytes measured on 1 M triangles with vertex normals
+// (docs/design-notes.md), with a margin.
+constexpr uint64_t kBytesPerTriangle = 560;
 // Decoding an accessor holds each component as a double, then as a float.
 constexpr uint64_t kBytesPerDecodedComponent = 12;
 
@@ -52,13 +54,15 @@ uint64_t DecodedBytes(const GltfSource& src, int accessor) {
 }
 
 // The memory the meshes will take, counted before any is decoded: each primitive's
-// positions and indices, and every triangle of every instance through to the renderer.
+// positions, normals and indices, and every triangle of every instance through to the
+// renderer.
 void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, MemoryBudget& budget) {
   for (size_t i = 0; i < src.m.meshes.size(); ++i) {
     uint64_t decoded = 0, triangles = 0;
     for (const tinygltf::Primitive& prim : src.m.meshes[i].primitives) {
-      auto pos = prim.attributes.find("POSITION");
-      decoded += DecodedBytes(src, prim.indices) + (pos == prim.attributes.end() ? 0 : DecodedBytes(src, pos->second));
+      decoded += DecodedBytes(src, prim.indices);
+      for (const char* attr : {"POSITION", "NORMAL"})
+        if (auto it = prim.attributes.find(attr); it != prim.attributes.end()) decoded += DecodedBytes(src, it->second);
       triangles += TriangleCount(src, prim);
     }
     std::string name = "meshes[" + std::to_string(i) + "]";
@@ -97,8 +101,6 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   for (const auto& mesh : src.m.meshes)
     for (const auto& p : mesh.primitives) morph |= !p.targets.empty();
   if (morph) ig.push_back("morph targets: the base mesh is rendered");
-  if (!src.m.lights.empty())
-    ig.push_back(std::to_string(src.m.lights.size()) + " KHR_lights_punctual light(s): only emissive triangles emit");
   for (const std::string& ext : src.m.extensionsUsed)
     if (!IsRenderedExtension(ext)) ig.push_back("extension " + ext);
 }
@@ -116,6 +118,7 @@ void BuildScene(const GltfSource& src, Scene& scene, MemoryBudget& budget) {
   std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
   for (size_t i = 0; i < src.m.meshes.size(); ++i) meshes[i] = DecodeMesh(src, int(i), defaultMaterial, scene.warnings);
   CheckCameras(src);
+  CheckLights(src);
   InstantiateScene(src, parents, meshes, scene);
   if (scene.triangles.empty()) src.Fail("the scene contains no triangles to render");
   NoteIgnoredFeatures(src, scene);

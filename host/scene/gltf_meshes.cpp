@@ -59,6 +59,25 @@ std::vector<uint32_t> TriangleList(const GltfSource& src, const tinygltf::Primit
   }
 }
 
+// The elements of a checked VEC3 attribute (`attr`: "POSITION", "NORMAL") as floats.
+// Components beyond ±1e30 count as non-finite too: a node transform could take them
+// past float range unnoticed.
+std::vector<glm::vec3> ReadFiniteVec3(const GltfSource& src, int accessor, const std::string& name,
+                                      const std::string& attr, const char* noun) {
+  std::vector<double> raw = ReadAccessor(src, accessor);
+  std::vector<glm::vec3> out(raw.size() / 3);
+  for (size_t v = 0; v < out.size(); ++v) {
+    for (int c = 0; c < 3; ++c) {
+      double x = raw[v * 3 + c];
+      if (!std::isfinite(x) || std::abs(x) > 1e30)
+        src.Fail(name + ".attributes." + attr + " (accessors[" + std::to_string(accessor) + "]) element " +
+                 std::to_string(v) + " is not a finite " + noun);
+      out[v][c] = float(x);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial,
@@ -69,26 +88,17 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
     const tinygltf::Primitive& prim = mesh.primitives[p];
     std::string name = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(p) + "]";
     CheckPrimitive(src, prim, name);
-    auto pos = prim.attributes.find("POSITION");
-    const tinygltf::Accessor& pa = src.m.accessors[pos->second];
-    std::string pan = "accessors[" + std::to_string(pos->second) + "]";
     if (prim.mode < TINYGLTF_MODE_TRIANGLES) {
       warnings.push_back(name + ": points/lines primitive skipped (only triangles are rendered)");
       continue;
     }
     DecodedPrimitive out;
-    std::vector<double> raw = ReadAccessor(src, pos->second);
-    out.positions.resize(pa.count);
-    for (size_t v = 0; v < pa.count; ++v) {
-      for (int c = 0; c < 3; ++c) {
-        double x = raw[v * 3 + c];
-        if (!std::isfinite(x) || std::abs(x) > 1e30)
-          src.Fail(name + ".attributes.POSITION (" + pan + ") element " + std::to_string(v) +
-                   " is not a finite position");
-        out.positions[v][c] = float(x);
-      }
-    }
-    out.indices = TriangleList(src, prim, pa.count, name);
+    out.positions = ReadFiniteVec3(src, prim.attributes.at("POSITION"), name, "POSITION", "position");
+    // Not necessarily unit length (the spec asks for it; files do not always comply):
+    // the instancer normalizes them after the transform anyway.
+    if (auto nrm = prim.attributes.find("NORMAL"); nrm != prim.attributes.end())
+      out.normals = ReadFiniteVec3(src, nrm->second, name, "NORMAL", "normal");
+    out.indices = TriangleList(src, prim, out.positions.size(), name);
     out.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial;
     decoded.push_back(std::move(out));
   }

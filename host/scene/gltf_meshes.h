@@ -1,5 +1,6 @@
-// glTF mesh primitives (spec §3.7.2) as the renderer wants them: object-space positions
-// and a triangle list; strips and fans are converted, points and lines skipped.
+// glTF mesh primitives (spec §3.7.2) as the renderer wants them: object-space positions,
+// vertex normals if given, and a triangle list; strips and fans are converted, points
+// and lines skipped.
 #pragma once
 
 #include <cstdint>
@@ -14,11 +15,12 @@ namespace vkpt {
 
 struct DecodedPrimitive {
   std::vector<glm::vec3> positions;  // object space
+  std::vector<glm::vec3> normals;    // object space, one per position; empty without NORMAL
   std::vector<uint32_t> indices;     // triangle list, 3 per triangle
   uint32_t material;
 };
 
-// Checks and decodes the triangle primitives of meshes[meshIndex]: positions finite,
+// Checks and decodes the triangle primitives of meshes[meshIndex]: positions and normals finite,
 // indices in range and no primitive-restart values. Points and lines add a warning.
 std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial,
                                          std::vector<std::string>& warnings);

@@ -131,10 +131,19 @@ void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, cons
   std::string pan = "accessors[" + std::to_string(pos->second) + "]";
   if (pa.type != TINYGLTF_TYPE_VEC3 || (pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized))
     src.Fail(name + ".attributes.POSITION (" + pan + ") must be a FLOAT VEC3 accessor");
+  if (auto nrm = prim.attributes.find("NORMAL"); nrm != prim.attributes.end()) {
+    // KHR_mesh_quantization allows normalized BYTE and SHORT normals besides FLOAT.
+    const tinygltf::Accessor& na = src.m.accessors[nrm->second];
+    const bool snorm = na.normalized && (na.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                                         na.componentType == TINYGLTF_COMPONENT_TYPE_SHORT);
+    if (na.type != TINYGLTF_TYPE_VEC3 || !(na.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || (quantized && snorm)))
+      src.Fail(name + ".attributes.NORMAL (accessors[" + std::to_string(nrm->second) +
+               "]) must be a FLOAT VEC3 accessor" + (quantized ? " or a normalized BYTE/SHORT VEC3 one" : ""));
+  }
   for (const auto& [attr, acc] : prim.attributes)
     if (src.m.accessors[acc].count != pa.count)
-      src.Fail(name + ": attribute " + attr + " has " + std::to_string(src.m.accessors[acc].count) +
-               " elements but POSITION has " + std::to_string(pa.count));
+      src.Fail(name + ".attributes." + attr + " (accessors[" + std::to_string(acc) + "]) has " +
+               std::to_string(src.m.accessors[acc].count) + " elements but POSITION has " + std::to_string(pa.count));
 }
 
 }  // namespace vkpt

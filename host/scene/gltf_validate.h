@@ -21,8 +21,8 @@ void CheckCameras(const GltfSource& src);
 // forest), checked without recursion so that a loop cannot overflow the stack. Returns
 // each node's parent, -1 for a root.
 std::vector<int> CheckNodeGraph(const GltfSource& src);
-// A primitive's mode, material and attribute references, POSITION's type (FLOAT VEC3,
-// or quantized with KHR_mesh_quantization) and equal attribute counts.
+// A primitive's mode, material and attribute references, POSITION's and NORMAL's types
+// (FLOAT VEC3, or quantized with KHR_mesh_quantization) and equal attribute counts.
 void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name);
 
 }  // namespace vkpt

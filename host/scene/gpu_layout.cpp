@@ -30,6 +30,10 @@ static_assert(offsetof(Light, direction) == 16 && offsetof(Light, type) == 28);
 static_assert(offsetof(Light, radiance) == 32 && offsetof(Light, extent) == 44);
 static_assert(offsetof(Light, cdf) == 48 && offsetof(Light, cosInner) == 60);
 
+static_assert(sizeof(TriangleShading) == 16 * kTexelsPerShading);
+static_assert(offsetof(TriangleShading, n1) == 4 && offsetof(TriangleShading, n2) == 8);
+static_assert(offsetof(TriangleShading, flags) == 12);
+
 static_assert(sizeof(RayQuery) == 32);
 static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(BvhNode) == 16 * kTexelsPerNode);
 static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Light) == 16 * kTexelsPerLight);

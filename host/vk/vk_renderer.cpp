@@ -160,6 +160,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
       lights_(UploadArray<shader::Light>(ctx, scene.lights, "lights")),
       ggxAlbedo_(UploadArray<float>(ctx, shader::kGgxAlbedo, "GGX albedo table")),
+      shading_(UploadArray<shader::TriangleShading>(ctx, scene.shading, "shading normals")),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
@@ -172,6 +173,7 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             TexelBinding(shader::kBindingMaterials, materials_),
                             TexelBinding(shader::kBindingLights, lights_),
                             TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
+                            TexelBinding(shader::kBindingShading, shading_),
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},

@@ -46,7 +46,7 @@ class GpuRenderer {
   const uint32_t* spirv_;
   size_t spirvBytes_;
   // The scene is read as texel buffers (shaders/scene_fetch.glsl says why).
-  TexelBuffer triangles_, nodes_, materials_, lights_, ggxAlbedo_;
+  TexelBuffer triangles_, nodes_, materials_, lights_, ggxAlbedo_, shading_;
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 

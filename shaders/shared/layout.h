@@ -24,6 +24,7 @@ const uint kBindingRays = 7u;       // readonly buffer RayQuery[]
 const uint kBindingHits = 8u;       // buffer HitRecord[]
 // pathtrace.comp again:
 const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample of a SIMD group
+const uint kBindingShading = 10u;   // texel buffer of TriangleShading, indexed by Triangle.sourceIndex
 const uint kBindingGgxAlbedo = 13u; // texel buffer of the GGX albedo table (shared/ggx_albedo.h)
 
 // Grid points per axis of the GGX albedo table (shared/ggx_albedo.h).
@@ -79,6 +80,17 @@ struct Material {
   uint pad1;
 };
 
+const uint kShadingHasNormals = 1u;
+
+// Per scene triangle (indexed by Triangle::sourceIndex, so spatial-split copies share it):
+// vertex normals as octahedral unit vectors, two snorm16 each (Cigolle et al. 2014).
+struct TriangleShading {
+  uint n0;
+  uint n1;
+  uint n2;
+  uint flags;  // kShadingHasNormals; without it n0..n2 are 0 and the triangle is flat
+};
+
 // Light types (shared/lights.h).
 const uint kLightTriangle = 0u;          // emits from its front face
 const uint kLightTwoSidedTriangle = 1u;  // emits from both faces (double-sided material)
@@ -108,6 +120,7 @@ const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
 const uint kTexelsPerMaterial = 4u;
 const uint kTexelsPerLight = 4u;
+const uint kTexelsPerShading = 1u;
 
 // A ray for the trace-only kernel: closest hit along origin + t·dir, t ∈ (0, tMax).
 struct RayQuery {

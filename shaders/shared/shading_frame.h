@@ -1,11 +1,13 @@
 // What the estimator knows about a surface point a ray has hit: position, geometric
 // normal, the shading frame the BSDF works in, the material and whether it emits.
+// Scene access as in path.h, plus VKPT_SHADING(i): the TriangleShading of scene triangle i.
 #ifndef VKPT_SHADING_FRAME_H
 #define VKPT_SHADING_FRAME_H
 #include "prelude.h"
 #include "layout.h"
 #include "sampling.h"
 #include "estimator.h"
+#include "shading_normal.h"
 
 VKPT_BEGIN_NAMESPACE
 
@@ -18,8 +20,27 @@ struct SurfaceHit {
   Material material;
 };
 
-// Surfaces scatter on both sides: the geometric normal is turned to face the ray.
-// One-sided materials emit from their front face only (glTF's winding).
+// The shading normal ns (interpolated vertex normals, on the side of ng) adapted so that
+// the mirror direction of ωo lies above the geometric surface (Keller et al. 2017, "The
+// Iray Light Transport Simulation and Rendering System", arXiv:1705.01263): where it would not, ns
+// is bent towards ng until the reflection r of ωo sits at cos = kMinReflectionCos above
+// the surface, ns' = normalize(ωo + r'). Without it, glossy surfaces whose normals bend
+// away from the viewer (coarse spheres near their silhouettes) sample mostly directions
+// below the surface and turn black; those directions are still refused (path.h), so no
+// light leaks through the geometry.
+const float kMinReflectionCos = 0.01f;
+
+VKPT_FN vec3 AdaptShadingNormal(vec3 ns, vec3 ng, vec3 wo) {
+  vec3 r = 2.0f * dot(wo, ns) * ns - wo;
+  float h = dot(r, ng);
+  if (h >= kMinReflectionCos) return ns;
+  vec3 lifted = normalize(r + (kMinReflectionCos - h) * ng);
+  return normalize(wo + lifted);
+}
+
+// Surfaces scatter on both sides: the geometric normal is turned to face the ray, and
+// the shading normal with it. One-sided materials emit from their front face only
+// (glTF's winding).
 VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
   Triangle tri = VKPT_TRIANGLE(hit.triangle);
   SurfaceHit sh;
@@ -30,7 +51,14 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
   sh.ng = frontFace ? ng : -ng;
   sh.emits = frontFace || (sh.material.flags & kMaterialDoubleSided) != 0u;
   sh.p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
-  sh.frame = FrameFromNormal(sh.ng);
+  vec3 ns = sh.ng;
+  TriangleShading shading = VKPT_SHADING(tri.sourceIndex);
+  if ((shading.flags & kShadingHasNormals) != 0u) {
+    vec3 n = InterpolatedNormal(shading, hit.b1, hit.b2);
+    // Vertex normals that cancel out (or NaN from them) leave the flat normal.
+    if (abs(dot(n, n) - 1.0f) < 1e-3f) ns = frontFace ? n : -n;
+  }
+  sh.frame = FrameFromNormal(AdaptShadingNormal(ns, sh.ng, -ray.dir));
   return sh;
 }
 
