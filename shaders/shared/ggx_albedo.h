@@ -1,8 +1,8 @@
 // Directional albedo of the GGX lobe (microfacet.h), for energy compensation in bsdf.h.
 //
 // kGgxAlbedo (ggx_albedo_table.h, written by scripts/make_ggx_albedo_table.cpp) holds,
-// on a kGgxAlbedoSize² grid over cos θ ∈ [0,1] (rows) and roughness = sqrt(α) ∈ [0,1]
-// (columns), the pair
+// on a kGgxAlbedoSize² grid over sqrt(cos θ) ∈ [0,1] (rows: E changes fastest at grazing
+// angles) and roughness = sqrt(α) ∈ [0,1] (columns), the pair
 //   E(μ)  = ∫ f cos θi dωi              the lobe's albedo with F = 1, and
 //   E5(μ) = ∫ (1 − ωo·h)⁵ f cos θi dωi   its Schlick weight,
 // so that the albedo of the lobe under Schlick's Fresnel F0 + (F90 − F0)(1 − ωo·h)⁵ is
@@ -32,7 +32,7 @@ VKPT_BEGIN_NAMESPACE
 // result indexes a texel fetch.
 VKPT_FN vec2 GgxAlbedo(float mu, float alpha) {
   float n = float(kGgxAlbedoSize - 1u);
-  float x = clamp(mu, 0.0f, 1.0f) * n;
+  float x = sqrt(clamp(mu, 0.0f, 1.0f)) * n;
   float y = clamp(sqrt(alpha), 0.0f, 1.0f) * n;
   uint x0 = uint(clamp(int(x), 0, int(kGgxAlbedoSize) - 2));
   uint y0 = uint(clamp(int(y), 0, int(kGgxAlbedoSize) - 2));
