@@ -91,11 +91,11 @@ int main() {
       "// The GGX albedo table that shared/ggx_albedo.h interpolates: the pair (E, E5) at\n"
       "// [2 (i * kGgxAlbedoSize + j)] for cos θ = (i / %d)² and roughness j / %d, then the pairs\n"
       "// (E_avg, E5_avg) per roughness column at [2 (kGgxAlbedoSize² + j)].\n"
-      "#pragma once\n\nnamespace vkpt::shader {\n\ninline constexpr float kGgxAlbedo[%zu] = {\n",
+      "#pragma once\n\nnamespace vkpt::shader {\n\n// clang-format off\ninline constexpr float kGgxAlbedo[%zu] = {\n",
       n - 1, n - 1, 2 * table.size());
   for (size_t k = 0; k < table.size(); ++k)
     std::printf("%s%.7ff, %.7ff%s", k % 4 == 0 ? "    " : " ", table[k].e, table[k].e5,
                 k % 4 == 3 || k + 1 == table.size() ? ",\n" : ",");
-  std::printf("};\n\n}  // namespace vkpt::shader\n");
+  std::printf("};\n// clang-format on\n\n}  // namespace vkpt::shader\n");
   return 0;
 }

@@ -129,7 +129,8 @@ TEST(Sampling, LightSelectionFollowsPower) {
     expected.push_back(kSamples * double(rs.lights[k].pmf));
   }
   EXPECT_EQ(rs.lights.back().cdf, 1.0f);
-  for (uint32_t i = 0; i < kSamples; ++i) observed[PickLight(rs, uint32_t(rs.lights.size()), Random4(1u, i, 0u, 1u).x)] += 1.0;
+  for (uint32_t i = 0; i < kSamples; ++i)
+    observed[PickLight(rs, uint32_t(rs.lights.size()), Random4(1u, i, 0u, 1u).x)] += 1.0;
   double stat;
   int dof;
   double p = test::ChiSquareTest(observed, expected, &stat, &dof);

@@ -221,10 +221,11 @@ void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderRe
   if (bvh.rejectedSahCost > 0.0)
     std::snprintf(choice, sizeof choice, " (auto: %s splits' SAH cost was %.3f)", bvh.spatialSplits ? "object" : "spatial",
                   bvh.rejectedSahCost);
-  std::printf("  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %s splits%s, %u nodes, %u leaves, "
-              "depth %u, %u triangle references, SAH cost %.3f, built in %.2f ms\n",
-              scene.triangles.size(), rs.degenerateTriangles, rs.lights.size(), kind, choice, bvh.nodes, bvh.leaves,
-              bvh.depth, bvh.references, bvh.sahCost, bvh.buildMs);
+  std::printf(
+      "  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %s splits%s, %u nodes, %u leaves, "
+      "depth %u, %u triangle references, SAH cost %.3f, built in %.2f ms\n",
+      scene.triangles.size(), rs.degenerateTriangles, rs.lights.size(), kind, choice, bvh.nodes, bvh.leaves, bvh.depth,
+      bvh.references, bvh.sahCost, bvh.buildMs);
   if (r.nonFinite)
     std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.nonFinite);
   if (r.cutShort)

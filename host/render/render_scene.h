@@ -26,7 +26,7 @@ struct RenderScene {
   std::vector<shader::TriangleShading> shading;
   BvhStats bvhStats;
   uint32_t degenerateTriangles = 0;  // dropped: zero area (see IsDegenerate)
-  double totalEmittedPower = 0.0;  // Σ of the lights' power estimates
+  double totalEmittedPower = 0.0;    // Σ of the lights' power estimates
 };
 
 // A triangle whose edges are parallel to float precision has no area to hit or emit

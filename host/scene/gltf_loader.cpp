@@ -76,9 +76,12 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
 
 // Extensions whose every property vkpt renders.
 bool IsRenderedExtension(const std::string& ext) {
-  static const char* const kRendered[] = {"KHR_materials_emissive_strength", "KHR_materials_ior",
-                                          "KHR_materials_specular",          "KHR_materials_unlit",
-                                          "KHR_lights_punctual",             "KHR_mesh_quantization"};
+  static const char* const kRendered[] = {"KHR_materials_emissive_strength",
+                                          "KHR_materials_ior",
+                                          "KHR_materials_specular",
+                                          "KHR_materials_unlit",
+                                          "KHR_lights_punctual",
+                                          "KHR_mesh_quantization"};
   return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
 }
 

@@ -28,11 +28,11 @@
 // evaluates the same code whichever lobe it picked.
 #ifndef VKPT_BSDF_H
 #define VKPT_BSDF_H
-#include "prelude.h"
-#include "layout.h"
-#include "sampling.h"
-#include "microfacet.h"
 #include "ggx_albedo.h"
+#include "layout.h"
+#include "microfacet.h"
+#include "prelude.h"
+#include "sampling.h"
 
 VKPT_BEGIN_NAMESPACE
 
@@ -40,15 +40,15 @@ VKPT_BEGIN_NAMESPACE
 struct Bsdf {
   vec3 baseColor;
   float metallic;
-  vec3 f0;            // dielectric Schlick F0 (metals use baseColor)
-  float f90;          // dielectric Schlick F90 (= specular)
-  vec3 msWeight;      // (1 − m) Fms_d + m Fms_m: weight of f_ms
+  vec3 f0;        // dielectric Schlick F0 (metals use baseColor)
+  float f90;      // dielectric Schlick F90 (= specular)
+  vec3 msWeight;  // (1 − m) Fms_d + m Fms_m: weight of f_ms
   float alpha;
-  float albedoO;      // E(μo)
-  float couplingO;    // c(μo) for the diffuse base (0 for metals)
-  float invMsNorm;    // 1 / (π (1 − E_avg))
-  float pSpecular;    // probability of sampling the GGX lobe
-  float couplingF0;   // scalar layer albedo A(μ) = couplingF0 E + couplingE5 E5 + couplingMs
+  float albedoO;     // E(μo)
+  float couplingO;   // c(μo) for the diffuse base (0 for metals)
+  float invMsNorm;   // 1 / (π (1 − E_avg))
+  float pSpecular;   // probability of sampling the GGX lobe
+  float couplingF0;  // scalar layer albedo A(μ) = couplingF0 E + couplingE5 E5 + couplingMs
   float couplingE5;
   float couplingMs;
   float couplingNorm;  // 1 / sqrt(1 − A_avg)
@@ -56,8 +56,8 @@ struct Bsdf {
 
 struct BsdfSample {
   vec3 wi;
-  float pdf;     // solid-angle density of the mixture; 0: no sample (below the surface)
-  vec3 weight;   // f · cos θi / pdf
+  float pdf;    // solid-angle density of the mixture; 0: no sample (below the surface)
+  vec3 weight;  // f · cos θi / pdf
 };
 
 VKPT_FN vec3 SchlickFresnel(vec3 f0, vec3 f90, float cosTheta) {
@@ -116,8 +116,8 @@ VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
   vec3 h = normalize(wo + wi);
   float cosOH = dot(wo, h);
-  vec3 fresnel = mix(SchlickFresnel(b.f0, vec3(b.f90), cosOH), SchlickFresnel(b.baseColor, vec3(1.0f), cosOH),
-                     b.metallic);
+  vec3 fresnel =
+      mix(SchlickFresnel(b.f0, vec3(b.f90), cosOH), SchlickFresnel(b.baseColor, vec3(1.0f), cosOH), b.metallic);
   vec3 f = fresnel * (GgxD(h, b.alpha) * GgxVisibility(wo.z, wi.z, b.alpha));
   vec2 ei = GgxAlbedo(wi.z, b.alpha);
   f += b.msWeight * ((1.0f - b.albedoO) * (1.0f - ei.x) * b.invMsNorm);

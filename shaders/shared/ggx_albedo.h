@@ -15,8 +15,8 @@
 // shader with an 8,320-float constant array for minutes).
 #ifndef VKPT_GGX_ALBEDO_H
 #define VKPT_GGX_ALBEDO_H
-#include "prelude.h"
 #include "layout.h"
+#include "prelude.h"
 
 #ifdef __cplusplus
 #include "ggx_albedo_table.h"

@@ -25,7 +25,7 @@ const uint kBindingHits = 8u;       // buffer HitRecord[]
 // pathtrace.comp again:
 const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample of a SIMD group
 const uint kBindingShading = 10u;   // texel buffer of TriangleShading, indexed by Triangle.sourceIndex
-const uint kBindingGgxAlbedo = 13u; // texel buffer of the GGX albedo table (shared/ggx_albedo.h)
+const uint kBindingGgxAlbedo = 13u;  // texel buffer of the GGX albedo table (shared/ggx_albedo.h)
 
 // Grid points per axis of the GGX albedo table (shared/ggx_albedo.h).
 const uint kGgxAlbedoSize = 64u;
@@ -102,12 +102,12 @@ const uint kLightDirectional = 4u;
 // with probability pmf ∝ estimated power; cdf is the inclusive running sum (the last one
 // is exactly 1).
 struct Light {
-  vec3 position;  // point, spot: where it is
-  uint triangle;  // triangles: index into the leaf-ordered Triangle array
-  vec3 direction; // spot, directional: unit, the way light travels; triangles: unit front normal
-  uint type;      // kLight*
-  vec3 radiance;  // triangles: Le; point, spot: intensity I; directional: irradiance E
-  float extent;   // triangles: area; point, spot: range (0: unlimited)
+  vec3 position;   // point, spot: where it is
+  uint triangle;   // triangles: index into the leaf-ordered Triangle array
+  vec3 direction;  // spot, directional: unit, the way light travels; triangles: unit front normal
+  uint type;       // kLight*
+  vec3 radiance;   // triangles: Le; point, spot: intensity I; directional: irradiance E
+  float extent;    // triangles: area; point, spot: range (0: unlimited)
   float cdf;
   float pmf;
   float cosOuter;  // spot: cosines of the outer and inner cone angles

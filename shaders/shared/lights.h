@@ -11,20 +11,20 @@
 // Scene access (see path.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i).
 #ifndef VKPT_LIGHTS_H
 #define VKPT_LIGHTS_H
-#include "prelude.h"
-#include "layout.h"
-#include "sampling.h"
-#include "intersect.h"
 #include "estimator.h"
+#include "intersect.h"
+#include "layout.h"
+#include "prelude.h"
+#include "sampling.h"
 
 VKPT_BEGIN_NAMESPACE
 
 struct LightSample {
-  vec3 wi;          // unit direction from the shading point to the light
-  float pdf;        // solid-angle density, light choice included; for delta lights the choice's pmf
-  vec3 radiance;    // Li arriving along ωi (delta lights: I·falloff/r² or E, to divide by pdf alike)
-  bool delta;       // a point, spot or directional light: no BSDF sample can hit it
-  Ray shadowRay;    // must be unoccluded for t < shadowTMax
+  vec3 wi;        // unit direction from the shading point to the light
+  float pdf;      // solid-angle density, light choice included; for delta lights the choice's pmf
+  vec3 radiance;  // Li arriving along ωi (delta lights: I·falloff/r² or E, to divide by pdf alike)
+  bool delta;     // a point, spot or directional light: no BSDF sample can hit it
+  Ray shadowRay;  // must be unoccluded for t < shadowTMax
   float shadowTMax;
 };
 

@@ -17,14 +17,14 @@
 //   bool TraceOccluded(VKPT_SCENE_PARAM vec3 origin, vec3 dir, float tMax)
 #ifndef VKPT_PATH_H
 #define VKPT_PATH_H
-#include "prelude.h"
+#include "bsdf.h"
+#include "estimator.h"
+#include "intersect.h"
 #include "layout.h"
+#include "lights.h"
+#include "prelude.h"
 #include "rng.h"
 #include "sampling.h"
-#include "intersect.h"
-#include "estimator.h"
-#include "bsdf.h"
-#include "lights.h"
 #include "shading_frame.h"
 
 // A shader may define VKPT_LIGHT_SAMPLING as a specialization constant that is false
@@ -96,8 +96,8 @@ VKPT_FN vec3 WeightedEmission(VKPT_SCENE_PARAM PathState s, SurfaceHit sh, float
 
 // Next-event estimation at the vertex: samples a light and, if it can contribute, sets
 // the shadow ray and the MIS-weighted contribution it carries if unoccluded.
-VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s, SurfaceHit sh,
-                               Bsdf bsdf, vec3 wo, uint bounce) {
+VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s, SurfaceHit sh, Bsdf bsdf,
+                               vec3 wo, uint bounce) {
   vec2 ul = Sample2D(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
   LightSample ls = SampleLi(VKPT_SCENE_ARG params, sh.p, sh.ng, ul);
   // A light below the geometric surface cannot reach it, whatever the shading normal says.

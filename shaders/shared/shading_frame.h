@@ -3,10 +3,10 @@
 // Scene access as in path.h, plus VKPT_SHADING(i): the TriangleShading of scene triangle i.
 #ifndef VKPT_SHADING_FRAME_H
 #define VKPT_SHADING_FRAME_H
-#include "prelude.h"
-#include "layout.h"
-#include "sampling.h"
 #include "estimator.h"
+#include "layout.h"
+#include "prelude.h"
+#include "sampling.h"
 #include "shading_normal.h"
 
 VKPT_BEGIN_NAMESPACE
