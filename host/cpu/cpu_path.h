@@ -11,6 +11,8 @@
 #define VKPT_TRIANGLE(i) scene.triangles[i]
 #define VKPT_MATERIAL(i) scene.materials[i]
 #define VKPT_EMITTER(i) scene.emitters[i]
+#define VKPT_ENV_TEXEL(i) scene.environment.texels[i]
+#define VKPT_ENV_CDF(i) scene.environment.cdf[i]
 
 namespace vkpt::shader {
 
@@ -24,4 +26,5 @@ inline bool TraceOccluded(const RenderScene& scene, vec3 origin, vec3 dir, float
 
 }  // namespace vkpt::shader
 
+#include "shared/environment.h"
 #include "shared/path.h"

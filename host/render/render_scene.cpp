@@ -137,6 +137,7 @@ shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& came
   p.aspect = float(width) / float(height);
   p.orthographic = camera.orthographic ? 1u : 0u;
   p.tanHalfFovY = camera.orthographic ? camera.ymag : std::tan(0.5f * camera.yfov);
+  SetEnvironmentParams(p, scene.environment, 0.0f, 1.0f);
   return p;
 }
 

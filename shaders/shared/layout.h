@@ -24,6 +24,10 @@ const uint kBindingRays = 7u;       // readonly buffer RayQuery[]
 const uint kBindingHits = 8u;       // buffer HitRecord[]
 // pathtrace.comp again:
 const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample of a SIMD group
+// The environment map (shared/environment.h), both as RGBA32UI texel buffers; a 1-texel
+// dummy of each when there is none (FrameParams::envWidth == 0).
+const uint kBindingEnvRadiance = 11u;      // W·H texels, row-major from the top row: (RGB, 0)
+const uint kBindingEnvDistribution = 12u;  // W·H + H floats, 4 per texel: kEnvCdf* below
 
 // lavapipe ends a shader once its SIMD group has run 65535 loop passes in total
 // (traverse.glsl); pathtrace.comp keeps clear of it by a margin for the small loops not
@@ -90,6 +94,11 @@ const uint kTexelsPerNode = 2u;
 const uint kTexelsPerMaterial = 3u;
 const uint kTexelsPerEmitter = 1u;
 
+// The environment map's sampling distribution is one float array: the conditional CDF of
+// row r (inclusive running sums, the last exactly 1) at [r·W, r·W + W), then the marginal
+// CDF over the rows at [W·H, W·H + H). Four floats per texel on the GPU.
+const uint kEnvCdfsPerTexel = 4u;
+
 // A ray for the trace-only kernel: closest hit along origin + t·dir, t ∈ (0, tMax).
 struct RayQuery {
   vec3 origin;
@@ -132,6 +141,16 @@ struct FrameParams {
   uint tileRowStride; // GPU: workgroup row y renders tile row (y * stride) mod rows
   uint pad1;
   uint pad2;
+  // The environment map (shared/environment.h): envWidth == 0 means none, and rays that
+  // leave the scene see `background` instead.
+  uint envWidth;
+  uint envHeight;
+  float envIntensity;    // radiance scale (--env-intensity)
+  float envRotationCos;  // the map turned by α about +Y (--env-rotation): cos α, sin α
+  float envRotationSin;
+  uint pad3;  // std140 rounds the struct up to a multiple of 16 bytes
+  uint pad4;
+  uint pad5;
 };
 
 VKPT_END_NAMESPACE
