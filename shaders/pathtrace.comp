@@ -45,10 +45,14 @@ layout(constant_id = 0) const uint kSceneHasEmitters = 1u;
 #define VKPT_TRIANGLE(i) FetchTriangle(i)
 #define VKPT_MATERIAL(i) FetchMaterial(i)
 #define VKPT_EMITTER(i) FetchEmitter(i)
+#define VKPT_ENV_TEXEL(i) FetchEnvTexel(i)
+#define VKPT_ENV_CDF(i) FetchEnvCdf(i)
 
 #include "traverse.glsl"
 
 #include "shared/path.h"
+// Not called by path.h yet; included so that it compiles as GLSL on every build.
+#include "shared/environment.h"
 
 void main() {
   gNodeCount = params.nodeCount;

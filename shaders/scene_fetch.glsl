@@ -1,5 +1,5 @@
-// The scene for the shaders: triangles, BVH nodes, materials and emitters read from
-// uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per struct, the std430
+// The scene for the shaders: triangles, BVH nodes, materials, emitters and the environment
+// map read from uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per struct, the std430
 // layouts of shared/layout.h byte for byte).
 //
 // Why texels and not storage-buffer structs: lavapipe (Mesa 22.3) has no gathers for
@@ -17,6 +17,8 @@ layout(binding = kBindingTriangles) uniform usamplerBuffer triangleTexels;
 layout(binding = kBindingNodes) uniform usamplerBuffer nodeTexels;
 layout(binding = kBindingMaterials) uniform usamplerBuffer materialTexels;
 layout(binding = kBindingEmitters) uniform usamplerBuffer emitterTexels;
+layout(binding = kBindingEnvRadiance) uniform usamplerBuffer envRadianceTexels;
+layout(binding = kBindingEnvDistribution) uniform usamplerBuffer envDistributionTexels;
 
 BvhNode FetchNode(uint i) {
   uvec4 a = texelFetch(nodeTexels, int(kTexelsPerNode * i));
@@ -67,6 +69,12 @@ Emitter FetchEmitter(uint e) {
   em.pmf = uintBitsToFloat(a.z);
   em.area = uintBitsToFloat(a.w);
   return em;
+}
+
+vec4 FetchEnvTexel(uint i) { return uintBitsToFloat(texelFetch(envRadianceTexels, int(i))); }
+
+float FetchEnvCdf(uint i) {
+  return uintBitsToFloat(texelFetch(envDistributionTexels, int(i / kEnvCdfsPerTexel))[i % kEnvCdfsPerTexel]);
 }
 
 #endif

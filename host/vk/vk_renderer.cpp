@@ -158,6 +158,8 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       nodes_(UploadArray<shader::BvhNode>(ctx, scene.nodes, "BVH nodes")),
       materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
       emitters_(UploadArray<shader::Emitter>(ctx, scene.emitters, "emitters")),
+      envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
+      envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
@@ -169,6 +171,8 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             TexelBinding(shader::kBindingNodes, nodes_),
                             TexelBinding(shader::kBindingMaterials, materials_),
                             TexelBinding(shader::kBindingEmitters, emitters_),
+                            TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
+                            TexelBinding(shader::kBindingEnvDistribution, envDistribution_),
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
