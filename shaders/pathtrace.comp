@@ -48,10 +48,14 @@ layout(constant_id = 0) const uint kSceneHasLights = 1u;
 #define VKPT_LIGHT_CDF(i) FetchLightCdf(i)
 #define VKPT_GGX_ALBEDO_PAIR(k) FetchGgxAlbedoPair(k)
 #define VKPT_SHADING(i) FetchShading(i)
+#define VKPT_ENV_TEXEL(i) FetchEnvTexel(i)
+#define VKPT_ENV_CDF(i) FetchEnvCdf(i)
 
 #include "traverse.glsl"
 
 #include "shared/path.h"
+// Not called by path.h yet; included so that it compiles as GLSL on every build.
+#include "shared/environment.h"
 
 void main() {
   gNodeCount = params.nodeCount;

@@ -1,6 +1,6 @@
-// The scene for the shaders: triangles, BVH nodes, materials, lights and shading
-// normals read from uniform texel buffers of RGBA32UI texels (16 bytes; kTexelsPer* per
-// struct, the std430 layouts of shared/layout.h byte for byte).
+// The scene for the shaders: triangles, BVH nodes, materials, lights, shading normals
+// and the environment map read from uniform texel buffers of RGBA32UI texels (16 bytes;
+// kTexelsPer* per struct, the std430 layouts of shared/layout.h byte for byte).
 //
 // Why texels and not storage-buffer structs: lavapipe (Mesa 22.3) has no gathers for
 // either. It reads a 16-byte texel lane by lane — eight scalar loads and a transpose,
@@ -19,6 +19,8 @@ layout(binding = kBindingMaterials) uniform usamplerBuffer materialTexels;
 layout(binding = kBindingLights) uniform usamplerBuffer lightTexels;
 layout(binding = kBindingGgxAlbedo) uniform usamplerBuffer ggxAlbedoTexels;
 layout(binding = kBindingShading) uniform usamplerBuffer shadingTexels;
+layout(binding = kBindingEnvRadiance) uniform usamplerBuffer envRadianceTexels;
+layout(binding = kBindingEnvDistribution) uniform usamplerBuffer envDistributionTexels;
 
 BvhNode FetchNode(uint i) {
   uvec4 a = texelFetch(nodeTexels, int(kTexelsPerNode * i));
@@ -101,6 +103,12 @@ TriangleShading FetchShading(uint i) {
   s.n2 = a.z;
   s.flags = a.w;
   return s;
+}
+
+vec4 FetchEnvTexel(uint i) { return uintBitsToFloat(texelFetch(envRadianceTexels, int(i))); }
+
+float FetchEnvCdf(uint i) {
+  return uintBitsToFloat(texelFetch(envDistributionTexels, int(i / kEnvCdfsPerTexel))[i % kEnvCdfsPerTexel]);
 }
 
 #endif

@@ -13,10 +13,12 @@
 #include <optional>
 #include <string>
 
+#include "app/environment_option.h"
 #include "app/options.h"
 #include "cpu/path_tracer.h"
 #include "image/image.h"
 #include "image/image_compare.h"
+#include "render/light_table.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared/sampling.h"
@@ -157,20 +159,24 @@ glm::uvec2 ImageSize(const Camera& cam, const Options& o) {
   return {std::max(1u, std::min(width, 16384u)), std::max(1u, std::min(height, 16384u))};
 }
 
-// The BVH and the renderers' arrays. `gpu`: a Vulkan device will render, so the shader's
-// direction-ordered copies of the tree are built; the CPU's layout only where the CPU
-// renders (no device, or --compare).
-RenderScene PrepareForRender(const Scene& scene, const Options& o, bool gpu) {
+// The BVH and the renderers' arrays, with the environment map. `gpu`: a Vulkan device will
+// render, so the shader's direction-ordered copies of the tree are built; the CPU's layout
+// only where the CPU renders (no device, or --compare).
+RenderScene PrepareForRender(const Scene& scene, const Options& o, bool gpu, EnvironmentMap env) {
   BvhBuildOptions bvhOptions;
   bvhOptions.maxLeafSize = o.leafSize;
   bvhOptions.splits = o.splits;
   bvhOptions.threads = o.threads;
   bvhOptions.directionCopies = gpu;
-  return PrepareRenderScene(scene, bvhOptions, !gpu || o.compare);
+  RenderScene rs = PrepareRenderScene(scene, bvhOptions, !gpu || o.compare);
+  rs.environment = std::move(env);
+  if (rs.environment.width > 0) AddEnvironmentLight(rs, o.envIntensity);
+  return rs;
 }
 
 // The frame constants from the options; a scene without lights is lit by a white
-// environment unless --background says otherwise (and is warned about if that is black).
+// environment unless --env or --background says otherwise (and is warned about if that is
+// black).
 shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, glm::uvec2 size, const Options& o) {
   shader::FrameParams params = MakeFrameParams(rs, cam, size.x, size.y);
   params.seed = o.seed;
@@ -178,13 +184,15 @@ shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, g
   params.sampleCount = o.spp;
   params.maxDepth = o.maxDepth;
   params.rrDepth = o.rrDepth;
-  if (o.background) {
+  if (!o.env.empty()) {
+    SetEnvironmentParams(params, rs.environment, o.envRotation, o.envIntensity);
+  } else if (o.background) {
     params.background = glm::vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]);
   } else if (rs.lights.empty()) {
     params.background = glm::vec3(1.0f);
     if (o.verbose) std::printf("  no lights: lit by a white environment (see --background)\n");
   }
-  if (rs.lights.empty() && MaxComponent(params.background) <= 0.0f)
+  if (rs.lights.empty() && o.env.empty() && MaxComponent(params.background) <= 0.0f)
     std::fprintf(stderr, "vkpt: warning: %s: no lights and a black background; the image will be black\n",
                  o.scene.c_str());
   return params;
@@ -241,13 +249,14 @@ int Run(const Options& o) {
   CheckOutputPath(o.out);  // fail before a long render, not after
 
   Scene scene = LoadGltf(o.scene, o.load);
+  EnvironmentMap env = LoadEnvironment(o, scene);
   uint32_t camIndex = 0;
   const Camera cam = ChooseCamera(scene, o, &camIndex);
   const glm::uvec2 size = ImageSize(cam, o);
   // The device before the scene's arrays: without one (auto backend) the CPU renders, and
   // only then does the scene need the CPU's BVH layout.
   std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
-  const RenderScene rs = PrepareForRender(scene, o, ctx != nullptr);
+  const RenderScene rs = PrepareForRender(scene, o, ctx != nullptr, std::move(env));
   if (o.verbose) PrintLoadReport(scene, rs, cam, camIndex);
   const shader::FrameParams params = FrameFromOptions(rs, cam, size, o);
 

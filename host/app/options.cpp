@@ -61,6 +61,14 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --background R,G,B constant environment radiance seen by rays that leave the scene
                      (one number for grey) [default: 1 if the scene has no emissive
                      triangles, so any model is lit; else 0]
+  --env FILE         equirectangular environment map, .hdr (Radiance RGBE) or .exr, lighting
+                     the scene from every direction instead of --background; its centre
+                     column faces -Z (where a default glTF camera looks), 3/4 of its width
+                     +X, its top row +Y
+  --env-rotation DEGREES
+                     turn the map about +Y, counter-clockwise seen from above: 90 brings
+                     what faced -Z to -X [default: 0]
+  --env-intensity X  scale the map's radiance by X >= 0 [default: 1]
   --exposure STOPS   PNG only: scale radiance by 2^STOPS before sRGB encoding [default: 0]
   --leaf-size N      maximum triangles per BVH leaf, 1..15 [default: 8]
   --splits MODE      how the BVH divides the scene: object (each triangle in one leaf),
@@ -106,7 +114,8 @@ Options ParseOptions(int argc, const char* const* argv) {
       {"--camera", optU32(o.camera, 0, 1u << 20)},
       {"--leaf-size", u32(o.leafSize, 1, 15)},
       {"--batch", u32(o.batch, 1, 1u << 30)},
-      {"--device", [&](const std::string& opt, const std::string& v) {
+      {"--device",
+       [&](const std::string& opt, const std::string& v) {
          if (v.empty()) throw UsageError(opt + " needs a device index or name");
          o.device = v;
        }},
@@ -127,6 +136,15 @@ Options ParseOptions(int argc, const char* const* argv) {
          for (size_t k = 0; k < 3; ++k) c[k] = ParseNumber(opt, parts[parts.size() == 1 ? 0 : k], 0.0f, 1e30f);
          o.background = c;
        }},
+      {"--env",
+       [&](const std::string& opt, const std::string& v) {
+         if (v.empty()) throw UsageError(opt + " needs an .hdr or .exr file");
+         o.env = v;
+       }},
+      {"--env-rotation",
+       [&](const std::string& opt, const std::string& v) { o.envRotation = ParseNumber(opt, v, -3600.0f, 3600.0f); }},
+      {"--env-intensity",
+       [&](const std::string& opt, const std::string& v) { o.envIntensity = ParseNumber(opt, v, 0.0f, 1e30f); }},
       {"--splits",
        [&](const std::string&, const std::string& v) {
          std::optional<SplitMode> mode = ParseSplitMode(v);
@@ -186,6 +204,9 @@ Options ParseOptions(int argc, const char* const* argv) {
   }
   if (o.compare && o.backend != Backend::Auto) throw UsageError("--compare uses both backends; drop --backend");
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
+  if (!o.env.empty() && o.background) throw UsageError("--env and --background both set the environment; give one");
+  if (o.env.empty() && (o.envRotation != 0.0f || o.envIntensity != 1.0f))
+    throw UsageError("--env-rotation and --env-intensity apply to an --env map; none was given");
   if (o.out.empty()) {
     std::string base = o.scene.substr(o.scene.find_last_of('/') + 1);
     o.out = base.substr(0, base.find_last_of('.')) + ".png";

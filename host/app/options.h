@@ -37,6 +37,9 @@ struct Options {
   // Constant environment radiance; absent: white (1,1,1) for a scene without emissive
   // triangles (so any model is visible), black otherwise.
   std::optional<std::array<float, 3>> background;
+  std::string env;            // --env: equirectangular environment map (.hdr, .exr)
+  float envRotation = 0.0f;   // --env-rotation: degrees about +Y, counter-clockwise from above
+  float envIntensity = 1.0f;  // --env-intensity: radiance scale
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;  // --splits
   LoadLimits load;                      // --max-memory, --allow-external-uris

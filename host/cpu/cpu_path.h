@@ -13,6 +13,8 @@
 #define VKPT_LIGHT(i) scene.lights[i]
 #define VKPT_LIGHT_CDF(i) scene.lights[i].cdf
 #define VKPT_SHADING(i) scene.shading[i]
+#define VKPT_ENV_TEXEL(i) scene.environment.texels[i]
+#define VKPT_ENV_CDF(i) scene.environment.cdf[i]
 
 namespace vkpt::shader {
 
@@ -26,4 +28,5 @@ inline bool TraceOccluded(const RenderScene& scene, vec3 origin, vec3 dir, float
 
 }  // namespace vkpt::shader
 
+#include "shared/environment.h"
 #include "shared/path.h"

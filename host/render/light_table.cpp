@@ -1,5 +1,7 @@
 #include "render/light_table.h"
 
+#include <cmath>
+
 #include "shared/sampling.h"
 
 namespace vkpt {
@@ -81,9 +83,31 @@ void BuildLightTable(const Scene& scene, RenderScene& rs) {
     rs.lights.push_back(l);
     power.push_back(phi);
   }
+  rs.sceneRadius = sceneRadius;
+  rs.lightPower = std::move(power);
   rs.totalEmittedPower = 0.0;
-  for (double p : power) rs.totalEmittedPower += p;
-  SetDistribution(power, rs.lights);
+  for (double p : rs.lightPower) rs.totalEmittedPower += p;
+  SetDistribution(rs.lightPower, rs.lights);
+}
+
+void AddEnvironmentLight(RenderScene& rs, float intensity) {
+  const EnvironmentMap& env = rs.environment;
+  double sum = 0.0, weight = 0.0;
+  for (uint32_t y = 0; y < env.height; ++y) {
+    double sinTheta = std::sin(shader::kPi * (y + 0.5) / env.height);
+    for (uint32_t x = 0; x < env.width; ++x)
+      sum += sinTheta * shader::Luminance(glm::vec3(env.texels[size_t(y) * env.width + x]));
+    weight += sinTheta * env.width;
+  }
+  double phi = 4.0 * shader::kPi * shader::kPi * rs.sceneRadius * rs.sceneRadius * intensity * sum / weight;
+  if (!(phi > 0.0)) return;  // a black map lights nothing: escaped rays still see it
+  shader::Light l{};
+  l.type = shader::kLightEnvironment;
+  l.triangle = shader::kInvalidIndex;
+  rs.lights.push_back(l);
+  rs.lightPower.push_back(phi);
+  rs.totalEmittedPower += phi;
+  SetDistribution(rs.lightPower, rs.lights);
 }
 
 }  // namespace vkpt

@@ -15,4 +15,9 @@ namespace vkpt {
 //   directional  π · R² · E, R the radius of the scene's bounding sphere
 void BuildLightTable(const Scene& scene, RenderScene& rs);
 
+// Adds rs.environment (which must hold a map) to the table as one more light, of power
+// 4π² R² · L̄ · intensity with L̄ its mean luminance per solid angle (pbrt-v4's
+// ImageInfiniteLight::Phi), and renormalises the distribution.
+void AddEnvironmentLight(RenderScene& rs, float intensity);
+
 }  // namespace vkpt

@@ -115,6 +115,9 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
 shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height) {
   shader::FrameParams p{};
   p.lightCount = uint32_t(scene.lights.size());
+  p.envLight = shader::kInvalidIndex;
+  for (uint32_t i = 0; i < scene.lights.size(); ++i)
+    if (scene.lights[i].type == shader::kLightEnvironment) p.envLight = i;
   p.nodeCount = scene.bvhStats.nodes;
   p.nodeCopies = scene.nodeCopies;
   p.origin = camera.position;
@@ -126,6 +129,7 @@ shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& came
   p.aspect = float(width) / float(height);
   p.orthographic = camera.orthographic ? 1u : 0u;
   p.tanHalfFovY = camera.orthographic ? camera.ymag : std::tan(0.5f * camera.yfov);
+  SetEnvironmentParams(p, scene.environment, 0.0f, 1.0f);
   return p;
 }
 

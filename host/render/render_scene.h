@@ -9,6 +9,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/pair_layout.h"
+#include "render/environment_map.h"
 #include "scene/scene.h"
 #include "shared/layout.h"
 
@@ -27,6 +28,9 @@ struct RenderScene {
   BvhStats bvhStats;
   uint32_t degenerateTriangles = 0;  // dropped: zero area (see IsDegenerate)
   double totalEmittedPower = 0.0;    // Σ of the lights' power estimates
+  std::vector<double> lightPower;    // per light, what its pmf is proportional to
+  double sceneRadius = 0.0;          // of the scene's bounding sphere (directional lights' power)
+  EnvironmentMap environment;        // none unless the caller sets one (--env)
 };
 
 // A triangle whose edges are parallel to float precision has no area to hit or emit
@@ -39,7 +43,7 @@ bool IsDegenerate(const SceneTriangle& t);
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {}, bool forCpu = true);
 
 // The frame constants for a scene, camera and image size; seed, sample range, depths and
-// background are left 0 for the caller.
+// background are left 0 for the caller, the environment map unturned at intensity 1.
 shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height);
 
 }  // namespace vkpt

@@ -41,7 +41,7 @@ static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Light) == 16
 static_assert(offsetof(RayQuery, tMax) == 12 && offsetof(RayQuery, dir) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, triangle) == 12);
 
-static_assert(sizeof(FrameParams) == 128);
+static_assert(sizeof(FrameParams) == 160);
 static_assert(offsetof(FrameParams, origin) == 0 && offsetof(FrameParams, tanHalfFovY) == 12);
 static_assert(offsetof(FrameParams, right) == 16 && offsetof(FrameParams, aspect) == 28);
 static_assert(offsetof(FrameParams, up) == 32 && offsetof(FrameParams, width) == 44);
@@ -49,5 +49,7 @@ static_assert(offsetof(FrameParams, forward) == 48 && offsetof(FrameParams, heig
 static_assert(offsetof(FrameParams, seed) == 64 && offsetof(FrameParams, pad0) == 92);
 static_assert(offsetof(FrameParams, background) == 96 && offsetof(FrameParams, orthographic) == 108);
 static_assert(offsetof(FrameParams, nodeCopies) == 112);
+static_assert(offsetof(FrameParams, envWidth) == 128 && offsetof(FrameParams, envHeight) == 132);
+static_assert(offsetof(FrameParams, envIntensity) == 136 && offsetof(FrameParams, envRotationSin) == 144);
 
 }  // namespace vkpt::shader

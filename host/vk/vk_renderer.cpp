@@ -161,6 +161,8 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       lights_(UploadArray<shader::Light>(ctx, scene.lights, "lights")),
       ggxAlbedo_(UploadArray<float>(ctx, shader::kGgxAlbedo, "GGX albedo table")),
       shading_(UploadArray<shader::TriangleShading>(ctx, scene.shading, "shading normals")),
+      envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
+      envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
@@ -174,6 +176,8 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             TexelBinding(shader::kBindingLights, lights_),
                             TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
                             TexelBinding(shader::kBindingShading, shading_),
+                            TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
+                            TexelBinding(shader::kBindingEnvDistribution, envDistribution_),
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},

@@ -47,6 +47,9 @@ class GpuRenderer {
   size_t spirvBytes_;
   // The scene is read as texel buffers (shaders/scene_fetch.glsl says why).
   TexelBuffer triangles_, nodes_, materials_, lights_, ggxAlbedo_, shading_;
+  // The environment map's texels and CDFs; without a map one zero texel each, so that the
+  // descriptor set is complete all the same.
+  TexelBuffer envRadiance_, envDistribution_;
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 

@@ -27,6 +27,11 @@ const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample 
 const uint kBindingShading = 10u;   // texel buffer of TriangleShading, indexed by Triangle.sourceIndex
 const uint kBindingGgxAlbedo = 13u;  // texel buffer of the GGX albedo table (shared/ggx_albedo.h)
 
+// The environment map (shared/environment.h), both as RGBA32UI texel buffers; a 1-texel
+// dummy of each when there is none (FrameParams::envWidth == 0).
+const uint kBindingEnvRadiance = 11u;      // W·H texels, row-major from the top row: (RGB, 0)
+const uint kBindingEnvDistribution = 12u;  // W·H + H floats, 4 per texel: kEnvCdf* below
+
 // Grid points per axis of the GGX albedo table (shared/ggx_albedo.h).
 const uint kGgxAlbedoSize = 64u;
 
@@ -97,6 +102,7 @@ const uint kLightTwoSidedTriangle = 1u;  // emits from both faces (double-sided 
 const uint kLightPoint = 2u;
 const uint kLightSpot = 3u;
 const uint kLightDirectional = 4u;
+const uint kLightEnvironment = 5u;  // the environment map (shared/environment.h)
 
 // One light of the light-sampling distribution (next-event estimation). Lights are chosen
 // with probability pmf ∝ estimated power; cdf is the inclusive running sum (the last one
@@ -121,6 +127,11 @@ const uint kTexelsPerNode = 2u;
 const uint kTexelsPerMaterial = 4u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
+
+// The environment map's sampling distribution is one float array: the conditional CDF of
+// row r (inclusive running sums, the last exactly 1) at [r·W, r·W + W), then the marginal
+// CDF over the rows at [W·H, W·H + H). Four floats per texel on the GPU.
+const uint kEnvCdfsPerTexel = 4u;
 
 // A ray for the trace-only kernel: closest hit along origin + t·dir, t ∈ (0, tMax).
 struct RayQuery {
@@ -162,8 +173,18 @@ struct FrameParams {
   uint orthographic;  // 1: parallel rays; tanHalfFovY then holds the half view height
   uint nodeCopies;    // 1, or 8 direction-ordered copies of the BVH (see bvh.h)
   uint tileRowStride; // GPU: workgroup row y renders tile row (y * stride) mod rows
-  uint pad1;
+  uint envLight;  // the environment map's entry in the light table, or kInvalidIndex
   uint pad2;
+  // The environment map (shared/environment.h): envWidth == 0 means none, and rays that
+  // leave the scene see `background` instead.
+  uint envWidth;
+  uint envHeight;
+  float envIntensity;    // radiance scale (--env-intensity)
+  float envRotationCos;  // the map turned by α about +Y (--env-rotation): cos α, sin α
+  float envRotationSin;
+  uint pad3;  // std140 rounds the struct up to a multiple of 16 bytes
+  uint pad4;
+  uint pad5;
 };
 
 VKPT_END_NAMESPACE

@@ -1,17 +1,19 @@
 // Light sampling for next-event estimation, and the density of a direction that BSDF
 // sampling found a light along (for multiple importance sampling). Every light of the
-// scene — emissive triangles and KHR_lights_punctual point, spot and directional lights —
-// is one entry of one table, chosen with probability ∝ its estimated power
+// scene — emissive triangles, KHR_lights_punctual point, spot and directional lights and
+// the environment map — is one entry of one table, chosen with probability ∝ its estimated power
 // (host/render/light_table.cpp).
 //
 // Units: emission is radiance; a punctual light's intensity (candela in glTF) is radiant
 // intensity I and a directional light's (lux) irradiance E, 1:1, so a point light of
 // intensity I lights a Lambert surface at distance r to ρ/π · I cos θ / r².
 //
-// Scene access (see path.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i).
+// Scene access (see path.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i), and
+// environment.h's VKPT_ENV_TEXEL(i), VKPT_ENV_CDF(i).
 #ifndef VKPT_LIGHTS_H
 #define VKPT_LIGHTS_H
 #include "estimator.h"
+#include "environment.h"
 #include "intersect.h"
 #include "layout.h"
 #include "prelude.h"
@@ -97,6 +99,14 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 n
     // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
     // unnormalised direction: the emitter itself then lies beyond tMax.
     ls.shadowRay.dir = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl) - origin;
+  } else if (l.type == kLightEnvironment) {
+    EnvSample es = SampleEnvironment(VKPT_SCENE_ARG params, u);
+    ls.wi = es.dir;
+    ls.pdf = l.pmf * es.pdf;
+    ls.radiance = es.radiance;
+    ls.delta = false;
+    ls.shadowRay.dir = ls.wi;
+    ls.shadowTMax = kInfinity;
   } else if (l.type == kLightDirectional) {
     ls.wi = -l.direction;
     ls.pdf = l.pmf;

@@ -94,6 +94,17 @@ VKPT_FN vec3 WeightedEmission(VKPT_SCENE_PARAM PathState s, SurfaceHit sh, float
   return weight * sh.material.emission;
 }
 
+// Radiance from the environment along s.ray, which left the scene: the map (weighted
+// against light sampling unless a camera ray sees it), or the constant background.
+VKPT_FN vec3 EscapedRadiance(VKPT_SCENE_PARAM FrameParams params, PathState s) {
+  vec3 L = EnvRadiance(VKPT_SCENE_ARG params, s.ray.dir);
+  if (s.bsdfPdf > 0.0f && params.envLight != kInvalidIndex) {
+    float lightPdf = VKPT_LIGHT(params.envLight).pmf * EnvironmentPdf(VKPT_SCENE_ARG params, s.ray.dir);
+    L *= PowerHeuristic(s.bsdfPdf, lightPdf);
+  }
+  return L;
+}
+
 // Next-event estimation at the vertex: samples a light and, if it can contribute, sets
 // the shadow ray and the MIS-weighted contribution it carries if unoccluded.
 VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s, SurfaceHit sh, Bsdf bsdf,
@@ -121,7 +132,7 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   uint bounce = s.bounce;
   s.bounce = bounce + 1u;
   if (hit.t < 0.0f) {
-    s.result.radiance += s.throughput * params.background;
+    s.result.radiance += s.throughput * EscapedRadiance(VKPT_SCENE_ARG params, s);
     return false;
   }
   SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit);

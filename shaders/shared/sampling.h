@@ -32,6 +32,33 @@ VKPT_FN Frame FrameFromNormal(vec3 n) {
 VKPT_FN vec3 FrameToWorld(Frame f, vec3 v) { return f.t * v.x + f.b * v.y + f.n * v.z; }
 VKPT_FN vec3 WorldToFrame(Frame f, vec3 v) { return vec3(dot(v, f.t), dot(v, f.b), dot(v, f.n)); }
 
+// atan2(y, x) from +, ×, ÷ and a polynomial (Abramowitz & Stegun 4.4.49 on [0, 1], error
+// ≤ 2e-8 rad), so that CPU and GPU agree to the last few bits: lavapipe's atan and acos
+// differ from the C library's by ~1e-4 relative, which moves an environment lookup by a
+// tenth of a texel. Returns 0 for (0, 0).
+VKPT_FN float PortableAtan2(float y, float x) {
+  float ax = abs(x);
+  float ay = abs(y);
+  float hi = max(ax, ay);
+  float t = hi > 0.0f ? min(ax, ay) / hi : 0.0f;
+  float t2 = t * t;
+  float p = -0.0040540580f;
+  p = p * t2 + 0.0218612288f;
+  p = p * t2 - 0.0559098861f;
+  p = p * t2 + 0.0964200441f;
+  p = p * t2 - 0.1390853351f;
+  p = p * t2 + 0.1994653599f;
+  p = p * t2 - 0.3332985605f;
+  p = p * t2 + 0.9999993329f;
+  float r = p * t;
+  if (ay > ax) r = 0.5f * kPi - r;
+  if (x < 0.0f) r = kPi - r;
+  return y < 0.0f ? -r : r;
+}
+
+// acos(c) for c ∈ [−1, 1], by PortableAtan2.
+VKPT_FN float PortableAcos(float c) { return PortableAtan2(sqrt(max(0.0f, 1.0f - c * c)), c); }
+
 // Veach's power heuristic (β = 2) for the sample of density pdfA against pdfB, written
 // as 1 / (1 + (pdfB/pdfA)²) so that large densities (a small, distant light) cannot
 // overflow a square.

@@ -1,0 +1,165 @@
+#include "image/image_load.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+
+// Only the Radiance decoder, with internal linkage: Debian's tinygltf links its own
+// stb_image, and vkpt reads no other format through it.
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#define STBI_ONLY_HDR
+#define STBI_NO_STDIO
+#define STBI_MAX_DIMENSIONS 16384
+#include <stb_image.h>
+#include <tinyexr.h>
+
+#include "util/error.h"
+#include "util/regular_file.h"
+
+namespace vkpt {
+namespace {
+
+// The signatures, checked before the rest of a file is read: stb_image accepts either
+// Radiance header line; every OpenEXR file begins with its magic number.
+bool LooksLike(const std::string& start, bool hdr) {
+  if (hdr) return start.rfind("#?RADIANCE\n", 0) == 0 || start.rfind("#?RGBE\n", 0) == 0;
+  return start.rfind("\x76\x2f\x31\x01", 0) == 0;
+}
+
+bool HasExtension(const std::string& path, const std::string& ext) {
+  if (path.size() < ext.size()) return false;
+  std::string tail = path.substr(path.size() - ext.size());
+  for (char& c : tail) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return tail == ext;
+}
+
+void CheckSize(const std::string& path, int64_t width, int64_t height) {
+  if (width < 1 || height < 1 || width > kMaxEnvironmentSide || height > kMaxEnvironmentSide)
+    throw Error(path + ": the image is " + std::to_string(width) + " × " + std::to_string(height) +
+                " pixels; an environment map must be 1 to " + std::to_string(kMaxEnvironmentSide) + " on each side");
+}
+
+// stb_image reads through these callbacks so that a truncated file is noticed and cannot
+// hang it. Past the end its HDR decoder reads zeros and reports success, and a run-length
+// count of 0 (which this stb version does not reject) makes its scanline loop spin
+// forever; bytes 0xFF instead make every run too long for the scanline, so a decode that
+// has run out of data ends, in an error or with ranOut set. stb refills a 128-byte buffer
+// and otherwise asks for exactly the bytes it needs: a refill that finds nothing, or a
+// short exact request, means the data ran out.
+struct StbSource {
+  const std::vector<unsigned char>& bytes;
+  size_t pos = 0;
+  bool ranOut = false;
+
+  static int Read(void* user, char* data, int size) {
+    auto* s = static_cast<StbSource*>(user);
+    const size_t n = std::min(size_t(size), s->bytes.size() - s->pos);
+    std::copy_n(s->bytes.data() + s->pos, n, data);
+    s->pos += n;
+    if (n == size_t(size) || (n > 0 && size == sizeof(stbi__context::buffer_start))) return int(n);
+    s->ranOut = true;
+    std::fill(data + n, data + size, '\xff');
+    return size;
+  }
+  static void Skip(void* user, int n) {
+    auto* s = static_cast<StbSource*>(user);
+    s->pos = std::min(s->bytes.size(), s->pos + size_t(std::max(n, 0)));
+  }
+  static int Eof(void* user) {
+    auto* s = static_cast<StbSource*>(user);
+    return s->pos >= s->bytes.size();
+  }
+};
+
+Image DecodeHdr(const std::string& path, const std::vector<unsigned char>& bytes, const MemoryCharge& charge) {
+  stbi_io_callbacks io{&StbSource::Read, &StbSource::Skip, &StbSource::Eof};
+  int width = 0, height = 0, channels = 0;
+  StbSource header{bytes};
+  if (!stbi_info_from_callbacks(&io, &header, &width, &height, &channels))
+    throw Error(path + ": not a Radiance HDR file (" + stbi_failure_reason() + ")");
+  CheckSize(path, width, height);
+  // stb's float RGB, then our Image.
+  charge(uint64_t(width) * uint64_t(height) * 2 * sizeof(glm::vec3), "its decoded texels");
+  StbSource body{bytes};
+  std::unique_ptr<float, void (*)(void*)> rgb(stbi_loadf_from_callbacks(&io, &body, &width, &height, &channels, 3),
+                                              stbi_image_free);
+  if (body.ranOut) throw Error(path + ": the file is truncated (it ends inside the pixel data)");
+  if (!rgb) throw Error(path + ": cannot decode the Radiance HDR data (" + stbi_failure_reason() + ")");
+  Image image{uint32_t(width), uint32_t(height)};
+  std::copy_n(rgb.get(), image.pixels.size() * 3, &image.pixels[0].x);
+  return image;
+}
+
+Image DecodeExr(const std::string& path, const std::vector<unsigned char>& bytes, const MemoryCharge& charge) {
+  EXRVersion version;
+  if (ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size()) != TINYEXR_SUCCESS)
+    throw Error(path + ": not an OpenEXR file");
+  if (version.multipart || version.non_image)
+    throw Error(path + ": multi-part and deep OpenEXR files are not supported");
+  EXRHeader header;
+  InitEXRHeader(&header);
+  const char* err = nullptr;
+  auto fail = [&](const std::string& what) {
+    std::string detail = err ? err : "";
+    detail.erase(detail.find_last_not_of(" \n") + 1);  // tinyexr ends its messages with a newline
+    std::string message = path + ": " + what + (detail.empty() ? "" : " (tinyexr: " + detail + ")");
+    FreeEXRErrorMessage(err);
+    throw Error(message);
+  };
+  if (ParseEXRHeaderFromMemory(&header, &version, bytes.data(), bytes.size(), &err) != TINYEXR_SUCCESS)
+    fail("cannot read the OpenEXR header");
+  const int64_t width = int64_t(header.data_window.max_x) - header.data_window.min_x + 1;
+  const int64_t height = int64_t(header.data_window.max_y) - header.data_window.min_y + 1;
+  const uint64_t channels = uint64_t(std::max(header.num_channels, 0));
+  FreeEXRHeader(&header);
+  CheckSize(path, width, height);
+  // tinyexr's float plane per channel, its RGBA copy, then our Image.
+  charge(uint64_t(width * height) * (channels * sizeof(float) + 4 * sizeof(float) + sizeof(glm::vec3)),
+         "its decoded texels");
+  float* raw = nullptr;
+  int w = 0, h = 0;
+  if (LoadEXRFromMemory(&raw, &w, &h, bytes.data(), bytes.size(), &err) != TINYEXR_SUCCESS)
+    fail("cannot decode the OpenEXR data");
+  std::unique_ptr<float, void (*)(void*)> rgba(raw, std::free);
+  if (w != width || h != height) throw Error(path + ": the OpenEXR data window does not match its pixels");
+  Image image{uint32_t(w), uint32_t(h)};
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    image.pixels[i] = glm::vec3(rgba.get()[4 * i], rgba.get()[4 * i + 1], rgba.get()[4 * i + 2]);
+  return image;
+}
+
+}  // namespace
+
+Image ReadEnvironmentImage(const std::string& path, const MemoryCharge& charge, std::vector<std::string>* warnings) {
+  const bool hdr = HasExtension(path, ".hdr"), exr = HasExtension(path, ".exr");
+  if (!hdr && !exr) throw Error(path + ": unknown environment map format (use a Radiance .hdr or an OpenEXR .exr)");
+  std::string problem;
+  std::optional<RegularFile> file = RegularFile::Open(path, &problem);
+  if (!file) throw Error(path + ": " + problem);
+  std::string start(std::min<uint64_t>(file->Size(), 11), '\0');
+  if (!file->ReadAt(0, start.data(), start.size(), &problem)) throw Error(path + ": " + problem);
+  if (!LooksLike(start, hdr))
+    throw Error(path + (hdr ? ": not a Radiance HDR file (no #?RADIANCE or #?RGBE line)" : ": not an OpenEXR file"));
+  charge(file->Size(), "the file");
+  std::vector<unsigned char> bytes(file->Size());
+  if (!file->ReadAt(0, bytes.data(), bytes.size(), &problem)) throw Error(path + ": " + problem);
+  Image image = hdr ? DecodeHdr(path, bytes, charge) : DecodeExr(path, bytes, charge);
+  uint64_t negative = 0;
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    glm::vec3& p = image.pixels[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw Error(path + ": texel (" + std::to_string(i % image.width) + ", " + std::to_string(i / image.width) +
+                  ") is not finite (NaN or infinity)");
+    if (p.x < 0.0f || p.y < 0.0f || p.z < 0.0f) ++negative;
+    p = glm::max(p, glm::vec3(0.0f));
+  }
+  if (negative)
+    warnings->push_back(path + ": " + std::to_string(negative) + " texel(s) had negative components, set to 0");
+  return image;
+}
+
+}  // namespace vkpt
