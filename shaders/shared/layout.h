@@ -173,7 +173,7 @@ struct FrameParams {
   uint orthographic;  // 1: parallel rays; tanHalfFovY then holds the half view height
   uint nodeCopies;    // 1, or 8 direction-ordered copies of the BVH (see bvh.h)
   uint tileRowStride; // GPU: workgroup row y renders tile row (y * stride) mod rows
-  uint envLight;  // the environment map's entry in the light table, or kInvalidIndex
+  uint envLight;      // the environment map's entry in the light table, or kInvalidIndex
   uint pad2;
   // The environment map (shared/environment.h): envWidth == 0 means none, and rays that
   // leave the scene see `background` instead.

@@ -12,8 +12,8 @@
 // environment.h's VKPT_ENV_TEXEL(i), VKPT_ENV_CDF(i).
 #ifndef VKPT_LIGHTS_H
 #define VKPT_LIGHTS_H
-#include "estimator.h"
 #include "environment.h"
+#include "estimator.h"
 #include "intersect.h"
 #include "layout.h"
 #include "prelude.h"
