@@ -39,6 +39,9 @@ layout(push_constant) uniform Push {
 // 0 when the scene has no lights (set by the host): see shared/path.h.
 layout(constant_id = 0) const uint kSceneHasLights = 1u;
 #define VKPT_LIGHT_SAMPLING (kSceneHasLights != 0u)
+// 0 when every material is Lambertian (set by the host): see shared/bsdf.h.
+layout(constant_id = 1) const uint kSceneHasGlossy = 1u;
+#define VKPT_GLOSSY_MATERIALS (kSceneHasGlossy != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

@@ -8,7 +8,7 @@
 
 #include "kPathTraceSpirv.h"
 #include "kTraceSpirv.h"
-#include "shared/ggx_albedo_table.h"
+#include "shared/bsdf.h"
 #include "util/byte_size.h"
 #include "util/error.h"
 #include "vk/compute_pipeline.h"
@@ -163,6 +163,8 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       shading_(UploadArray<shader::TriangleShading>(ctx, scene.shading, "shading normals")),
       envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
       envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
+      hasGlossy_(std::any_of(scene.materials.begin(), scene.materials.end(),
+                             [](const shader::Material& m) { return !shader::IsLambertian(m); })),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {}
 
@@ -181,7 +183,7 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
-                           "pathtrace", 2 * sizeof(uint32_t), {frame.lightCount > 0 ? 1u : 0u});
+                           "pathtrace", 2 * sizeof(uint32_t), {frame.lightCount > 0 ? 1u : 0u, hasGlossy_ ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);

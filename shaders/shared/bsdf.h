@@ -34,6 +34,14 @@
 #include "prelude.h"
 #include "sampling.h"
 
+// A shader may define VKPT_GLOSSY_MATERIALS as a specialization constant that is false
+// when every material of the scene is Lambertian: lavapipe runs both sides of an `if`, so
+// only a constant lets its compiler drop the GGX code (the Cornell box then costs what it
+// did before this BSDF). The CPU decides per material.
+#ifndef VKPT_GLOSSY_MATERIALS
+#define VKPT_GLOSSY_MATERIALS true
+#endif
+
 VKPT_BEGIN_NAMESPACE
 
 // A material prepared for one ωo: everything that does not depend on ωi.
@@ -52,6 +60,7 @@ struct Bsdf {
   float couplingE5;
   float couplingMs;
   float couplingNorm;  // 1 / sqrt(1 − A_avg)
+  bool lambert;        // no specular layer, not metallic: f = baseColor/π, cosine sampling
 };
 
 struct BsdfSample {
@@ -72,10 +81,16 @@ VKPT_FN vec3 MultipleScatteringFresnel(vec3 f0, vec3 f90, float eAvg) {
   return fAvg * fAvg * eAvg / (vec3(1.0f) - fAvg * (1.0f - eAvg));
 }
 
+// True for the Lambert special case (specular = 0, metallic = 0), where the full
+// evaluation below would compute baseColor/π at many times the cost.
+VKPT_FN bool IsLambertian(Material mat) { return mat.specular == 0.0f && mat.metallic == 0.0f; }
+
 VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo) {
   Bsdf b;
   b.baseColor = mat.baseColor;
   b.metallic = mat.metallic;
+  b.lambert = !VKPT_GLOSSY_MATERIALS || IsLambertian(mat);
+  if (b.lambert) return b;
   b.alpha = GgxAlpha(mat.roughness);
   float r = (mat.ior - 1.0f) / (mat.ior + 1.0f);
   b.f0 = min(r * r * mat.specularColor, vec3(1.0f)) * mat.specular;
@@ -114,6 +129,7 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo) {
 // f(ωo, ωi), without the cosine; 0 unless both directions are above the surface.
 VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
+  if (b.lambert) return b.baseColor * kInvPi;
   vec3 h = normalize(wo + wi);
   float cosOH = dot(wo, h);
   vec3 fresnel =
@@ -129,6 +145,7 @@ VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
 
 VKPT_FN float BsdfPdf(Bsdf b, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+  if (b.lambert) return CosineHemispherePdf(wi.z);
   return b.pSpecular * GgxReflectionPdf(wo, wi, b.alpha) + (1.0f - b.pSpecular) * CosineHemispherePdf(wi.z);
 }
 
@@ -136,6 +153,12 @@ VKPT_FN float BsdfPdf(Bsdf b, vec3 wo, vec3 wi) {
 // samples). Both candidate directions are computed, so every lane runs the same code.
 VKPT_FN BsdfSample SampleBsdf(Bsdf b, vec3 wo, vec3 u) {
   BsdfSample s;
+  if (b.lambert) {
+    s.wi = SampleCosineHemisphere(u.y, u.z);
+    s.pdf = wo.z > 0.0f ? CosineHemispherePdf(s.wi.z) : 0.0f;
+    s.weight = s.pdf > 0.0f ? b.baseColor : vec3(0.0f);
+    return s;
+  }
   vec3 h = SampleGgxVisibleNormal(wo, b.alpha, u.y, u.z);
   vec3 specular = 2.0f * dot(wo, h) * h - wo;
   vec3 diffuse = SampleCosineHemisphere(u.y, u.z);
