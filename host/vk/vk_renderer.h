@@ -50,7 +50,7 @@ class GpuRenderer {
   // The environment map's texels and CDFs; without a map one zero texel each, so that the
   // descriptor set is complete all the same.
   TexelBuffer envRadiance_, envDistribution_;
-  bool hasGlossy_;  // some material is not Lambertian (specialization constant 1)
+  bool hasGlossy_;                   // some material is not Lambertian (specialization constant 1)
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 
