@@ -143,17 +143,24 @@ void PrintChi2(const std::string& name, const Chi2Result& r, double alpha) {
               name.c_str(), r.chi2, r.dof, r.p, alpha, 100.0 * r.noSample, 100.0 * (1.0 - r.pdfMass));
 }
 
-// χ² of SampleBsdf against BsdfPdf for one material and ωo.
-Chi2Result BsdfChi2(const Material& m, float muO, uint32_t seed) {
-  const vec3 wo = Outgoing(muO);
-  const Bsdf b = PrepareBsdf(m, wo);
+// χ² of SampleBsdf for `b` at ωo against the density `pdf` (BsdfPdf, or a mutant).
+template <class Pdf>
+Chi2Result SamplerChi2(const Bsdf& b, vec3 wo, const Pdf& pdf, uint32_t seed) {
   return RunChi2(
       [&](vec3 u, vec3* wi) {
         BsdfSample s = SampleBsdf(b, wo, u);
         *wi = s.wi;
         return s.pdf > 0.0f;
       },
-      [&](vec3 wi) { return double(BsdfPdf(b, wo, wi)); }, seed);
+      pdf, seed);
+}
+
+// χ² of SampleBsdf against BsdfPdf for one material and ωo.
+Chi2Result BsdfChi2(const Material& m, float muO, uint32_t seed) {
+  const vec3 wo = Outgoing(muO);
+  const Bsdf b = PrepareBsdf(m, wo);
+  return SamplerChi2(
+      b, wo, [&](vec3 wi) { return double(BsdfPdf(b, wo, wi)); }, seed);
 }
 
 struct Chi2Case {
@@ -197,12 +204,8 @@ TEST(BsdfChi2, CatchesWrongPdfs) {
     const Material m = MakeMaterial(vec3(0.9f, 0.6f, 0.3f), 1.0f, 0.5f, 1.0f, 1.5f);
     const vec3 wo = Outgoing(0.5f);
     const Bsdf b = PrepareBsdf(m, wo);
-    Chi2Result r = RunChi2(
-        [&](vec3 u, vec3* wi) {
-          BsdfSample s = SampleBsdf(b, wo, u);
-          *wi = s.wi;
-          return s.pdf > 0.0f;
-        },
+    Chi2Result r = SamplerChi2(
+        b, wo,
         [&](vec3 wi) {
           if (wi.z <= 0.0f) return 0.0;
           vec3 h = normalize(wo + wi);
@@ -218,12 +221,8 @@ TEST(BsdfChi2, CatchesWrongPdfs) {
     const Material m = MakeMaterial(vec3(0.9f, 0.6f, 0.3f), 1.0f, 1.0f, 1.0f, 1.5f);
     const vec3 wo = Outgoing(0.3f);
     const Bsdf b = PrepareBsdf(m, wo);
-    Chi2Result r = RunChi2(
-        [&](vec3 u, vec3* wi) {
-          BsdfSample s = SampleBsdf(b, wo, u);
-          *wi = s.wi;
-          return s.pdf > 0.0f;
-        },
+    Chi2Result r = SamplerChi2(
+        b, wo,
         [&](vec3 wi) {
           if (wi.z <= 0.0f) return 0.0;
           vec3 h = normalize(wo + wi);
@@ -239,13 +238,8 @@ TEST(BsdfChi2, CatchesWrongPdfs) {
     const Material m = MakeMaterial(vec3(0.1f, 0.5f, 0.9f), 0.5f, 0.3f, 1.0f, 1.5f);
     const vec3 wo = Outgoing(0.5f);
     const Bsdf b = PrepareBsdf(m, wo);
-    Chi2Result r = RunChi2(
-        [&](vec3 u, vec3* wi) {
-          BsdfSample s = SampleBsdf(b, wo, u);
-          *wi = s.wi;
-          return s.pdf > 0.0f;
-        },
-        [&](vec3 wi) { return BsdfPdf(b, wo, wi) * (wi.y > 0.0f ? 1.1 : 1.0); }, 202);
+    Chi2Result r = SamplerChi2(
+        b, wo, [&](vec3 wi) { return BsdfPdf(b, wo, wi) * (wi.y > 0.0f ? 1.1 : 1.0); }, 202);
     PrintChi2("mutant: pdf x 1.1 where y > 0, mixture", r, kChi2Alpha);
     EXPECT_LT(r.p, kChi2Alpha);
   }

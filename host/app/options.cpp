@@ -98,6 +98,13 @@ Options ParseOptions(int argc, const char* const* argv) {
   auto u32 = [](uint32_t& dst, uint32_t lo, uint32_t hi) {
     return Handler([&dst, lo, hi](const std::string& opt, const std::string& v) { dst = ParseNumber(opt, v, lo, hi); });
   };
+  // A string that must not be empty; `what` completes "needs ..." in the error.
+  auto text = [](std::string& dst, const char* what) {
+    return Handler([&dst, what](const std::string& opt, const std::string& v) {
+      if (v.empty()) throw UsageError(opt + " needs " + what);
+      dst = v;
+    });
+  };
   auto optU32 = [](std::optional<uint32_t>& dst, uint32_t lo, uint32_t hi) {
     return Handler([&dst, lo, hi](const std::string& opt, const std::string& v) { dst = ParseNumber(opt, v, lo, hi); });
   };
@@ -114,11 +121,7 @@ Options ParseOptions(int argc, const char* const* argv) {
       {"--camera", optU32(o.camera, 0, 1u << 20)},
       {"--leaf-size", u32(o.leafSize, 1, 15)},
       {"--batch", u32(o.batch, 1, 1u << 30)},
-      {"--device",
-       [&](const std::string& opt, const std::string& v) {
-         if (v.empty()) throw UsageError(opt + " needs a device index or name");
-         o.device = v;
-       }},
+      {"--device", text(o.device, "a device index or name")},
       {"--exposure",
        [&](const std::string& opt, const std::string& v) { o.exposure = ParseNumber(opt, v, -64.0f, 64.0f); }},
       {"--background",
@@ -136,11 +139,7 @@ Options ParseOptions(int argc, const char* const* argv) {
          for (size_t k = 0; k < 3; ++k) c[k] = ParseNumber(opt, parts[parts.size() == 1 ? 0 : k], 0.0f, 1e30f);
          o.background = c;
        }},
-      {"--env",
-       [&](const std::string& opt, const std::string& v) {
-         if (v.empty()) throw UsageError(opt + " needs an .hdr or .exr file");
-         o.env = v;
-       }},
+      {"--env", text(o.env, "an .hdr or .exr file")},
       {"--env-rotation",
        [&](const std::string& opt, const std::string& v) { o.envRotation = ParseNumber(opt, v, -3600.0f, 3600.0f); }},
       {"--env-intensity",
