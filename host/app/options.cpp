@@ -59,8 +59,8 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --camera N         index of the glTF camera to render from, in scene order [default: 0;
                      a scene without cameras gets one that frames it]
   --background R,G,B constant environment radiance seen by rays that leave the scene
-                     (one number for grey) [default: 1 if the scene has no emissive
-                     triangles, so any model is lit; else 0]
+                     (one number for grey) [default: 1 if the scene has no lights
+                     (emissive triangles or punctual lights), so any model is lit; else 0]
   --env FILE         equirectangular environment map, .hdr (Radiance RGBE) or .exr, lighting
                      the scene from every direction instead of --background; its centre
                      column faces -Z (where a default glTF camera looks), 3/4 of its width
