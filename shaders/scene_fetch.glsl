@@ -52,6 +52,7 @@ Material FetchMaterial(uint m) {
   uvec4 b = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 1u));
   uvec4 c = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 2u));
   uvec4 d = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 3u));
+  uvec4 e = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 4u));
   Material mat;
   mat.baseColor = uintBitsToFloat(a.xyz);
   mat.metallic = uintBitsToFloat(a.w);
@@ -59,10 +60,12 @@ Material FetchMaterial(uint m) {
   mat.roughness = uintBitsToFloat(b.w);
   mat.specularColor = uintBitsToFloat(c.xyz);
   mat.specular = uintBitsToFloat(c.w);
-  mat.ior = uintBitsToFloat(d.x);
-  mat.flags = d.y;
-  mat.pad0 = d.z;
-  mat.pad1 = d.w;
+  mat.attenuation = uintBitsToFloat(d.xyz);
+  mat.ior = uintBitsToFloat(d.w);
+  mat.transmission = uintBitsToFloat(e.x);
+  mat.flags = e.y;
+  mat.pad0 = e.z;
+  mat.pad1 = e.w;
   return mat;
 }
 

@@ -79,6 +79,8 @@ bool IsRenderedExtension(const std::string& ext) {
   static const char* const kRendered[] = {"KHR_materials_emissive_strength",
                                           "KHR_materials_ior",
                                           "KHR_materials_specular",
+                                          "KHR_materials_transmission",
+                                          "KHR_materials_volume",
                                           "KHR_materials_unlit",
                                           "KHR_lights_punctual",
                                           "KHR_mesh_quantization"};

@@ -32,12 +32,33 @@ class MaterialReader {
     if (!(ior == 0.0 || (ior >= 1.0 && std::isfinite(ior))))
       Fail("KHR_materials_ior.ior must be 0 or a finite number >= 1");
     mat.ior = float(ior);
+    mat.transmission = float(Unit(ExtensionNumber("KHR_materials_transmission", "transmissionFactor", 0.0),
+                                  "KHR_materials_transmission.transmissionFactor"));
     mat.flags = (in_.doubleSided ? shader::kMaterialDoubleSided : 0u) |
-                (in_.extensions.count("KHR_materials_unlit") ? shader::kMaterialUnlit : 0u);
+                (in_.extensions.count("KHR_materials_unlit") ? shader::kMaterialUnlit : 0u) | ReadVolume(mat);
     return mat;
   }
 
  private:
+  // KHR_materials_volume: a thickness > 0 makes the transmissive surface the boundary of
+  // a volume (rays refract, and attenuate inside by Beer–Lambert); without it the surface
+  // is thin-walled. Returns kMaterialVolume or 0 and sets mat.attenuation.
+  uint32_t ReadVolume(Material& mat) const {
+    mat.attenuation = glm::vec3(0.0f);
+    const double thickness = ExtensionNumber("KHR_materials_volume", "thicknessFactor", 0.0);
+    if (thickness < 0.0) Fail("KHR_materials_volume.thicknessFactor must be >= 0");
+    const double distance = ExtensionNumber("KHR_materials_volume", "attenuationDistance", INFINITY);
+    if (!(distance > 0.0)) Fail("KHR_materials_volume.attenuationDistance must be > 0");
+    glm::vec3 color(1.0f);
+    if (const tinygltf::Value* c = ExtensionField("KHR_materials_volume", "attenuationColor"))
+      color = Color(NumberArray(*c, "KHR_materials_volume.attenuationColor"), 3,
+                    "KHR_materials_volume.attenuationColor", 1.0);
+    // A colour channel of 0 absorbs everything: the largest finite σ keeps the buffers free of inf.
+    for (int i = 0; i < 3; ++i)
+      mat.attenuation[i] = color[i] > 0.0f ? float(std::min(-std::log(double(color[i])) / distance, 3.0e38)) : 3.0e38f;
+    return thickness > 0.0 ? shader::kMaterialVolume : 0u;
+  }
+
   [[noreturn]] void Fail(const std::string& what) const { src_.Fail(name_ + "." + what); }
 
   double Unit(double v, const char* field) const {

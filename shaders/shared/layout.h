@@ -69,7 +69,8 @@ struct BvhNode {
 const uint kMaxLeafSize = 15u;
 
 const uint kMaterialDoubleSided = 1u;
-const uint kMaterialUnlit = 2u;  // KHR_materials_unlit: shows baseColor, reflects nothing
+const uint kMaterialUnlit = 2u;   // KHR_materials_unlit: shows baseColor, reflects nothing
+const uint kMaterialVolume = 4u;  // KHR_materials_volume with thickness > 0: refracts, attenuates inside
 
 // A glTF metallic-roughness material (shared/bsdf.h) plus emission.
 struct Material {
@@ -79,8 +80,10 @@ struct Material {
   float roughness;
   vec3 specularColor;  // KHR_materials_specular: tints the dielectric F0
   float specular;      // KHR_materials_specular: scales F0 and F90 (0: no specular layer)
+  vec3 attenuation;    // KHR_materials_volume: σ = −ln(attenuationColor) / attenuationDistance, per unit length
   float ior;           // KHR_materials_ior (1.5 when absent; 0: Fresnel is 1)
-  uint flags;          // kMaterialDoubleSided | kMaterialUnlit
+  float transmission;  // KHR_materials_transmission: the share of the dielectric base that is transmissive
+  uint flags;          // kMaterialDoubleSided | kMaterialUnlit | kMaterialVolume
   uint pad0;
   uint pad1;
 };
@@ -124,7 +127,7 @@ struct Light {
 // 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
 const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
-const uint kTexelsPerMaterial = 4u;
+const uint kTexelsPerMaterial = 5u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
 
