@@ -2,10 +2,17 @@
 // KHR_materials_specular), evaluated, sampled and given its pdf in a shading frame whose
 // normal is +z. ωo points to the viewer, ωi to the light; both renderers run this code.
 //
-//   f = (1 − m) · dielectric + m · metal, m = metallic
+//   f = (1 − m) · dielectric + m · metal, m = metallic, T = transmission
 //   metal      = Fm(ωo·h) f_ss + Fms_m f_ms                       Fm: Schlick, F0 = baseColor
-//   dielectric = Fd(ωo·h) f_ss + Fms_d f_ms + baseColor/π · c(μo) c(μi)
+//   dielectric = Fd(ωo·h) f_ss + Fms_d f_ms + (1 − T) baseColor/π · c(μo) c(μi)
+//                + T baseColor (1 − Fd(ωo·m)) f_t                  (ωi below the surface)
 //   Fd: Schlick with F0 = min(((ior − 1)/(ior + 1))² specularColor, 1) · specular and F90 = specular
+//
+// KHR_materials_transmission replaces the share T of the diffuse base by the rough
+// dielectric transmission f_t of transmission.h, tinted by baseColor; KHR_materials_volume
+// decides whether it refracts (a volume's boundary, entered through the front face) or
+// passes a thin wall. Inside a volume (etap < 1) Fd is Schlick at the cosine of the
+// outer side, 1 under total internal reflection.
 //
 // f_ss is the GGX lobe of microfacet.h (α = roughness², D·V). Two departures from the
 // Appendix, both for energy conservation:
@@ -20,10 +27,12 @@
 //    more than it receives). This albedo coupling (Kelemen & Szirmay-Kalos 2001; Kulla &
 //    Conty 2017) is reciprocal and makes dielectric + diffuse sum to one for a white base.
 //    A is scalar (the largest channel of F0), so no channel exceeds one.
-// Lambert is the special case specular = 0, metallic = 0 (A = 0, f = baseColor/π).
+// Lambert is the special case specular = 0, metallic = 0, T = 0 (A = 0, f = baseColor/π).
+// The transmission lobe has no multiple-scattering term: a rough transmissive surface
+// loses the energy f_t's single scattering loses (measured in tests/test_bsdf.cpp).
 //
 // Sampling: one lobe chosen by its estimated albedo — the visible normals of GGX (Dupuy &
-// Benyoub 2023) or the cosine hemisphere for diffuse and f_ms together — and the sample
+// Benyoub 2023) reflected or refracted, or the cosine hemisphere for diffuse and f_ms together — and the sample
 // weighted by the mixture pdf of both (one-sample MIS, Veach 1997 §9.2.4), so each lane
 // evaluates the same code whichever lobe it picked.
 #ifndef VKPT_BSDF_H
@@ -33,6 +42,7 @@
 #include "microfacet.h"
 #include "prelude.h"
 #include "sampling.h"
+#include "transmission.h"
 
 // A shader may define VKPT_GLOSSY_MATERIALS as a specialization constant that is false
 // when every material of the scene is Lambertian: lavapipe runs both sides of an `if`, so
@@ -59,8 +69,11 @@ struct Bsdf {
   float couplingF0;  // scalar layer albedo A(μ) = couplingF0 E + couplingE5 E5 + couplingMs
   float couplingE5;
   float couplingMs;
-  float couplingNorm;  // 1 / sqrt(1 − A_avg)
-  bool lambert;        // no specular layer, not metallic: f = baseColor/π, cosine sampling
+  float couplingNorm;   // 1 / sqrt(1 − A_avg)
+  float transmission;   // (1 − m) T: weight of the transmission lobe
+  float pTransmission;  // probability of sampling it
+  float etap;           // η beyond the surface / η on ωo's side; 1: thin wall (or no transmission)
+  bool lambert;         // no specular layer, not metallic, opaque: f = baseColor/π, cosine sampling
 };
 
 struct BsdfSample {
@@ -75,22 +88,45 @@ VKPT_FN vec3 SchlickFresnel(vec3 f0, vec3 f90, float cosTheta) {
   return f0 + (f90 - f0) * (m2 * m2 * m);
 }
 
+// Fd for a microfacet at cosine cosTheta to ωo, on a boundary of relative index etap:
+// from the denser side (etap < 1) Schlick's approximation holds at the refracted cosine
+// (Schlick 1994 is written for the side of the smaller index), and F = 1 past the
+// critical angle.
+VKPT_FN vec3 DielectricFresnel(vec3 f0, float f90, float cosTheta, float etap) {
+  if (etap < 1.0f) {
+    float sin2T = (1.0f - cosTheta * cosTheta) / (etap * etap);
+    if (sin2T >= 1.0f) return vec3(1.0f);
+    cosTheta = sqrt(1.0f - sin2T);
+  }
+  return SchlickFresnel(f0, vec3(f90), cosTheta);
+}
+
 // Kulla & Conty's Fresnel weight of the multiple-scattering lobe for Schlick F0, F90.
 VKPT_FN vec3 MultipleScatteringFresnel(vec3 f0, vec3 f90, float eAvg) {
   vec3 fAvg = f0 + (f90 - f0) * (1.0f / 21.0f);
   return fAvg * fAvg * eAvg / (vec3(1.0f) - fAvg * (1.0f - eAvg));
 }
 
-// True for the Lambert special case (specular = 0, metallic = 0), where the full
-// evaluation below would compute baseColor/π at many times the cost.
-VKPT_FN bool IsLambertian(Material mat) { return mat.specular == 0.0f && mat.metallic == 0.0f; }
+// True for the Lambert special case (specular = 0, metallic = 0, transmission = 0), where
+// the full evaluation below would compute baseColor/π at many times the cost.
+VKPT_FN bool IsLambertian(Material mat) {
+  return mat.specular == 0.0f && mat.metallic == 0.0f && mat.transmission == 0.0f;
+}
 
-VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo) {
+// `frontFace`: ωo lies on the side the surface's winding faces (outside a volume).
+VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace) {
   Bsdf b;
   b.baseColor = mat.baseColor;
   b.metallic = mat.metallic;
   b.lambert = !VKPT_GLOSSY_MATERIALS || IsLambertian(mat);
+  b.transmission = 0.0f;
+  b.pTransmission = 0.0f;
+  b.etap = 1.0f;
   if (b.lambert) return b;
+  b.transmission = (1.0f - mat.metallic) * mat.transmission;
+  // A volume of ior 1 (or the ior-0 mirror) bends nothing: it is rendered as a thin wall.
+  if (b.transmission > 0.0f && (mat.flags & kMaterialVolume) != 0u && mat.ior > 1.0f)
+    b.etap = frontFace ? mat.ior : 1.0f / mat.ior;
   b.alpha = GgxAlpha(mat.roughness);
   float r = (mat.ior - 1.0f) / (mat.ior + 1.0f);
   b.f0 = min(r * r * mat.specularColor, vec3(1.0f)) * mat.specular;
@@ -113,27 +149,51 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo) {
   float aAvg = b.couplingF0 * eAvg.x + b.couplingE5 * eAvg.y + b.couplingMs;
   b.couplingNorm = inversesqrt(max(1.0f - aAvg, 1e-6f));
   float aO = b.couplingF0 * e.x + b.couplingE5 * e.y + b.couplingMs;
-  b.couplingO = (1.0f - b.metallic) * max(1.0f - aO, 0.0f) * b.couplingNorm;
+  b.couplingO = (1.0f - b.metallic - b.transmission) * max(1.0f - aO, 0.0f) * b.couplingNorm;
 
   // Lobe choice by estimated albedo at μo: the GGX lobe's is exact (F0 (E − E5) + F90 E5);
-  // the cosine lobe carries f_ms and the diffuse base.
+  // the cosine lobe carries f_ms and the diffuse base; transmission ≈ (1 − Fd(μo)) E.
+  // Inside a volume, Fd(μo) (1 past the critical angle) estimates both sides' shares.
   vec3 specD = b.f0 * (e.x - e.y) + vec3(b.f90 * e.y);
+  float fresnelO = f0s;
+  if (b.etap < 1.0f) {
+    fresnelO = MaxComponent(DielectricFresnel(b.f0, b.f90, mu, b.etap));
+    specD = vec3(fresnelO * e.x);
+  }
   vec3 specM = b.baseColor * (e.x - e.y) + vec3(e.y);
   float wSpec = Luminance(mix(specD, specM, b.metallic));
   vec3 cosLobe = b.msWeight * (1.0f - e.x) + b.baseColor * (b.couplingO * b.couplingNorm);
   float wCos = Luminance(cosLobe);
-  b.pSpecular = wSpec + wCos > 0.0f ? wSpec / (wSpec + wCos) : 0.5f;
+  float wTrans = b.transmission * Luminance(b.baseColor) * (1.0f - fresnelO) * e.x;
+  float total = wSpec + wCos + wTrans;
+  b.pSpecular = total > 0.0f ? wSpec / total : 0.5f;
+  b.pTransmission = total > 0.0f ? wTrans / total : 0.0f;
   return b;
 }
 
-// f(ωo, ωi), without the cosine; 0 unless both directions are above the surface.
+// The transmission lobe T baseColor (1 − Fd) f_t for ωi below the surface (wi.z < 0).
+VKPT_FN vec3 EvalTransmission(Bsdf b, vec3 wo, vec3 wi) {
+  if (b.etap == 1.0f) {
+    vec3 h = normalize(wo + MirrorThroughSurface(wi));
+    vec3 f = vec3(1.0f) - DielectricFresnel(b.f0, b.f90, dot(wo, h), 1.0f);
+    return (b.transmission * GgxD(h, b.alpha) * GgxVisibility(wo.z, -wi.z, b.alpha)) * f * b.baseColor;
+  }
+  vec3 m = RefractionHalfVector(wo, wi, b.etap);
+  if (m.z == 0.0f) return vec3(0.0f);
+  vec3 f = vec3(1.0f) - DielectricFresnel(b.f0, b.f90, dot(wo, m), b.etap);
+  return (b.transmission * GgxRefraction(wo, wi, m, b.etap, b.alpha)) * f * b.baseColor;
+}
+
+// f(ωo, ωi), without the cosine; 0 unless ωo is above the surface, and for ωi below it
+// unless the material transmits.
 VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
-  if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
+  if (wo.z <= 0.0f || wi.z == 0.0f) return vec3(0.0f);
+  if (wi.z < 0.0f) return b.transmission > 0.0f ? EvalTransmission(b, wo, wi) : vec3(0.0f);
   if (b.lambert) return b.baseColor * kInvPi;
   vec3 h = normalize(wo + wi);
   float cosOH = dot(wo, h);
   vec3 fresnel =
-      mix(SchlickFresnel(b.f0, vec3(b.f90), cosOH), SchlickFresnel(b.baseColor, vec3(1.0f), cosOH), b.metallic);
+      mix(DielectricFresnel(b.f0, b.f90, cosOH, b.etap), SchlickFresnel(b.baseColor, vec3(1.0f), cosOH), b.metallic);
   vec3 f = fresnel * (GgxD(h, b.alpha) * GgxVisibility(wo.z, wi.z, b.alpha));
   vec2 ei = GgxAlbedo(wi.z, b.alpha);
   f += b.msWeight * ((1.0f - b.albedoO) * (1.0f - ei.x) * b.invMsNorm);
@@ -143,10 +203,18 @@ VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
   return f;
 }
 
+VKPT_FN float TransmissionPdf(Bsdf b, vec3 wo, vec3 wi) {
+  if (b.etap == 1.0f) return GgxReflectionPdf(wo, MirrorThroughSurface(wi), b.alpha);
+  vec3 m = RefractionHalfVector(wo, wi, b.etap);
+  return m.z == 0.0f ? 0.0f : GgxRefractionPdf(wo, wi, m, b.etap, b.alpha);
+}
+
 VKPT_FN float BsdfPdf(Bsdf b, vec3 wo, vec3 wi) {
-  if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+  if (wo.z <= 0.0f || wi.z == 0.0f) return 0.0f;
+  if (wi.z < 0.0f) return b.pTransmission > 0.0f ? b.pTransmission * TransmissionPdf(b, wo, wi) : 0.0f;
   if (b.lambert) return CosineHemispherePdf(wi.z);
-  return b.pSpecular * GgxReflectionPdf(wo, wi, b.alpha) + (1.0f - b.pSpecular) * CosineHemispherePdf(wi.z);
+  return b.pSpecular * GgxReflectionPdf(wo, wi, b.alpha) +
+         (1.0f - b.pSpecular - b.pTransmission) * CosineHemispherePdf(wi.z);
 }
 
 // u.x picks the lobe, (u.y, u.z) the direction within it (stratified over the pixel's
@@ -162,9 +230,15 @@ VKPT_FN BsdfSample SampleBsdf(Bsdf b, vec3 wo, vec3 u) {
   vec3 h = SampleGgxVisibleNormal(wo, b.alpha, u.y, u.z);
   vec3 specular = 2.0f * dot(wo, h) * h - wo;
   vec3 diffuse = SampleCosineHemisphere(u.y, u.z);
-  s.wi = u.x < b.pSpecular ? specular : diffuse;
+  vec3 transmitted = b.etap == 1.0f ? MirrorThroughSurface(specular) : Refract(wo, h, b.etap);
+  // A lobe's direction on the other lobe's side of the surface (a microfacet tilted past
+  // it), or total internal reflection (Refract's zero vector), is no sample (wi = 0, pdf 0):
+  // the pdf of a side counts only the lobes that sample it.
+  if (specular.z <= 0.0f) specular = vec3(0.0f);
+  if (transmitted.z >= 0.0f) transmitted = vec3(0.0f);
+  s.wi = u.x < b.pSpecular ? specular : (u.x < b.pSpecular + b.pTransmission ? transmitted : diffuse);
   s.pdf = BsdfPdf(b, wo, s.wi);
-  s.weight = s.pdf > 0.0f ? EvalBsdf(b, wo, s.wi) * (s.wi.z / s.pdf) : vec3(0.0f);
+  s.weight = s.pdf > 0.0f ? EvalBsdf(b, wo, s.wi) * (abs(s.wi.z) / s.pdf) : vec3(0.0f);
   return s;
 }
 

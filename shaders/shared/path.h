@@ -7,6 +7,13 @@
 // every vertex with its weight. Delta lights (point, spot, directional) are reached by
 // light sampling alone. Russian roulette on the throughput; at most maxDepth bounces.
 //
+// Transmission: light sampling looks for lights on the side of the surface the path
+// arrived from only (a shadow ray through the surface would hit the surface itself), so
+// a direction sampled through the surface finds emission by BSDF sampling alone, with
+// weight 1. Inside a volume (KHR_materials_volume) the path carries no medium stack: a
+// ray that hits the back face of a volume's boundary travelled inside that volume and is
+// attenuated by Beer–Lambert over its length (nested volumes are not told apart).
+//
 // Each side supplies scene access before including this file, so that traversal stays
 // separate (the CPU walks the BVH with an ordered stack, the shader stackless):
 //   VKPT_SCENE_PARAM          a leading parameter declaration ("" in GLSL)
@@ -50,7 +57,8 @@ struct PathSample {
 struct PathState {
   Ray ray;             // the next closest-hit ray: camera ray, then bounce directions
   vec3 throughput;
-  float bsdfPdf;       // density of s.ray's direction under the BSDF that sampled it (0: camera ray)
+  float bsdfPdf;       // density of s.ray's direction under the BSDF that sampled it, for MIS
+                       // (0: a camera ray, or one no light sample could take: emission counts whole)
   PathSample result;   // what the path has gathered so far
   uint bounce;         // vertices found so far
   uint pixel;          // py * width + px
@@ -111,9 +119,11 @@ VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(P
                                vec3 wo, uint bounce) {
   vec2 ul = Sample2D(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
   LightSample ls = SampleLi(VKPT_SCENE_ARG params, sh.p, sh.ng, ul);
-  // A light below the geometric surface cannot reach it, whatever the shading normal says.
+  // A light below the geometric surface cannot reach it, whatever the shading normal says;
+  // one below the shading normal would be a transmission the shadow ray cannot see.
   if (!(ls.pdf > 0.0f) || dot(ls.wi, sh.ng) <= 0.0f) return;
   vec3 wi = WorldToFrame(sh.frame, ls.wi);
+  if (wi.z <= 0.0f) return;
   vec3 f = EvalBsdf(bsdf, wo, wi);
   if (MaxComponent(f) <= 0.0f) return;
   float weight = ls.delta ? 1.0f : PowerHeuristic(ls.pdf, BsdfPdf(bsdf, wo, wi));
@@ -136,6 +146,8 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
     return false;
   }
   SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit);
+  if (!sh.frontFace && (sh.material.flags & kMaterialVolume) != 0u)
+    s.throughput *= exp(-sh.material.attenuation * hit.t);
   s.result.radiance += s.throughput * WeightedEmission(VKPT_SCENE_ARG s, sh, hit.t);
   if ((sh.material.flags & kMaterialUnlit) != 0u) {
     s.result.radiance += s.throughput * sh.material.baseColor;
@@ -146,17 +158,20 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   if (bounce >= params.maxDepth) return false;
 
   vec3 wo = WorldToFrame(sh.frame, -s.ray.dir);
-  Bsdf bsdf = PrepareBsdf(sh.material, wo);
+  Bsdf bsdf = PrepareBsdf(sh.material, wo, sh.frontFace);
   if (VKPT_LIGHT_SAMPLING && params.lightCount > 0u) SampleDirectLight(VKPT_SCENE_ARG params, s, sh, bsdf, wo, bounce);
 
   vec4 ur = Random4(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
   vec2 ub = Sample2D(params.seed, s.pixel, s.sampleIndex, BsdfGroup(bounce));
   BsdfSample bs = SampleBsdf(bsdf, wo, vec3(ur.x, ub.x, ub.y));
   vec3 wi = FrameToWorld(sh.frame, bs.wi);
-  // A direction below the geometric surface would leak light through it: the path ends.
-  if (!(bs.pdf > 0.0f) || dot(wi, sh.ng) <= 0.0f) return false;
+  // Reflection must leave on the arrival side of the geometric surface and transmission
+  // on the other, whatever the shading normal says, or light would leak: the path ends.
+  bool transmitted = bs.wi.z < 0.0f;
+  float side = dot(wi, sh.ng);
+  if (!(bs.pdf > 0.0f) || side == 0.0f || (side < 0.0f) != transmitted) return false;
   s.throughput *= bs.weight;
-  s.bsdfPdf = bs.pdf;
+  s.bsdfPdf = transmitted ? 0.0f : bs.pdf;
   // Russian roulette (GAMES101: continue with probability P, divide by P): survival
   // follows the throughput, so dim paths end early and bright ones rarely.
   if (bounce >= params.rrDepth) {
@@ -166,7 +181,7 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
     s.throughput /= survive;
 #endif
   }
-  s.ray.origin = OffsetRayOrigin(sh.p, sh.ng);
+  s.ray.origin = OffsetRayOrigin(sh.p, transmitted ? -sh.ng : sh.ng);
   s.ray.dir = wi;
   s.result.rays += 1u;
   return true;

@@ -13,10 +13,11 @@ VKPT_BEGIN_NAMESPACE
 
 struct SurfaceHit {
   vec3 p;
-  uint light;   // the hit triangle's light-table entry, or kInvalidIndex
-  vec3 ng;      // unit geometric normal, on the side the ray arrived from
-  bool emits;   // the material emits towards the ray (front face, or double-sided)
-  Frame frame;  // shading frame; frame.n is the shading normal
+  uint light;      // the hit triangle's light-table entry, or kInvalidIndex
+  vec3 ng;         // unit geometric normal, on the side the ray arrived from
+  bool emits;      // the material emits towards the ray (front face, or double-sided)
+  bool frontFace;  // the ray arrived on the side the triangle's winding faces
+  Frame frame;     // shading frame; frame.n is the shading normal
   Material material;
 };
 
@@ -48,6 +49,7 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
   sh.light = tri.light;
   vec3 ng = normalize(cross(tri.e1, tri.e2));
   bool frontFace = dot(ng, ray.dir) < 0.0f;
+  sh.frontFace = frontFace;
   sh.ng = frontFace ? ng : -ng;
   sh.emits = frontFace || (sh.material.flags & kMaterialDoubleSided) != 0u;
   sh.p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
