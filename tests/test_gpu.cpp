@@ -252,6 +252,27 @@ TEST_F(GpuTest, LockstepCornellMatchesCpu) {
   EXPECT_TRUE(c.lockstepAgree);
 }
 
+// The glass slab of test_transmission.cpp on the GPU: refraction at ior 1.5, the η² of
+// entering and leaving, Beer–Lambert inside — in lockstep with the CPU, and at the
+// analytic value tint² e^{−2σ} in most pixels.
+TEST_F(GpuTest, GlassSlabMatchesCpuAndBeerLambert) {
+  const glm::vec3 tint(1.0f, 0.9f, 0.7f), sigma(0.1f, 0.5f, 1.5f), background(2.0f, 1.0f, 0.5f);
+  Scene s = test::GlassSlabScene(test::ClearGlass(tint, sigma, 1.5f));
+  RenderScene rs = PrepareRenderScene(s);
+  FrameParams p = Params(rs, s, 48, 48, 4, 5, 8, 8);
+  p.background = background;
+  vk::GpuRenderer gpu(Gpu(), rs);
+  RenderResult g = gpu.Render(p);
+  const glm::vec3 through = background * tint * tint * glm::exp(-2.0f * sigma);
+  const int near = test::PixelsNear(g.image, through, 1e-4f);
+  ImageComparison c = CompareImages(RenderCpu(rs, p).image, g.image);
+  std::printf("GPU glass slab: %d of %zu pixels within 1e-4 of tint^2 e^(-2 sigma) (>= 90 %%); vs CPU: %s\n", near,
+              g.image.pixels.size(), c.Summary().c_str());
+  EXPECT_EQ(g.nonFinite, 0u);
+  EXPECT_GE(near, 0.9 * double(g.image.pixels.size()));
+  EXPECT_TRUE(c.lockstepAgree);
+}
+
 // Path regeneration (pathtrace.comp) adds each invocation's samples in sample order, as
 // separate dispatches would: the image must not depend on how samples are grouped.
 TEST_F(GpuTest, ImageDoesNotDependOnSamplesPerInvocation) {

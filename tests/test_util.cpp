@@ -1,5 +1,7 @@
 #include "test_util.h"
 
+#include <gtest/gtest.h>
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -262,6 +264,46 @@ Scene MakeScene(const std::vector<SceneTriangle>& triangles, const std::vector<M
     s.bounds.Extend(t.v2);
   }
   return s;
+}
+
+Material ClearGlass(glm::vec3 tint, glm::vec3 attenuation, float ior) {
+  Material m{};
+  m.baseColor = tint;
+  m.specularColor = glm::vec3(1.0f);
+  m.specular = 0.0f;
+  m.ior = ior;
+  m.transmission = 1.0f;
+  m.attenuation = attenuation;
+  m.flags = shader::kMaterialVolume;
+  return m;
+}
+
+Scene GlassSlabScene(const Material& material) {
+  std::vector<SceneTriangle> tris;
+  glm::vec3 c[8];
+  for (int i = 0; i < 8; ++i) c[i] = glm::vec3(i & 1 ? 3 : -3, i & 2 ? 3 : -3, i & 4 ? 1 : -1);
+  // Counter-clockwise seen from outside: every face's winding faces out.
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& f : faces) {
+    tris.push_back({c[f[0]], c[f[1]], c[f[2]], 0});
+    tris.push_back({c[f[0]], c[f[2]], c[f[3]], 0});
+  }
+  Scene s = MakeScene(tris, {material});
+  Camera cam;
+  cam.name = "orthographic along -z";
+  cam.position = glm::vec3(0.0f, 0.0f, 5.0f);
+  cam.orthographic = true;
+  cam.ymag = 1.5f;
+  cam.xmag = 1.5f;
+  s.cameras.push_back(cam);
+  return s;
+}
+
+int PixelsNear(const Image& image, glm::vec3 expected, float tolerance) {
+  int n = 0;
+  for (const glm::vec3& px : image.pixels)
+    n += glm::all(glm::lessThanEqual(glm::abs(px - expected), tolerance * expected));
+  return n;
 }
 
 }  // namespace vkpt::test

@@ -83,4 +83,14 @@ glm::dvec3 FurnaceExpected(const Scene& furnace, int maxDepth);
 // A scene built in code (tests that need geometry no file has).
 Scene MakeScene(const std::vector<SceneTriangle>& triangles, const std::vector<Material>& materials);
 
+// Glass that light crosses straight at normal incidence: transmission 1 with a volume
+// (KHR_materials_volume), no specular reflection (F = 0), a near-mirror roughness.
+Material ClearGlass(glm::vec3 tint, glm::vec3 attenuation, float ior);
+// The slab [−3, 3]² × [−1, 1] of `material`, seen by an orthographic camera along −z that
+// frames [−1.5, 1.5]²: every camera ray crosses it along z, a length of 2, and no ray
+// grazes an edge.
+Scene GlassSlabScene(const Material& material);
+// How many pixels of `image` are within `tolerance` (relative) of `expected` in every channel.
+int PixelsNear(const Image& image, glm::vec3 expected, float tolerance);
+
 }  // namespace vkpt::test
