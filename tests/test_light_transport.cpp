@@ -1,11 +1,14 @@
 // Lights against answers known in closed form, on both backends (the estimator is shared):
 // KHR_lights_punctual point, spot and directional lights over a Lambert plane, where one
-// sample per pixel is exact (delta lights, one light, no bounce).
+// sample per pixel is exact (delta lights, one light, no bounce), and a constant
+// environment map against the same constant --background, which must agree statistically.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <string>
@@ -15,6 +18,9 @@
 
 #include "cpu/path_tracer.h"
 #include "gltf_builder.h"
+#include "image/image_compare.h"
+#include "image/image_load.h"
+#include "render/light_table.h"
 #include "render/render_scene.h"
 #include "shared/rng.h"
 #include "test_util.h"
@@ -232,6 +238,128 @@ TEST_F(LightTransport, DirectionalLightOverLambertPlane) {
   ExpectAnalytic(
       s, [&](glm::dvec3) { return kRho / M_PI * E * std::sin(M_PI / 3.0); }, "directional light: rho/pi E cos", 1024,
       0);
+}
+
+// ---------------------------------------------------------------------------------------
+// A constant environment map against the same constant background
+
+const glm::vec3 kSky(0.5f, 1.0f, 2.0f);  // exact in RGBE: mantissas 32, 64, 128, exponent 130
+
+// A w × h Radiance file of flat (not run-length encoded) RGBE texels, all `rgbe`.
+std::string ConstantHdr(int w, int h, const std::string& rgbe) {
+  std::string s = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(h) + " +X " + std::to_string(w) + "\n";
+  for (int i = 0; i < w * h; ++i) s += rgbe;
+  return s;
+}
+
+// A Lambert ground (6 × 6) with a unit box standing on it, both pure Lambert: the ground
+// next to the box sees less sky and the two inter-reflect, so the answer is not the
+// closed form ρE of a convex object.
+Scene GroundAndBox() {
+  GltfBuilder b;
+  int ground = b.Positions({{-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}});
+  std::vector<glm::vec3> c;
+  for (int i = 0; i < 8; ++i) c.push_back({i & 1 ? 0.5f : -0.5f, i & 2 ? 1.0f : 0.0f, i & 4 ? 0.5f : -0.5f});
+  std::vector<uint32_t> box;
+  for (auto f :
+       {std::array<uint32_t, 4>{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}})
+    for (uint32_t k : {0, 1, 2, 0, 2, 3}) box.push_back(f[k]);
+  const std::string lambert = R"(,"metallicFactor":0},"extensions":{"KHR_materials_specular":{"specularFactor":0}}})";
+  b.materials = {R"({"pbrMetallicRoughness":{"baseColorFactor":[0.7,0.7,0.7,1])" + lambert,
+                 R"({"pbrMetallicRoughness":{"baseColorFactor":[0.2,0.5,0.8,1])" + lambert};
+  b.Mesh(ground, b.Indices({0, 1, 2, 0, 2, 3}), 0);
+  b.Mesh(b.Positions(c), b.Indices(box), 1);
+  b.Node(R"({"mesh":0})");
+  b.Node(R"({"mesh":1})");
+  b.scenes = {R"({"nodes":[0,1]})"};
+  b.extensionsUsed = {"KHR_materials_specular"};
+  return Load(b);
+}
+
+Camera BoxCamera() {
+  Camera cam;
+  cam.position = {0.4f, 2.0f, 4.0f};
+  cam.forward = glm::normalize(glm::vec3(0.0f, 0.4f, 0.0f) - cam.position);
+  cam.right = glm::normalize(glm::cross(cam.forward, glm::vec3(0, 1, 0)));
+  cam.up = glm::cross(cam.right, cam.forward);
+  cam.yfov = 0.8f;
+  return cam;
+}
+
+// Renders `rs` on the CPU or the GPU: 48 × 48, 64 spp, at most 6 bounces.
+RenderResult RenderOn(bool gpu, const RenderScene& rs, FrameParams p) {
+  p.sampleCount = 64;
+  p.maxDepth = 6;
+  p.rrDepth = 3;
+  if (!gpu) return RenderCpu(rs, p);
+  vk::GpuRenderer renderer(Gpu(), rs);
+  return renderer.Render(p);
+}
+
+// The environment map in `file`, set up as vkpt --env FILE --env-intensity X
+// --env-rotation 30 does (host/app/main.cpp): a light of the table, and the frame's map.
+RenderResult RenderWithMap(bool gpu, const Scene& scene, const std::string& file, float intensity, uint32_t seed) {
+  RenderScene rs = PrepareRenderScene(scene);
+  std::vector<std::string> warnings;
+  Image map = ReadEnvironmentImage(
+      file, [](uint64_t, const std::string&) {}, &warnings);
+  EXPECT_TRUE(warnings.empty());
+  rs.environment = BuildEnvironmentMap(map.width, map.height, map.pixels);
+  AddEnvironmentLight(rs, intensity);
+  EXPECT_EQ(rs.lights.size(), 1u) << "the map is the only light";
+  FrameParams p = MakeFrameParams(rs, BoxCamera(), 48, 48);
+  SetEnvironmentParams(p, rs.environment, 30.0f, intensity);
+  p.seed = seed;
+  return RenderOn(gpu, rs, p);
+}
+
+// Welch z of the two image means, per channel (figures for the report; the verdict is
+// CompareImages' region tests).
+void PrintMeanZ(const Image& a, const Image& b, const char* what) {
+  ZTest ta = MeanAndError(a, glm::dvec3(0.0)), tb = MeanAndError(b, glm::dvec3(0.0));
+  glm::dvec3 z = (ta.mean - tb.mean) / glm::sqrt(ta.stderr_ * ta.stderr_ + tb.stderr_ * tb.stderr_);
+  std::printf("%s: image means (%.5f %.5f %.5f) vs (%.5f %.5f %.5f), z (%.2f %.2f %.2f)\n", what, ta.mean.x, ta.mean.y,
+              ta.mean.z, tb.mean.x, tb.mean.y, tb.mean.z, z.x, z.y, z.z);
+}
+
+// --background c against a constant map of radiance c: as .hdr at intensity 1, and as
+// .exr holding c/4 at --env-intensity 4. The background is not a light (BSDF sampling
+// alone finds it); the map is sampled by MIS with the BSDF: the same expectation.
+TEST_F(LightTransport, ConstantEnvironmentEqualsBackground) {
+  const std::string dir = FreshTempDirectory("env-constant");
+  const std::string hdr = dir + "/sky.hdr", exr = dir + "/quarter.exr";
+  std::ofstream(hdr, std::ios::binary) << ConstantHdr(6, 3, std::string("\x20\x40\x80\x82", 4));
+  Image quarter(8, 4);
+  for (glm::vec3& t : quarter.pixels) t = kSky * 0.25f;
+  WriteImage(quarter, exr);
+
+  Scene scene = GroundAndBox();
+  RenderScene plain = PrepareRenderScene(scene);
+  ASSERT_TRUE(plain.lights.empty());
+  FrameParams p = MakeFrameParams(plain, BoxCamera(), 48, 48);
+  p.background = kSky;
+  p.seed = 1;
+  for (bool gpu : {false, true}) {
+    const char* backend = gpu ? "GPU" : "CPU";
+    RenderResult background = RenderOn(gpu, plain, p);
+    struct {
+      const std::string& file;
+      float intensity;
+      const char* name;
+    } maps[] = {{hdr, 1.0f, "constant .hdr, intensity 1"}, {exr, 4.0f, "constant/4 .exr, --env-intensity 4"}};
+    for (const auto& m : maps) {
+      RenderResult env = RenderWithMap(gpu, scene, m.file, m.intensity, 2);
+      EXPECT_EQ(background.nonFinite + env.nonFinite, 0u);
+      ImageComparison c = CompareImages(background.image, env.image);
+      std::string what = std::string(backend) + ": --background vs " + m.name;
+      std::printf("[%s]\n%s\n", what.c_str(), c.Summary().c_str());
+      std::printf("worst |z| %.2f, smallest p %.3g vs Sidak threshold %.3g (%d tests), margin %.2f\n", c.worstZ,
+                  c.worstP, c.alphaPerTest, c.tests, c.options.margin);
+      PrintMeanZ(background.image, env.image, what.c_str());
+      EXPECT_TRUE(c.usedVariances);
+      EXPECT_TRUE(c.statisticallyAgree) << what;
+    }
+  }
 }
 
 }  // namespace
