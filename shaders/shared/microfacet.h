@@ -51,6 +51,11 @@ VKPT_FN float GgxReflection(vec3 wo, vec3 wi, float alpha) {
 VKPT_FN float GgxReflectionPdf(vec3 wo, vec3 wi, float alpha) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
   vec3 h = normalize(wo + wi);
+#ifdef VKPT_MUTANT_GGX_PDF_NO_JACOBIAN
+  // Deliberately wrong (test builds only): D_ωo(h), the density of the half vector,
+  // without the Jacobian 1/(4 ωo·h) of reflecting ωo about it.
+  return 2.0f * dot(wo, h) * GgxD(h, alpha) / (wo.z + GgxLambdaRoot(wo.z, alpha));
+#endif
   return GgxD(h, alpha) / (2.0f * (wo.z + GgxLambdaRoot(wo.z, alpha)));
 }
 

@@ -43,6 +43,43 @@
 
 VKPT_BEGIN_NAMESPACE
 
+// MIS weights of the two strategies: Veach's power heuristic for a light sample (density
+// lightPdf, which BSDF sampling would have found with bsdfPdf) and for a BSDF sample
+// (bsdfPdf, which light sampling would have found with lightPdf). Test-only CPU builds
+// (tests/path_variant.cpp; never the product nor the shader) may define one of
+//   VKPT_MIS_LIGHT_ONLY  light sampling alone: light that light sampling can reach
+//                        counts nothing when a BSDF-sampled ray finds it
+//   VKPT_MIS_BSDF_ONLY   BSDF sampling alone (delta lights keep light sampling)
+// or a deliberately wrong weight the MIS test must reject: VKPT_MUTANT_MIS_WEIGHT_ONE
+// (both strategies count in full: double counting), VKPT_MUTANT_MIS_SWAPPED_PDFS (the
+// light sample's weight with its pdfs swapped; swapped on both sides the weights would
+// still sum to one, and the estimator stay unbiased).
+VKPT_FN float LightSampleWeight(float lightPdf, float bsdfPdf) {
+#if defined(VKPT_MIS_LIGHT_ONLY) || defined(VKPT_MUTANT_MIS_WEIGHT_ONE)
+  (void)bsdfPdf;  // C++ only, as every test build
+  return lightPdf > 0.0f ? 1.0f : 0.0f;
+#elif defined(VKPT_MIS_BSDF_ONLY)
+  (void)lightPdf;
+  return bsdfPdf > 0.0f ? 0.0f : 1.0f;
+#elif defined(VKPT_MUTANT_MIS_SWAPPED_PDFS)
+  return PowerHeuristic(bsdfPdf, lightPdf);
+#else
+  return PowerHeuristic(lightPdf, bsdfPdf);
+#endif
+}
+
+VKPT_FN float BsdfSampleWeight(float bsdfPdf, float lightPdf) {
+#if defined(VKPT_MIS_BSDF_ONLY) || defined(VKPT_MUTANT_MIS_WEIGHT_ONE)
+  (void)lightPdf;
+  return bsdfPdf > 0.0f ? 1.0f : 0.0f;
+#elif defined(VKPT_MIS_LIGHT_ONLY)
+  (void)bsdfPdf;
+  return lightPdf > 0.0f ? 0.0f : 1.0f;
+#else
+  return PowerHeuristic(bsdfPdf, lightPdf);
+#endif
+}
+
 struct PathSample {
   vec3 radiance;
   uint rays;  // closest-hit plus shadow rays traced
@@ -97,7 +134,7 @@ VKPT_FN vec3 WeightedEmission(VKPT_SCENE_PARAM PathState s, SurfaceHit sh, float
   float weight = 1.0f;
   if (s.bsdfPdf > 0.0f && sh.light != kInvalidIndex) {
     float lightPdf = TriangleLightPdf(VKPT_LIGHT(sh.light), dist, abs(dot(sh.ng, s.ray.dir)));
-    weight = PowerHeuristic(s.bsdfPdf, lightPdf);
+    weight = BsdfSampleWeight(s.bsdfPdf, lightPdf);
   }
   return weight * sh.material.emission;
 }
@@ -108,7 +145,7 @@ VKPT_FN vec3 EscapedRadiance(VKPT_SCENE_PARAM FrameParams params, PathState s) {
   vec3 L = EnvRadiance(VKPT_SCENE_ARG params, s.ray.dir);
   if (s.bsdfPdf > 0.0f && params.envLight != kInvalidIndex) {
     float lightPdf = VKPT_LIGHT(params.envLight).pmf * EnvironmentPdf(VKPT_SCENE_ARG params, s.ray.dir);
-    L *= PowerHeuristic(s.bsdfPdf, lightPdf);
+    L *= BsdfSampleWeight(s.bsdfPdf, lightPdf);
   }
   return L;
 }
@@ -126,7 +163,7 @@ VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(P
   if (wi.z <= 0.0f) return;
   vec3 f = EvalBsdf(bsdf, wo, wi);
   if (MaxComponent(f) <= 0.0f) return;
-  float weight = ls.delta ? 1.0f : PowerHeuristic(ls.pdf, BsdfPdf(bsdf, wo, wi));
+  float weight = ls.delta ? 1.0f : LightSampleWeight(ls.pdf, BsdfPdf(bsdf, wo, wi));
   s.result.rays += 1u;
   s.shadowPending = true;
   s.shadowRay = ls.shadowRay;

@@ -1,0 +1,75 @@
+// One variant of the shared estimator for the CPU (see path_variants.h): compiled with
+// VKPT_PATH_VARIANT=<the function's name> and the variant's macros.
+//
+// The headers a variant changes (microfacet.h, bsdf.h, path.h) are compiled here inside
+// the namespace vkpt::shader::<variant>, so that their inline functions cannot stand in for
+// the product's (one definition rule) nor the product's for them; everything else they
+// use comes from vkpt::shader as in host/cpu/cpu_path.h, included first. Only path.h
+// includes bsdf.h and only bsdf.h microfacet.h, so none of the three is included before.
+#include "path_variants.h"
+
+#include <atomic>
+#include <cmath>
+
+#include "util/parallel.h"
+
+#ifndef VKPT_PATH_VARIANT
+#error "compile with VKPT_PATH_VARIANT=<function name> (tests/CMakeLists.txt)"
+#endif
+
+// host/cpu/cpu_path.h without its last include (the estimator): path.h's guard is set
+// for it and cleared again below.
+#define VKPT_PATH_H
+#include "cpu/cpu_path.h"
+#undef VKPT_PATH_H
+#include "shared/estimator.h"
+#include "shared/ggx_albedo.h"
+#include "shared/intersect.h"
+#include "shared/layout.h"
+#include "shared/lights.h"
+#include "shared/rng.h"
+#include "shared/sampling.h"
+#include "shared/shading_frame.h"
+
+#undef VKPT_BEGIN_NAMESPACE
+#undef VKPT_END_NAMESPACE
+#define VKPT_BEGIN_NAMESPACE namespace vkpt::shader::VKPT_PATH_VARIANT {
+#define VKPT_END_NAMESPACE }
+#include "shared/path.h"  // and through it bsdf.h and microfacet.h, also in the variant's namespace
+#undef VKPT_BEGIN_NAMESPACE
+#undef VKPT_END_NAMESPACE
+
+namespace vkpt::test {
+
+RenderResult VKPT_PATH_VARIANT(const RenderScene& scene, const shader::FrameParams& params) {
+  Film film(params.width, params.height, params.sampleCount);
+  std::atomic<uint64_t> rays{0}, nonFinite{0};
+  ParallelFor(params.height, ThreadCount(0), [&](size_t y) {
+    uint64_t rowRays = 0, rowNonFinite = 0;
+    for (uint32_t x = 0; x < params.width; ++x) {
+      PixelSums sums;
+      for (uint32_t s = 0; s < params.sampleCount; ++s) {
+        shader::VKPT_PATH_VARIANT::PathSample p =
+            shader::VKPT_PATH_VARIANT::TracePath(scene, params, x, uint32_t(y), params.sampleBegin + s);
+        rowRays += p.rays;
+        const glm::dvec3 L(p.radiance);
+        if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z)) {
+          ++rowNonFinite;
+          continue;
+        }
+        sums.sum += L;
+        sums.sumOfSquares += L * L;
+      }
+      film.SetPixel(y * params.width + x, sums);
+    }
+    rays.fetch_add(rowRays);
+    nonFinite.fetch_add(rowNonFinite);
+  });
+  RenderResult r;
+  r.image = film.TakeImage();
+  r.rays = rays.load();
+  r.nonFinite = nonFinite.load();
+  return r;
+}
+
+}  // namespace vkpt::test

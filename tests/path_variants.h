@@ -1,0 +1,23 @@
+// The shared estimator (shaders/shared/path.h) recompiled for the CPU with test-only
+// macros (tests/path_variant.cpp, built once per variant by tests/CMakeLists.txt): the
+// two MIS strategies alone, and mutants that the MIS test must reject. Each renders as
+// RenderCpu does (same RNG streams, same Film), on all cores.
+#pragma once
+
+#include "image/film.h"
+#include "render/render_scene.h"
+
+namespace vkpt::test {
+
+using PathVariantRenderer = RenderResult (*)(const RenderScene&, const shader::FrameParams&);
+
+RenderResult RenderMisLightOnly(const RenderScene& scene, const shader::FrameParams& params);  // VKPT_MIS_LIGHT_ONLY
+RenderResult RenderMisBsdfOnly(const RenderScene& scene, const shader::FrameParams& params);   // VKPT_MIS_BSDF_ONLY
+// Mutants: MIS with both weights 1; MIS with the light sample's pdfs swapped; the GGX
+// reflection pdf without its 1/(4 ωo·h), with MIS and with BSDF sampling alone.
+RenderResult RenderMutantMisWeightOne(const RenderScene& scene, const shader::FrameParams& params);
+RenderResult RenderMutantMisSwappedPdfs(const RenderScene& scene, const shader::FrameParams& params);
+RenderResult RenderMutantNoJacobian(const RenderScene& scene, const shader::FrameParams& params);
+RenderResult RenderMutantNoJacobianBsdfOnly(const RenderScene& scene, const shader::FrameParams& params);
+
+}  // namespace vkpt::test
