@@ -448,6 +448,48 @@ TEST(Loader, EmissiveStrengthWithoutFactorStaysBlack) {
   EXPECT_TRUE(Near(s.materials[s.triangles[0].material].emission, {0, 0, 0}));
 }
 
+// KHR_materials_transmission and KHR_materials_volume: the factor, thin wall without a
+// thickness, σ = −ln(attenuationColor) / attenuationDistance with a volume.
+TEST(Loader, TransmissionAndVolume) {
+  GltfBuilder b;
+  int pos = b.Positions(kUnitTriangle);
+  b.materials.push_back(R"({"extensions":{"KHR_materials_transmission":{"transmissionFactor":0.75}}})");
+  b.materials.push_back(
+      R"({"extensions":{"KHR_materials_transmission":{"transmissionFactor":1},)"
+      R"("KHR_materials_volume":{"thicknessFactor":0.5,"attenuationDistance":2,"attenuationColor":[0.5,1,0.25]}}})");
+  b.extensionsUsed = {"KHR_materials_transmission", "KHR_materials_volume"};
+  b.meshes.push_back("{\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+                     "},\"material\":0},{\"attributes\":{\"POSITION\":" + std::to_string(pos) + "},\"material\":1}]}");
+  b.Node(R"({"mesh":0})");
+  Scene s = Load(b);
+  ASSERT_EQ(s.triangles.size(), 2u);
+  const Material& thin = s.materials[s.triangles[0].material];
+  EXPECT_FLOAT_EQ(thin.transmission, 0.75f);
+  EXPECT_EQ(thin.flags & shader::kMaterialVolume, 0u) << "no thickness: a thin wall";
+  EXPECT_TRUE(Near(thin.attenuation, {0, 0, 0}));
+  const Material& glass = s.materials[s.triangles[1].material];
+  EXPECT_FLOAT_EQ(glass.transmission, 1.0f);
+  EXPECT_NE(glass.flags & shader::kMaterialVolume, 0u);
+  EXPECT_TRUE(Near(glass.attenuation, {std::log(2.0f) / 2.0f, 0.0f, std::log(4.0f) / 2.0f}));
+  EXPECT_TRUE(s.ignoredFeatures.empty()) << s.ignoredFeatures[0];
+}
+
+TEST(Loader, ErrorTransmissionAndVolumeOutOfRange) {
+  const char* cases[][2] = {
+      {R"("KHR_materials_transmission":{"transmissionFactor":1.5})", "transmissionFactor is not in [0, 1]"},
+      {R"("KHR_materials_volume":{"thicknessFactor":-1})", "thicknessFactor must be >= 0"},
+      {R"("KHR_materials_volume":{"attenuationDistance":0})", "attenuationDistance must be > 0"},
+      {R"("KHR_materials_volume":{"attenuationColor":[1,2,1]})", "attenuationColor[1] is not in [0, 1]"},
+  };
+  for (const auto& c : cases) {
+    GltfBuilder b;
+    b.materials.push_back(std::string(R"({"extensions":{)") + c[0] + "}}");
+    b.Mesh(b.Positions(kUnitTriangle), -1, 0);
+    b.Node(R"({"mesh":0})");
+    EXPECT_TRUE(FailsWith(b, {"materials[0]", c[1]})) << c[0];
+  }
+}
+
 // ---------------------------------------------------------------------------------------
 // Cameras
 

@@ -42,9 +42,13 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
               scene.materials.size(), rs.lights.size());
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
-    std::printf("  material %zu \"%s\": baseColor (%.4g, %.4g, %.4g) emission (%.6g, %.6g, %.6g)%s\n", i,
-                scene.materialNames[i].c_str(), m.baseColor.x, m.baseColor.y, m.baseColor.z, m.emission.x,
-                m.emission.y, m.emission.z, (m.flags & shader::kMaterialDoubleSided) ? " double-sided" : "");
+    std::printf(
+        "  material %zu \"%s\": baseColor (%.4g, %.4g, %.4g) metallic %.3g roughness %.3g specular %.3g ior %.3g "
+        "transmission %.3g%s emission (%.6g, %.6g, %.6g)%s%s\n",
+        i, scene.materialNames[i].c_str(), m.baseColor.x, m.baseColor.y, m.baseColor.z, m.metallic, m.roughness,
+        m.specular, m.ior, m.transmission, (m.flags & shader::kMaterialVolume) ? " (volume)" : "", m.emission.x,
+        m.emission.y, m.emission.z, (m.flags & shader::kMaterialDoubleSided) ? " double-sided" : "",
+        (m.flags & shader::kMaterialUnlit) ? " unlit" : "");
   }
   std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", scene.bounds.lo.x, scene.bounds.lo.y,
               scene.bounds.lo.z, scene.bounds.hi.x, scene.bounds.hi.y, scene.bounds.hi.z);
