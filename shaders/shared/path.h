@@ -27,13 +27,6 @@
 #include "sampling.h"
 #include "shading_frame.h"
 
-// A shader may define VKPT_LIGHT_SAMPLING as a specialization constant that is false
-// when the scene has no lights: lavapipe runs an if's body even when no lane takes it,
-// so the constant lets its compiler drop the light-sampling code.
-#ifndef VKPT_LIGHT_SAMPLING
-#define VKPT_LIGHT_SAMPLING true
-#endif
-
 VKPT_BEGIN_NAMESPACE
 
 struct PathSample {
@@ -98,7 +91,7 @@ VKPT_FN vec3 WeightedEmission(VKPT_SCENE_PARAM PathState s, SurfaceHit sh, float
 // against light sampling unless a camera ray sees it), or the constant background.
 VKPT_FN vec3 EscapedRadiance(VKPT_SCENE_PARAM FrameParams params, PathState s) {
   vec3 L = EnvRadiance(VKPT_SCENE_ARG params, s.ray.dir);
-  if (s.bsdfPdf > 0.0f && params.envLight != kInvalidIndex) {
+  if (SceneHasLightType(kLightEnvironment) && s.bsdfPdf > 0.0f && params.envLight != kInvalidIndex) {
     float lightPdf = VKPT_LIGHT(params.envLight).pmf * EnvironmentPdf(VKPT_SCENE_ARG params, s.ray.dir);
     L *= PowerHeuristic(s.bsdfPdf, lightPdf);
   }
@@ -147,7 +140,8 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
 
   vec3 wo = WorldToFrame(sh.frame, -s.ray.dir);
   Bsdf bsdf = PrepareBsdf(sh.material, wo);
-  if (VKPT_LIGHT_SAMPLING && params.lightCount > 0u) SampleDirectLight(VKPT_SCENE_ARG params, s, sh, bsdf, wo, bounce);
+  if (VKPT_LIGHT_TYPES != 0u && params.lightCount > 0u)
+    SampleDirectLight(VKPT_SCENE_ARG params, s, sh, bsdf, wo, bounce);
 
   vec4 ur = Random4(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
   vec2 ub = Sample2D(params.seed, s.pixel, s.sampleIndex, BsdfGroup(bounce));
