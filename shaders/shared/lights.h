@@ -31,6 +31,7 @@
 VKPT_BEGIN_NAMESPACE
 
 VKPT_FN bool SceneHasLightType(uint type) { return (VKPT_LIGHT_TYPES & (1u << type)) != 0u; }
+const uint kTriangleLightTypes = (1u << kLightTriangle) | (1u << kLightTwoSidedTriangle);
 
 struct LightSample {
   vec3 wi;        // unit direction from the shading point to the light
@@ -76,23 +77,23 @@ VKPT_FN float RangeFalloff(float range, float dist) {
   return clamp(1.0f - x2 * x2, 0.0f, 1.0f);
 }
 
-// Samples a light for the shading point p (geometric normal ng on the side the path
-// arrived from) with u ∈ [0,1)²: u.x picks the light and is then stretched back to
-// [0,1) within its CDF interval (pbrt-v4's SampleDiscrete), so the point on a triangle
-// light stays stratified over the union of all triangles. pdf = 0: no contribution.
-VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 ng, vec2 u) {
+// Samples a light for the shading point p, whose rays leave from `origin` (p offset
+// along the geometric normal on the side the path arrived from), with u ∈ [0,1)²: u.x picks the light and is then
+// stretched back to [0,1) within its CDF interval (pbrt-v4's SampleDiscrete), so the point on a triangle light stays
+// stratified over the union of all triangles. pdf = 0: no contribution.
+VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 origin, vec2 u) {
   uint k = PickLight(VKPT_SCENE_ARG params.lightCount, u.x);
   Light l = VKPT_LIGHT(k);
   float cdfBelow = k > 0u ? VKPT_LIGHT_CDF(k - 1u) : 0.0f;
   u.x = min((u.x - cdfBelow) / (l.cdf - cdfBelow), kOneMinusEpsilon);
-  vec3 origin = OffsetRayOrigin(p, ng);
   LightSample ls;
-  bool triangle = l.type <= kLightTwoSidedTriangle;
+  // Constant where the scene has triangle lights only, so that lavapipe compiles no branch.
+  bool triangle = (VKPT_LIGHT_TYPES & ~kTriangleLightTypes) == 0u || l.type <= kLightTwoSidedTriangle;
   ls.pdf = 0.0f;  // stays so only for a type outside VKPT_LIGHT_TYPES, which cannot occur
   ls.delta = !triangle;
   ls.shadowRay.origin = origin;
   ls.shadowTMax = 1.0f;
-  if ((SceneHasLightType(kLightTriangle) || SceneHasLightType(kLightTwoSidedTriangle)) && triangle) {
+  if ((VKPT_LIGHT_TYPES & kTriangleLightTypes) != 0u && triangle) {
     Triangle tri = VKPT_TRIANGLE(l.triangle);
     vec2 b = SampleUniformTriangle(u.x, u.y);
     vec3 x = tri.v0 + b.x * tri.e1 + b.y * tri.e2;
