@@ -88,12 +88,16 @@ std::vector<shader::TriangleShading> TriangleShadings(const Scene& scene, unsign
       scene.normals.size(), ThreadCount(threads),
       [&](size_t i) {
         const VertexNormals& n = scene.normals[i];
+        if (!n.Present()) return;
+        const shader::TriangleShading s{EncodeOctahedral(n.n0), EncodeOctahedral(n.n1), EncodeOctahedral(n.n2),
+                                        shader::kShadingHasNormals};
         const SceneTriangle& t = scene.triangles[i];
-        if (!n.Present() || IsDegenerate(t)) return;  // degenerate ones are never hit
-        const uint32_t face = EncodeOctahedral(glm::normalize(glm::cross(t.v1 - t.v0, t.v2 - t.v0)));
-        shader::TriangleShading s{EncodeOctahedral(n.n0), EncodeOctahedral(n.n1), EncodeOctahedral(n.n2),
-                                  shader::kShadingHasNormals};
-        if (s.n0 != face || s.n1 != face || s.n2 != face) shading[i] = s;
+        // A degenerate triangle has no face normal (and is never hit): it keeps its own.
+        if (!IsDegenerate(t)) {
+          const uint32_t face = EncodeOctahedral(glm::normalize(glm::cross(t.v1 - t.v0, t.v2 - t.v0)));
+          if (s.n0 == face && s.n1 == face && s.n2 == face) return;
+        }
+        shading[i] = s;
       },
       4096);
   return shading;
