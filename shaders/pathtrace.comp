@@ -36,12 +36,20 @@ layout(push_constant) uniform Push {
   uint samples;
 };
 
-// 0 when the scene has no lights (set by the host): see shared/path.h.
-layout(constant_id = 0) const uint kSceneHasLights = 1u;
-#define VKPT_LIGHT_SAMPLING (kSceneHasLights != 0u)
-// 0 when every material is Lambertian (set by the host): see shared/bsdf.h.
+// What the scene has, set by the host, so that lavapipe's compiler drops the code of what
+// it lacks (it runs an if's body even when no lane takes it).
+// The light types of the light table, bit 1 << kLight* (0: no lights): see shared/lights.h.
+layout(constant_id = 0) const uint kSceneLightTypes = 0xFFFFFFFFu;
+#define VKPT_LIGHT_TYPES kSceneLightTypes
+// 0 when every material is Lambertian: see shared/bsdf.h.
 layout(constant_id = 1) const uint kSceneHasGlossy = 1u;
 #define VKPT_GLOSSY_MATERIALS (kSceneHasGlossy != 0u)
+// 0 when no triangle has vertex normals: see shared/shading_frame.h.
+layout(constant_id = 2) const uint kSceneHasSmoothNormals = 1u;
+#define VKPT_SMOOTH_NORMALS (kSceneHasSmoothNormals != 0u)
+// 0 without an environment map: see shared/environment.h.
+layout(constant_id = 3) const uint kSceneHasEnvironmentMap = 1u;
+#define VKPT_ENVIRONMENT_MAP (kSceneHasEnvironmentMap != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

@@ -212,5 +212,18 @@ TEST(Octahedral, RenderSceneShadingIsIndexedBySourceTriangle) {
   EXPECT_EQ(shader::DecodeOctahedral(sh.n2), glm::vec3(0, 0, -1));
 }
 
+TEST(Octahedral, FlatShadedTrianglesDropTheirNormals) {
+  // Triangle 0's vertex normals are its face normal (+z): it renders flat, without them.
+  // Triangle 1's point the other way, so they must stay (the shader faces them forward).
+  GltfBuilder b;
+  MeshWithNormals(b, b.Positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}),
+                  Normals(b, {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1}}));
+  b.Node(R"({"mesh":0})");
+  RenderScene rs = PrepareRenderScene(Load(b));
+  ASSERT_EQ(rs.shading.size(), 2u);
+  EXPECT_EQ(rs.shading[0].flags, 0u);
+  EXPECT_EQ(rs.shading[1].flags, shader::kShadingHasNormals);
+}
+
 }  // namespace
 }  // namespace vkpt

@@ -73,8 +73,12 @@ std::vector<shader::Triangle> LeafOrderTriangles(const Scene& scene, const std::
 }
 
 // The scene's vertex normals, octahedrally encoded (shared/shading_normal.h); triangles
-// without them stay flat (all zero). Encoding tries four candidates per normal, which
-// on 10 M triangles is worth the threads.
+// without them stay flat (all zero). So do triangles whose three vertex normals encode
+// to the code of their own face normal (flat-shaded boxes such as the Cornell box's):
+// interpolating them would give the face normal back up to the encoding's error, at the
+// cost of three decodes per hit, and a scene without smooth triangles lets the shader
+// drop that code (pathtrace.comp). Encoding tries four candidates per normal, which on
+// 10 M triangles is worth the threads.
 std::vector<shader::TriangleShading> TriangleShadings(const Scene& scene, unsigned threads) {
   if (!scene.normals.empty() && scene.normals.size() != scene.triangles.size())
     throw Error(scene.path + ": " + std::to_string(scene.normals.size()) + " vertex normal triples for " +
@@ -84,9 +88,16 @@ std::vector<shader::TriangleShading> TriangleShadings(const Scene& scene, unsign
       scene.normals.size(), ThreadCount(threads),
       [&](size_t i) {
         const VertexNormals& n = scene.normals[i];
-        if (n.Present())
-          shading[i] = {EncodeOctahedral(n.n0), EncodeOctahedral(n.n1), EncodeOctahedral(n.n2),
-                        shader::kShadingHasNormals};
+        if (!n.Present()) return;
+        const shader::TriangleShading s{EncodeOctahedral(n.n0), EncodeOctahedral(n.n1), EncodeOctahedral(n.n2),
+                                        shader::kShadingHasNormals};
+        const SceneTriangle& t = scene.triangles[i];
+        // A degenerate triangle has no face normal (and is never hit): it keeps its own.
+        if (!IsDegenerate(t)) {
+          const uint32_t face = EncodeOctahedral(glm::normalize(glm::cross(t.v1 - t.v0, t.v2 - t.v0)));
+          if (s.n0 == face && s.n1 == face && s.n2 == face) return;
+        }
+        shading[i] = s;
       },
       4096);
   return shading;

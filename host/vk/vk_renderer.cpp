@@ -165,8 +165,13 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
       hasGlossy_(std::any_of(scene.materials.begin(), scene.materials.end(),
                              [](const shader::Material& m) { return !shader::IsLambertian(m); })),
+      hasSmoothNormals_(
+          std::any_of(scene.shading.begin(), scene.shading.end(),
+                      [](const shader::TriangleShading& s) { return (s.flags & shader::kShadingHasNormals) != 0; })),
       nodeCount_(scene.bvhStats.nodes),
-      nodeCopies_(scene.nodeCopies) {}
+      nodeCopies_(scene.nodeCopies) {
+  for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
+}
 
 RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {
   FrameBuffers b = MakeFrameBuffers(ctx_, uint64_t(frame.width) * frame.height);
@@ -183,7 +188,9 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
                             {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
-                           "pathtrace", 2 * sizeof(uint32_t), {frame.lightCount > 0 ? 1u : 0u, hasGlossy_ ? 1u : 0u});
+                           "pathtrace", 2 * sizeof(uint32_t),
+                           {frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
+                            frame.envWidth > 0 ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);

@@ -22,6 +22,13 @@
 #include "prelude.h"
 #include "sampling.h"
 
+// A shader may define VKPT_ENVIRONMENT_MAP as a specialization constant that is false
+// when there is no map: lavapipe runs an if's body even when no lane takes it, so only a
+// constant spares every escaped ray the lookup code (two atan2s, four texel fetches).
+#ifndef VKPT_ENVIRONMENT_MAP
+#define VKPT_ENVIRONMENT_MAP true
+#endif
+
 VKPT_BEGIN_NAMESPACE
 
 struct EnvSample {
@@ -71,7 +78,7 @@ VKPT_FN vec3 EnvBilinear(VKPT_SCENE_PARAM uint w, uint h, vec2 uv) {
 // Radiance arriving from direction dir (unit, world space) from outside the scene: the
 // map × intensity, or the constant background when there is no map.
 VKPT_FN vec3 EnvRadiance(VKPT_SCENE_PARAM FrameParams p, vec3 dir) {
-  if (p.envWidth == 0u) return p.background;
+  if (!VKPT_ENVIRONMENT_MAP || p.envWidth == 0u) return p.background;
   return p.envIntensity * EnvBilinear(VKPT_SCENE_ARG p.envWidth, p.envHeight, EnvDirectionToUv(p, dir));
 }
 

@@ -19,7 +19,19 @@
 #include "prelude.h"
 #include "sampling.h"
 
+// A shader may define VKPT_LIGHT_TYPES as a specialization constant: the set of light
+// types in the scene's light table (bit 1 << kLight*), 0 without lights. lavapipe runs an
+// if's body even when no lane takes it, so only a constant lets its compiler drop the
+// code of the types a scene lacks (the Cornell box: all but triangles, whose sampling
+// then costs what it did before punctual lights and environment maps). The CPU branches.
+#ifndef VKPT_LIGHT_TYPES
+#define VKPT_LIGHT_TYPES 0xFFFFFFFFu
+#endif
+
 VKPT_BEGIN_NAMESPACE
+
+VKPT_FN bool SceneHasLightType(uint type) { return (VKPT_LIGHT_TYPES & (1u << type)) != 0u; }
+const uint kTriangleLightTypes = (1u << kLightTriangle) | (1u << kLightTwoSidedTriangle);
 
 struct LightSample {
   vec3 wi;        // unit direction from the shading point to the light
@@ -65,22 +77,23 @@ VKPT_FN float RangeFalloff(float range, float dist) {
   return clamp(1.0f - x2 * x2, 0.0f, 1.0f);
 }
 
-// Samples a light for the shading point p (geometric normal ng on the side the path
-// arrived from) with u ∈ [0,1)²: u.x picks the light and is then stretched back to
-// [0,1) within its CDF interval (pbrt-v4's SampleDiscrete), so the point on a triangle
-// light stays stratified over the union of all triangles. pdf = 0: no contribution.
-VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 ng, vec2 u) {
+// Samples a light for the shading point p, whose rays leave from `origin` (p offset
+// along the geometric normal on the side the path arrived from), with u ∈ [0,1)²: u.x picks the light and is then
+// stretched back to [0,1) within its CDF interval (pbrt-v4's SampleDiscrete), so the point on a triangle light stays
+// stratified over the union of all triangles. pdf = 0: no contribution.
+VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 origin, vec2 u) {
   uint k = PickLight(VKPT_SCENE_ARG params.lightCount, u.x);
   Light l = VKPT_LIGHT(k);
   float cdfBelow = k > 0u ? VKPT_LIGHT_CDF(k - 1u) : 0.0f;
   u.x = min((u.x - cdfBelow) / (l.cdf - cdfBelow), kOneMinusEpsilon);
-  vec3 origin = OffsetRayOrigin(p, ng);
   LightSample ls;
-  bool triangle = l.type <= kLightTwoSidedTriangle;
+  // Constant where the scene has triangle lights only, so that lavapipe compiles no branch.
+  bool triangle = (VKPT_LIGHT_TYPES & ~kTriangleLightTypes) == 0u || l.type <= kLightTwoSidedTriangle;
+  ls.pdf = 0.0f;  // stays so only for a type outside VKPT_LIGHT_TYPES, which cannot occur
   ls.delta = !triangle;
   ls.shadowRay.origin = origin;
   ls.shadowTMax = 1.0f;
-  if (triangle) {
+  if ((VKPT_LIGHT_TYPES & kTriangleLightTypes) != 0u && triangle) {
     Triangle tri = VKPT_TRIANGLE(l.triangle);
     vec2 b = SampleUniformTriangle(u.x, u.y);
     vec3 x = tri.v0 + b.x * tri.e1 + b.y * tri.e2;
@@ -99,7 +112,7 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 n
     // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
     // unnormalised direction: the emitter itself then lies beyond tMax.
     ls.shadowRay.dir = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl) - origin;
-  } else if (l.type == kLightEnvironment) {
+  } else if (SceneHasLightType(kLightEnvironment) && l.type == kLightEnvironment) {
     EnvSample es = SampleEnvironment(VKPT_SCENE_ARG params, u);
     ls.wi = es.dir;
     ls.pdf = l.pmf * es.pdf;
@@ -107,19 +120,19 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 n
     ls.delta = false;
     ls.shadowRay.dir = ls.wi;
     ls.shadowTMax = kInfinity;
-  } else if (l.type == kLightDirectional) {
+  } else if (SceneHasLightType(kLightDirectional) && l.type == kLightDirectional) {
     ls.wi = -l.direction;
     ls.pdf = l.pmf;
     ls.radiance = l.radiance;
     ls.shadowRay.dir = ls.wi;
     ls.shadowTMax = kInfinity;
-  } else {  // point or spot
+  } else if (SceneHasLightType(kLightPoint) || SceneHasLightType(kLightSpot)) {  // point or spot
     vec3 d = l.position - p;
     float dist2 = dot(d, d);
     float dist = sqrt(dist2);
     ls.wi = d / dist;
     float falloff = RangeFalloff(l.extent, dist) / dist2;
-    if (l.type == kLightSpot) falloff *= SpotFalloff(l, -ls.wi);
+    if (SceneHasLightType(kLightSpot) && l.type == kLightSpot) falloff *= SpotFalloff(l, -ls.wi);
     ls.pdf = dist2 > 0.0f ? l.pmf : 0.0f;
     ls.radiance = l.radiance * falloff;
     ls.shadowRay.dir = l.position - origin;

@@ -34,13 +34,6 @@
 #include "sampling.h"
 #include "shading_frame.h"
 
-// A shader may define VKPT_LIGHT_SAMPLING as a specialization constant that is false
-// when the scene has no lights: lavapipe runs an if's body even when no lane takes it,
-// so the constant lets its compiler drop the light-sampling code.
-#ifndef VKPT_LIGHT_SAMPLING
-#define VKPT_LIGHT_SAMPLING true
-#endif
-
 VKPT_BEGIN_NAMESPACE
 
 // MIS weights of the two strategies: Veach's power heuristic for a light sample (density
@@ -143,7 +136,7 @@ VKPT_FN vec3 WeightedEmission(VKPT_SCENE_PARAM PathState s, SurfaceHit sh, float
 // against light sampling unless a camera ray sees it), or the constant background.
 VKPT_FN vec3 EscapedRadiance(VKPT_SCENE_PARAM FrameParams params, PathState s) {
   vec3 L = EnvRadiance(VKPT_SCENE_ARG params, s.ray.dir);
-  if (s.bsdfPdf > 0.0f && params.envLight != kInvalidIndex) {
+  if (SceneHasLightType(kLightEnvironment) && s.bsdfPdf > 0.0f && params.envLight != kInvalidIndex) {
     float lightPdf = VKPT_LIGHT(params.envLight).pmf * EnvironmentPdf(VKPT_SCENE_ARG params, s.ray.dir);
     L *= BsdfSampleWeight(s.bsdfPdf, lightPdf);
   }
@@ -151,11 +144,11 @@ VKPT_FN vec3 EscapedRadiance(VKPT_SCENE_PARAM FrameParams params, PathState s) {
 }
 
 // Next-event estimation at the vertex: samples a light and, if it can contribute, sets
-// the shadow ray and the MIS-weighted contribution it carries if unoccluded.
-VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s, SurfaceHit sh, Bsdf bsdf,
-                               vec3 wo, uint bounce) {
+// the shadow ray (from `origin`) and the MIS-weighted contribution it carries if unoccluded.
+VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s, SurfaceHit sh, vec3 origin,
+                               Bsdf bsdf, vec3 wo, uint bounce) {
   vec2 ul = Sample2D(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
-  LightSample ls = SampleLi(VKPT_SCENE_ARG params, sh.p, sh.ng, ul);
+  LightSample ls = SampleLi(VKPT_SCENE_ARG params, sh.p, origin, ul);
   // A light below the geometric surface cannot reach it, whatever the shading normal says;
   // one below the shading normal would be a transmission the shadow ray cannot see.
   if (!(ls.pdf > 0.0f) || dot(ls.wi, sh.ng) <= 0.0f) return;
@@ -169,6 +162,20 @@ VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(P
   s.shadowRay = ls.shadowRay;
   s.shadowTMax = ls.shadowTMax;
   s.lightContribution = s.throughput * f * ls.radiance * (wi.z * weight / ls.pdf);
+}
+
+// Russian roulette (GAMES101: continue with probability P, divide by P) on the throughput
+// times the sampled direction's weight: survival follows the throughput, so dim paths end
+// early and bright ones rarely. Returns false if the path ends here.
+VKPT_FN bool Survives(FrameParams params, VKPT_INOUT(PathState) s, vec3 weight, uint bounce, float u) {
+  s.throughput *= weight;
+  if (bounce < params.rrDepth) return true;
+  float survive = min(1.0f, MaxComponent(s.throughput));
+  if (!(u < survive)) return false;
+#ifndef VKPT_MUTANT_ROULETTE_WITHOUT_DIVISION
+  s.throughput /= survive;
+#endif
+  return true;
 }
 
 // The path's ray s.ray has found `hit`: adds what is seen there, samples a light (setting
@@ -196,9 +203,14 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
 
   vec3 wo = WorldToFrame(sh.frame, -s.ray.dir);
   Bsdf bsdf = PrepareBsdf(sh.material, wo, sh.frontFace);
-  if (VKPT_LIGHT_SAMPLING && params.lightCount > 0u) SampleDirectLight(VKPT_SCENE_ARG params, s, sh, bsdf, wo, bounce);
+  vec3 origin = OffsetRayOrigin(sh.p, sh.ng);  // of the shadow ray and a reflected continuation
+  if (VKPT_LIGHT_TYPES != 0u && params.lightCount > 0u)
+    SampleDirectLight(VKPT_SCENE_ARG params, s, sh, origin, bsdf, wo, bounce);
 
   vec4 ur = Random4(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
+  // A Lambertian sample's weight is baseColor whatever its direction, so roulette can run
+  // first and a path it ends samples no direction (the same outcome, for less work).
+  if (bsdf.lambert && !Survives(params, s, bsdf.baseColor, bounce, ur.w)) return false;
   vec2 ub = Sample2D(params.seed, s.pixel, s.sampleIndex, BsdfGroup(bounce));
   BsdfSample bs = SampleBsdf(bsdf, wo, vec3(ur.x, ub.x, ub.y));
   vec3 wi = FrameToWorld(sh.frame, bs.wi);
@@ -207,18 +219,9 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   bool transmitted = bs.wi.z < 0.0f;
   float side = dot(wi, sh.ng);
   if (!(bs.pdf > 0.0f) || side == 0.0f || (side < 0.0f) != transmitted) return false;
-  s.throughput *= bs.weight;
+  if (!bsdf.lambert && !Survives(params, s, bs.weight, bounce, ur.w)) return false;
   s.bsdfPdf = transmitted ? 0.0f : bs.pdf;
-  // Russian roulette (GAMES101: continue with probability P, divide by P): survival
-  // follows the throughput, so dim paths end early and bright ones rarely.
-  if (bounce >= params.rrDepth) {
-    float survive = min(1.0f, MaxComponent(s.throughput));
-    if (!(ur.w < survive)) return false;
-#ifndef VKPT_MUTANT_ROULETTE_WITHOUT_DIVISION
-    s.throughput /= survive;
-#endif
-  }
-  s.ray.origin = OffsetRayOrigin(sh.p, transmitted ? -sh.ng : sh.ng);
+  s.ray.origin = transmitted ? OffsetRayOrigin(sh.p, -sh.ng) : origin;
   s.ray.dir = wi;
   s.result.rays += 1u;
   return true;

@@ -9,6 +9,14 @@
 #include "sampling.h"
 #include "shading_normal.h"
 
+// A shader may define VKPT_SMOOTH_NORMALS as a specialization constant that is false
+// when no triangle has vertex normals (host/render/render_scene.cpp leaves flat-shaded
+// ones without): lavapipe runs an if's body even when no lane takes it, so only a
+// constant spares every hit the three octahedral decodes.
+#ifndef VKPT_SMOOTH_NORMALS
+#define VKPT_SMOOTH_NORMALS true
+#endif
+
 VKPT_BEGIN_NAMESPACE
 
 struct SurfaceHit {
@@ -54,11 +62,13 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
   sh.emits = frontFace || (sh.material.flags & kMaterialDoubleSided) != 0u;
   sh.p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
   vec3 ns = sh.ng;
-  TriangleShading shading = VKPT_SHADING(tri.sourceIndex);
-  if ((shading.flags & kShadingHasNormals) != 0u) {
-    vec3 n = InterpolatedNormal(shading, hit.b1, hit.b2);
-    // Vertex normals that cancel out (or NaN from them) leave the flat normal.
-    if (abs(dot(n, n) - 1.0f) < 1e-3f) ns = frontFace ? n : -n;
+  if (VKPT_SMOOTH_NORMALS) {
+    TriangleShading shading = VKPT_SHADING(tri.sourceIndex);
+    if ((shading.flags & kShadingHasNormals) != 0u) {
+      vec3 n = InterpolatedNormal(shading, hit.b1, hit.b2);
+      // Vertex normals that cancel out (or NaN from them) leave the flat normal.
+      if (abs(dot(n, n) - 1.0f) < 1e-3f) ns = frontFace ? n : -n;
+    }
   }
   sh.frame = FrameFromNormal(AdaptShadingNormal(ns, sh.ng, -ray.dir));
   return sh;
