@@ -10,6 +10,7 @@
 
 #include "cpu/path_tracer.h"
 #include "cpu/traversal.h"
+#include "gpu_test.h"
 #include "image/image_compare.h"
 #include "image/image_load.h"
 #include "kPathTraceMutantNoLightCosine.h"
@@ -43,24 +44,9 @@ namespace vkpt {
 namespace {
 
 using shader::FrameParams;
+using test::Gpu;
 
-// One validated context for the whole test program (device creation costs ~100 ms).
-vk::Context& Gpu() {
-  static std::unique_ptr<vk::Context> ctx = [] {
-    vk::ContextOptions o;
-    o.validation = true;
-    return std::make_unique<vk::Context>(o);
-  }();
-  return *ctx;
-}
-
-class GpuTest : public ::testing::Test {
- protected:
-  void TearDown() override {
-    EXPECT_EQ(Gpu().ValidationMessages(), before_) << "the Vulkan validation layer reported messages";
-  }
-  uint32_t before_ = Gpu().ValidationMessages();
-};
+class GpuTest : public test::ValidatedGpuTest {};
 
 FrameParams Params(const RenderScene& rs, const Scene& scene, uint32_t w, uint32_t h, uint32_t spp, uint32_t seed,
                    uint32_t maxDepth = 32, uint32_t rrDepth = 3) {

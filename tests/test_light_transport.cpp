@@ -18,6 +18,7 @@
 
 #include "cpu/path_tracer.h"
 #include "gltf_builder.h"
+#include "gpu_test.h"
 #include "image/image_compare.h"
 #include "image/image_load.h"
 #include "render/light_table.h"
@@ -32,24 +33,8 @@ namespace {
 using namespace test;
 using shader::FrameParams;
 
-// One validated context for the whole test program (device creation costs ~100 ms).
-vk::Context& Gpu() {
-  static std::unique_ptr<vk::Context> ctx = [] {
-    vk::ContextOptions o;
-    o.validation = true;
-    return std::make_unique<vk::Context>(o);
-  }();
-  return *ctx;
-}
-
 // Every test renders on the GPU too and ends by asserting the validation layer was silent.
-class LightTransport : public ::testing::Test {
- protected:
-  void TearDown() override {
-    EXPECT_EQ(Gpu().ValidationMessages(), before_) << "the Vulkan validation layer reported messages";
-  }
-  uint32_t before_ = Gpu().ValidationMessages();
-};
+class LightTransport : public test::ValidatedGpuTest {};
 
 // ---------------------------------------------------------------------------------------
 // Punctual lights over a Lambert plane
