@@ -215,74 +215,60 @@ TEST(BsdfChi2, SamplerMatchesPdf) {
   }
 }
 
-// The χ² routine has teeth: the true sampler against wrong densities must be rejected
-// at the same per-case α.
+// The χ² routine has teeth: the true sampler for `m` at μo against a wrong density
+// pdf(b, ωo, ωi) must be rejected at the same per-case α.
+template <class Pdf>
+void ExpectWrongPdfRejected(const char* name, const Material& m, float muO, const Pdf& pdf, uint32_t seed) {
+  const vec3 wo = Outgoing(muO);
+  const Bsdf b = PrepareBsdf(m, wo, true);
+  Chi2Result r = SamplerChi2(
+      b, wo, [&](vec3 wi) { return double(pdf(b, wo, wi)); }, seed);
+  PrintChi2(name, r, kChi2Alpha);
+  EXPECT_LT(r.p, kChi2Alpha) << name;
+}
+
 TEST(BsdfChi2, CatchesWrongPdfs) {
   std::printf("chi2 mutants (must give p < %.5f):\n", kChi2Alpha);
-  {
-    // The visible-normal density D_ωo(h) used as a density of ωi: the reflection
-    // Jacobian 1/(4 ωo·h) dropped.
-    const Material m = MakeMaterial(vec3(0.9f, 0.6f, 0.3f), 1.0f, 0.5f, 1.0f, 1.5f);
-    const vec3 wo = Outgoing(0.5f);
-    const Bsdf b = PrepareBsdf(m, wo, true);
-    Chi2Result r = SamplerChi2(
-        b, wo,
-        [&](vec3 wi) {
-          if (wi.z <= 0.0f) return 0.0;
-          vec3 h = normalize(wo + wi);
-          double ggx = 4.0 * dot(wo, h) * GgxReflectionPdf(wo, wi, b.alpha);
-          return b.pSpecular * ggx + (1.0 - b.pSpecular) * CosineHemispherePdf(wi.z);
-        },
-        200);
-    PrintChi2("mutant: GGX pdf without 1/(4 wo.h), metal r 0.5", r, kChi2Alpha);
-    EXPECT_LT(r.p, kChi2Alpha);
-  }
-  {
-    // Classic NDF sampling's density D(h) cos θh / (4 ωo·h) instead of the visible normals'.
-    const Material m = MakeMaterial(vec3(0.9f, 0.6f, 0.3f), 1.0f, 1.0f, 1.0f, 1.5f);
-    const vec3 wo = Outgoing(0.3f);
-    const Bsdf b = PrepareBsdf(m, wo, true);
-    Chi2Result r = SamplerChi2(
-        b, wo,
-        [&](vec3 wi) {
-          if (wi.z <= 0.0f) return 0.0;
-          vec3 h = normalize(wo + wi);
-          double ggx = GgxD(h, b.alpha) * h.z / (4.0 * dot(wo, h));
-          return b.pSpecular * ggx + (1.0 - b.pSpecular) * CosineHemispherePdf(wi.z);
-        },
-        201);
-    PrintChi2("mutant: NDF instead of VNDF pdf, metal r 1.0", r, kChi2Alpha);
-    EXPECT_LT(r.p, kChi2Alpha);
-  }
-  {
-    // The right density, 10 % too high on one half of the hemisphere (y > 0).
-    const Material m = MakeMaterial(vec3(0.1f, 0.5f, 0.9f), 0.5f, 0.3f, 1.0f, 1.5f);
-    const vec3 wo = Outgoing(0.5f);
-    const Bsdf b = PrepareBsdf(m, wo, true);
-    Chi2Result r = SamplerChi2(
-        b, wo, [&](vec3 wi) { return BsdfPdf(b, wo, wi) * (wi.y > 0.0f ? 1.1 : 1.0); }, 202);
-    PrintChi2("mutant: pdf x 1.1 where y > 0, mixture", r, kChi2Alpha);
-    EXPECT_LT(r.p, kChi2Alpha);
-  }
-  {
-    // The refraction half vector's density D_ωo(m) used as a density of ωi: Walter's
-    // Jacobian |dm/dωi| dropped.
-    const Material m = Transmissive(MakeMaterial(vec3(1.0f), 0.0f, 0.5f, 1.0f, 1.5f), 1.0f, true);
-    const vec3 wo = Outgoing(0.6f);
-    const Bsdf b = PrepareBsdf(m, wo, true);
-    Chi2Result r = SamplerChi2(
-        b, wo,
-        [&](vec3 wi) {
-          if (wi.z >= 0.0f) return double(BsdfPdf(b, wo, wi));
-          vec3 h = RefractionHalfVector(wo, wi, b.etap);
-          if (h.z == 0.0f) return 0.0;
-          double visibleD = 2.0 * dot(wo, h) * GgxD(h, b.alpha) / (wo.z + GgxLambdaRoot(wo.z, b.alpha));
-          return b.pTransmission * visibleD;
-        },
-        203);
-    PrintChi2("mutant: refraction pdf without |dm/dwi|, r 0.5", r, kChi2Alpha);
-    EXPECT_LT(r.p, kChi2Alpha);
-  }
+  // The visible-normal density D_ωo(h) used as a density of ωi: the reflection Jacobian
+  // 1/(4 ωo·h) dropped.
+  ExpectWrongPdfRejected(
+      "mutant: GGX pdf without 1/(4 wo.h), metal r 0.5", MakeMaterial(vec3(0.9f, 0.6f, 0.3f), 1.0f, 0.5f, 1.0f, 1.5f),
+      0.5f,
+      [](const Bsdf& b, vec3 wo, vec3 wi) {
+        if (wi.z <= 0.0f) return 0.0;
+        vec3 h = normalize(wo + wi);
+        double ggx = 4.0 * dot(wo, h) * GgxReflectionPdf(wo, wi, b.alpha);
+        return b.pSpecular * ggx + (1.0 - b.pSpecular) * CosineHemispherePdf(wi.z);
+      },
+      200);
+  // Classic NDF sampling's density D(h) cos θh / (4 ωo·h) instead of the visible normals'.
+  ExpectWrongPdfRejected(
+      "mutant: NDF instead of VNDF pdf, metal r 1.0", MakeMaterial(vec3(0.9f, 0.6f, 0.3f), 1.0f, 1.0f, 1.0f, 1.5f),
+      0.3f,
+      [](const Bsdf& b, vec3 wo, vec3 wi) {
+        if (wi.z <= 0.0f) return 0.0;
+        vec3 h = normalize(wo + wi);
+        double ggx = GgxD(h, b.alpha) * h.z / (4.0 * dot(wo, h));
+        return b.pSpecular * ggx + (1.0 - b.pSpecular) * CosineHemispherePdf(wi.z);
+      },
+      201);
+  // The right density, 10 % too high on one half of the hemisphere (y > 0).
+  ExpectWrongPdfRejected(
+      "mutant: pdf x 1.1 where y > 0, mixture", MakeMaterial(vec3(0.1f, 0.5f, 0.9f), 0.5f, 0.3f, 1.0f, 1.5f), 0.5f,
+      [](const Bsdf& b, vec3 wo, vec3 wi) { return BsdfPdf(b, wo, wi) * (wi.y > 0.0f ? 1.1 : 1.0); }, 202);
+  // The refraction half vector's density D_ωo(m) used as a density of ωi: Walter's
+  // Jacobian |dm/dωi| dropped.
+  ExpectWrongPdfRejected(
+      "mutant: refraction pdf without |dm/dwi|, r 0.5",
+      Transmissive(MakeMaterial(vec3(1.0f), 0.0f, 0.5f, 1.0f, 1.5f), 1.0f, true), 0.6f,
+      [](const Bsdf& b, vec3 wo, vec3 wi) {
+        if (wi.z >= 0.0f) return double(BsdfPdf(b, wo, wi));
+        vec3 h = RefractionHalfVector(wo, wi, b.etap);
+        if (h.z == 0.0f) return 0.0;
+        double visibleD = 2.0 * dot(wo, h) * GgxD(h, b.alpha) / (wo.z + GgxLambdaRoot(wo.z, b.alpha));
+        return b.pTransmission * visibleD;
+      },
+      203);
 }
 
 // ---------------------------------------------------------------------------------------
