@@ -65,8 +65,6 @@ layout(constant_id = 3) const uint kSceneHasEnvironmentMap = 1u;
 #include "traverse.glsl"
 
 #include "shared/path.h"
-// Not called by path.h yet; included so that it compiles as GLSL on every build.
-#include "shared/environment.h"
 
 void main() {
   gNodeCount = params.nodeCount;

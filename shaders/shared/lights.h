@@ -77,10 +77,11 @@ VKPT_FN float RangeFalloff(float range, float dist) {
   return clamp(1.0f - x2 * x2, 0.0f, 1.0f);
 }
 
-// Samples a light for the shading point p, whose rays leave from `origin` (p offset
-// along the geometric normal on the side the path arrived from), with u ∈ [0,1)²: u.x picks the light and is then
-// stretched back to [0,1) within its CDF interval (pbrt-v4's SampleDiscrete), so the point on a triangle light stays
-// stratified over the union of all triangles. pdf = 0: no contribution.
+// Samples a light for the shading point p, whose rays leave from `origin` (p offset along
+// the geometric normal on the side the path arrived from), with u ∈ [0,1)²: u.x picks the
+// light and is then stretched back to [0,1) within its CDF interval (pbrt-v4's
+// SampleDiscrete), so the point on a triangle light stays stratified over the union of
+// all triangles. pdf = 0: no contribution.
 VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 origin, vec2 u) {
   uint k = PickLight(VKPT_SCENE_ARG params.lightCount, u.x);
   Light l = VKPT_LIGHT(k);
