@@ -50,6 +50,9 @@ layout(constant_id = 2) const uint kSceneHasSmoothNormals = 1u;
 // 0 without an environment map: see shared/environment.h.
 layout(constant_id = 3) const uint kSceneHasEnvironmentMap = 1u;
 #define VKPT_ENVIRONMENT_MAP (kSceneHasEnvironmentMap != 0u)
+// 0 when no triangle has vertex colours: see shared/shading_frame.h.
+layout(constant_id = 4) const uint kSceneHasVertexColors = 1u;
+#define VKPT_VERTEX_COLORS (kSceneHasVertexColors != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -59,6 +62,7 @@ layout(constant_id = 3) const uint kSceneHasEnvironmentMap = 1u;
 #define VKPT_LIGHT_CDF(i) FetchLightCdf(i)
 #define VKPT_GGX_ALBEDO_PAIR(k) FetchGgxAlbedoPair(k)
 #define VKPT_SHADING(i) FetchShading(i)
+#define VKPT_VERTEX_COLORS_OF(i) FetchColors(i)
 #define VKPT_ENV_TEXEL(i) FetchEnvTexel(i)
 #define VKPT_ENV_CDF(i) FetchEnvCdf(i)
 

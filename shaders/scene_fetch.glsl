@@ -1,6 +1,7 @@
-// The scene for the shaders: triangles, BVH nodes, materials, lights, shading normals
-// and the environment map read from uniform texel buffers of RGBA32UI texels (16 bytes;
-// kTexelsPer* per struct, the std430 layouts of shared/layout.h byte for byte).
+// The scene for the shaders: triangles, BVH nodes, materials, lights, shading normals,
+// vertex colours and the environment map read from uniform texel buffers of RGBA32UI
+// texels (16 bytes; kTexelsPer* per struct, the std430 layouts of shared/layout.h byte
+// for byte).
 //
 // Why texels and not storage-buffer structs: lavapipe (Mesa 22.3) has no gathers for
 // either. It reads a 16-byte texel lane by lane — eight scalar loads and a transpose,
@@ -19,6 +20,7 @@ layout(binding = kBindingMaterials) uniform usamplerBuffer materialTexels;
 layout(binding = kBindingLights) uniform usamplerBuffer lightTexels;
 layout(binding = kBindingGgxAlbedo) uniform usamplerBuffer ggxAlbedoTexels;
 layout(binding = kBindingShading) uniform usamplerBuffer shadingTexels;
+layout(binding = kBindingVertexColors) uniform usamplerBuffer colorTexels;
 layout(binding = kBindingEnvRadiance) uniform usamplerBuffer envRadianceTexels;
 layout(binding = kBindingEnvDistribution) uniform usamplerBuffer envDistributionTexels;
 
@@ -106,6 +108,22 @@ TriangleShading FetchShading(uint i) {
   s.n2 = a.z;
   s.flags = a.w;
   return s;
+}
+
+// i: a Triangle's sourceIndex.
+TriangleColors FetchColors(uint i) {
+  uvec4 a = texelFetch(colorTexels, int(kTexelsPerColors * i));
+  uvec4 b = texelFetch(colorTexels, int(kTexelsPerColors * i + 1u));
+  TriangleColors c;
+  c.rg0 = a.x;
+  c.ba0 = a.y;
+  c.rg1 = a.z;
+  c.ba1 = a.w;
+  c.rg2 = b.x;
+  c.ba2 = b.y;
+  c.pad0 = b.z;
+  c.pad1 = b.w;
+  return c;
 }
 
 vec4 FetchEnvTexel(uint i) { return uintBitsToFloat(texelFetch(envRadianceTexels, int(i))); }

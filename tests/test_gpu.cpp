@@ -261,6 +261,25 @@ TEST_F(GpuTest, GlassSlabMatchesCpuAndBeerLambert) {
   EXPECT_TRUE(c.lockstepAgree);
 }
 
+// test_vertex_colors.cpp's quad on the GPU: COLOR_0 read from its texel buffer and
+// interpolated, within each pixel's exact bound and in lockstep with the CPU.
+TEST_F(GpuTest, VertexColorsMultiplyTheBaseColor) {
+  const glm::vec3 base(0.8f, 0.6f, 1.0f);
+  Scene s = test::VertexColorQuadScene(base);
+  RenderScene rs = PrepareRenderScene(s);
+  FrameParams p = Params(rs, s, 64, 64, 4, 3, 4, 4);
+  p.background = glm::vec3(2.0f, 1.0f, 0.5f);
+  vk::GpuRenderer gpu(Gpu(), rs);
+  RenderResult g = gpu.Render(p);
+  const int off = test::PixelsOffVertexColorQuad(g.image, p, base);
+  ImageComparison c = CompareImages(RenderCpu(rs, p).image, g.image);
+  std::printf(
+      "GPU vertex-coloured quad: %d of %zu pixels outside their footprint's colour range (must be 0); vs CPU: %s\n",
+      off, g.image.pixels.size(), c.Summary().c_str());
+  EXPECT_EQ(off, 0);
+  EXPECT_TRUE(c.lockstepAgree);
+}
+
 // Path regeneration (pathtrace.comp) adds each invocation's samples in sample order, as
 // separate dispatches would: the image must not depend on how samples are grouped.
 TEST_F(GpuTest, ImageDoesNotDependOnSamplesPerInvocation) {

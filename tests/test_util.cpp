@@ -18,6 +18,8 @@
 #include <iterator>
 #include <random>
 
+#include "shared/estimator.h"
+
 namespace vkpt::test {
 
 std::string SourcePath(const std::string& relative) { return std::string(VKPT_SOURCE_DIR) + "/" + relative; }
@@ -297,6 +299,45 @@ Scene GlassSlabScene(const Material& material) {
   cam.xmag = 1.5f;
   s.cameras.push_back(cam);
   return s;
+}
+
+glm::vec4 VertexColorQuadColorAt(float x, float y) { return {0.5f + 0.4f * x, 0.5f - 0.3f * y, 0.25f, 1.0f}; }
+
+Scene VertexColorQuadScene(glm::vec3 baseColor) {
+  Material m{};
+  m.baseColor = baseColor;
+  const glm::vec3 a(-1, -1, 0), b(1, -1, 0), c(1, 1, 0), d(-1, 1, 0);
+  Scene s = MakeScene({{a, b, c, 0}, {a, c, d, 0}}, {m});
+  auto colorAt = [](glm::vec3 p) { return VertexColorQuadColorAt(p.x, p.y); };
+  for (const SceneTriangle& t : s.triangles) s.colors.push_back({colorAt(t.v0), colorAt(t.v1), colorAt(t.v2)});
+  Camera cam;
+  cam.name = "orthographic along -z";
+  cam.position = glm::vec3(0.0f, 0.0f, 2.0f);
+  cam.orthographic = true;
+  cam.ymag = 1.0f;
+  cam.xmag = 1.0f;
+  s.cameras.push_back(cam);
+  return s;
+}
+
+int PixelsOffVertexColorQuad(const Image& image, const shader::FrameParams& params, glm::vec3 baseColor) {
+  int off = 0;
+  for (uint32_t py = 0; py < params.height; ++py)
+    for (uint32_t px = 0; px < params.width; ++px) {
+      // The colour is linear: over the pixel's footprint it spans the values at its corners.
+      glm::vec3 lo(INFINITY), hi(-INFINITY);
+      for (float jx : {0.0f, 1.0f})
+        for (float jy : {0.0f, 1.0f}) {
+          glm::vec3 o = shader::GenerateCameraRay(params, px, py, jx, jy).origin;
+          glm::vec3 v = baseColor * glm::vec3(VertexColorQuadColorAt(o.x, o.y)) * params.background;
+          lo = glm::min(lo, v);
+          hi = glm::max(hi, v);
+        }
+      const glm::vec3 L = image.pixels[py * params.width + px];
+      const float eps = 1e-4f;
+      off += glm::any(glm::lessThan(L, lo - eps)) || glm::any(glm::greaterThan(L, hi + eps));
+    }
+  return off;
 }
 
 int PixelsNear(const Image& image, glm::vec3 expected, float tolerance) {

@@ -90,6 +90,16 @@ Material ClearGlass(glm::vec3 tint, glm::vec3 attenuation, float ior);
 // frames [−1.5, 1.5]²: every camera ray crosses it along z, a length of 2, and no ray
 // grazes an edge.
 Scene GlassSlabScene(const Material& material);
+// The square [−1, 1]² in the plane z = 0 (two triangles facing +z) with vertex colours
+// ColorAt(x, y), material `baseColor`, seen by an orthographic camera along −z that frames
+// exactly the square: every camera ray hits it, and nothing but the background lies above it.
+Scene VertexColorQuadScene(glm::vec3 baseColor);
+glm::vec4 VertexColorQuadColorAt(float x, float y);  // linear in x and y
+// Pixels of a render of VertexColorQuadScene (any spp, rrDepth ≥ 1, background B, no
+// lights) off their exact bound: every sample is baseColor · ColorAt(hit) · B, so a pixel
+// lies within the colour's range over the pixel's footprint (plus float rounding).
+int PixelsOffVertexColorQuad(const Image& image, const shader::FrameParams& params, glm::vec3 baseColor);
+
 // How many pixels of `image` are within `tolerance` (relative) of `expected` in every channel.
 int PixelsNear(const Image& image, glm::vec3 expected, float tolerance);
 

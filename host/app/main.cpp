@@ -50,6 +50,7 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
         m.emission.y, m.emission.z, (m.flags & shader::kMaterialDoubleSided) ? " double-sided" : "",
         (m.flags & shader::kMaterialUnlit) ? " unlit" : "");
   }
+  if (!scene.colors.empty()) std::printf("  vertex colours (COLOR_0): multiply the base colour\n");
   std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", scene.bounds.lo.x, scene.bounds.lo.y,
               scene.bounds.lo.z, scene.bounds.hi.x, scene.bounds.hi.y, scene.bounds.hi.z);
   char which[16] = "default";

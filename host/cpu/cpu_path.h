@@ -13,6 +13,8 @@
 #define VKPT_LIGHT(i) scene.lights[i]
 #define VKPT_LIGHT_CDF(i) scene.lights[i].cdf
 #define VKPT_SHADING(i) scene.shading[i]
+#define VKPT_VERTEX_COLORS (!scene.vertexColors.empty())
+#define VKPT_VERTEX_COLORS_OF(i) scene.vertexColors[i]
 #define VKPT_ENV_TEXEL(i) scene.environment.texels[i]
 #define VKPT_ENV_CDF(i) scene.environment.cdf[i]
 

@@ -103,6 +103,20 @@ std::vector<shader::TriangleShading> TriangleShadings(const Scene& scene, unsign
   return shading;
 }
 
+// The scene's vertex colours as unorm16 pairs (shared/vertex_color.h), or none.
+std::vector<shader::TriangleColors> PackVertexColors(const Scene& scene) {
+  if (!scene.colors.empty() && scene.colors.size() != scene.triangles.size())
+    throw Error(scene.path + ": " + std::to_string(scene.colors.size()) + " vertex colour triples for " +
+                std::to_string(scene.triangles.size()) + " triangles");
+  std::vector<shader::TriangleColors> packed;
+  packed.reserve(scene.colors.size());
+  for (const VertexColors& c : scene.colors)
+    packed.push_back({glm::packUnorm2x16({c.c0.r, c.c0.g}), glm::packUnorm2x16({c.c0.b, c.c0.a}),
+                      glm::packUnorm2x16({c.c1.r, c.c1.g}), glm::packUnorm2x16({c.c1.b, c.c1.a}),
+                      glm::packUnorm2x16({c.c2.r, c.c2.g}), glm::packUnorm2x16({c.c2.b, c.c2.a}), 0u, 0u});
+  return packed;
+}
+
 }  // namespace
 
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {
@@ -120,6 +134,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
   BuildLightTable(scene, rs);
   rs.shading = TriangleShadings(scene, options.threads);
+  rs.vertexColors = PackVertexColors(scene);
   return rs;
 }
 

@@ -1,6 +1,7 @@
 // What a renderer consumes: the Scene's triangles in BVH leaf order as shader::Triangle,
 // the BVH in two layouts (flattened skip links for the GPU, child pairs for the CPU),
-// materials, the light table for light sampling and per-triangle shading normals. The
+// materials, the light table for light sampling, per-triangle shading normals and vertex
+// colours. The
 // shader-layout vectors are uploaded verbatim by the Vulkan backend; the CPU reference
 // reads them directly.
 #pragma once
@@ -25,6 +26,8 @@ struct RenderScene {
   // One per Scene triangle, degenerate ones included, so that Triangle::sourceIndex
   // indexes it directly (and spatial-split copies of a triangle share it).
   std::vector<shader::TriangleShading> shading;
+  // Indexed like `shading`; empty when no triangle has vertex colours.
+  std::vector<shader::TriangleColors> vertexColors;
   BvhStats bvhStats;
   uint32_t degenerateTriangles = 0;  // dropped: zero area (see IsDegenerate)
   double totalEmittedPower = 0.0;    // Σ of the lights' power estimates

@@ -132,11 +132,15 @@ class Instancer {
           SceneTriangle t{p[i0], p[i1], p[i2], prim.material};
           VertexNormals vn;
           if (!nw.empty()) vn = {nw[i0], nw[i1], nw[i2]};
+          VertexColors vc;
+          const std::vector<glm::vec4>& c = prim.colors;
+          if (!c.empty()) vc = {c[i0], c[i1], c[i2]};
           if (mirrored) {
             std::swap(t.v1, t.v2);
             std::swap(vn.n1, vn.n2);
+            std::swap(vc.c1, vc.c2);
           }
-          AddTriangle(t, vn);
+          AddTriangle(t, vn, vc, !c.empty());
         }
       }
     }
@@ -146,19 +150,25 @@ class Instancer {
   // A triangle with any vertex normal that did not survive its transform is shaded flat:
   // a normal that vanishes or overflows (a singular or extreme scale) has no direction
   // left to interpolate, but the geometry is still fine.
-  void AddTriangle(const SceneTriangle& t, VertexNormals vn) {
+  void AddTriangle(const SceneTriangle& t, VertexNormals vn, const VertexColors& vc, bool hasColors) {
     const glm::vec3 zero(0.0f);
     if (vn.n0 == zero || vn.n1 == zero || vn.n2 == zero) vn = VertexNormals{};
-    // The parallel array starts with the first triangle that has normals, flat entries
-    // filling in for the triangles before it.
-    if (vn.Present() || !scene_.normals.empty()) {
-      scene_.normals.resize(scene_.triangles.size());
-      scene_.normals.push_back(vn);
-    }
+    AppendParallel(scene_.normals, vn, vn.Present());
+    AppendParallel(scene_.colors, vc, hasColors);
     scene_.bounds.Extend(t.v0);
     scene_.bounds.Extend(t.v1);
     scene_.bounds.Extend(t.v2);
     scene_.triangles.push_back(t);
+  }
+
+  // Appends a triangle's entry to an array parallel to scene_.triangles that exists once
+  // some triangle has the attribute: it starts with the first such triangle, defaults
+  // (flat normals, white) filling in for the triangles before it.
+  template <class T>
+  void AppendParallel(std::vector<T>& array, const T& value, bool present) {
+    if (!present && array.empty()) return;
+    array.resize(scene_.triangles.size());
+    array.push_back(value);
   }
 
   // The unit world-space normal, or zero when the transform leaves it no direction.

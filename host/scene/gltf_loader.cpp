@@ -34,6 +34,9 @@ bool KeepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*,
 // copies: up to ~490 bytes measured on 1 M triangles with vertex normals
 // (docs/design-notes.md), with a margin.
 constexpr uint64_t kBytesPerTriangle = 560;
+// And per triangle with COLOR_0: the Scene's VertexColors (48 bytes), the packed
+// TriangleColors (32) and their staging and device copies (32 each).
+constexpr uint64_t kBytesPerColoredTriangle = 144;
 // Decoding an accessor holds each component as a double, then as a float.
 constexpr uint64_t kBytesPerDecodedComponent = 12;
 
@@ -54,16 +57,17 @@ uint64_t DecodedBytes(const GltfSource& src, int accessor) {
 }
 
 // The memory the meshes will take, counted before any is decoded: each primitive's
-// positions, normals and indices, and every triangle of every instance through to the
+// positions, normals, colours and indices, and every triangle of every instance through to the
 // renderer.
 void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, MemoryBudget& budget) {
   for (size_t i = 0; i < src.m.meshes.size(); ++i) {
-    uint64_t decoded = 0, triangles = 0;
+    uint64_t decoded = 0, triangles = 0, colored = 0;
     for (const tinygltf::Primitive& prim : src.m.meshes[i].primitives) {
       decoded += DecodedBytes(src, prim.indices);
-      for (const char* attr : {"POSITION", "NORMAL"})
+      for (const char* attr : {"POSITION", "NORMAL", "COLOR_0"})
         if (auto it = prim.attributes.find(attr); it != prim.attributes.end()) decoded += DecodedBytes(src, it->second);
       triangles += TriangleCount(src, prim);
+      if (prim.attributes.count("COLOR_0")) colored += TriangleCount(src, prim);
     }
     std::string name = "meshes[" + std::to_string(i) + "]";
     budget.Charge(decoded, name + " (decoding its accessors)");
@@ -71,6 +75,10 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
     budget.Charge(SaturatingMul(total, kBytesPerTriangle), name + " (" + std::to_string(triangles) + " triangles × " +
                                                                std::to_string(instances[i]) +
                                                                " instances = " + std::to_string(total) + " triangles)");
+    if (colored)
+      budget.Charge(SaturatingMul(SaturatingMul(colored, instances[i]), kBytesPerColoredTriangle),
+                    name + " (vertex colours of " + std::to_string(colored) + " triangles × " +
+                        std::to_string(instances[i]) + " instances)");
   }
 }
 

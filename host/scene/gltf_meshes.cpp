@@ -1,5 +1,6 @@
 #include "scene/gltf_meshes.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/gltf_accessors.h"
@@ -78,6 +79,30 @@ std::vector<glm::vec3> ReadFiniteVec3(const GltfSource& src, int accessor, const
   return out;
 }
 
+// COLOR_0 as linear RGBA, alpha 1 for a VEC3 accessor. Normalized integers are in [0, 1]
+// by construction; floats outside it are clamped (with a warning), as a base colour
+// factor above 1 would create energy.
+std::vector<glm::vec4> ReadColors(const GltfSource& src, int accessor, const std::string& name,
+                                  std::vector<std::string>& warnings) {
+  const int n = ComponentCount(src.m.accessors[accessor].type);
+  std::vector<double> raw = ReadAccessor(src, accessor);
+  std::vector<glm::vec4> out(raw.size() / n, glm::vec4(1.0f));
+  size_t clamped = 0;
+  for (size_t v = 0; v < out.size(); ++v)
+    for (int c = 0; c < n; ++c) {
+      double x = raw[v * n + c];
+      if (!std::isfinite(x))
+        src.Fail(name + ".attributes.COLOR_0 (accessors[" + std::to_string(accessor) + "]) element " +
+                 std::to_string(v) + " is not a finite colour");
+      clamped += x < 0.0 || x > 1.0;
+      out[v][c] = float(std::clamp(x, 0.0, 1.0));
+    }
+  if (clamped)
+    warnings.push_back(name + ".attributes.COLOR_0: " + std::to_string(clamped) +
+                       " component(s) outside [0, 1] clamped");
+  return out;
+}
+
 }  // namespace
 
 std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial,
@@ -98,6 +123,8 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
     // the instancer normalizes them after the transform anyway.
     if (auto nrm = prim.attributes.find("NORMAL"); nrm != prim.attributes.end())
       out.normals = ReadFiniteVec3(src, nrm->second, name, "NORMAL", "normal");
+    if (auto col = prim.attributes.find("COLOR_0"); col != prim.attributes.end())
+      out.colors = ReadColors(src, col->second, name, warnings);
     out.indices = TriangleList(src, prim, out.positions.size(), name);
     out.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial;
     decoded.push_back(std::move(out));

@@ -1,5 +1,5 @@
 // glTF mesh primitives (spec §3.7.2) as the renderer wants them: object-space positions,
-// vertex normals if given, and a triangle list; strips and fans are converted, points
+// vertex normals and colours if given, and a triangle list; strips and fans are converted, points
 // and lines skipped.
 #pragma once
 
@@ -16,12 +16,14 @@ namespace vkpt {
 struct DecodedPrimitive {
   std::vector<glm::vec3> positions;  // object space
   std::vector<glm::vec3> normals;    // object space, one per position; empty without NORMAL
+  std::vector<glm::vec4> colors;     // COLOR_0, linear RGBA in [0, 1], one per position; empty without it
   std::vector<uint32_t> indices;     // triangle list, 3 per triangle
   uint32_t material;
 };
 
-// Checks and decodes the triangle primitives of meshes[meshIndex]: positions and normals finite,
-// indices in range and no primitive-restart values. Points and lines add a warning.
+// Checks and decodes the triangle primitives of meshes[meshIndex]: positions, normals and
+// colours finite, indices in range and no primitive-restart values. Points and lines add a
+// warning, and so do colours outside [0, 1] (clamped).
 std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial,
                                          std::vector<std::string>& warnings);
 

@@ -140,6 +140,15 @@ void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, cons
       src.Fail(name + ".attributes.NORMAL (accessors[" + std::to_string(nrm->second) +
                "]) must be a FLOAT VEC3 accessor" + (quantized ? " or a normalized BYTE/SHORT VEC3 one" : ""));
   }
+  if (auto col = prim.attributes.find("COLOR_0"); col != prim.attributes.end()) {
+    const tinygltf::Accessor& ca = src.m.accessors[col->second];
+    const bool unorm = ca.normalized && (ca.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                         ca.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    if ((ca.type != TINYGLTF_TYPE_VEC3 && ca.type != TINYGLTF_TYPE_VEC4) ||
+        !(ca.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || unorm))
+      src.Fail(name + ".attributes.COLOR_0 (accessors[" + std::to_string(col->second) +
+               "]) must be a VEC3 or VEC4 accessor of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT");
+  }
   for (const auto& [attr, acc] : prim.attributes)
     if (src.m.accessors[acc].count != pa.count)
       src.Fail(name + ".attributes." + attr + " (accessors[" + std::to_string(acc) + "]) has " +

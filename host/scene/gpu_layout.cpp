@@ -35,6 +35,9 @@ static_assert(sizeof(TriangleShading) == 16 * kTexelsPerShading);
 static_assert(offsetof(TriangleShading, n1) == 4 && offsetof(TriangleShading, n2) == 8);
 static_assert(offsetof(TriangleShading, flags) == 12);
 
+static_assert(sizeof(TriangleColors) == 16 * kTexelsPerColors);
+static_assert(offsetof(TriangleColors, rg1) == 8 && offsetof(TriangleColors, ba2) == 20);
+
 static_assert(sizeof(RayQuery) == 32);
 static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(BvhNode) == 16 * kTexelsPerNode);
 static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Light) == 16 * kTexelsPerLight);

@@ -1,5 +1,5 @@
 // The flat scene every renderer consumes: world-space triangles with their vertex
-// normals, materials, cameras and punctual lights.
+// normals and colours, materials, cameras and punctual lights.
 // host/scene/gltf_loader.cpp fills it from a glTF file; nothing downstream knows glTF.
 #pragma once
 
@@ -28,6 +28,12 @@ struct SceneTriangle {
 struct VertexNormals {
   glm::vec3 n0{0.0f}, n1{0.0f}, n2{0.0f};
   bool Present() const { return n0 != glm::vec3(0.0f); }
+};
+
+// COLOR_0 of one triangle's vertices (glTF §3.7.2.1), linear RGBA in [0, 1], in the order
+// of its vertices; white for a triangle without them in a scene where others have them.
+struct VertexColors {
+  glm::vec4 c0{1.0f}, c1{1.0f}, c2{1.0f};
 };
 
 struct Camera {
@@ -61,6 +67,8 @@ struct Scene {
   // Parallel to `triangles`, or empty when no triangle has normals: a file without any
   // costs no memory for them (36 bytes a triangle at 10 M triangles is 360 MB).
   std::vector<VertexNormals> normals;
+  // Parallel to `triangles`, or empty when no triangle has COLOR_0.
+  std::vector<VertexColors> colors;
   std::vector<Material> materials;
   std::vector<std::string> materialNames;
   std::vector<Camera> cameras;  // in scene-graph order; --camera N picks one

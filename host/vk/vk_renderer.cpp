@@ -161,6 +161,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       lights_(UploadArray<shader::Light>(ctx, scene.lights, "lights")),
       ggxAlbedo_(UploadArray<float>(ctx, shader::kGgxAlbedo, "GGX albedo table")),
       shading_(UploadArray<shader::TriangleShading>(ctx, scene.shading, "shading normals")),
+      vertexColors_(UploadArray<shader::TriangleColors>(ctx, scene.vertexColors, "vertex colours")),
       envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
       envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
       hasGlossy_(std::any_of(scene.materials.begin(), scene.materials.end(),
@@ -168,6 +169,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       hasSmoothNormals_(
           std::any_of(scene.shading.begin(), scene.shading.end(),
                       [](const shader::TriangleShading& s) { return (s.flags & shader::kShadingHasNormals) != 0; })),
+      hasVertexColors_(!scene.vertexColors.empty()),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {
   for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
@@ -183,6 +185,7 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             TexelBinding(shader::kBindingLights, lights_),
                             TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
                             TexelBinding(shader::kBindingShading, shading_),
+                            TexelBinding(shader::kBindingVertexColors, vertexColors_),
                             TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
                             TexelBinding(shader::kBindingEnvDistribution, envDistribution_),
                             {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
@@ -190,7 +193,7 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
                            "pathtrace", 2 * sizeof(uint32_t),
                            {frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
-                            frame.envWidth > 0 ? 1u : 0u});
+                            frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);

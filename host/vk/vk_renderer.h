@@ -47,14 +47,17 @@ class GpuRenderer {
   size_t spirvBytes_;
   // The scene is read as texel buffers (shaders/scene_fetch.glsl says why).
   TexelBuffer triangles_, nodes_, materials_, lights_, ggxAlbedo_, shading_;
+  // The vertex colours; without any, one zero texel that the shader never reads.
+  TexelBuffer vertexColors_;
   // The environment map's texels and CDFs; without a map one zero texel each, so that the
   // descriptor set is complete all the same.
   TexelBuffer envRadiance_, envDistribution_;
-  // What the scene has, for pathtrace.comp's specialization constants 0-3 (the frame
+  // What the scene has, for pathtrace.comp's specialization constants 0-4 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
   uint32_t lightTypes_ = 0;          // bit 1 << type for each type in the light table
   bool hasGlossy_;                   // some material is not Lambertian
   bool hasSmoothNormals_;            // some triangle has vertex normals
+  bool hasVertexColors_;             // some triangle has COLOR_0
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 

@@ -25,7 +25,8 @@ const uint kBindingHits = 8u;       // buffer HitRecord[]
 // pathtrace.comp again:
 const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample of a SIMD group
 const uint kBindingShading = 10u;   // texel buffer of TriangleShading, indexed by Triangle.sourceIndex
-const uint kBindingGgxAlbedo = 13u;  // texel buffer of the GGX albedo table (shared/ggx_albedo.h)
+const uint kBindingGgxAlbedo = 13u;     // texel buffer of the GGX albedo table (shared/ggx_albedo.h)
+const uint kBindingVertexColors = 14u;  // texel buffer of TriangleColors, indexed by Triangle.sourceIndex
 
 // The environment map (shared/environment.h), both as RGBA32UI texel buffers; a 1-texel
 // dummy of each when there is none (FrameParams::envWidth == 0).
@@ -99,6 +100,21 @@ struct TriangleShading {
   uint flags;  // kShadingHasNormals; without it n0..n2 are 0 and the triangle is flat
 };
 
+// Per scene triangle (indexed by Triangle::sourceIndex, like TriangleShading): glTF
+// COLOR_0 of its three vertices, linear RGBA as unorm16 (exact for unorm8 and unorm16
+// files), vertex k's (R, G) in rgK and (B, A) in baK (packUnorm2x16: R, B in the low
+// bits). Present only when some triangle of the scene has COLOR_0; the others are white.
+struct TriangleColors {
+  uint rg0;
+  uint ba0;
+  uint rg1;
+  uint ba1;
+  uint rg2;
+  uint ba2;
+  uint pad0;
+  uint pad1;
+};
+
 // Light types (shared/lights.h).
 const uint kLightTriangle = 0u;          // emits from its front face
 const uint kLightTwoSidedTriangle = 1u;  // emits from both faces (double-sided material)
@@ -130,6 +146,7 @@ const uint kTexelsPerNode = 2u;
 const uint kTexelsPerMaterial = 5u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
+const uint kTexelsPerColors = 2u;
 
 // The environment map's sampling distribution is one float array: the conditional CDF of
 // row r (inclusive running sums, the last exactly 1) at [r·W, r·W + W), then the marginal

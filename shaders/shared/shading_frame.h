@@ -1,6 +1,7 @@
 // What the estimator knows about a surface point a ray has hit: position, geometric
 // normal, the shading frame the BSDF works in, the material and whether it emits.
-// Scene access as in path.h, plus VKPT_SHADING(i): the TriangleShading of scene triangle i.
+// Scene access as in path.h, plus VKPT_SHADING(i) and VKPT_VERTEX_COLORS_OF(i): the
+// TriangleShading and TriangleColors of scene triangle i.
 #ifndef VKPT_SHADING_FRAME_H
 #define VKPT_SHADING_FRAME_H
 #include "estimator.h"
@@ -8,6 +9,7 @@
 #include "prelude.h"
 #include "sampling.h"
 #include "shading_normal.h"
+#include "vertex_color.h"
 
 // A shader may define VKPT_SMOOTH_NORMALS as a specialization constant that is false
 // when no triangle has vertex normals (host/render/render_scene.cpp leaves flat-shaded
@@ -15,6 +17,11 @@
 // constant spares every hit the three octahedral decodes.
 #ifndef VKPT_SMOOTH_NORMALS
 #define VKPT_SMOOTH_NORMALS true
+#endif
+// Likewise VKPT_VERTEX_COLORS: false when no triangle has COLOR_0 (and the scene has no
+// TriangleColors to read).
+#ifndef VKPT_VERTEX_COLORS
+#define VKPT_VERTEX_COLORS true
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -54,6 +61,8 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
   Triangle tri = VKPT_TRIANGLE(hit.triangle);
   SurfaceHit sh;
   sh.material = VKPT_MATERIAL(tri.material);
+  if (VKPT_VERTEX_COLORS)
+    sh.material.baseColor *= vec3(InterpolatedColor(VKPT_VERTEX_COLORS_OF(tri.sourceIndex), hit.b1, hit.b2));
   sh.light = tri.light;
   vec3 ng = normalize(cross(tri.e1, tri.e2));
   bool frontFace = dot(ng, ray.dir) < 0.0f;
