@@ -1,9 +1,8 @@
-// Multiple importance sampling: an area light over a glossy metal plane, direct light
-// only, estimated three ways — light sampling alone, BSDF sampling alone (test-only builds
-// of the shared estimator, path_variants.h) and the product's MIS. All three are unbiased
-// estimates of the same image, so their means must agree (z-tests) at every roughness;
-// a wrong MIS weight or a wrong BSDF pdf makes them disagree, and the mutant tests prove
-// that the test sees it.
+// Multiple importance sampling: an area light over a glossy metal plane, and one behind a
+// rough thin wall, direct light only, estimated three ways — light sampling alone, BSDF sampling alone (test-only
+// builds of the shared estimator, path_variants.h) and the product's MIS. All three are unbiased estimates of the same
+// image, so their means must agree (z-tests) at every roughness; a wrong MIS weight or a wrong BSDF pdf makes them
+// disagree, and the mutant tests prove that the test sees it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,6 +42,27 @@ Scene GlossyPlaneUnderAreaLight(double roughness) {
   b.Node(R"({"mesh":1})");
   b.scenes = {R"({"nodes":[0,1]})"};
   b.extensionsUsed = {"KHR_materials_emissive_strength"};
+  return Load(b);
+}
+
+// The same quad light, facing up, 1.5 below a rough transmissive thin wall (white, the
+// given roughness) that hides it from the camera: all the light the camera sees came
+// through the wall, sampled through it by light sampling and found by transmitted BSDF
+// samples.
+Scene LightBehindThinWall(double roughness) {
+  GltfBuilder b;
+  int wall = b.Positions({{-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}});
+  int light = b.Positions({{-0.5f, -1.5f, -1.5f}, {0.5f, -1.5f, -1.5f}, {0.5f, -1.5f, -0.5f}, {-0.5f, -1.5f, -0.5f}});
+  b.materials = {R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0,"roughnessFactor":)" +
+                     Num(roughness) + R"(},"extensions":{"KHR_materials_transmission":{"transmissionFactor":1}}})",
+                 R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1]},"emissiveFactor":[1,1,1],)"
+                 R"("extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":4}}})"};
+  b.Mesh(wall, b.Indices({0, 1, 2, 0, 2, 3}), 0);
+  b.Mesh(light, b.Indices({0, 2, 1, 0, 3, 2}), 1);
+  b.Node(R"({"mesh":0})");
+  b.Node(R"({"mesh":1})");
+  b.scenes = {R"({"nodes":[0,1]})"};
+  b.extensionsUsed = {"KHR_materials_emissive_strength", "KHR_materials_transmission"};
   return Load(b);
 }
 
@@ -95,11 +115,11 @@ struct Verdict {
 
 // Renders the scene at each roughness with the three estimators (independent seeds) and
 // z-tests every pair's image means, per channel.
-Verdict CompareEstimators(const Estimators& e, uint32_t spp) {
+Verdict CompareEstimators(const Estimators& e, uint32_t spp, Scene (*makeScene)(double) = GlossyPlaneUnderAreaLight) {
   const double zCrit = CriticalZ();
   Verdict v;
   for (double roughness : kRoughness) {
-    Scene scene = GlossyPlaneUnderAreaLight(roughness);
+    Scene scene = makeScene(roughness);
     RenderScene rs = PrepareRenderScene(scene);
     EXPECT_EQ(rs.lights.size(), 2u);  // the quad's two triangles
     struct Run {
@@ -141,6 +161,14 @@ constexpr uint32_t kSpp = 512, kMutantSpp = 128;
 
 TEST(Mis, LightBsdfAndMisEstimatesAgreeAtThreeRoughnesses) {
   Verdict v = CompareEstimators(Estimators{}, kSpp);
+  EXPECT_EQ(v.failures, 0);
+}
+
+// Light sampled through the surface (shadow ray from its far side, BSDF transmission
+// lobe evaluated and its pdf in the MIS weight) against transmitted BSDF samples that hit
+// the light.
+TEST(Mis, LightThroughAThinWallAgreesAtThreeRoughnesses) {
+  Verdict v = CompareEstimators(Estimators{}, kSpp, LightBehindThinWall);
   EXPECT_EQ(v.failures, 0);
 }
 

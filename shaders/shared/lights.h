@@ -78,7 +78,8 @@ VKPT_FN float RangeFalloff(float range, float dist) {
 }
 
 // Samples a light for the shading point p, whose rays leave from `origin` (p offset along
-// the geometric normal on the side the path arrived from), with u ∈ [0,1)²: u.x picks the
+// the geometric normal on the side the path arrived from; path.h moves a shadow ray that
+// goes through the surface to the other side), with u ∈ [0,1)²: u.x picks the
 // light and is then stretched back to [0,1) within its CDF interval (pbrt-v4's
 // SampleDiscrete), so the point on a triangle light stays stratified over the union of
 // all triangles. pdf = 0: no contribution.

@@ -7,11 +7,12 @@
 // every vertex with its weight. Delta lights (point, spot, directional) are reached by
 // light sampling alone. Russian roulette on the throughput; at most maxDepth bounces.
 //
-// Transmission: light sampling looks for lights on the side of the surface the path
-// arrived from only (a shadow ray through the surface would hit the surface itself), so
-// a direction sampled through the surface finds emission by BSDF sampling alone, with
-// weight 1. Inside a volume (KHR_materials_volume) the path carries no medium stack: a
-// ray that hits the back face of a volume's boundary travelled inside that volume and is
+// Transmission: a light beyond a transmissive surface is sampled through it (the shadow
+// ray leaves from the far side) where the shadow ray travels through no medium: beyond a
+// thin wall, or out of a volume. Into a volume (KHR_materials_volume) it would cross the
+// medium unattenuated, so there a direction through the surface finds emission by BSDF
+// sampling alone, with weight 1. Inside a volume the path carries no medium stack: a ray
+// that hits the back face of a volume's boundary travelled inside that volume and is
 // attenuated by Beer–Lambert over its length (nested volumes are not told apart).
 //
 // Each side supplies scene access before including this file, so that traversal stays
@@ -143,17 +144,26 @@ VKPT_FN vec3 EscapedRadiance(VKPT_SCENE_PARAM FrameParams params, PathState s) {
   return L;
 }
 
+// Whether light sampling may look through the surface (see the top of this file): a
+// transmissive thin wall, or a volume's boundary seen from inside.
+VKPT_FN bool SamplesLightsThrough(SurfaceHit sh, Bsdf bsdf) {
+  return bsdf.transmission > 0.0f && ((sh.material.flags & kMaterialVolume) == 0u || !sh.frontFace);
+}
+
 // Next-event estimation at the vertex: samples a light and, if it can contribute, sets
-// the shadow ray (from `origin`) and the MIS-weighted contribution it carries if unoccluded.
+// the shadow ray (from `origin`, or its twin beyond the surface for a light sampled
+// through it) and the MIS-weighted contribution it carries if unoccluded.
 VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s, SurfaceHit sh, vec3 origin,
                                Bsdf bsdf, vec3 wo, uint bounce) {
   vec2 ul = Sample2D(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
   LightSample ls = SampleLi(VKPT_SCENE_ARG params, sh.p, origin, ul);
-  // A light below the geometric surface cannot reach it, whatever the shading normal says;
-  // one below the shading normal would be a transmission the shadow ray cannot see.
-  if (!(ls.pdf > 0.0f) || dot(ls.wi, sh.ng) <= 0.0f) return;
+  float side = dot(ls.wi, sh.ng);
+  bool through = side < 0.0f;
+  if (!(ls.pdf > 0.0f) || side == 0.0f || (through && !SamplesLightsThrough(sh, bsdf))) return;
+  // The geometric side decides, as for BSDF samples (ShadeHit): a shading normal that
+  // disagrees would let light leak through the surface.
   vec3 wi = WorldToFrame(sh.frame, ls.wi);
-  if (wi.z <= 0.0f) return;
+  if (wi.z == 0.0f || (wi.z < 0.0f) != through) return;
   vec3 f = EvalBsdf(bsdf, wo, wi);
   if (MaxComponent(f) <= 0.0f) return;
   float weight = ls.delta ? 1.0f : LightSampleWeight(ls.pdf, BsdfPdf(bsdf, wo, wi));
@@ -161,7 +171,13 @@ VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(P
   s.shadowPending = true;
   s.shadowRay = ls.shadowRay;
   s.shadowTMax = ls.shadowTMax;
-  s.lightContribution = s.throughput * f * ls.radiance * (wi.z * weight / ls.pdf);
+  if (through) {
+    // The same target from beyond the surface: a finite light's ray ends at tMax = 1.
+    vec3 beyond = OffsetRayOrigin(sh.p, -sh.ng);
+    if (ls.shadowTMax == 1.0f) s.shadowRay.dir += origin - beyond;
+    s.shadowRay.origin = beyond;
+  }
+  s.lightContribution = s.throughput * f * ls.radiance * (abs(wi.z) * weight / ls.pdf);
 }
 
 // Russian roulette (GAMES101: continue with probability P, divide by P) on the throughput
@@ -220,7 +236,9 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   float side = dot(wi, sh.ng);
   if (!(bs.pdf > 0.0f) || side == 0.0f || (side < 0.0f) != transmitted) return false;
   if (!bsdf.lambert && !Survives(params, s, bs.weight, bounce, ur.w)) return false;
-  s.bsdfPdf = transmitted ? 0.0f : bs.pdf;
+  // Emission found through the surface competes with light sampling only where that
+  // looks through it.
+  s.bsdfPdf = transmitted && !SamplesLightsThrough(sh, bsdf) ? 0.0f : bs.pdf;
   s.ray.origin = transmitted ? OffsetRayOrigin(sh.p, -sh.ng) : origin;
   s.ray.dir = wi;
   s.result.rays += 1u;
