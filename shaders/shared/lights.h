@@ -42,17 +42,11 @@ struct LightSample {
   float shadowTMax;
 };
 
+// The light table's CDF search (sampling.h); PickLight searches the whole table.
+VKPT_DEFINE_CDF_SEARCH(FindLightInterval, VKPT_LIGHT_CDF)
+
 // The light whose CDF interval holds u ∈ [0,1): smallest k with u < cdf[k].
-VKPT_FN uint PickLight(VKPT_SCENE_PARAM uint count, float u) {
-  uint lo = 0u;
-  uint hi = count - 1u;
-  while (lo < hi) {
-    uint mid = (lo + hi) / 2u;
-    if (u < VKPT_LIGHT_CDF(mid)) hi = mid;
-    else lo = mid + 1u;
-  }
-  return lo;
-}
+VKPT_FN uint PickLight(VKPT_SCENE_PARAM uint count, float u) { return FindLightInterval(VKPT_SCENE_ARG 0u, count, u); }
 
 // Solid-angle density of reaching a point of emissive triangle light `l` at distance
 // `dist` along a direction making cosine `cosLight` with its normal: pmf · dist² / (area cos θ').
