@@ -1,11 +1,12 @@
 // One variant of the shared estimator for the CPU (see path_variants.h): compiled with
 // VKPT_PATH_VARIANT=<the function's name> and the variant's macros.
 //
-// The headers a variant changes (microfacet.h, bsdf.h, path.h) are compiled here inside
-// the namespace vkpt::shader::<variant>, so that their inline functions cannot stand in for
-// the product's (one definition rule) nor the product's for them; everything else they
-// use comes from vkpt::shader as in host/cpu/cpu_path.h, included first. Only path.h
-// includes bsdf.h and only bsdf.h microfacet.h, so none of the three is included before.
+// The headers a variant changes (microfacet.h, bsdf.h, lights.h, path.h) are compiled here
+// inside the namespace vkpt::shader::<variant>, so that their inline functions cannot stand
+// in for the product's (one definition rule) nor the product's for them; everything else
+// they use comes from vkpt::shader as in host/cpu/cpu_path.h, included first. Only path.h
+// includes bsdf.h and lights.h, and only bsdf.h microfacet.h, so none of the four is
+// included before.
 #include "path_variants.h"
 
 #include <atomic>
@@ -26,7 +27,6 @@
 #include "shared/ggx_albedo.h"
 #include "shared/intersect.h"
 #include "shared/layout.h"
-#include "shared/lights.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
 #include "shared/shading_frame.h"
@@ -35,7 +35,7 @@
 #undef VKPT_END_NAMESPACE
 #define VKPT_BEGIN_NAMESPACE namespace vkpt::shader::VKPT_PATH_VARIANT {
 #define VKPT_END_NAMESPACE }
-#include "shared/path.h"  // and through it bsdf.h and microfacet.h, also in the variant's namespace
+#include "shared/path.h"  // and through it bsdf.h, microfacet.h and lights.h, also in the variant's namespace
 #undef VKPT_BEGIN_NAMESPACE
 #undef VKPT_END_NAMESPACE
 

@@ -1,7 +1,7 @@
 // The shared estimator (shaders/shared/path.h) recompiled for the CPU with test-only
 // macros (tests/path_variant.cpp, built once per variant by tests/CMakeLists.txt): the
-// two MIS strategies alone, and mutants that the MIS test must reject. Each renders as
-// RenderCpu does (same RNG streams, same Film), on all cores.
+// two MIS strategies alone, and mutants that the MIS and light transport tests must
+// reject. Each renders as RenderCpu does (same RNG streams, same Film), on all cores.
 #pragma once
 
 #include "image/film.h"
@@ -19,5 +19,11 @@ RenderResult RenderMutantMisWeightOne(const RenderScene& scene, const shader::Fr
 RenderResult RenderMutantMisSwappedPdfs(const RenderScene& scene, const shader::FrameParams& params);
 RenderResult RenderMutantNoJacobian(const RenderScene& scene, const shader::FrameParams& params);
 RenderResult RenderMutantNoJacobianBsdfOnly(const RenderScene& scene, const shader::FrameParams& params);
+// Mutants of the punctual lights (lights.h): the spot cone's falloff not squared; the range
+// window squared; no 1/r²; a directional light's irradiance times an extra cos θ.
+RenderResult RenderMutantSpotFalloffLinear(const RenderScene& scene, const shader::FrameParams& params);
+RenderResult RenderMutantRangeWindowSquared(const RenderScene& scene, const shader::FrameParams& params);
+RenderResult RenderMutantPointNoInverseSquare(const RenderScene& scene, const shader::FrameParams& params);
+RenderResult RenderMutantDirectionalExtraCosine(const RenderScene& scene, const shader::FrameParams& params);
 
 }  // namespace vkpt::test

@@ -2,6 +2,8 @@
 // KHR_lights_punctual point, spot and directional lights over a Lambert plane, where one
 // sample per pixel is exact (delta lights, one light, no bounce), and a constant
 // environment map against the same constant --background, which must agree statistically.
+// Deliberately wrong lights (test-only CPU builds, path_variants.h) must fail the closed
+// forms, or the closed forms would guard nothing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,6 +24,7 @@
 #include "gpu_test.h"
 #include "image/image_compare.h"
 #include "image/image_load.h"
+#include "path_variants.h"
 #include "render/light_table.h"
 #include "render/render_scene.h"
 #include "shared/rng.h"
@@ -119,6 +123,8 @@ struct ProbeStats {
   double maxRelError = 0.0;   // over channels whose expected value is above 1 % of the peak
   double maxDarkError = 0.0;  // |value − expected| / peak over the others (0 expected included)
   int lit = 0, dark = 0;      // probes with an expected red channel > 0, = 0
+  int failures = 0;           // channels outside the tolerance
+  std::string firstFailures;  // the first five of them, one a line
 };
 
 // Every pixel of `img` (one sample each) against `expected` at the point it sees: within
@@ -136,30 +142,86 @@ ProbeStats CheckProbes(const Image& img, const FrameParams& p, const std::functi
       want[py * p.width + px] = e;
       peak = std::max({peak, e.x, e.y, e.z});
     }
-  int failures = 0;
+  std::ostringstream firstFailures;
   for (size_t i = 0; i < img.pixels.size(); ++i) {
     const glm::dvec3 e = want[i], v(img.pixels[i]);
     for (int c = 0; c < 3; ++c) {
       const double err = std::abs(v[c] - e[c]);
       if (e[c] > 1e-2 * peak) st.maxRelError = std::max(st.maxRelError, err / e[c]);
       else st.maxDarkError = std::max(st.maxDarkError, err / peak);
-      if (!(err <= kRel * e[c] + kAbs * peak) && ++failures <= 5)
-        ADD_FAILURE() << what << ": pixel " << i % p.width << ", " << i / p.width << " channel " << c << ": " << v[c]
-                      << ", expected " << e[c];
+      if (!(err <= kRel * e[c] + kAbs * peak) && ++st.failures <= 5)
+        firstFailures << what << ": pixel " << i % p.width << ", " << i / p.width << " channel " << c << ": " << v[c]
+                      << ", expected " << e[c] << "\n";
     }
     (e.x > 0.0 ? st.lit : st.dark)++;
   }
   std::printf(
       "%s: %d lit and %d dark probes; |value - expected| <= %.0e expected + %.0e peak: max relative error "
       "%.2e where expected > 1 %% of the peak, max error / peak elsewhere %.2e; %d failures\n",
-      what, st.lit, st.dark, kRel, kAbs, st.maxRelError, st.maxDarkError, failures);
+      what, st.lit, st.dark, kRel, kAbs, st.maxRelError, st.maxDarkError, st.failures);
+  st.firstFailures = firstFailures.str();
   return st;
 }
 
+// A punctual light over the plane: the scene, the closed form every probe must match, and
+// the fewest lit and dark probes (per image) that make it a test of what it is named for.
+struct AnalyticCase {
+  const char* name;
+  Scene scene;
+  std::function<glm::dvec3(glm::dvec3)> expected;
+  int minLit, minDark;
+};
+
+AnalyticCase PointLight() {
+  // color × intensity = (1, 0.5, 0.25) × 20 cd → I = (20, 10, 5) W/sr.
+  const glm::dvec3 P(0.3, 0.8, -0.2), I(20.0, 10.0, 5.0);
+  return {"point light: rho/pi I cos/r^2",
+          PlaneWithLight(R"({"type":"point","color":[1,0.5,0.25],"intensity":20})", R"(,"translation":[0.3,0.8,-0.2])"),
+          [=](glm::dvec3 q) { return PointRadiance(I, P, q); }, 1024, 0};
+}
+
+AnalyticCase PointLightWithRange() {
+  // range 1.6 at height 0.8: the window cuts the light off ~1.39 from its foot point.
+  const glm::dvec3 P(-0.4, 0.8, 0.3), I(7.0);
+  return {"point light with range 1.6",
+          PlaneWithLight(R"({"type":"point","intensity":7,"range":1.6})", R"(,"translation":[-0.4,0.8,0.3])"),
+          [=](glm::dvec3 q) { return PointRadiance(I, P, q) * RangeWindow(1.6, glm::length(P - q)); }, 300, 100};
+}
+
+// Pointing straight down (node −Z turned −90° about X) from 1 above (0.2, 0, 0.1): the
+// inner cone (0.3 rad) reaches 0.31 from the foot point, the outer (0.6 rad) 0.68.
+const glm::dvec3 kSpotPosition(0.2, 1.0, 0.1), kSpotDirection(0.0, -1.0, 0.0);
+constexpr double kSpotInner = 0.3, kSpotOuter = 0.6;
+
+AnalyticCase SpotLight() {
+  const double h = std::sqrt(0.5);
+  const glm::dvec3 I(4.0, 6.0, 8.0);
+  return {
+      "spot light: inner 0.3, outer 0.6 rad",
+      PlaneWithLight(
+          R"({"type":"spot","color":[0.5,0.75,1],"intensity":8,"spot":{"innerConeAngle":0.3,"outerConeAngle":0.6}})",
+          R"(,"translation":[0.2,1,0.1],"rotation":[)" + Num(-h) + ",0,0," + Num(h) + "]"),
+      [=](glm::dvec3 q) {
+        return PointRadiance(I, kSpotPosition, q) *
+               SpotAttenuation(kSpotDirection, q - kSpotPosition, kSpotInner, kSpotOuter);
+      },
+      100, 500};
+}
+
+AnalyticCase DirectionalLight() {
+  // Node −Z turned −60° about X: the light travels along (0, −sin 60°, −cos 60°), so
+  // cos θ = sin 60° on the plane; E = (0.5, 1, 1) × 3 lux, 1:1 to irradiance.
+  const double a = -M_PI / 6.0;  // half the angle
+  const glm::dvec3 E(1.5, 3.0, 3.0);
+  return {"directional light: rho/pi E cos",
+          PlaneWithLight(R"({"type":"directional","color":[0.5,1,1],"intensity":3})",
+                         R"(,"rotation":[)" + Num(std::sin(a)) + ",0,0," + Num(std::cos(a)) + "]"),
+          [=](glm::dvec3) { return kRho / M_PI * E * std::sin(M_PI / 3.0); }, 1024, 0};
+}
+
 // One sample per pixel of a 32 × 32 view of the plane on each backend, every pixel a probe.
-void ExpectAnalytic(const Scene& scene, const std::function<glm::dvec3(glm::dvec3)>& expected, const char* name,
-                    int minLit, int minDark) {
-  RenderScene rs = PrepareRenderScene(scene);
+void ExpectAnalytic(const AnalyticCase& c) {
+  RenderScene rs = PrepareRenderScene(c.scene);
   ASSERT_EQ(rs.lights.size(), 1u);
   FrameParams p = LookingDown(rs, 32);
   RenderResult cpu = RenderCpu(rs, p);
@@ -167,62 +229,62 @@ void ExpectAnalytic(const Scene& scene, const std::function<glm::dvec3(glm::dvec
   RenderResult g = gpu.Render(p);
   EXPECT_EQ(cpu.nonFinite + g.nonFinite, 0u);
   for (const auto& [img, backend] : {std::pair<const Image*, const char*>{&cpu.image, "CPU"}, {&g.image, "GPU"}}) {
-    std::string what = std::string(name) + ", " + backend;
-    ProbeStats st = CheckProbes(*img, p, expected, what.c_str());
-    EXPECT_GE(st.lit, minLit) << what;
-    EXPECT_GE(st.dark, minDark) << what;
+    std::string what = std::string(c.name) + ", " + backend;
+    ProbeStats st = CheckProbes(*img, p, c.expected, what.c_str());
+    EXPECT_EQ(st.failures, 0) << st.firstFailures;
+    EXPECT_GE(st.lit, c.minLit) << what;
+    EXPECT_GE(st.dark, c.minDark) << what;
   }
 }
 
-TEST_F(LightTransport, PointLightOverLambertPlane) {
-  // color × intensity = (1, 0.5, 0.25) × 20 cd → I = (20, 10, 5) W/sr.
-  const glm::dvec3 P(0.3, 0.8, -0.2), I(20.0, 10.0, 5.0);
-  Scene s =
-      PlaneWithLight(R"({"type":"point","color":[1,0.5,0.25],"intensity":20})", R"(,"translation":[0.3,0.8,-0.2])");
-  ExpectAnalytic(
-      s, [&](glm::dvec3 q) { return PointRadiance(I, P, q); }, "point light: rho/pi I cos/r^2", 1024, 0);
-}
+TEST_F(LightTransport, PointLightOverLambertPlane) { ExpectAnalytic(PointLight()); }
 
-TEST_F(LightTransport, PointLightRangeWindow) {
-  // range 1.6 at height 0.8: the window cuts the light off ~1.39 from its foot point.
-  const glm::dvec3 P(-0.4, 0.8, 0.3), I(7.0);
-  Scene s = PlaneWithLight(R"({"type":"point","intensity":7,"range":1.6})", R"(,"translation":[-0.4,0.8,0.3])");
-  ExpectAnalytic(
-      s, [&](glm::dvec3 q) { return PointRadiance(I, P, q) * RangeWindow(1.6, glm::length(P - q)); },
-      "point light with range 1.6", 300, 100);
-}
+TEST_F(LightTransport, PointLightRangeWindow) { ExpectAnalytic(PointLightWithRange()); }
 
 TEST_F(LightTransport, SpotLightCone) {
-  // Pointing straight down (node −Z turned −90° about X) from 1 above (0.2, 0, 0.1): the
-  // inner cone (0.3 rad) reaches 0.31 from the foot point, the outer (0.6 rad) 0.68.
-  const double h = std::sqrt(0.5), inner = 0.3, outer = 0.6;
-  const glm::dvec3 P(0.2, 1.0, 0.1), I(4.0, 6.0, 8.0);
-  Scene s = PlaneWithLight(
-      R"({"type":"spot","color":[0.5,0.75,1],"intensity":8,"spot":{"innerConeAngle":0.3,"outerConeAngle":0.6}})",
-      R"(,"translation":[0.2,1,0.1],"rotation":[)" + Num(-h) + ",0,0," + Num(h) + "]");
+  AnalyticCase c = SpotLight();
   int inside = 0, between = 0;
-  auto expected = [&](glm::dvec3 q) {
-    double angle = std::acos(glm::dot(glm::dvec3(0, -1, 0), glm::normalize(q - P)));
-    inside += angle < inner;
-    between += angle > inner && angle < outer;
-    return PointRadiance(I, P, q) * SpotAttenuation(glm::dvec3(0, -1, 0), q - P, inner, outer);
+  c.expected = [&, closedForm = c.expected](glm::dvec3 q) {
+    double angle = std::acos(glm::dot(kSpotDirection, glm::normalize(q - kSpotPosition)));
+    inside += angle < kSpotInner;
+    between += angle > kSpotInner && angle < kSpotOuter;
+    return closedForm(q);
   };
-  ExpectAnalytic(s, expected, "spot light: inner 0.3, outer 0.6 rad", 100, 500);
+  ExpectAnalytic(c);
   std::printf("probes per backend: %d inside the inner cone, %d between the cones\n", inside / 2, between / 2);
   EXPECT_GE(inside / 2, 20);
   EXPECT_GE(between / 2, 60);
 }
 
-TEST_F(LightTransport, DirectionalLightOverLambertPlane) {
-  // Node −Z turned −60° about X: the light travels along (0, −sin 60°, −cos 60°), so
-  // cos θ = sin 60° on the plane; E = (0.5, 1, 1) × 3 lux, 1:1 to irradiance.
-  const double a = -M_PI / 6.0;  // half the angle
-  const glm::dvec3 E(1.5, 3.0, 3.0);
-  Scene s = PlaneWithLight(R"({"type":"directional","color":[0.5,1,1],"intensity":3})",
-                           R"(,"rotation":[)" + Num(std::sin(a)) + ",0,0," + Num(std::cos(a)) + "]");
-  ExpectAnalytic(
-      s, [&](glm::dvec3) { return kRho / M_PI * E * std::sin(M_PI / 3.0); }, "directional light: rho/pi E cos", 1024,
-      0);
+TEST_F(LightTransport, DirectionalLightOverLambertPlane) { ExpectAnalytic(DirectionalLight()); }
+
+// A mutant of lights.h (path_variants.h) rendered on the CPU as ExpectAnalytic renders:
+// the case's closed form must reject it.
+void ExpectMutantRejected(const AnalyticCase& c, PathVariantRenderer mutant, const char* mutantName) {
+  RenderScene rs = PrepareRenderScene(c.scene);
+  FrameParams p = LookingDown(rs, 32);
+  RenderResult r = mutant(rs, p);
+  EXPECT_EQ(r.nonFinite, 0u);
+  std::string what = std::string(c.name) + ", CPU, mutant: " + mutantName;
+  ProbeStats st = CheckProbes(r.image, p, c.expected, what.c_str());
+  std::printf("%s", st.firstFailures.c_str());
+  EXPECT_GT(st.failures, 0) << what << " passes";
+}
+
+TEST(LightTransportMutants, SpotFalloffNotSquaredIsRejected) {
+  ExpectMutantRejected(SpotLight(), RenderMutantSpotFalloffLinear, "cone falloff linear, not squared");
+}
+
+TEST(LightTransportMutants, SquaredRangeWindowIsRejected) {
+  ExpectMutantRejected(PointLightWithRange(), RenderMutantRangeWindowSquared, "range window squared");
+}
+
+TEST(LightTransportMutants, PointLightWithoutInverseSquareIsRejected) {
+  ExpectMutantRejected(PointLight(), RenderMutantPointNoInverseSquare, "no 1/r^2");
+}
+
+TEST(LightTransportMutants, DirectionalLightWithExtraCosineIsRejected) {
+  ExpectMutantRejected(DirectionalLight(), RenderMutantDirectionalExtraCosine, "E cos, then cos again");
 }
 
 // ---------------------------------------------------------------------------------------

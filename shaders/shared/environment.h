@@ -82,18 +82,9 @@ VKPT_FN vec3 EnvRadiance(VKPT_SCENE_PARAM FrameParams p, vec3 dir) {
   return p.envIntensity * EnvBilinear(VKPT_SCENE_ARG p.envWidth, p.envHeight, EnvDirectionToUv(p, dir));
 }
 
-// The interval of the CDF at [first, first + count) that holds u ∈ [0, 1): the smallest
-// k with u < cdf[first + k] (as PickLight), so an interval of zero width is never chosen.
-VKPT_FN uint EnvFindInterval(VKPT_SCENE_PARAM uint first, uint count, float u) {
-  uint lo = 0u;
-  uint hi = count - 1u;
-  while (lo < hi) {
-    uint mid = (lo + hi) / 2u;
-    if (u < VKPT_ENV_CDF(first + mid)) hi = mid;
-    else lo = mid + 1u;
-  }
-  return lo;
-}
+// The interval of the CDF at [first, first + count) that holds u ∈ [0, 1) (sampling.h):
+// a row of the marginal CDF, or a column of a row's conditional CDF.
+VKPT_DEFINE_CDF_SEARCH(EnvFindInterval, VKPT_ENV_CDF)
 
 VKPT_FN float EnvCdfBelow(VKPT_SCENE_PARAM uint first, uint k) { return k > 0u ? VKPT_ENV_CDF(first + k - 1u) : 0.0f; }
 

@@ -10,6 +10,16 @@
 //
 // Scene access (see path.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i), and
 // environment.h's VKPT_ENV_TEXEL(i), VKPT_ENV_CDF(i).
+//
+// Test-only CPU builds (tests/path_variant.cpp; never the product nor the shader) may
+// define one deliberately wrong punctual light that tests/test_light_transport.cpp's
+// closed forms must reject:
+//   VKPT_MUTANT_SPOT_FALLOFF_LINEAR     the cone's falloff not squared
+//   VKPT_MUTANT_RANGE_WINDOW_SQUARED    the range window squared (the window of Frostbite
+//                                       and Unreal, not the extension's)
+//   VKPT_MUTANT_POINT_NO_INVERSE_SQUARE point and spot lights without 1/r²
+//   VKPT_MUTANT_DIRECTIONAL_EXTRA_COSINE a directional light's E already times cos θ,
+//                                        which the estimator then counts again
 #ifndef VKPT_LIGHTS_H
 #define VKPT_LIGHTS_H
 #include "environment.h"
@@ -42,17 +52,11 @@ struct LightSample {
   float shadowTMax;
 };
 
+// The light table's CDF search (sampling.h); PickLight searches the whole table.
+VKPT_DEFINE_CDF_SEARCH(FindLightInterval, VKPT_LIGHT_CDF)
+
 // The light whose CDF interval holds u ∈ [0,1): smallest k with u < cdf[k].
-VKPT_FN uint PickLight(VKPT_SCENE_PARAM uint count, float u) {
-  uint lo = 0u;
-  uint hi = count - 1u;
-  while (lo < hi) {
-    uint mid = (lo + hi) / 2u;
-    if (u < VKPT_LIGHT_CDF(mid)) hi = mid;
-    else lo = mid + 1u;
-  }
-  return lo;
-}
+VKPT_FN uint PickLight(VKPT_SCENE_PARAM uint count, float u) { return FindLightInterval(VKPT_SCENE_ARG 0u, count, u); }
 
 // Solid-angle density of reaching a point of emissive triangle light `l` at distance
 // `dist` along a direction making cosine `cosLight` with its normal: pmf · dist² / (area cos θ').
@@ -66,15 +70,24 @@ VKPT_FN float SpotFalloff(Light l, vec3 wiFromLight) {
   float cd = dot(l.direction, wiFromLight);
   float scale = 1.0f / max(0.001f, l.cosInner - l.cosOuter);
   float a = clamp((cd - l.cosOuter) * scale, 0.0f, 1.0f);
+#ifdef VKPT_MUTANT_SPOT_FALLOFF_LINEAR
+  return a;
+#else
   return a * a;
+#endif
 }
 
-// KHR_lights_punctual's recommended range window: 1 at the light, 0 from `range` on.
+// KHR_lights_punctual's recommended range window, clamp(1 − (dist/range)⁴, 0, 1): 1 at
+// the light, 0 from `range` on. Unsquared, unlike the windows of Frostbite and Unreal.
 VKPT_FN float RangeFalloff(float range, float dist) {
   if (range <= 0.0f) return 1.0f;
   float x = dist / range;
   float x2 = x * x;
-  return clamp(1.0f - x2 * x2, 0.0f, 1.0f);
+  float window = clamp(1.0f - x2 * x2, 0.0f, 1.0f);
+#ifdef VKPT_MUTANT_RANGE_WINDOW_SQUARED
+  window *= window;
+#endif
+  return window;
 }
 
 // Samples a light for the shading point p, whose rays leave from `origin` (p offset along
@@ -126,6 +139,10 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
     ls.wi = -l.direction;
     ls.pdf = l.pmf;
     ls.radiance = l.radiance;
+#ifdef VKPT_MUTANT_DIRECTIONAL_EXTRA_COSINE
+    // origin − p leaves on the geometric normal's side, along it on an axis-aligned surface.
+    ls.radiance *= max(dot(ls.wi, normalize(origin - p)), 0.0f);
+#endif
     ls.shadowRay.dir = ls.wi;
     ls.shadowTMax = kInfinity;
   } else if (SceneHasLightType(kLightPoint) || SceneHasLightType(kLightSpot)) {  // point or spot
@@ -133,7 +150,11 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
     float dist2 = dot(d, d);
     float dist = sqrt(dist2);
     ls.wi = d / dist;
+#ifdef VKPT_MUTANT_POINT_NO_INVERSE_SQUARE
+    float falloff = RangeFalloff(l.extent, dist);
+#else
     float falloff = RangeFalloff(l.extent, dist) / dist2;
+#endif
     if (SceneHasLightType(kLightSpot) && l.type == kLightSpot) falloff *= SpotFalloff(l, -ls.wi);
     ls.pdf = dist2 > 0.0f ? l.pmf : 0.0f;
     ls.radiance = l.radiance * falloff;

@@ -90,6 +90,24 @@ VKPT_FN vec2 SampleUniformTriangle(float u1, float u2) {
 VKPT_FN float MaxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
 VKPT_FN float Luminance(vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
+// Defines VKPT_FN uint NAME(VKPT_SCENE_PARAM uint first, uint count, float u): the
+// interval of the inclusive CDF FETCH(first), …, FETCH(first + count − 1) (the last 1)
+// that holds u ∈ [0, 1), the smallest k with u < FETCH(first + k), so that an interval
+// of zero width is never chosen. One binary search for every table (the lights', the
+// environment map's rows and columns), each read through its own fetch macro, as GLSL
+// has neither templates nor function pointers.
+#define VKPT_DEFINE_CDF_SEARCH(NAME, FETCH)                             \
+  VKPT_FN uint NAME(VKPT_SCENE_PARAM uint first, uint count, float u) { \
+    uint lo = 0u;                                                       \
+    uint hi = count - 1u;                                               \
+    while (lo < hi) {                                                   \
+      uint mid = (lo + hi) / 2u;                                        \
+      if (u < FETCH(first + mid)) hi = mid;                             \
+      else lo = mid + 1u;                                               \
+    }                                                                   \
+    return lo;                                                          \
+  }
+
 VKPT_END_NAMESPACE
 
 #endif
