@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -15,6 +16,7 @@
 
 #include "app/environment_option.h"
 #include "app/options.h"
+#include "app/run_stats.h"
 #include "cpu/path_tracer.h"
 #include "image/image.h"
 #include "image/image_compare.h"
@@ -22,14 +24,11 @@
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared/sampling.h"
+#include "util/atomic_write.h"
 #include "util/byte_size.h"
 #include "util/error.h"
 #include "vk/context.h"
 #include "vk/vk_renderer.h"
-
-#ifndef VKPT_VERSION
-#define VKPT_VERSION "0.0.0"
-#endif
 
 namespace vkpt {
 namespace {
@@ -84,9 +83,16 @@ RenderResult RenderOnCpu(const RenderScene& rs, const shader::FrameParams& param
   return r;
 }
 
+double SecondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// `uploadSeconds` receives the time the scene took to reach device memory.
 RenderResult RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::FrameParams& params,
-                            const Options& o) {
+                            const Options& o, double* uploadSeconds) {
+  const auto t0 = std::chrono::steady_clock::now();
   vk::GpuRenderer renderer(ctx, rs);
+  *uploadSeconds = SecondsSince(t0);
   vk::GpuRenderOptions gpu;
   gpu.batch = o.batch;
   gpu.progress = ProgressLine();
@@ -251,31 +257,52 @@ void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderRe
 int Run(const Options& o) {
   if (o.listDevices) return ListDevices();
   if (!o.diff.empty()) return Diff(o);
+  const auto start = std::chrono::steady_clock::now();
   CheckOutputPath(o.out);  // fail before a long render, not after
+  if (!o.stats.empty()) CheckWritablePath(o.stats, "a stats");
 
+  RunTimes times;
+  auto phase = std::chrono::steady_clock::now();
+  auto lap = [&phase](double& seconds) {
+    seconds = SecondsSince(phase);
+    phase = std::chrono::steady_clock::now();
+  };
   Scene scene = LoadGltf(o.scene, o.load);
+  lap(times.load);
   EnvironmentMap env = LoadEnvironment(o, scene);
+  lap(times.environment);
   uint32_t camIndex = 0;
   const Camera cam = ChooseCamera(scene, o, &camIndex);
   const glm::uvec2 size = ImageSize(cam, o);
   // The device before the scene's arrays: without one (auto backend) the CPU renders, and
   // only then does the scene need the CPU's BVH layout.
   std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
+  phase = std::chrono::steady_clock::now();
   const RenderScene rs = PrepareForRender(scene, o, ctx != nullptr, std::move(env));
+  lap(times.prepare);
   if (o.verbose) PrintLoadReport(scene, rs, cam, camIndex);
   const shader::FrameParams params = FrameFromOptions(rs, cam, size, o);
 
   std::optional<RenderResult> reference;
   if (o.compare) reference = RenderOnCpu(rs, params, o);
-  RenderResult r = ctx ? RenderOnVulkan(*ctx, rs, params, o) : RenderOnCpu(rs, params, o);
+  RenderResult r = ctx ? RenderOnVulkan(*ctx, rs, params, o, &times.upload) : RenderOnCpu(rs, params, o);
+  times.render = r.seconds;
   const uint32_t validationMessages = ctx ? ctx->ValidationMessages() : 0;
 
+  phase = std::chrono::steady_clock::now();
   WriteImage(r.image, o.out, o.exposure);
-  const int status = reference ? CompareBackends(*reference, r, o) : 0;
+  lap(times.write);
+  int status = reference ? CompareBackends(*reference, r, o) : 0;
   PrintRenderReport(scene, rs, r, o);
   if (validationMessages) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
-    return 3;
+    status = 3;
+  }
+  if (!o.stats.empty()) {
+    times.total = SecondsSince(start);
+    const std::string json =
+        StatsJson(o, {scene, rs, r, reference ? &*reference : nullptr, times, validationMessages, status});
+    WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
   }
   return status;
 }

@@ -83,6 +83,9 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      let the glTF read files outside its own folder (absolute paths,
                      "..", file:// URLs, symbolic links leading out, the current
                      directory); by default a glTF reads only files beside it
+  --stats FILE       write the run as one JSON object (version, scene hash, device,
+                     options, times, rays, rates, mean radiance, BVH, warnings; schema
+                     in the README), after the image
   -v, --verbose      print what was loaded and which glTF features were ignored
   -h, --help         print this help and exit
   --version          print the version and exit
@@ -140,6 +143,7 @@ Options ParseOptions(int argc, const char* const* argv) {
          o.background = c;
        }},
       {"--env", text(o.env, "an .hdr or .exr file")},
+      {"--stats", text(o.stats, "a file name")},
       {"--env-rotation",
        [&](const std::string& opt, const std::string& v) { o.envRotation = ParseNumber(opt, v, -3600.0f, 3600.0f); }},
       {"--env-intensity",
@@ -198,7 +202,8 @@ Options ParseOptions(int argc, const char* const* argv) {
   if (const char* env = std::getenv("VKPT_VALIDATION"); env && std::string(env) == "1") o.validation = true;
   if (o.help || o.version || o.listDevices) return o;
   if (!o.diff.empty()) {
-    if (!o.scene.empty() || o.compare) throw UsageError("--diff compares two images; it takes no --scene or --compare");
+    if (!o.scene.empty() || o.compare || !o.stats.empty())
+      throw UsageError("--diff compares two images; it takes no --scene, --compare or --stats");
     return o;
   }
   if (o.compare && o.backend != Backend::Auto) throw UsageError("--compare uses both backends; drop --backend");
@@ -210,6 +215,7 @@ Options ParseOptions(int argc, const char* const* argv) {
     std::string base = o.scene.substr(o.scene.find_last_of('/') + 1);
     o.out = base.substr(0, base.find_last_of('.')) + ".png";
   }
+  if (o.stats == o.out) throw UsageError("--stats and --out name the same file \"" + o.out + "\"");
   return o;
 }
 

@@ -43,6 +43,7 @@ struct Options {
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;  // --splits
   LoadLimits load;                      // --max-memory, --allow-external-uris
+  std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)
   bool verbose = false;
   bool help = false;
   bool version = false;

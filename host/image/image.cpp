@@ -1,12 +1,9 @@
 #include "image/image.h"
 
-#include <unistd.h>
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <optional>
 #include <sstream>
 
@@ -39,14 +36,7 @@ ImageFormat FormatFromPath(const std::string& path) {
 
 void CheckOutputPath(const std::string& path) {
   FormatFromPath(path);
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::path p(path);
-  if (fs::is_directory(p, ec)) throw Error(path + ": is a directory, not an image file name");
-  fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir, ec)) throw Error(path + ": directory " + dir.string() + " does not exist");
-  if (::access(dir.c_str(), W_OK) != 0)
-    throw Error(path + ": cannot write to directory " + dir.string() + ": " + std::strerror(errno));
+  CheckWritablePath(path, "an image");
 }
 
 uint8_t LinearToSrgb8(float linear) {

@@ -17,6 +17,7 @@
 #include "scene/gltf_validate.h"
 #include "scene/scene_file.h"
 #include "util/byte_size.h"
+#include "util/content_hash.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -183,6 +184,10 @@ Scene LoadGltf(const std::string& path, const LoadLimits& limits) {
     Scene scene;
     scene.path = path;
     tinygltf::Model model = ParseWithTinyGltf(path, file, access, scene.warnings);
+    ContentHash hash;
+    hash.Add({reinterpret_cast<const unsigned char*>(file.bytes.data()), file.bytes.size()});
+    for (const tinygltf::Buffer& b : model.buffers) hash.Add(b.data);
+    scene.contentHash = hash.Value();
     file = SceneFile{};
     for (const std::string& skipped : access.SkippedImages()) scene.warnings.push_back(skipped);
     BuildScene(GltfSource{path, model}, scene, budget);

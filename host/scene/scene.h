@@ -78,6 +78,8 @@ struct Scene {
   // What a user should know about what was (not) loaded; printed by -v.
   std::vector<std::string> warnings;
   std::vector<std::string> ignoredFeatures;
+  // ContentHash of the glTF file and every buffer it loaded (for reports: --stats).
+  uint64_t contentHash = 0;
   // The loader's memory budget (--max-memory) and what it counted for this scene.
   uint64_t memoryLimit = 0, memoryCounted = 0;
 };

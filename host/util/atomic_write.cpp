@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <random>
 
 #include "util/error.h"
@@ -58,6 +59,17 @@ void WriteFileAtomically(const std::string& path, std::span<const uint8_t> bytes
   if (::close(fd) != 0) Fail(path, "close failed", errno);
   if (::rename(tmp.c_str(), path.c_str()) != 0) Fail(path, "cannot rename " + tmp + " to it", errno);
   guard.Dismiss();
+}
+
+void CheckWritablePath(const std::string& path, const std::string& what) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p(path);
+  if (fs::is_directory(p, ec)) throw Error(path + ": is a directory, not " + what + " file name");
+  fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir, ec)) throw Error(path + ": directory " + dir.string() + " does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw Error(path + ": cannot write to directory " + dir.string() + ": " + std::strerror(errno));
 }
 
 }  // namespace vkpt

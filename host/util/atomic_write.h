@@ -13,4 +13,9 @@ namespace vkpt {
 // the OS error. SIGINT/SIGTERM meanwhile also remove the temporary (TempFileGuard).
 void WriteFileAtomically(const std::string& path, std::span<const uint8_t> bytes);
 
+// Throws vkpt::Error unless WriteFileAtomically(path, …) could succeed as far as can be
+// told before writing: path is not a directory, its directory exists and is writable.
+// `what` names the file's purpose in the message ("an image").
+void CheckWritablePath(const std::string& path, const std::string& what);
+
 }  // namespace vkpt

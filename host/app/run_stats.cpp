@@ -1,0 +1,98 @@
+#include "app/run_stats.h"
+
+#include <cinttypes>
+#include <cstdio>
+
+#include "app/json_object.h"
+
+namespace vkpt {
+namespace {
+
+const char* BackendName(Backend b) {
+  switch (b) {
+    case Backend::Cpu: return "cpu";
+    case Backend::Vulkan: return "vulkan";
+    default: return "auto";
+  }
+}
+
+const char* SplitName(SplitMode m) {
+  switch (m) {
+    case SplitMode::kObject: return "object";
+    case SplitMode::kSpatial: return "spatial";
+    default: return "auto";
+  }
+}
+
+std::string Vec3(double x, double y, double z) { return JsonArray({JsonNumber(x), JsonNumber(y), JsonNumber(z)}); }
+
+std::string Strings(const std::vector<std::string>& v) {
+  std::vector<std::string> quoted;
+  for (const std::string& s : v) quoted.push_back(JsonString(s));
+  return JsonArray(quoted);
+}
+
+// Every option as given or defaulted; absent optional ones are null.
+JsonObject OptionsJson(const Options& o) {
+  auto optional = [](const std::optional<uint32_t>& v) { return v ? std::to_string(*v) : std::string("null"); };
+  JsonObject j;
+  j.Str("scene", o.scene).Str("out", o.out).Raw("width", optional(o.width)).Raw("height", optional(o.height));
+  j.Int("spp", o.spp).Int("seed", o.seed).Int("max_depth", o.maxDepth).Int("rr_depth", o.rrDepth);
+  j.Str("backend", BackendName(o.backend)).Str("device", o.device).Int("threads", o.threads).Int("batch", o.batch);
+  j.Bool("compare", o.compare).Bool("validation", o.validation).Raw("camera", optional(o.camera));
+  j.Num("exposure", o.exposure)
+      .Raw("background", o.background ? Vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]) : "null");
+  j.Str("env", o.env).Num("env_rotation", o.envRotation).Num("env_intensity", o.envIntensity);
+  j.Int("leaf_size", o.leafSize).Str("splits", SplitName(o.splits));
+  j.Int("max_memory", o.load.maxMemory).Bool("allow_external_uris", o.load.allowExternalUris);
+  j.Str("stats", o.stats).Bool("verbose", o.verbose);
+  return j;
+}
+
+}  // namespace
+
+std::string StatsJson(const Options& o, const RunOutcome& run) {
+  const RenderResult& r = run.result;
+  const uint64_t pixels = uint64_t(r.image.width) * r.image.height;
+  const double samples = double(pixels) * o.spp;
+  glm::dvec3 mean(0.0);
+  for (const glm::vec3& p : r.image.pixels) mean += glm::dvec3(p);
+  mean /= double(pixels);
+
+  char hash[32];
+  std::snprintf(hash, sizeof hash, "fnv1a64:%016" PRIx64, run.scene.contentHash);
+  JsonObject scene;
+  scene.Str("path", run.scene.path).Str("content_hash", hash).Int("triangles", run.scene.triangles.size());
+  scene.Int("degenerate_triangles", run.rs.degenerateTriangles).Int("materials", run.scene.materials.size());
+  scene.Int("lights", run.rs.lights.size()).Int("cameras", run.scene.cameras.size());
+  scene.Int("memory_counted", run.scene.memoryCounted).Int("memory_limit", run.scene.memoryLimit);
+
+  const BvhStats& b = run.rs.bvhStats;
+  JsonObject bvh;
+  bvh.Str("splits", b.spatialSplits ? "spatial" : "object").Int("nodes", b.nodes).Int("leaves", b.leaves);
+  bvh.Int("depth", b.depth).Int("references", b.references).Num("sah_cost", b.sahCost).Num("build_ms", b.buildMs);
+
+  const RunTimes& t = run.times;
+  JsonObject times;
+  times.Num("load", t.load).Num("environment", t.environment).Num("prepare", t.prepare).Num("upload", t.upload);
+  times.Num("render", t.render).Num("write", t.write).Num("total", t.total);
+
+  JsonObject j;
+  j.Str("vkpt_version", VKPT_VERSION).Obj("scene", scene).Str("device", r.engine).Obj("options", OptionsJson(o));
+  j.Int("seed", o.seed).Int("width", r.image.width).Int("height", r.image.height);
+  // One pass of o.spp samples: the only budget vkpt has is --spp.
+  j.Int("spp", o.spp).Raw("spp_per_pass", JsonArray({std::to_string(o.spp)})).Str("stopped_by", "spp");
+  j.Obj("times_s", times).Int("rays", r.rays).Num("samples_per_s", samples / r.seconds);
+  j.Num("rays_per_s", double(r.rays) / r.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));
+  j.Int("non_finite_samples", r.nonFinite).Int("cut_short_samples", r.cutShort).Obj("bvh", bvh);
+  if (run.reference) {
+    JsonObject ref;
+    ref.Str("device", run.reference->engine).Num("render_s", run.reference->seconds);
+    j.Obj("compare_reference", ref);
+  }
+  j.Raw("warnings", Strings(run.scene.warnings)).Raw("ignored_features", Strings(run.scene.ignoredFeatures));
+  j.Int("validation_messages", run.validationMessages).Int("exit_status", uint64_t(run.exitStatus));
+  return j.Text() + "\n";
+}
+
+}  // namespace vkpt
