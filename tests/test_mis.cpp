@@ -24,46 +24,46 @@ using shader::FrameParams;
 
 const double kRoughness[] = {0.1, 0.3, 0.7};
 
-// A metal plane y = 0 (6 × 6, baseColor copper-like, metallic 1, the given roughness) under
-// a one-sided emissive quad (1 × 1, radiance 4, facing down) at height 1.5, whose
-// reflection the camera sees; the light itself is out of view.
-Scene GlossyPlaneUnderAreaLight(double roughness) {
+// A 6 × 6 plane y = 0 of material `planeMaterial` (glTF JSON) and a one-sided emissive quad
+// (1 × 1, radiance 4) at height `lightY`, facing the plane; the camera (Frame) sees the
+// plane, not the light.
+Scene PlaneAndQuadLight(const std::string& planeMaterial, float lightY, const std::vector<std::string>& extensions) {
   GltfBuilder b;
   int plane = b.Positions({{-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}});
-  int light = b.Positions({{-0.5f, 1.5f, -1.5f}, {0.5f, 1.5f, -1.5f}, {0.5f, 1.5f, -0.5f}, {-0.5f, 1.5f, -0.5f}});
-  b.materials = {R"({"pbrMetallicRoughness":{"baseColorFactor":[0.95,0.64,0.54,1],"metallicFactor":1,)"
-                 R"("roughnessFactor":)" +
-                     Num(roughness) + "}}",
-                 R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1]},"emissiveFactor":[1,1,1],)"
-                 R"("extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":4}}})"};
+  int light =
+      b.Positions({{-0.5f, lightY, -1.5f}, {0.5f, lightY, -1.5f}, {0.5f, lightY, -0.5f}, {-0.5f, lightY, -0.5f}});
+  b.materials = {planeMaterial, R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1]},"emissiveFactor":[1,1,1],)"
+                                R"("extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":4}}})"};
   b.Mesh(plane, b.Indices({0, 1, 2, 0, 2, 3}), 0);
-  b.Mesh(light, b.Indices({0, 1, 2, 0, 2, 3}), 1);
+  // Wound to face down (−y) from above the plane, up from below it.
+  b.Mesh(light,
+         b.Indices(lightY > 0.0f ? std::vector<uint32_t>{0, 1, 2, 0, 2, 3} : std::vector<uint32_t>{0, 2, 1, 0, 3, 2}),
+         1);
   b.Node(R"({"mesh":0})");
   b.Node(R"({"mesh":1})");
   b.scenes = {R"({"nodes":[0,1]})"};
-  b.extensionsUsed = {"KHR_materials_emissive_strength"};
+  b.extensionsUsed = extensions;
+  b.extensionsUsed.push_back("KHR_materials_emissive_strength");
   return Load(b);
 }
 
-// The same quad light, facing up, 1.5 below a rough transmissive thin wall (white, the
-// given roughness) that hides it from the camera: all the light the camera sees came
-// through the wall, sampled through it by light sampling and found by transmitted BSDF
-// samples.
+// A metal plane (baseColor copper-like, metallic 1, the given roughness) under the light
+// at height 1.5, whose reflection the camera sees.
+Scene GlossyPlaneUnderAreaLight(double roughness) {
+  return PlaneAndQuadLight(R"({"pbrMetallicRoughness":{"baseColorFactor":[0.95,0.64,0.54,1],"metallicFactor":1,)"
+                           R"("roughnessFactor":)" +
+                               Num(roughness) + "}}",
+                           1.5f, {});
+}
+
+// The light 1.5 below a rough transmissive thin wall (white, the given roughness) that
+// hides it from the camera: all the light the camera sees came through the wall, sampled
+// through it by light sampling and found by transmitted BSDF samples.
 Scene LightBehindThinWall(double roughness) {
-  GltfBuilder b;
-  int wall = b.Positions({{-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}});
-  int light = b.Positions({{-0.5f, -1.5f, -1.5f}, {0.5f, -1.5f, -1.5f}, {0.5f, -1.5f, -0.5f}, {-0.5f, -1.5f, -0.5f}});
-  b.materials = {R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0,"roughnessFactor":)" +
-                     Num(roughness) + R"(},"extensions":{"KHR_materials_transmission":{"transmissionFactor":1}}})",
-                 R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1]},"emissiveFactor":[1,1,1],)"
-                 R"("extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":4}}})"};
-  b.Mesh(wall, b.Indices({0, 1, 2, 0, 2, 3}), 0);
-  b.Mesh(light, b.Indices({0, 2, 1, 0, 3, 2}), 1);
-  b.Node(R"({"mesh":0})");
-  b.Node(R"({"mesh":1})");
-  b.scenes = {R"({"nodes":[0,1]})"};
-  b.extensionsUsed = {"KHR_materials_emissive_strength", "KHR_materials_transmission"};
-  return Load(b);
+  return PlaneAndQuadLight(
+      R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0,"roughnessFactor":)" + Num(roughness) +
+          R"(},"extensions":{"KHR_materials_transmission":{"transmissionFactor":1}}})",
+      -1.5f, {"KHR_materials_transmission"});
 }
 
 // 48 × 32, `spp` samples, one bounce (the light reflected once), black background.

@@ -280,6 +280,16 @@ Material ClearGlass(glm::vec3 tint, glm::vec3 attenuation, float ior) {
   return m;
 }
 
+Camera OrthographicAlongMinusZ(float z, float half) {
+  Camera cam;
+  cam.name = "orthographic along -z";
+  cam.position = glm::vec3(0.0f, 0.0f, z);
+  cam.orthographic = true;
+  cam.ymag = half;
+  cam.xmag = half;
+  return cam;
+}
+
 Scene GlassSlabScene(const Material& material) {
   std::vector<SceneTriangle> tris;
   glm::vec3 c[8];
@@ -291,13 +301,7 @@ Scene GlassSlabScene(const Material& material) {
     tris.push_back({c[f[0]], c[f[2]], c[f[3]], 0});
   }
   Scene s = MakeScene(tris, {material});
-  Camera cam;
-  cam.name = "orthographic along -z";
-  cam.position = glm::vec3(0.0f, 0.0f, 5.0f);
-  cam.orthographic = true;
-  cam.ymag = 1.5f;
-  cam.xmag = 1.5f;
-  s.cameras.push_back(cam);
+  s.cameras.push_back(OrthographicAlongMinusZ(5.0f, 1.5f));
   return s;
 }
 
@@ -310,13 +314,7 @@ Scene VertexColorQuadScene(glm::vec3 baseColor) {
   Scene s = MakeScene({{a, b, c, 0}, {a, c, d, 0}}, {m});
   auto colorAt = [](glm::vec3 p) { return VertexColorQuadColorAt(p.x, p.y); };
   for (const SceneTriangle& t : s.triangles) s.colors.push_back({colorAt(t.v0), colorAt(t.v1), colorAt(t.v2)});
-  Camera cam;
-  cam.name = "orthographic along -z";
-  cam.position = glm::vec3(0.0f, 0.0f, 2.0f);
-  cam.orthographic = true;
-  cam.ymag = 1.0f;
-  cam.xmag = 1.0f;
-  s.cameras.push_back(cam);
+  s.cameras.push_back(OrthographicAlongMinusZ(2.0f, 1.0f));
   return s;
 }
 

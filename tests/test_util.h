@@ -86,6 +86,8 @@ Scene MakeScene(const std::vector<SceneTriangle>& triangles, const std::vector<M
 // Glass that light crosses straight at normal incidence: transmission 1 with a volume
 // (KHR_materials_volume), no specular reflection (F = 0), a near-mirror roughness.
 Material ClearGlass(glm::vec3 tint, glm::vec3 attenuation, float ior);
+// An orthographic camera at (0, 0, z) looking along −z, framing [−half, half]².
+Camera OrthographicAlongMinusZ(float z, float half);
 // The slab [−3, 3]² × [−1, 1] of `material`, seen by an orthographic camera along −z that
 // frames [−1.5, 1.5]²: every camera ray crosses it along z, a length of 2, and no ray
 // grazes an edge.
