@@ -53,7 +53,7 @@ class GpuRenderer {
   // What the scene has, for pathtrace.comp's specialization constants 0-3 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
   uint32_t lightTypes_ = 0;          // bit 1 << type for each type in the light table
-  bool hasGlossy_;                   // some material is not Lambertian
+  bool hasGlossy_;                   // some triangle's material is not Lambertian
   bool hasSmoothNormals_;            // some triangle has vertex normals
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
