@@ -41,7 +41,7 @@ layout(push_constant) uniform Push {
 // The light types of the light table, bit 1 << kLight* (0: no lights): see shared/lights.h.
 layout(constant_id = 0) const uint kSceneLightTypes = 0xFFFFFFFFu;
 #define VKPT_LIGHT_TYPES kSceneLightTypes
-// 0 when every material is Lambertian: see shared/bsdf.h.
+// 0 when every material a triangle uses is Lambertian: see shared/bsdf.h.
 layout(constant_id = 1) const uint kSceneHasGlossy = 1u;
 #define VKPT_GLOSSY_MATERIALS (kSceneHasGlossy != 0u)
 // 0 when no triangle has vertex normals: see shared/shading_frame.h.

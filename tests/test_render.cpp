@@ -154,5 +154,40 @@ TEST(Render, ImageIsIdenticalForAnyThreadCount) {
   EXPECT_NE(0, std::memcmp(a.pixels.data(), c.pixels.data(), a.pixels.size() * sizeof(glm::vec3)));
 }
 
+// The Cornell box is a simple scene: the CPU renders it with SampleRadianceSimple, which
+// must give every sample bit for bit as the general estimator does.
+TEST(Render, SimpleSceneEstimatorEqualsTheGeneralOne) {
+  Scene scene = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  RenderScene rs = PrepareRenderScene(scene);
+  shader::FrameParams p = Params(scene, rs, 24, 24, 8, 32, 3, 5);
+  ASSERT_TRUE(IsSimpleScene(rs, p));
+  ASSERT_FALSE(rs.shading.empty());
+  SampleStats general, simple;
+  for (uint32_t y = 0; y < p.height; ++y)
+    for (uint32_t x = 0; x < p.width; ++x)
+      for (uint32_t s = 0; s < p.sampleCount; ++s) {
+        const glm::vec3 a = SampleRadiance(rs, p, x, y, s, general);
+        const glm::vec3 b = SampleRadianceSimple(rs, p, x, y, s, simple);
+        ASSERT_EQ(0, std::memcmp(&a, &b, sizeof a)) << "pixel " << x << "," << y << " sample " << s;
+      }
+  EXPECT_EQ(general.rays, simple.rays);
+  // What makes a scene not simple: a glossy material on a triangle, vertex normals, a
+  // punctual light, an environment map. An unused glossy material does not.
+  RenderScene glossy = rs;
+  glossy.materials.back().metallic = 1.0f;  // the loader's default material, unused
+  EXPECT_TRUE(IsSimpleScene(glossy, p));
+  glossy.materials[glossy.triangles[0].material].metallic = 1.0f;
+  EXPECT_FALSE(IsSimpleScene(glossy, p));
+  RenderScene smooth = rs;
+  smooth.shading[0].flags |= shader::kShadingHasNormals;
+  EXPECT_FALSE(IsSimpleScene(smooth, p));
+  RenderScene point = rs;
+  point.lights[0].type = shader::kLightPoint;
+  EXPECT_FALSE(IsSimpleScene(point, p));
+  shader::FrameParams env = p;
+  env.envWidth = 1;
+  EXPECT_FALSE(IsSimpleScene(rs, env));
+}
+
 }  // namespace
 }  // namespace vkpt

@@ -25,10 +25,12 @@ namespace {
 
 // Pixel (x, y)'s samples, summed in sample order (so the sums are the same for any
 // thread count); non-finite samples are counted and left out.
+template <bool kSimple>
 PixelSums SamplePixel(const RenderScene& scene, const FrameParams& params, uint32_t x, uint32_t y, SampleStats& stats) {
   PixelSums sums;
   for (uint32_t s = 0; s < params.sampleCount; ++s) {
-    glm::vec3 L = SampleRadiance(scene, params, x, y, params.sampleBegin + s, stats);
+    glm::vec3 L = kSimple ? SampleRadianceSimple(scene, params, x, y, params.sampleBegin + s, stats)
+                          : SampleRadiance(scene, params, x, y, params.sampleBegin + s, stats);
     if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z)) {
       ++stats.nonFinite;
       continue;
@@ -50,10 +52,12 @@ RenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, cons
   // Counted per row and added up once per row: per sample, the shared counters would
   // bounce their cache line between cores.
   std::atomic<uint64_t> rays{0}, nonFinite{0};
+  const bool simple = IsSimpleScene(scene, params);
   auto renderRow = [&](size_t y) {
     SampleStats st;
     for (uint32_t x = 0; x < params.width; ++x)
-      film.SetPixel(y * params.width + x, SamplePixel(scene, params, x, uint32_t(y), st));
+      film.SetPixel(y * params.width + x, simple ? SamplePixel<true>(scene, params, x, uint32_t(y), st)
+                                                 : SamplePixel<false>(scene, params, x, uint32_t(y), st));
     rays.fetch_add(st.rays);
     nonFinite.fetch_add(st.nonFinite);
   };

@@ -4,6 +4,7 @@
 
 #include "render/light_table.h"
 #include "render/octahedral.h"
+#include "shared/bsdf.h"
 #include "shared/sampling.h"
 #include "util/error.h"
 #include "util/parallel.h"
@@ -118,6 +119,15 @@ std::vector<shader::TriangleColors> PackVertexColors(const Scene& scene) {
 }
 
 }  // namespace
+
+bool UsesGlossyMaterial(const RenderScene& scene) {
+  std::vector<char> used(scene.materials.size(), 0);
+  for (const shader::Triangle& t : scene.triangles)
+    if (t.material < used.size()) used[t.material] = 1;
+  for (size_t i = 0; i < used.size(); ++i)
+    if (used[i] && !shader::IsLambertian(scene.materials[i])) return true;
+  return false;
+}
 
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {
   BuildInput in = CollectBuildInput(scene, options);

@@ -41,6 +41,11 @@ struct RenderScene {
 // triangles are left out of the RenderScene.
 bool IsDegenerate(const SceneTriangle& t);
 
+// Whether some triangle's material is not Lambertian (shared/bsdf.h's IsLambertian).
+// Materials no triangle uses do not count: the loader always appends glTF's default
+// material, a metal, whether or not a primitive needs it.
+bool UsesGlossyMaterial(const RenderScene& scene);
+
 // `forCpu`: also lay the tree out for the CPU tracer (pairLayout). A render on the GPU alone
 // skips it: on a large scene it costs time and memory that nothing would read.
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {}, bool forCpu = true);

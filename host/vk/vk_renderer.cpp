@@ -164,8 +164,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       vertexColors_(UploadArray<shader::TriangleColors>(ctx, scene.vertexColors, "vertex colours")),
       envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
       envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
-      hasGlossy_(std::any_of(scene.materials.begin(), scene.materials.end(),
-                             [](const shader::Material& m) { return !shader::IsLambertian(m); })),
+      hasGlossy_(UsesGlossyMaterial(scene)),
       hasSmoothNormals_(
           std::any_of(scene.shading.begin(), scene.shading.end(),
                       [](const shader::TriangleShading& s) { return (s.flags & shader::kShadingHasNormals) != 0; })),

@@ -55,7 +55,7 @@ class GpuRenderer {
   // What the scene has, for pathtrace.comp's specialization constants 0-4 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
   uint32_t lightTypes_ = 0;          // bit 1 << type for each type in the light table
-  bool hasGlossy_;                   // some material is not Lambertian
+  bool hasGlossy_;                   // some triangle's material is not Lambertian
   bool hasSmoothNormals_;            // some triangle has vertex normals
   bool hasVertexColors_;             // some triangle has COLOR_0
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)

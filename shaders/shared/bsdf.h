@@ -45,9 +45,9 @@
 #include "transmission.h"
 
 // A shader may define VKPT_GLOSSY_MATERIALS as a specialization constant that is false
-// when every material of the scene is Lambertian: lavapipe runs both sides of an `if`, so
-// only a constant lets its compiler drop the GGX code (the Cornell box then costs what it
-// did before this BSDF). The CPU decides per material.
+// when every material the scene's triangles use is Lambertian (the default material the
+// loader appends is a metal, used or not): lavapipe runs both sides of an `if`, so only a
+// constant lets its compiler drop the GGX code. The CPU decides per material.
 #ifndef VKPT_GLOSSY_MATERIALS
 #define VKPT_GLOSSY_MATERIALS true
 #endif

@@ -1,0 +1,57 @@
+// The shared estimator (shaders/shared/path.h) once more, for simple scenes: the
+// constants pathtrace.comp specializes on, set to what IsSimpleScene requires, let the
+// compiler drop the code such a scene never runs (the GGX lobes, vertex normals, the
+// other light types, the environment map) and keep in registers what the general
+// estimator spills (docs/design-notes.md, the Cornell box's cost of the glTF BSDF).
+//
+// The headers that read those constants are compiled here inside the namespace
+// vkpt::shader::simple, so that their inline functions cannot stand in for the general
+// ones (one definition rule); everything else comes from vkpt::shader as in cpu_path.h.
+// Only path.h includes them, so none is included before.
+#include "cpu/path_tracer.h"
+
+// host/cpu/cpu_path.h without its last includes (environment.h and the estimator).
+#define VKPT_PATH_H
+#define VKPT_ENVIRONMENT_H
+#include "cpu/cpu_path.h"
+#undef VKPT_PATH_H
+#undef VKPT_ENVIRONMENT_H
+#include "shared/estimator.h"
+#include "shared/ggx_albedo.h"
+#include "shared/intersect.h"
+#include "shared/layout.h"
+#include "shared/microfacet.h"
+#include "shared/rng.h"
+#include "shared/sampling.h"
+#include "shared/transmission.h"
+
+#define VKPT_LIGHT_TYPES ((1u << kLightTriangle) | (1u << kLightTwoSidedTriangle))
+#define VKPT_GLOSSY_MATERIALS false
+#define VKPT_SMOOTH_NORMALS false
+#define VKPT_ENVIRONMENT_MAP false
+#undef VKPT_BEGIN_NAMESPACE
+#undef VKPT_END_NAMESPACE
+#define VKPT_BEGIN_NAMESPACE namespace vkpt::shader::simple {
+#define VKPT_END_NAMESPACE }
+#include "shared/path.h"  // and through it environment.h, lights.h, shading_frame.h and bsdf.h
+#undef VKPT_BEGIN_NAMESPACE
+#undef VKPT_END_NAMESPACE
+
+namespace vkpt {
+
+bool IsSimpleScene(const RenderScene& scene, const shader::FrameParams& params) {
+  for (const shader::Light& l : scene.lights)
+    if (((1u << l.type) & shader::simple::kTriangleLightTypes) == 0u) return false;
+  for (const shader::TriangleShading& s : scene.shading)
+    if ((s.flags & shader::kShadingHasNormals) != 0u) return false;
+  return params.envWidth == 0u && !UsesGlossyMaterial(scene);
+}
+
+glm::vec3 SampleRadianceSimple(const RenderScene& scene, const shader::FrameParams& params, uint32_t px, uint32_t py,
+                               uint32_t sampleIndex, SampleStats& stats) {
+  shader::simple::PathSample s = shader::simple::TracePath(scene, params, px, py, sampleIndex);
+  stats.rays += s.rays;
+  return s.radiance;
+}
+
+}  // namespace vkpt
