@@ -19,8 +19,8 @@ struct SampleStats {
 glm::vec3 SampleRadiance(const RenderScene& scene, const shader::FrameParams& params, uint32_t px, uint32_t py,
                          uint32_t sampleIndex, SampleStats& stats);
 
-// Whether the scene is simple — Lambertian materials, flat triangles, triangle lights only,
-// no environment map (the Cornell box) — and SampleRadianceSimple, the same estimator
+// Whether the scene is simple — Lambertian materials, flat triangles without vertex
+// colours, triangle lights only, no environment map (the Cornell box) — and SampleRadianceSimple, the same estimator
 // compiled for such scenes alone (simple_path.cpp), renders it as SampleRadiance does.
 bool IsSimpleScene(const RenderScene& scene, const shader::FrameParams& params);
 glm::vec3 SampleRadianceSimple(const RenderScene& scene, const shader::FrameParams& params, uint32_t px, uint32_t py,

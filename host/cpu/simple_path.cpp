@@ -1,7 +1,7 @@
 // The shared estimator (shaders/shared/path.h) once more, for simple scenes: the
 // constants pathtrace.comp specializes on, set to what IsSimpleScene requires, let the
-// compiler drop the code such a scene never runs (the GGX lobes, vertex normals, the
-// other light types, the environment map) and keep in registers what the general
+// compiler drop the code such a scene never runs (the GGX lobes, vertex normals and
+// colours, the other light types, the environment map) and keep in registers what the general
 // estimator spills (docs/design-notes.md, the Cornell box's cost of the glTF BSDF).
 //
 // The headers that read those constants are compiled here inside the namespace
@@ -29,6 +29,8 @@
 #define VKPT_GLOSSY_MATERIALS false
 #define VKPT_SMOOTH_NORMALS false
 #define VKPT_ENVIRONMENT_MAP false
+#undef VKPT_VERTEX_COLORS
+#define VKPT_VERTEX_COLORS false
 #undef VKPT_BEGIN_NAMESPACE
 #undef VKPT_END_NAMESPACE
 #define VKPT_BEGIN_NAMESPACE namespace vkpt::shader::simple {
@@ -44,7 +46,7 @@ bool IsSimpleScene(const RenderScene& scene, const shader::FrameParams& params) 
     if (((1u << l.type) & shader::simple::kTriangleLightTypes) == 0u) return false;
   for (const shader::TriangleShading& s : scene.shading)
     if ((s.flags & shader::kShadingHasNormals) != 0u) return false;
-  return params.envWidth == 0u && !UsesGlossyMaterial(scene);
+  return params.envWidth == 0u && scene.vertexColors.empty() && !UsesGlossyMaterial(scene);
 }
 
 glm::vec3 SampleRadianceSimple(const RenderScene& scene, const shader::FrameParams& params, uint32_t px, uint32_t py,
