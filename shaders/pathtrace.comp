@@ -53,6 +53,9 @@ layout(constant_id = 3) const uint kSceneHasEnvironmentMap = 1u;
 // 0 when no triangle has vertex colours: see shared/shading_frame.h.
 layout(constant_id = 4) const uint kSceneHasVertexColors = 1u;
 #define VKPT_VERTEX_COLORS (kSceneHasVertexColors != 0u)
+// 0 when no triangle's material bounds a volume: see shared/path.h.
+layout(constant_id = 5) const uint kSceneHasVolumes = 1u;
+#define VKPT_VOLUMES (kSceneHasVolumes != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

@@ -172,7 +172,7 @@ TEST(Render, SimpleSceneEstimatorEqualsTheGeneralOne) {
       }
   EXPECT_EQ(general.rays, simple.rays);
   // What makes a scene not simple: a glossy material on a triangle, vertex normals, a
-  // punctual light, an environment map, vertex colours. An unused glossy material does not.
+  // punctual light, an environment map, vertex colours, a volume. An unused glossy material does not.
   RenderScene glossy = rs;
   glossy.materials.back().metallic = 1.0f;  // the loader's default material, unused
   EXPECT_TRUE(IsSimpleScene(glossy, p));
@@ -187,6 +187,9 @@ TEST(Render, SimpleSceneEstimatorEqualsTheGeneralOne) {
   shader::FrameParams env = p;
   env.envWidth = 1;
   EXPECT_FALSE(IsSimpleScene(rs, env));
+  RenderScene volume = rs;
+  volume.materials[volume.triangles[0].material].flags |= shader::kMaterialVolume;
+  EXPECT_FALSE(IsSimpleScene(volume, p));
   RenderScene colored = rs;
   colored.vertexColors.resize(rs.shading.size());
   EXPECT_FALSE(IsSimpleScene(colored, p));

@@ -120,13 +120,26 @@ std::vector<shader::TriangleColors> PackVertexColors(const Scene& scene) {
 
 }  // namespace
 
-bool UsesGlossyMaterial(const RenderScene& scene) {
+namespace {
+
+// Whether some triangle's material has the property.
+bool SomeTriangleUses(const RenderScene& scene, bool (*property)(const shader::Material&)) {
   std::vector<char> used(scene.materials.size(), 0);
   for (const shader::Triangle& t : scene.triangles)
     if (t.material < used.size()) used[t.material] = 1;
   for (size_t i = 0; i < used.size(); ++i)
-    if (used[i] && !shader::IsLambertian(scene.materials[i])) return true;
+    if (used[i] && property(scene.materials[i])) return true;
   return false;
+}
+
+}  // namespace
+
+bool UsesGlossyMaterial(const RenderScene& scene) {
+  return SomeTriangleUses(scene, [](const shader::Material& m) { return !shader::IsLambertian(m); });
+}
+
+bool UsesVolumeMaterial(const RenderScene& scene) {
+  return SomeTriangleUses(scene, [](const shader::Material& m) { return (m.flags & shader::kMaterialVolume) != 0u; });
 }
 
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {

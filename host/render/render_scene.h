@@ -45,6 +45,8 @@ bool IsDegenerate(const SceneTriangle& t);
 // Materials no triangle uses do not count: the loader always appends glTF's default
 // material, a metal, whether or not a primitive needs it.
 bool UsesGlossyMaterial(const RenderScene& scene);
+// Likewise, whether some triangle's material bounds a volume (kMaterialVolume).
+bool UsesVolumeMaterial(const RenderScene& scene);
 
 // `forCpu`: also lay the tree out for the CPU tracer (pairLayout). A render on the GPU alone
 // skips it: on a large scene it costs time and memory that nothing would read.

@@ -169,6 +169,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
           std::any_of(scene.shading.begin(), scene.shading.end(),
                       [](const shader::TriangleShading& s) { return (s.flags & shader::kShadingHasNormals) != 0; })),
       hasVertexColors_(!scene.vertexColors.empty()),
+      hasVolumes_(UsesVolumeMaterial(scene)),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {
   for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
@@ -192,7 +193,7 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                             {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
                            "pathtrace", 2 * sizeof(uint32_t),
                            {frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
-                            frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u});
+                            frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u, hasVolumes_ ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);

@@ -35,6 +35,13 @@
 #include "sampling.h"
 #include "shading_frame.h"
 
+// A shader may define VKPT_VOLUMES as a specialization constant that is false when no
+// triangle's material bounds a volume, so that lavapipe compiles no Beer–Lambert
+// attenuation (an exp per hit) for such scenes.
+#ifndef VKPT_VOLUMES
+#define VKPT_VOLUMES true
+#endif
+
 VKPT_BEGIN_NAMESPACE
 
 // MIS weights of the two strategies: Veach's power heuristic for a light sample (density
@@ -206,7 +213,7 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
     return false;
   }
   SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit);
-  if (!sh.frontFace && (sh.material.flags & kMaterialVolume) != 0u)
+  if (VKPT_VOLUMES && !sh.frontFace && (sh.material.flags & kMaterialVolume) != 0u)
     s.throughput *= exp(-sh.material.attenuation * hit.t);
   s.result.radiance += s.throughput * WeightedEmission(VKPT_SCENE_ARG s, sh, hit.t);
   if ((sh.material.flags & kMaterialUnlit) != 0u) {
