@@ -76,10 +76,11 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
     if ((shading.flags & kShadingHasNormals) != 0u) {
       vec3 n = InterpolatedNormal(shading, hit.b1, hit.b2);
       // Vertex normals that cancel out (or NaN from them) leave the flat normal.
-      if (abs(dot(n, n) - 1.0f) < 1e-3f) ns = frontFace ? n : -n;
+      if (abs(dot(n, n) - 1.0f) < 1e-3f) ns = AdaptShadingNormal(frontFace ? n : -n, sh.ng, -ray.dir);
     }
   }
-  sh.frame = FrameFromNormal(AdaptShadingNormal(ns, sh.ng, -ray.dir));
+  // A flat surface needs no adaptation: the mirror direction of any ωo above it is above it.
+  sh.frame = FrameFromNormal(ns);
   return sh;
 }
 
