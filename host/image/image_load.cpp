@@ -17,6 +17,7 @@
 #include <stb_image.h>
 #include <tinyexr.h>
 
+#include "image/stb_source.h"
 #include "util/error.h"
 #include "util/regular_file.h"
 
@@ -43,49 +44,17 @@ void CheckSize(const std::string& path, int64_t width, int64_t height) {
                 " pixels; an environment map must be 1 to " + std::to_string(kMaxEnvironmentSide) + " on each side");
 }
 
-// stb_image reads through these callbacks so that a truncated file is noticed and cannot
-// hang it. Past the end its HDR decoder reads zeros and reports success, and a run-length
-// count of 0 (which this stb version does not reject) makes its scanline loop spin
-// forever; bytes 0xFF instead make every run too long for the scanline, so a decode that
-// has run out of data ends, in an error or with ranOut set. stb refills a 128-byte buffer
-// and otherwise asks for exactly the bytes it needs: a refill that finds nothing, or a
-// short exact request, means the data ran out.
-struct StbSource {
-  const std::vector<unsigned char>& bytes;
-  size_t pos = 0;
-  bool ranOut = false;
-
-  static int Read(void* user, char* data, int size) {
-    auto* s = static_cast<StbSource*>(user);
-    const size_t n = std::min(size_t(size), s->bytes.size() - s->pos);
-    std::copy_n(s->bytes.data() + s->pos, n, data);
-    s->pos += n;
-    if (n == size_t(size) || (n > 0 && size == sizeof(stbi__context::buffer_start))) return int(n);
-    s->ranOut = true;
-    std::fill(data + n, data + size, '\xff');
-    return size;
-  }
-  static void Skip(void* user, int n) {
-    auto* s = static_cast<StbSource*>(user);
-    s->pos = std::min(s->bytes.size(), s->pos + size_t(std::max(n, 0)));
-  }
-  static int Eof(void* user) {
-    auto* s = static_cast<StbSource*>(user);
-    return s->pos >= s->bytes.size();
-  }
-};
-
 Image DecodeHdr(const std::string& path, const std::vector<unsigned char>& bytes, const MemoryCharge& charge) {
-  stbi_io_callbacks io{&StbSource::Read, &StbSource::Skip, &StbSource::Eof};
+  const stbi_io_callbacks* io = &StbSource::kCallbacks;
   int width = 0, height = 0, channels = 0;
   StbSource header{bytes};
-  if (!stbi_info_from_callbacks(&io, &header, &width, &height, &channels))
+  if (!stbi_info_from_callbacks(io, &header, &width, &height, &channels))
     throw Error(path + ": not a Radiance HDR file (" + stbi_failure_reason() + ")");
   CheckSize(path, width, height);
   // stb's float RGB, then our Image.
   charge(uint64_t(width) * uint64_t(height) * 2 * sizeof(glm::vec3), "its decoded texels");
   StbSource body{bytes};
-  std::unique_ptr<float, void (*)(void*)> rgb(stbi_loadf_from_callbacks(&io, &body, &width, &height, &channels, 3),
+  std::unique_ptr<float, void (*)(void*)> rgb(stbi_loadf_from_callbacks(io, &body, &width, &height, &channels, 3),
                                               stbi_image_free);
   if (body.ranOut) throw Error(path + ": the file is truncated (it ends inside the pixel data)");
   if (!rgb) throw Error(path + ": cannot decode the Radiance HDR data (" + stbi_failure_reason() + ")");
