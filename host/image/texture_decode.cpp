@@ -1,0 +1,206 @@
+#include "image/texture_decode.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+// Only the PNG and JPEG decoders, with internal linkage: Debian's tinygltf links its own
+// stb_image, and image_load.cpp has another private copy for Radiance files.
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
+#define STBI_NO_STDIO
+#define STBI_MAX_DIMENSIONS 16384
+#include <stb_image.h>
+
+#include "image/stb_source.h"
+#include "util/error.h"
+
+static_assert(STBI_MAX_DIMENSIONS == vkpt::kMaxTextureSide);
+// stb keeps its failure reason in a global; in C++ it is thread_local, so that concurrent
+// decodes do not read each other's messages. Without it the messages could be wrong.
+#ifndef STBI_THREAD_LOCAL
+#error "stb_image's failure reason is not thread-local here"
+#endif
+
+namespace vkpt {
+namespace {
+
+constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+bool IsPng(std::span<const unsigned char> b) {
+  return b.size() >= sizeof(kPngSignature) && std::equal(std::begin(kPngSignature), std::end(kPngSignature), b.begin());
+}
+// SOI and the 0xFF of the marker after it.
+bool IsJpeg(std::span<const unsigned char> b) { return b.size() >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff; }
+
+uint32_t Be16(std::span<const unsigned char> b, size_t at) { return uint32_t(b[at]) << 8 | b[at + 1]; }
+uint32_t Be32(std::span<const unsigned char> b, size_t at) { return Be16(b, at) << 16 | Be16(b, at + 2); }
+
+[[noreturn]] void Truncated(const std::string& detail) { throw Error("is truncated (" + detail + ")"); }
+[[noreturn]] void Corrupt(const std::string& detail) { throw Error("is corrupt (" + detail + ")"); }
+
+void CheckSize(uint32_t width, uint32_t height) {
+  const std::string size = std::to_string(width) + " × " + std::to_string(height) + " pixels";
+  if (width == 0 || height == 0) throw Error("is " + size + "; a texture needs at least one pixel on each side");
+  if (width > kMaxTextureSide || height > kMaxTextureSide)
+    throw Error("is " + size + "; a texture may be at most " + std::to_string(kMaxTextureSide) + " on each side");
+}
+
+// A chunk type as text for a message: four letters, or "?" for bytes that are none.
+std::string ChunkName(std::span<const unsigned char> b, size_t at) {
+  std::string name(b.begin() + at, b.begin() + at + 4);
+  for (char c : name)
+    if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'))) return "?";
+  return name;
+}
+
+// Walks a PNG's chunks from the signature to IEND, so that a file cut anywhere, even in
+// the CRC of IEND (which stb never reads), is refused before decoding. Returns whether a
+// tRNS chunk precedes the image data (a palette image then has alpha).
+bool WalkPngChunks(std::span<const unsigned char> b) {
+  bool trns = false, data = false;
+  for (size_t at = sizeof(kPngSignature);;) {
+    if (b.size() - at < 12) Truncated("PNG: it ends at byte " + std::to_string(b.size()) + ", before its IEND chunk");
+    const uint32_t length = Be32(b, at);
+    const std::string name = ChunkName(b, at + 4);
+    if (length > 0x7fffffffu)
+      Corrupt("PNG: the " + name + " chunk at byte " + std::to_string(at) + " declares " + std::to_string(length) +
+              " bytes");
+    if (b.size() - at - 12 < length)
+      Truncated("PNG: the " + name + " chunk at byte " + std::to_string(at) + " needs " + std::to_string(length) +
+                " bytes, " + std::to_string(b.size() - at - 12) + " remain");
+    if (name == "IEND") return trns;
+    data = data || name == "IDAT";
+    trns = trns || (name == "tRNS" && !data);
+    at += 12 + size_t(length);
+  }
+}
+
+TextureImageHeader ReadPngHeader(std::span<const unsigned char> b) {
+  // IHDR must come first: 13 bytes of width, height, bit depth, colour type, compression,
+  // filter and interlace method.
+  if (b.size() < 33) Truncated("PNG: it ends at byte " + std::to_string(b.size()) + ", inside its IHDR chunk");
+  if (Be32(b, 8) != 13 || ChunkName(b, 12) != "IHDR") Corrupt("PNG: its first chunk is not a 13-byte IHDR");
+  TextureImageHeader header{Be32(b, 16), Be32(b, 20), 0, false, "PNG"};
+  const uint32_t depth = b[24], colour = b[25];
+  // The bit depths the PNG specification allows for each colour type.
+  const bool valid = (colour == 0 && (depth == 1 || depth == 2 || depth == 4 || depth == 8 || depth == 16)) ||
+                     (colour == 3 && (depth == 1 || depth == 2 || depth == 4 || depth == 8)) ||
+                     ((colour == 2 || colour == 4 || colour == 6) && (depth == 8 || depth == 16));
+  if (!valid) Corrupt("PNG: colour type " + std::to_string(colour) + " with " + std::to_string(depth) + "-bit samples");
+  CheckSize(header.width, header.height);
+  const bool trns = WalkPngChunks(b);
+  header.channels = colour == 0 ? 1 : colour == 4 ? 2 : colour == 6 ? 4 : colour == 3 && trns ? 4 : 3;
+  header.sixteenBit = depth == 16;
+  return header;
+}
+
+// The frame header (SOFn) is the first segment that says how large the image is; the
+// segments before it (APPn, DQT, DHT, comments) are skipped by their lengths.
+TextureImageHeader ReadJpegHeader(std::span<const unsigned char> b) {
+  for (size_t at = 2;;) {
+    if (at >= b.size()) Truncated("JPEG: it ends at byte " + std::to_string(b.size()) + ", before its frame header");
+    if (b[at] != 0xff) Corrupt("JPEG: no marker at byte " + std::to_string(at));
+    while (at < b.size() && b[at] == 0xff) ++at;  // fill bytes may precede a marker
+    if (at >= b.size()) Truncated("JPEG: it ends inside a marker");
+    const unsigned marker = b[at++];
+    if (marker == 0xd8 || marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) continue;  // no length
+    if (marker == 0xd9 || marker == 0xda) Corrupt("JPEG: its image data comes before a frame header");
+    if (b.size() - at < 2) Truncated("JPEG: it ends inside a marker");
+    const size_t length = Be16(b, at);
+    if (length < 2) Corrupt("JPEG: a segment at byte " + std::to_string(at - 2) + " declares a length below 2");
+    if (b.size() - at < length)
+      Truncated("JPEG: the segment at byte " + std::to_string(at - 2) + " needs " + std::to_string(length) +
+                " bytes, " + std::to_string(b.size() - at) + " remain");
+    const bool frame = marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc;
+    if (!frame) {
+      at += length;
+      continue;
+    }
+    char sof[8];
+    std::snprintf(sof, sizeof sof, "FF %02X", marker);
+    // stb decodes baseline, extended sequential and progressive Huffman JPEGs, 8-bit only.
+    if (marker > 0xc2)
+      throw Error("is a JPEG coded in a way stb_image cannot decode (frame marker " + std::string(sof) +
+                  ": lossless, hierarchical or arithmetic); only baseline and progressive JPEGs are supported");
+    if (length < 8) Corrupt("JPEG: its frame header is " + std::to_string(length) + " bytes long");
+    if (b[at + 2] != 8)
+      throw Error("is a JPEG with " + std::to_string(b[at + 2]) + "-bit samples; only 8-bit JPEGs are supported");
+    TextureImageHeader header{Be16(b, at + 5), Be16(b, at + 3), 0, false, "JPEG"};
+    if (header.height == 0) throw Error("is a JPEG that gives its height only after the image data (DNL)");
+    CheckSize(header.width, header.height);
+    const unsigned components = b[at + 7];
+    if (components != 1 && components != 3 && components != 4)
+      throw Error("is a JPEG with " + std::to_string(components) + " colour components; 1, 3 or 4 are supported");
+    header.channels = components == 1 ? 1 : 3;  // stb converts CMYK (4) to RGB
+    return header;
+  }
+}
+
+// stb's pixels, freed with its own allocator.
+template <typename T>
+using StbPixels = std::unique_ptr<T, void (*)(void*)>;
+
+template <typename T>
+void CheckDecoded(const StbPixels<T>& pixels, const StbSource& source, const TextureImageHeader& header, int w, int h) {
+  // Past the end stb saw filler bytes: whatever it made of them is not the image.
+  if (source.ranOut) Truncated(header.format + ": its data ends before the image does");
+  // stb cannot tell a zlib stream or scan cut short inside complete chunks from a corrupt one.
+  if (!pixels) {
+    const char* reason = stbi_failure_reason();
+    throw Error("is truncated or corrupt (" + header.format + ": " + (reason ? reason : "stb gives no reason") + ")");
+  }
+  if (uint32_t(w) != header.width || uint32_t(h) != header.height)
+    throw Error("decodes to " + std::to_string(w) + " × " + std::to_string(h) + " pixels, but its header says " +
+                std::to_string(header.width) + " × " + std::to_string(header.height));
+}
+
+}  // namespace
+
+TextureImageHeader ReadTextureImageHeader(std::span<const unsigned char> bytes, std::string_view mimeType) {
+  if (bytes.empty()) throw Error("is empty (0 bytes)");
+  if (IsPng(bytes)) return ReadPngHeader(bytes);
+  if (IsJpeg(bytes)) return ReadJpegHeader(bytes);
+  std::string start;
+  for (size_t i = 0; i < std::min<size_t>(bytes.size(), 4); ++i) {
+    char hex[4];
+    std::snprintf(hex, sizeof hex, i ? " %02X" : "%02X", bytes[i]);
+    start += hex;
+  }
+  const std::string mime = mimeType.empty() ? "no mimeType" : "mimeType \"" + std::string(mimeType) + "\"";
+  throw Error("is neither PNG nor JPEG (" + mime + ", first bytes " + start + ")");
+}
+
+Rgba8Image DecodeTextureImage(std::span<const unsigned char> bytes, const TextureImageHeader& header) {
+  if (bytes.empty()) throw Error("is empty (0 bytes)");
+  // The signature and the chunk walk again: a header read from other bytes must not let a
+  // cut PNG through.
+  if (header.format == "PNG" ? !IsPng(bytes) : header.format == "JPEG" ? !IsJpeg(bytes) : true)
+    throw Error("does not begin with the signature of its format \"" + header.format + "\" (PNG or JPEG)");
+  CheckSize(header.width, header.height);
+  if (header.format == "PNG") WalkPngChunks(bytes);
+  // Zeros past the end: they end stb's JPEG marker search, where 0xFF would not.
+  StbSource source{bytes, '\0'};
+  Rgba8Image image{header.width, header.height, {}};
+  int w = 0, h = 0, channels = 0;
+  stbi__g_failure_reason = nullptr;  // so that a failure without a reason shows none, not an old one
+  if (header.sixteenBit) {
+    StbPixels<stbi_us> pixels(stbi_load_16_from_callbacks(&StbSource::kCallbacks, &source, &w, &h, &channels, 4),
+                              stbi_image_free);
+    CheckDecoded(pixels, source, header, w, h);
+    image.texels.resize(size_t(w) * size_t(h) * 4);
+    for (size_t i = 0; i < image.texels.size(); ++i)
+      image.texels[i] = uint8_t((uint32_t(pixels.get()[i]) * 255 + 32767) / 65535);
+  } else {
+    StbPixels<stbi_uc> pixels(stbi_load_from_callbacks(&StbSource::kCallbacks, &source, &w, &h, &channels, 4),
+                              stbi_image_free);
+    CheckDecoded(pixels, source, header, w, h);
+    image.texels.assign(pixels.get(), pixels.get() + size_t(w) * size_t(h) * 4);
+  }
+  return image;
+}
+
+}  // namespace vkpt

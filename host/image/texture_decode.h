@@ -1,0 +1,53 @@
+// Decoding the images glTF textures use (PNG and JPEG) into RGBA8 texels. The bytes are
+// untrusted (README "Security"): the format comes from the signature, the header is read
+// and its dimensions checked before anything is decoded, and a truncated or corrupt image
+// is a vkpt::Error, never a crash, a hang or a success. Safe to call from several threads
+// at once (stb_image is compiled privately here and none of its global settings is used).
+//
+// Error messages describe only the problem ("is truncated …", "is 20000 × 300 pixels; …"):
+// the caller prefixes them with the scene file, the image and the material using it.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vkpt {
+
+// The largest width or height of a texture image (lavapipe's maxImageDimension2D).
+constexpr uint32_t kMaxTextureSide = 16384;
+
+// What an encoded image is, from its signature and header alone (nothing decoded).
+struct TextureImageHeader {
+  uint32_t width = 0, height = 0;
+  // As stored: 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA. A palette PNG counts as RGB, or RGBA
+  // when it has a tRNS chunk; a CMYK JPEG as RGB (what stb converts it to).
+  uint32_t channels = 0;
+  bool sixteenBit = false;  // 16 bits per channel (PNG only)
+  std::string format;       // "PNG" or "JPEG"
+};
+
+// Decoded texels: RGBA8, row-major, row 0 = the first row of the file (the top; glTF's
+// UV (0,0)), 4·width·height bytes.
+struct Rgba8Image {
+  uint32_t width = 0, height = 0;
+  std::vector<uint8_t> texels;
+};
+
+// Identifies the format by its signature (not by mimeType, which is used only in the
+// message when the bytes are neither PNG nor JPEG), reads the header, checks
+// 1 <= width, height <= kMaxTextureSide. For a PNG it also walks the chunk list, so an
+// image cut short is refused here already. Throws vkpt::Error on any problem.
+TextureImageHeader ReadTextureImageHeader(std::span<const unsigned char> bytes, std::string_view mimeType);
+
+// Decodes an image whose header ReadTextureImageHeader accepted. Grey → (g,g,g,255),
+// grey+alpha → (g,g,g,a), RGB → (r,g,b,255); a PNG's tRNS colour key becomes alpha.
+// 16-bit channels become 8-bit by round(v·255/65535), exactly: (v*255 + 32767) / 65535.
+// Throws vkpt::Error for a truncated or corrupt image. Besides the result, stb needs
+// working memory of up to about three times its size while it decodes (a progressive
+// JPEG keeps every coefficient; a PNG its inflated rows and a 16-bit copy).
+Rgba8Image DecodeTextureImage(std::span<const unsigned char> bytes, const TextureImageHeader& header);
+
+}  // namespace vkpt
