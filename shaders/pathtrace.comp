@@ -56,6 +56,9 @@ layout(constant_id = 4) const uint kSceneHasVertexColors = 1u;
 // 0 when no triangle's material bounds a volume: see shared/path.h.
 layout(constant_id = 5) const uint kSceneHasVolumes = 1u;
 #define VKPT_VOLUMES (kSceneHasVolumes != 0u)
+// 0 when no material has a texture: see shared/material_textures.h.
+layout(constant_id = 6) const uint kSceneHasTextures = 1u;
+#define VKPT_TEXTURES (kSceneHasTextures != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -66,6 +69,11 @@ layout(constant_id = 5) const uint kSceneHasVolumes = 1u;
 #define VKPT_GGX_ALBEDO_PAIR(k) FetchGgxAlbedoPair(k)
 #define VKPT_SHADING(i) FetchShading(i)
 #define VKPT_VERTEX_COLORS_OF(i) FetchColors(i)
+#define VKPT_TEXTURE(i) FetchTexture(i)
+#define VKPT_TEXEL_WORD(i) FetchTexelWord(i)
+#define VKPT_TEXEL_DECODE(i) FetchTexelDecode(i)
+#define VKPT_TEXTURE_REF(i) FetchTextureRef(i)
+#define VKPT_UVS_OF(i) FetchUVs(i)
 #define VKPT_ENV_TEXEL(i) FetchEnvTexel(i)
 #define VKPT_ENV_CDF(i) FetchEnvCdf(i)
 

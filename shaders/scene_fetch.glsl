@@ -1,5 +1,5 @@
 // The scene for the shaders: triangles, BVH nodes, materials, lights, shading normals,
-// vertex colours and the environment map read from uniform texel buffers of RGBA32UI
+// vertex colours, texture coordinates, textures and the environment map read from uniform texel buffers of RGBA32UI
 // texels (16 bytes; kTexelsPer* per struct, the std430 layouts of shared/layout.h byte
 // for byte).
 //
@@ -21,6 +21,11 @@ layout(binding = kBindingLights) uniform usamplerBuffer lightTexels;
 layout(binding = kBindingGgxAlbedo) uniform usamplerBuffer ggxAlbedoTexels;
 layout(binding = kBindingShading) uniform usamplerBuffer shadingTexels;
 layout(binding = kBindingVertexColors) uniform usamplerBuffer colorTexels;
+layout(binding = kBindingVertexUVs) uniform usamplerBuffer uvTexels;
+layout(binding = kBindingMaterialTextures) uniform usamplerBuffer textureRefTexels;
+layout(binding = kBindingTextures) uniform usamplerBuffer textureTexels;
+layout(binding = kBindingTexels) uniform usamplerBuffer texelWords;
+layout(binding = kBindingTexelDecode) uniform usamplerBuffer texelDecodeTexels;
 layout(binding = kBindingEnvRadiance) uniform usamplerBuffer envRadianceTexels;
 layout(binding = kBindingEnvDistribution) uniform usamplerBuffer envDistributionTexels;
 
@@ -125,6 +130,51 @@ TriangleColors FetchColors(uint i) {
   c.pad1 = b.w;
   return c;
 }
+
+// i: a Triangle's sourceIndex.
+TriangleUVs FetchUVs(uint i) {
+  uvec4 a = texelFetch(uvTexels, int(kTexelsPerUVs * i));
+  uvec4 b = texelFetch(uvTexels, int(kTexelsPerUVs * i + 1u));
+  uvec4 c = texelFetch(uvTexels, int(kTexelsPerUVs * i + 2u));
+  TriangleUVs t;
+  t.uv00 = uintBitsToFloat(a.xy);
+  t.uv01 = uintBitsToFloat(a.zw);
+  t.uv02 = uintBitsToFloat(b.xy);
+  t.uv10 = uintBitsToFloat(b.zw);
+  t.uv11 = uintBitsToFloat(c.xy);
+  t.uv12 = uintBitsToFloat(c.zw);
+  return t;
+}
+
+TextureRef FetchTextureRef(uint i) {
+  uvec4 a = texelFetch(textureRefTexels, int(kTexelsPerTextureRef * i));
+  uvec4 b = texelFetch(textureRefTexels, int(kTexelsPerTextureRef * i + 1u));
+  TextureRef r;
+  r.texture = a.x;
+  r.texCoord = a.y;
+  r.m00 = uintBitsToFloat(a.z);
+  r.m01 = uintBitsToFloat(a.w);
+  r.m02 = uintBitsToFloat(b.x);
+  r.m10 = uintBitsToFloat(b.y);
+  r.m11 = uintBitsToFloat(b.z);
+  r.m12 = uintBitsToFloat(b.w);
+  return r;
+}
+
+Texture FetchTexture(uint i) {
+  uvec4 a = texelFetch(textureTexels, int(i));
+  Texture t;
+  t.offset = a.x;
+  t.width = a.y;
+  t.height = a.z;
+  t.mode = a.w;
+  return t;
+}
+
+// Word i of the texture store (four per texel).
+uint FetchTexelWord(uint i) { return texelFetch(texelWords, int(i >> 2u))[i & 3u]; }
+
+float FetchTexelDecode(uint i) { return uintBitsToFloat(texelFetch(texelDecodeTexels, int(i >> 2u))[i & 3u]); }
 
 vec4 FetchEnvTexel(uint i) { return uintBitsToFloat(texelFetch(envRadianceTexels, int(i))); }
 

@@ -50,6 +50,12 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
         (m.flags & shader::kMaterialUnlit) ? " unlit" : "");
   }
   if (!scene.colors.empty()) std::printf("  vertex colours (COLOR_0): multiply the base colour\n");
+  if (!scene.textures.empty()) {
+    uint64_t texels = 0;
+    for (const TextureImage& im : scene.images) texels += uint64_t(im.width) * im.height;
+    std::printf("  textures: %zu from %zu images, %llu texels at level 0\n", scene.textures.size(), scene.images.size(),
+                (unsigned long long)texels);
+  }
   std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", scene.bounds.lo.x, scene.bounds.lo.y,
               scene.bounds.lo.z, scene.bounds.hi.x, scene.bounds.hi.y, scene.bounds.hi.z);
   char which[16] = "default";
@@ -185,8 +191,8 @@ RenderScene PrepareForRender(const Scene& scene, const Options& o, bool gpu, Env
   return rs;
 }
 
-// The frame constants from the options; a scene without lights is lit by a white
-// environment unless --env or --background says otherwise (and is warned about if that is
+// The frame constants from the options; a scene without light sources (HasLightSources)
+// is lit by a white environment unless --env or --background says otherwise (and is warned about if that is
 // black).
 shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, glm::uvec2 size, const Options& o) {
   shader::FrameParams params = MakeFrameParams(rs, cam, size.x, size.y);
@@ -199,9 +205,11 @@ shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, g
     SetEnvironmentParams(params, rs.environment, o.envRotation, o.envIntensity);
   } else if (o.background) {
     params.background = glm::vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]);
-  } else if (rs.lights.empty()) {
+  } else if (!HasLightSources(rs)) {
     params.background = glm::vec3(1.0f);
-    if (o.verbose) std::printf("  no lights: lit by a white environment (see --background)\n");
+    if (o.verbose)
+      std::printf("  no lights%s: lit by a white environment (see --background)\n",
+                  rs.lights.empty() ? "" : " but emissive textures");
   }
   if (rs.lights.empty() && o.env.empty() && MaxComponent(params.background) <= 0.0f)
     std::fprintf(stderr, "vkpt: warning: %s: no lights and a black background; the image will be black\n",
@@ -245,6 +253,9 @@ void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderRe
       "depth %u, %u triangle references, SAH cost %.3f, built in %.2f ms\n",
       scene.triangles.size(), rs.degenerateTriangles, rs.lights.size(), kind, choice, bvh.nodes, bvh.leaves, bvh.depth,
       bvh.references, bvh.sahCost, bvh.buildMs);
+  if (!rs.textures.empty())
+    std::printf("  textures: %zu, %s with their mip levels\n", rs.textures.size(),
+                FormatBytes(rs.texels.size() * sizeof(uint32_t)).c_str());
   if (r.nonFinite)
     std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)r.nonFinite);
   if (r.cutShort)

@@ -60,7 +60,8 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      a scene without cameras gets one that frames it]
   --background R,G,B constant environment radiance seen by rays that leave the scene
                      (one number for grey) [default: 1 if the scene has no lights
-                     (emissive triangles or punctual lights), so any model is lit; else 0]
+                     (punctual lights, or emissive triangles not painted by an emissive
+                     texture), so any model is lit; else 0]
   --env FILE         equirectangular environment map, .hdr (Radiance RGBE) or .exr, lighting
                      the scene from every direction instead of --background; its centre
                      column faces -Z (where a default glTF camera looks), 3/4 of its width
@@ -79,6 +80,9 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --max-memory SIZE  host memory a scene may need (its files, decoded data, triangles
                      through to the renderer's arrays), checked before it is read or
                      allocated; bytes or K/M/G/T [default: half of physical RAM]
+  --max-texels N      texels the scene's texture images may have (level 0, before mip
+                     levels), checked from their headers before any is decoded; a
+                     count or with K/M/G (binary) [default: 256M]
   --allow-external-uris
                      let the glTF read files outside its own folder (absolute paths,
                      "..", file:// URLs, symbolic links leading out, the current
@@ -160,6 +164,13 @@ Options ParseOptions(int argc, const char* const* argv) {
          if (!bytes || *bytes < (uint64_t(1) << 20))
            throw UsageError(opt + " expects a size of at least 1M (bytes, or with K, M, G or T), got \"" + v + "\"");
          o.load.maxMemory = *bytes;
+       }},
+      {"--max-texels",
+       [&](const std::string& opt, const std::string& v) {
+         std::optional<uint64_t> texels = ParseByteSize(v);
+         if (!texels || *texels < 1 || *texels > (uint64_t(1) << 31))
+           throw UsageError(opt + " expects a count from 1 to 2G (a number, or with K, M or G), got \"" + v + "\"");
+         o.load.maxTextureTexels = *texels;
        }},
       {"--backend",
        [&](const std::string&, const std::string& v) {

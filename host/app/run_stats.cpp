@@ -44,7 +44,9 @@ JsonObject OptionsJson(const Options& o) {
       .Raw("background", o.background ? Vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]) : "null");
   j.Str("env", o.env).Num("env_rotation", o.envRotation).Num("env_intensity", o.envIntensity);
   j.Int("leaf_size", o.leafSize).Str("splits", SplitName(o.splits));
-  j.Int("max_memory", o.load.maxMemory).Bool("allow_external_uris", o.load.allowExternalUris);
+  j.Int("max_memory", o.load.maxMemory)
+      .Int("max_texels", o.load.maxTextureTexels)
+      .Bool("allow_external_uris", o.load.allowExternalUris);
   j.Str("stats", o.stats).Bool("verbose", o.verbose);
   return j;
 }

@@ -4,19 +4,8 @@
 
 #include "cpu/traversal.h"
 #include "render/render_scene.h"
+#include "render/scene_access.h"
 #include "shared/estimator.h"
-
-#define VKPT_SCENE_PARAM const ::vkpt::RenderScene &scene,
-#define VKPT_SCENE_ARG scene,
-#define VKPT_TRIANGLE(i) scene.triangles[i]
-#define VKPT_MATERIAL(i) scene.materials[i]
-#define VKPT_LIGHT(i) scene.lights[i]
-#define VKPT_LIGHT_CDF(i) scene.lights[i].cdf
-#define VKPT_SHADING(i) scene.shading[i]
-#define VKPT_VERTEX_COLORS (!scene.vertexColors.empty())
-#define VKPT_VERTEX_COLORS_OF(i) scene.vertexColors[i]
-#define VKPT_ENV_TEXEL(i) scene.environment.texels[i]
-#define VKPT_ENV_CDF(i) scene.environment.cdf[i]
 
 namespace vkpt::shader {
 

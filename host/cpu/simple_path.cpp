@@ -32,6 +32,8 @@
 #undef VKPT_VERTEX_COLORS
 #define VKPT_VERTEX_COLORS false
 #define VKPT_VOLUMES false
+#undef VKPT_TEXTURES
+#define VKPT_TEXTURES false
 #undef VKPT_BEGIN_NAMESPACE
 #undef VKPT_END_NAMESPACE
 #define VKPT_BEGIN_NAMESPACE namespace vkpt::shader::simple {
@@ -47,8 +49,8 @@ bool IsSimpleScene(const RenderScene& scene, const shader::FrameParams& params) 
     if (((1u << l.type) & shader::simple::kTriangleLightTypes) == 0u) return false;
   for (const shader::TriangleShading& s : scene.shading)
     if ((s.flags & shader::kShadingHasNormals) != 0u) return false;
-  return params.envWidth == 0u && scene.vertexColors.empty() && !UsesGlossyMaterial(scene) &&
-         !UsesVolumeMaterial(scene);
+  return params.envWidth == 0u && scene.vertexColors.empty() && scene.textureRefs.empty() &&
+         !UsesGlossyMaterial(scene) && !UsesVolumeMaterial(scene);
 }
 
 glm::vec3 SampleRadianceSimple(const RenderScene& scene, const shader::FrameParams& params, uint32_t px, uint32_t py,

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "render/scene_access.h"
+#include "shared/material_textures.h"
 #include "shared/sampling.h"
 
 namespace vkpt {
@@ -22,6 +24,34 @@ void SetDistribution(const std::vector<double>& power, std::vector<shader::Light
     lights[k].pmf = cdf - prevCdf;
     prevCdf = cdf;
   }
+}
+
+// The mean of triangle t's emissive texture (1 without one), from 16 stratified points
+// read at the mip level whose texels are about the size of a sixteenth of the
+// triangle's footprint in the texture: what its emission is, on average, for choosing it
+// as a light. Only an estimate (MIS keeps the image unbiased whatever it is), and 0 for a
+// triangle whose texture is black, which light sampling then never picks.
+glm::dvec3 MeanEmissiveTexture(const RenderScene& scene, const shader::Triangle& t) {
+  if (scene.textureRefs.empty()) return glm::dvec3(1.0);
+  const shader::TextureRef ref = scene.textureRefs[t.material * shader::kTextureSlots + shader::kSlotEmissive];
+  if (ref.texture == shader::kInvalidIndex) return glm::dvec3(1.0);
+  const shader::Texture& tex = scene.textures[ref.texture];
+  const shader::TriangleUVs& uvs = scene.uvs[t.sourceIndex];
+  auto uvAt = [&](float b1, float b2) {
+    glm::vec2 uv = shader::TransformUV(ref, shader::InterpolatedUV(uvs, ref.texCoord, b1, b2));
+    return glm::dvec2(uv) * glm::dvec2(tex.width, tex.height);
+  };
+  const glm::dvec2 e1 = uvAt(1, 0) - uvAt(0, 0), e2 = uvAt(0, 1) - uvAt(0, 0);
+  const double texels = 0.5 * std::abs(e1.x * e2.y - e1.y * e2.x);
+  const float lod = texels > 16.0 ? float(0.5 * std::log2(texels / 16.0)) : 0.0f;
+  glm::dvec3 sum(0.0);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      glm::vec2 b = shader::SampleUniformTriangle((i + 0.5f) / 4.0f, (j + 0.5f) / 4.0f);
+      glm::vec2 uv = shader::TransformUV(ref, shader::InterpolatedUV(uvs, ref.texCoord, b.x, b.y));
+      sum += glm::dvec3(shader::SampleTexture(scene, tex, uv, lod));
+    }
+  return sum / 16.0;
 }
 
 }  // namespace
@@ -64,6 +94,8 @@ void BuildLightTable(const Scene& scene, RenderScene& rs) {
     double area = 0.5 * glm::length(n);
     double lum = shader::Luminance(m.emission);
     if (!(area > 0.0) || !(lum > 0.0) || (m.flags & shader::kMaterialUnlit)) continue;
+    lum = shader::Luminance(glm::vec3(glm::dvec3(m.emission) * MeanEmissiveTexture(rs, t)));
+    if (!(lum > 0.0)) continue;
     bool twoSided = (m.flags & shader::kMaterialDoubleSided) != 0;
     shader::Light l{};
     l.type = twoSided ? shader::kLightTwoSidedTriangle : shader::kLightTriangle;

@@ -9,7 +9,8 @@ namespace vkpt {
 // Fills rs.lights from the emissive triangles of rs.triangles (one entry per scene
 // triangle: spatial-split copies are one light) and the scene's punctual lights, and sets
 // each triangle's `light`. Power estimates (pbrt-v4's Light::Phi), in luminance:
-//   triangle     π · area · Le, twice that when two-sided
+//   triangle     π · area · Le (times its emissive texture's mean; a triangle whose
+//                texture is black is no light), twice that when two-sided
 //   point        4π · I
 //   spot         2π · (1 − (cos inner + cos outer)/2) · I
 //   directional  π · R² · E, R the radius of the scene's bounding sphere

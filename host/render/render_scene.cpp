@@ -4,6 +4,7 @@
 
 #include "render/light_table.h"
 #include "render/octahedral.h"
+#include "render/texture_store.h"
 #include "shared/bsdf.h"
 #include "shared/sampling.h"
 #include "util/error.h"
@@ -118,6 +119,22 @@ std::vector<shader::TriangleColors> PackVertexColors(const Scene& scene) {
   return packed;
 }
 
+// The scene's texture coordinates and textures, when some material has one.
+void AddTextures(const Scene& scene, unsigned threads, RenderScene& rs) {
+  if (scene.textureRefs.empty()) return;
+  if (scene.uvs.size() != scene.triangles.size())
+    throw Error(scene.path + ": " + std::to_string(scene.uvs.size()) + " texture coordinate triples for " +
+                std::to_string(scene.triangles.size()) + " triangles");
+  rs.uvs.reserve(scene.uvs.size());
+  for (const VertexUVs& u : scene.uvs)
+    rs.uvs.push_back({u.set0[0], u.set0[1], u.set0[2], u.set1[0], u.set1[1], u.set1[2]});
+  rs.textureRefs = scene.textureRefs;
+  TextureStore store = BuildTextureStore(scene, threads);
+  rs.textures = std::move(store.textures);
+  rs.texels = std::move(store.words);
+  rs.texelDecode = TexelDecodeTable();
+}
+
 }  // namespace
 
 namespace {
@@ -142,6 +159,17 @@ bool UsesVolumeMaterial(const RenderScene& scene) {
   return SomeTriangleUses(scene, [](const shader::Material& m) { return (m.flags & shader::kMaterialVolume) != 0u; });
 }
 
+bool HasLightSources(const RenderScene& scene) {
+  for (const shader::Light& l : scene.lights) {
+    if (l.type != shader::kLightTriangle && l.type != shader::kLightTwoSidedTriangle) return true;
+    const uint32_t m = scene.triangles[l.triangle].material;
+    if (scene.textureRefs.empty() ||
+        scene.textureRefs[m * shader::kTextureSlots + shader::kSlotEmissive].texture == shader::kInvalidIndex)
+      return true;
+  }
+  return false;
+}
+
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {
   BuildInput in = CollectBuildInput(scene, options);
   if (in.kept.empty()) throw Error(scene.path + ": every triangle of the scene is degenerate (zero area)");
@@ -155,6 +183,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   rs.materials = scene.materials;
   rs.triangles = LeafOrderTriangles(scene, bvh.primOrder, in.kept);
   if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
+  AddTextures(scene, options.threads, rs);  // before the light table, which reads emissive textures
   BuildLightTable(scene, rs);
   rs.shading = TriangleShadings(scene, options.threads);
   rs.vertexColors = PackVertexColors(scene);

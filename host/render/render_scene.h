@@ -1,7 +1,7 @@
 // What a renderer consumes: the Scene's triangles in BVH leaf order as shader::Triangle,
 // the BVH in two layouts (flattened skip links for the GPU, child pairs for the CPU),
-// materials, the light table for light sampling, per-triangle shading normals and vertex
-// colours. The
+// materials, the light table for light sampling, per-triangle shading normals, vertex
+// colours and texture coordinates, and the textures. The
 // shader-layout vectors are uploaded verbatim by the Vulkan backend; the CPU reference
 // reads them directly.
 #pragma once
@@ -28,6 +28,12 @@ struct RenderScene {
   std::vector<shader::TriangleShading> shading;
   // Indexed like `shading`; empty when no triangle has vertex colours.
   std::vector<shader::TriangleColors> vertexColors;
+  // Textures (shared/texture.h, material_textures.h); all empty when no material has one.
+  std::vector<shader::TriangleUVs> uvs;         // indexed like `shading`
+  std::vector<shader::TextureRef> textureRefs;  // kTextureSlots per material
+  std::vector<shader::Texture> textures;
+  std::vector<uint32_t> texels;    // TextureStore::words
+  std::vector<float> texelDecode;  // TexelDecodeTable()
   BvhStats bvhStats;
   uint32_t degenerateTriangles = 0;  // dropped: zero area (see IsDegenerate)
   double totalEmittedPower = 0.0;    // Σ of the lights' power estimates
@@ -47,6 +53,12 @@ bool IsDegenerate(const SceneTriangle& t);
 bool UsesGlossyMaterial(const RenderScene& scene);
 // Likewise, whether some triangle's material bounds a volume (kMaterialVolume).
 bool UsesVolumeMaterial(const RenderScene& scene);
+
+// Whether the scene has lights meant to light it: punctual lights, or emissive triangles
+// whose emission is not painted by an emissive texture (a texture paints screens, dials
+// and glowing trim: DamagedHelmet's 15,452 triangles all "emit" that way, yet show
+// nothing without a light).
+bool HasLightSources(const RenderScene& scene);
 
 // `forCpu`: also lay the tree out for the CPU tracer (pairLayout). A render on the GPU alone
 // skips it: on a large scene it costs time and memory that nothing would read.

@@ -135,12 +135,20 @@ class Instancer {
           VertexColors vc;
           const std::vector<glm::vec4>& c = prim.colors;
           if (!c.empty()) vc = {c[i0], c[i1], c[i2]};
+          VertexUVs vu;
+          for (int set = 0; set < 2; ++set) {
+            const std::vector<glm::vec2>& uv = prim.uvs[set];
+            glm::vec2* out = set == 0 ? vu.set0 : vu.set1;
+            if (!uv.empty()) out[0] = uv[i0], out[1] = uv[i1], out[2] = uv[i2];
+          }
           if (mirrored) {
             std::swap(t.v1, t.v2);
             std::swap(vn.n1, vn.n2);
             std::swap(vc.c1, vc.c2);
+            std::swap(vu.set0[1], vu.set0[2]);
+            std::swap(vu.set1[1], vu.set1[2]);
           }
-          AddTriangle(t, vn, vc, !c.empty());
+          AddTriangle(t, vn, vc, !c.empty(), vu);
         }
       }
     }
@@ -150,11 +158,14 @@ class Instancer {
   // A triangle with any vertex normal that did not survive its transform is shaded flat:
   // a normal that vanishes or overflows (a singular or extreme scale) has no direction
   // left to interpolate, but the geometry is still fine.
-  void AddTriangle(const SceneTriangle& t, VertexNormals vn, const VertexColors& vc, bool hasColors) {
+  void AddTriangle(const SceneTriangle& t, VertexNormals vn, const VertexColors& vc, bool hasColors,
+                   const VertexUVs& vu) {
     const glm::vec3 zero(0.0f);
     if (vn.n0 == zero || vn.n1 == zero || vn.n2 == zero) vn = VertexNormals{};
     AppendParallel(scene_.normals, vn, vn.Present());
     AppendParallel(scene_.colors, vc, hasColors);
+    // Every triangle of a textured scene, whether or not its primitive has coordinates.
+    AppendParallel(scene_.uvs, vu, !scene_.textureRefs.empty());
     scene_.bounds.Extend(t.v0);
     scene_.bounds.Extend(t.v1);
     scene_.bounds.Extend(t.v2);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <set>
 
 #include "scene/asset_access.h"
 #include "scene/external_uris.h"
@@ -14,6 +15,7 @@
 #include "scene/gltf_meshes.h"
 #include "scene/gltf_schema.h"
 #include "scene/gltf_source.h"
+#include "scene/gltf_textures.h"
 #include "scene/gltf_validate.h"
 #include "scene/scene_file.h"
 #include "util/byte_size.h"
@@ -23,10 +25,13 @@
 namespace vkpt {
 namespace {
 
-// tinygltf decodes every image with stb_image by default. vkpt does not sample textures
-// yet, so it keeps the bytes undecoded: faster, and a corrupt texture cannot stop a render.
-bool KeepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                        const unsigned char*, int, void*) {
+// tinygltf would decode every image with its own stb_image, used or not, before vkpt
+// could check a header. vkpt keeps the bytes of images read from a uri and decodes what
+// the materials use later (gltf_textures.cpp). An image in a bufferView is read from
+// there once the bufferView is checked: tinygltf passes its bytes unchecked.
+bool KeepImageEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  if (image->bufferView < 0 && size > 0) image->image.assign(bytes, bytes + size);
   return true;
 }
 
@@ -38,6 +43,9 @@ constexpr uint64_t kBytesPerTriangle = 560;
 // And per triangle with COLOR_0: the Scene's VertexColors (48 bytes), the packed
 // TriangleColors (32) and their staging and device copies (32 each).
 constexpr uint64_t kBytesPerColoredTriangle = 144;
+// And per triangle with textures: the Scene's VertexUVs (48 bytes), the packed TriangleUVs
+// (48) and their staging and device copies (48 each).
+constexpr uint64_t kBytesPerTexturedTriangle = 192;
 // Decoding an accessor holds each component as a double, then as a float.
 constexpr uint64_t kBytesPerDecodedComponent = 12;
 
@@ -60,12 +68,14 @@ uint64_t DecodedBytes(const GltfSource& src, int accessor) {
 // The memory the meshes will take, counted before any is decoded: each primitive's
 // positions, normals, colours and indices, and every triangle of every instance through to the
 // renderer.
-void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, MemoryBudget& budget) {
+// `textured`: the scene keeps the texture coordinates of every triangle.
+void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, bool textured,
+                    MemoryBudget& budget) {
   for (size_t i = 0; i < src.m.meshes.size(); ++i) {
     uint64_t decoded = 0, triangles = 0, colored = 0;
     for (const tinygltf::Primitive& prim : src.m.meshes[i].primitives) {
       decoded += DecodedBytes(src, prim.indices);
-      for (const char* attr : {"POSITION", "NORMAL", "COLOR_0"})
+      for (const char* attr : {"POSITION", "NORMAL", "COLOR_0", "TEXCOORD_0", "TEXCOORD_1"})
         if (auto it = prim.attributes.find(attr); it != prim.attributes.end()) decoded += DecodedBytes(src, it->second);
       triangles += TriangleCount(src, prim);
       if (prim.attributes.count("COLOR_0")) colored += TriangleCount(src, prim);
@@ -80,6 +90,9 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
       budget.Charge(SaturatingMul(SaturatingMul(colored, instances[i]), kBytesPerColoredTriangle),
                     name + " (vertex colours of " + std::to_string(colored) + " triangles × " +
                         std::to_string(instances[i]) + " instances)");
+    if (textured)
+      budget.Charge(SaturatingMul(total, kBytesPerTexturedTriangle),
+                    name + " (texture coordinates of " + std::to_string(total) + " triangles)");
   }
 }
 
@@ -92,22 +105,29 @@ bool IsRenderedExtension(const std::string& ext) {
                                           "KHR_materials_volume",
                                           "KHR_materials_unlit",
                                           "KHR_lights_punctual",
-                                          "KHR_mesh_quantization"};
+                                          "KHR_mesh_quantization",
+                                          "KHR_texture_transform"};
   return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
 }
 
 // What the file uses that vkpt does not render yet (printed by -v).
 void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   auto& ig = scene.ignoredFeatures;
-  if (!src.m.textures.empty())
-    ig.push_back(std::to_string(src.m.textures.size()) + " texture(s): materials use their constant factors");
-  bool normalTex = false, transparent = false;
+  bool normalTex = false, occlusionTex = false, transparent = false;
+  std::set<std::string> extensionTextures;
   for (const tinygltf::Material& mat : src.m.materials) {
     normalTex |= mat.normalTexture.index >= 0;
+    occlusionTex |= mat.occlusionTexture.index >= 0;
     transparent |= mat.alphaMode != "OPAQUE";
+    for (const auto& [name, ext] : mat.extensions)
+      if (ext.IsObject())
+        for (const std::string& key : ext.Keys())
+          if (key.ends_with("Texture")) extensionTextures.insert(name + "." + key);
   }
   if (transparent) ig.push_back("alphaMode MASK/BLEND: surfaces are rendered opaque");
   if (normalTex) ig.push_back("normal maps");
+  if (occlusionTex) ig.push_back("occlusion textures: not applied (a path tracer computes occlusion)");
+  for (const std::string& t : extensionTextures) ig.push_back(t + ": the factor is used alone");
   if (!src.m.animations.empty())
     ig.push_back(std::to_string(src.m.animations.size()) + " animation(s): the static pose is rendered");
   if (!src.m.skins.empty()) ig.push_back("skins: meshes are rendered unskinned");
@@ -121,16 +141,19 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
 
 // The phases of a load, in the order that makes each safe: the structure is checked
 // before any data it points to is read, the memory counted before anything is decoded.
-void BuildScene(const GltfSource& src, Scene& scene, MemoryBudget& budget) {
+void BuildScene(const GltfSource& src, const LoadLimits& limits, Scene& scene, MemoryBudget& budget) {
   CheckAsset(src);
   CheckBufferViews(src);
   for (size_t i = 0; i < src.m.accessors.size(); ++i) CheckAccessor(src, int(i));
   CheckTexturesAndMaterials(src);
   const uint32_t defaultMaterial = LoadMaterials(src, scene);
+  LoadTextures(src, limits, budget, scene);
+  const bool textured = !scene.textureRefs.empty();
   const std::vector<int> parents = CheckNodeGraph(src);
-  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), budget);
+  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), textured, budget);
   std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
-  for (size_t i = 0; i < src.m.meshes.size(); ++i) meshes[i] = DecodeMesh(src, int(i), defaultMaterial, scene.warnings);
+  for (size_t i = 0; i < src.m.meshes.size(); ++i)
+    meshes[i] = DecodeMesh(src, int(i), defaultMaterial, textured, scene.warnings);
   CheckCameras(src);
   CheckLights(src);
   InstantiateScene(src, parents, meshes, scene);
@@ -152,7 +175,7 @@ tinygltf::Model ParseWithTinyGltf(const std::string& path, const SceneFile& file
                                   std::vector<std::string>& warnings) {
   tinygltf::TinyGLTF gltf;
   access.Install(gltf);
-  gltf.SetImageLoader(KeepImageUndecoded, nullptr);
+  gltf.SetImageLoader(KeepImageEncoded, nullptr);
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;
@@ -190,7 +213,7 @@ Scene LoadGltf(const std::string& path, const LoadLimits& limits) {
     scene.contentHash = hash.Value();
     file = SceneFile{};
     for (const std::string& skipped : access.SkippedImages()) scene.warnings.push_back(skipped);
-    BuildScene(GltfSource{path, model}, scene, budget);
+    BuildScene(GltfSource{path, model}, limits, scene, budget);
     scene.memoryLimit = budget.Limit();
     scene.memoryCounted = budget.Used();
     return scene;

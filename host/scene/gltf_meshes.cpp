@@ -103,9 +103,24 @@ std::vector<glm::vec4> ReadColors(const GltfSource& src, int accessor, const std
   return out;
 }
 
+// TEXCOORD_n as floats (normalized integers already mapped to [0, 1] or [-1, 1]).
+std::vector<glm::vec2> ReadUVs(const GltfSource& src, int accessor, const std::string& name, const char* attr) {
+  std::vector<double> raw = ReadAccessor(src, accessor);
+  std::vector<glm::vec2> out(raw.size() / 2);
+  for (size_t v = 0; v < out.size(); ++v)
+    for (int c = 0; c < 2; ++c) {
+      const float x = float(raw[v * 2 + c]);
+      if (!std::isfinite(x))
+        src.Fail(name + ".attributes." + attr + " (accessors[" + std::to_string(accessor) + "]) element " +
+                 std::to_string(v) + " is not a finite texture coordinate");
+      out[v][c] = x;
+    }
+  return out;
+}
+
 }  // namespace
 
-std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial,
+std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial, bool withUVs,
                                          std::vector<std::string>& warnings) {
   std::vector<DecodedPrimitive> decoded;
   const tinygltf::Mesh& mesh = src.m.meshes[meshIndex];
@@ -125,6 +140,11 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
       out.normals = ReadFiniteVec3(src, nrm->second, name, "NORMAL", "normal");
     if (auto col = prim.attributes.find("COLOR_0"); col != prim.attributes.end())
       out.colors = ReadColors(src, col->second, name, warnings);
+    for (int set = 0; set < 2 && withUVs; ++set) {
+      const char* attr = set == 0 ? "TEXCOORD_0" : "TEXCOORD_1";
+      if (auto tc = prim.attributes.find(attr); tc != prim.attributes.end())
+        out.uvs[set] = ReadUVs(src, tc->second, name, attr);
+    }
     out.indices = TriangleList(src, prim, out.positions.size(), name);
     out.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial;
     decoded.push_back(std::move(out));

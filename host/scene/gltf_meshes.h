@@ -17,14 +17,16 @@ struct DecodedPrimitive {
   std::vector<glm::vec3> positions;  // object space
   std::vector<glm::vec3> normals;    // object space, one per position; empty without NORMAL
   std::vector<glm::vec4> colors;     // COLOR_0, linear RGBA in [0, 1], one per position; empty without it
+  std::vector<glm::vec2> uvs[2];     // TEXCOORD_0 and TEXCOORD_1, one per position; empty without them
   std::vector<uint32_t> indices;     // triangle list, 3 per triangle
   uint32_t material;
 };
 
 // Checks and decodes the triangle primitives of meshes[meshIndex]: positions, normals and
 // colours finite, indices in range and no primitive-restart values. Points and lines add a
-// warning, and so do colours outside [0, 1] (clamped).
-std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial,
+// warning, and so do colours outside [0, 1] (clamped). Texture coordinates are read only
+// when `withUVs` (some material has a texture), and must be finite.
+std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial, bool withUVs,
                                          std::vector<std::string>& warnings);
 
 // Triangles a primitive makes, from its accessors' counts alone (nothing is decoded).

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <set>
 
+#include "scene/gltf_accessors.h"
+
 namespace vkpt {
 namespace {
 
@@ -148,6 +150,21 @@ void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, cons
         !(ca.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || unorm))
       src.Fail(name + ".attributes.COLOR_0 (accessors[" + std::to_string(col->second) +
                "]) must be a VEC3 or VEC4 accessor of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT");
+  }
+  // TEXCOORD_n: FLOAT or normalized UNSIGNED_BYTE/SHORT VEC2 (spec §3.7.2.1); with
+  // KHR_mesh_quantization any integer type, normalized or not.
+  for (const char* attr : {"TEXCOORD_0", "TEXCOORD_1"}) {
+    auto tc = prim.attributes.find(attr);
+    if (tc == prim.attributes.end()) continue;
+    const tinygltf::Accessor& ta = src.m.accessors[tc->second];
+    const bool unorm = ta.normalized && (ta.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                         ta.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    const bool integer = ta.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && ComponentSize(ta.componentType) <= 2;
+    if (ta.type != TINYGLTF_TYPE_VEC2 ||
+        !(ta.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || unorm || (quantized && integer)))
+      src.Fail(name + ".attributes." + attr + " (accessors[" + std::to_string(tc->second) +
+               "]) must be a VEC2 accessor of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT" +
+               (quantized ? " or, with KHR_mesh_quantization, of (normalized) BYTE/SHORT" : ""));
   }
   for (const auto& [attr, acc] : prim.attributes)
     if (src.m.accessors[acc].count != pa.count)

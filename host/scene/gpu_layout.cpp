@@ -38,6 +38,12 @@ static_assert(offsetof(TriangleShading, flags) == 12);
 static_assert(sizeof(TriangleColors) == 16 * kTexelsPerColors);
 static_assert(offsetof(TriangleColors, rg1) == 8 && offsetof(TriangleColors, ba2) == 20);
 
+static_assert(sizeof(vec2) == 8 && sizeof(TriangleUVs) == 16 * kTexelsPerUVs);
+static_assert(offsetof(TriangleUVs, uv02) == 16 && offsetof(TriangleUVs, uv10) == 24);
+static_assert(sizeof(Texture) == 16 && offsetof(Texture, mode) == 12);
+static_assert(sizeof(TextureRef) == 16 * kTexelsPerTextureRef);
+static_assert(offsetof(TextureRef, m00) == 8 && offsetof(TextureRef, m12) == 28);
+
 static_assert(sizeof(RayQuery) == 32);
 static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(BvhNode) == 16 * kTexelsPerNode);
 static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Light) == 16 * kTexelsPerLight);

@@ -11,9 +11,16 @@ struct LoadLimits {
   // Host memory the scene may need, from its files to the renderer's arrays; 0 selects
   // DefaultMaxMemory(). Checked before anything large is read or allocated.
   uint64_t maxMemory = 0;
+  // Texels of level 0 of all the images the materials use (--max-texels); 0 selects
+  // kDefaultMaxTextureTexels. Checked from the images' headers, before any is decoded.
+  uint64_t maxTextureTexels = 0;
   // Lifts the confinement of buffer and image URIs to the scene file's folder.
   bool allowExternalUris = false;
 };
+
+// 2^28 texels: 1 GiB of RGBA8, and with every mip level still within one texel buffer of
+// lavapipe's (2^27 RGBA32UI texels of four RGBA8 texels each).
+constexpr uint64_t kDefaultMaxTextureTexels = uint64_t(1) << 28;
 
 // Half of the memory this process may have: physical RAM, or a smaller cgroup limit.
 // Half, because the renderer's own arrays (image sums, device copies) come on top of

@@ -36,6 +36,27 @@ struct VertexColors {
   glm::vec4 c0{1.0f}, c1{1.0f}, c2{1.0f};
 };
 
+// TEXCOORD_0 (set0) and TEXCOORD_1 (set1) of one triangle's vertices, in the order of
+// its vertices; 0 where the primitive lacks the set.
+struct VertexUVs {
+  glm::vec2 set0[3]{}, set1[3]{};
+};
+
+// A decoded image (glTF images[i]): RGBA8, row-major from the top row.
+struct TextureImage {
+  std::string name;  // for messages: images[i] "name"
+  uint32_t width = 0, height = 0;
+  std::vector<uint8_t> rgba;
+};
+
+// A glTF texture as the materials use it: its image, its sampler as shader::Texture
+// sampler bits (wrap modes, filters; the level count is the renderer's) and whether its
+// RGB is sRGB-encoded colour. A glTF texture used both as colour and as data becomes two.
+struct SceneTexture {
+  uint32_t image = 0;  // into Scene::images
+  uint32_t sampler = 0;
+};
+
 struct Camera {
   std::string name;
   glm::vec3 position{0.0f};
@@ -69,7 +90,13 @@ struct Scene {
   std::vector<VertexNormals> normals;
   // Parallel to `triangles`, or empty when no triangle has COLOR_0.
   std::vector<VertexColors> colors;
+  // Parallel to `triangles`, or empty when no material has a texture.
+  std::vector<VertexUVs> uvs;
   std::vector<Material> materials;
+  // shader::kTextureSlots per material, or empty when no material has a texture.
+  std::vector<shader::TextureRef> textureRefs;
+  std::vector<SceneTexture> textures;  // what TextureRef::texture indexes
+  std::vector<TextureImage> images;
   std::vector<std::string> materialNames;
   std::vector<Camera> cameras;  // in scene-graph order; --camera N picks one
   std::vector<PunctualLight> lights;  // in scene-graph order, one per light node

@@ -19,5 +19,8 @@ using uint = std::uint32_t;
 #define VKPT_FN inline
 // A parameter the function reads and writes: a reference in C++, `inout` in GLSL.
 #define VKPT_INOUT(T) T&
+// A value whose computation no compiler may fuse into FMAs: GLSL's `precise`. C++ builds
+// use -ffp-contract=off (CMakeLists.txt) everywhere instead.
+#define VKPT_PRECISE
 #define VKPT_BEGIN_NAMESPACE namespace vkpt::shader {
 #define VKPT_END_NAMESPACE }

@@ -3,6 +3,7 @@
 #define VKPT_GLSL_PRELUDE_H
 #define VKPT_FN
 #define VKPT_INOUT(T) inout T
+#define VKPT_PRECISE precise
 #define VKPT_BEGIN_NAMESPACE
 #define VKPT_END_NAMESPACE
 #endif

@@ -27,6 +27,12 @@ const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample 
 const uint kBindingShading = 10u;   // texel buffer of TriangleShading, indexed by Triangle.sourceIndex
 const uint kBindingGgxAlbedo = 13u;     // texel buffer of the GGX albedo table (shared/ggx_albedo.h)
 const uint kBindingVertexColors = 14u;  // texel buffer of TriangleColors, indexed by Triangle.sourceIndex
+// Textures (shared/texture.h); a 1-texel dummy of each when the scene has none.
+const uint kBindingTextures = 15u;          // texel buffer of Texture
+const uint kBindingTexels = 16u;            // RGBA8 texels of every texture's levels, four per RGBA32UI texel
+const uint kBindingTexelDecode = 17u;       // kTexelDecodeSize floats, four per texel: byte → float
+const uint kBindingMaterialTextures = 18u;  // texel buffer of TextureRef, kTextureSlots per material
+const uint kBindingVertexUVs = 19u;         // texel buffer of TriangleUVs, indexed by Triangle.sourceIndex
 
 // The environment map (shared/environment.h), both as RGBA32UI texel buffers; a 1-texel
 // dummy of each when there is none (FrameParams::envWidth == 0).
@@ -70,8 +76,9 @@ struct BvhNode {
 const uint kMaxLeafSize = 15u;
 
 const uint kMaterialDoubleSided = 1u;
-const uint kMaterialUnlit = 2u;   // KHR_materials_unlit: shows baseColor, reflects nothing
-const uint kMaterialVolume = 4u;  // KHR_materials_volume with thickness > 0: refracts, attenuates inside
+const uint kMaterialUnlit = 2u;     // KHR_materials_unlit: shows baseColor, reflects nothing
+const uint kMaterialVolume = 4u;    // KHR_materials_volume with thickness > 0: refracts, attenuates inside
+const uint kMaterialTextured = 8u;  // some TextureRef of the material names a texture
 
 // A glTF metallic-roughness material (shared/bsdf.h) plus emission.
 struct Material {
@@ -84,7 +91,7 @@ struct Material {
   vec3 attenuation;    // KHR_materials_volume: σ = −ln(attenuationColor) / attenuationDistance, per unit length
   float ior;           // KHR_materials_ior (1.5 when absent; 0: Fresnel is 1)
   float transmission;  // KHR_materials_transmission: the share of the dielectric base that is transmissive
-  uint flags;          // kMaterialDoubleSided | kMaterialUnlit | kMaterialVolume
+  uint flags;          // kMaterialDoubleSided | kMaterialUnlit | kMaterialVolume | kMaterialTextured
   uint pad0;
   uint pad1;
 };
@@ -114,6 +121,62 @@ struct TriangleColors {
   uint pad0;
   uint pad1;
 };
+
+// Per scene triangle (indexed by Triangle::sourceIndex): glTF TEXCOORD_0 and TEXCOORD_1
+// of its three vertices (0 where the primitive has no such set). Present only when some
+// material has a texture.
+struct TriangleUVs {
+  vec2 uv00;  // uvSV: set S of vertex V
+  vec2 uv01;
+  vec2 uv02;
+  vec2 uv10;
+  vec2 uv11;
+  vec2 uv12;
+};
+
+// A texture: an image with its mip levels in the texel store, and how it is sampled.
+// Level l is max(1, width >> l) × max(1, height >> l) texels, row-major from the image's
+// top row. The store holds at `offset` one word per level, the offset of that level,
+// then the levels.
+struct Texture {
+  uint offset;  // in words (RGBA8 texels) of the store
+  uint width;
+  uint height;
+  uint mode;  // kTextureWrapS* | kTextureWrapT* | filters | kTextureSrgb | levels << kTextureLevelShift
+};
+// Wrap modes (glTF sampler wrapS/wrapT), 2 bits each.
+const uint kWrapRepeat = 0u;
+const uint kWrapClampToEdge = 1u;
+const uint kWrapMirroredRepeat = 2u;
+const uint kTextureWrapSShift = 0u;
+const uint kTextureWrapTShift = 2u;
+const uint kTextureMagLinear = 16u;   // magFilter LINEAR (else NEAREST)
+const uint kTextureMinLinear = 32u;   // minFilter *LINEAR* within a level (else NEAREST)
+const uint kTextureMipNearest = 64u;  // minFilter *_MIPMAP_NEAREST: the nearest level
+const uint kTextureMipLinear = 128u;  // minFilter *_MIPMAP_LINEAR: between two levels (neither: level 0)
+const uint kTextureSrgb = 256u;       // RGB bytes are sRGB-encoded (base colour, emissive, specular colour)
+const uint kTextureLevelShift = 16u;  // the number of levels, 1 + floor(log2(max(width, height)))
+// The byte → float tables: [0, 256) sRGB to linear, [256, 512) byte / 255, each exactly rounded.
+const uint kTexelDecodeSize = 512u;
+const uint kTexelDecodeLinear = 256u;
+
+// A material's use of a texture (glTF textureInfo): which texture, which TEXCOORD set,
+// and the KHR_texture_transform as a 2×3 matrix, uv' = (m00 u + m01 v + m02, m10 u + m11 v + m12).
+struct TextureRef {
+  uint texture;   // index into the Texture table, or kInvalidIndex: the slot is unused
+  uint texCoord;  // 0 or 1
+  float m00;
+  float m01;
+  float m02;
+  float m10;
+  float m11;
+  float m12;
+};
+// The texture slots of a material, kTextureSlots TextureRefs each (kBindingMaterialTextures).
+const uint kSlotBaseColor = 0u;          // RGB × baseColor, A × alpha
+const uint kSlotMetallicRoughness = 1u;  // G × roughness, B × metallic
+const uint kSlotEmissive = 2u;           // RGB × emission
+const uint kTextureSlots = 3u;
 
 // Light types (shared/lights.h).
 const uint kLightTriangle = 0u;          // emits from its front face
@@ -147,6 +210,8 @@ const uint kTexelsPerMaterial = 5u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
 const uint kTexelsPerColors = 2u;
+const uint kTexelsPerUVs = 3u;
+const uint kTexelsPerTextureRef = 2u;
 
 // The environment map's sampling distribution is one float array: the conditional CDF of
 // row r (inclusive running sums, the last exactly 1) at [r·W, r·W + W), then the marginal

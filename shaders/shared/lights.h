@@ -8,8 +8,8 @@
 // intensity I and a directional light's (lux) irradiance E, 1:1, so a point light of
 // intensity I lights a Lambert surface at distance r to ρ/π · I cos θ / r².
 //
-// Scene access (see path.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i), and
-// environment.h's VKPT_ENV_TEXEL(i), VKPT_ENV_CDF(i).
+// Scene access (see path.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i),
+// environment.h's VKPT_ENV_TEXEL(i), VKPT_ENV_CDF(i), and material_textures.h's.
 //
 // Test-only CPU builds (tests/path_variant.cpp; never the product nor the shader) may
 // define one deliberately wrong punctual light that tests/test_light_transport.cpp's
@@ -20,12 +20,16 @@
 //   VKPT_MUTANT_POINT_NO_INVERSE_SQUARE point and spot lights without 1/r²
 //   VKPT_MUTANT_DIRECTIONAL_EXTRA_COSINE a directional light's E already times cos θ,
 //                                        which the estimator then counts again
+// and one deliberately wrong triangle light, which tests/test_mis.cpp must reject:
+//   VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_TEXTURE  the emissive factor taken for the emission
+//                                             at the sampled point, its texture ignored
 #ifndef VKPT_LIGHTS_H
 #define VKPT_LIGHTS_H
 #include "environment.h"
 #include "estimator.h"
 #include "intersect.h"
 #include "layout.h"
+#include "material_textures.h"
 #include "prelude.h"
 #include "sampling.h"
 
@@ -124,6 +128,12 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
 #endif
     ls.pdf = TriangleLightPdf(l, dist, cosLight);
     ls.radiance = l.radiance;
+    // The emission at x, as a ray hitting x would find it (shading_frame.h), so that both
+    // strategies of multiple importance sampling estimate the same integrand.
+#ifndef VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_TEXTURE
+    if (VKPT_TEXTURES && (VKPT_MATERIAL(tri.material).flags & kMaterialTextured) != 0u)
+      ls.radiance *= EmissiveTexture(VKPT_SCENE_ARG tri.material, tri.sourceIndex, b.x, b.y);
+#endif
     // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
     // unnormalised direction: the emitter itself then lies beyond tMax.
     ls.shadowRay.dir = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl) - origin;

@@ -1,11 +1,12 @@
 // What the estimator knows about a surface point a ray has hit: position, geometric
 // normal, the shading frame the BSDF works in, the material and whether it emits.
 // Scene access as in path.h, plus VKPT_SHADING(i) and VKPT_VERTEX_COLORS_OF(i): the
-// TriangleShading and TriangleColors of scene triangle i.
+// TriangleShading and TriangleColors of scene triangle i, and material_textures.h's.
 #ifndef VKPT_SHADING_FRAME_H
 #define VKPT_SHADING_FRAME_H
 #include "estimator.h"
 #include "layout.h"
+#include "material_textures.h"
 #include "prelude.h"
 #include "sampling.h"
 #include "shading_normal.h"
@@ -61,6 +62,8 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
   Triangle tri = VKPT_TRIANGLE(hit.triangle);
   SurfaceHit sh;
   sh.material = VKPT_MATERIAL(tri.material);
+  if (VKPT_TEXTURES && (sh.material.flags & kMaterialTextured) != 0u)
+    ApplyMaterialTextures(VKPT_SCENE_ARG sh.material, tri.material, tri.sourceIndex, hit.b1, hit.b2);
   if (VKPT_VERTEX_COLORS)
     sh.material.baseColor *= vec3(InterpolatedColor(VKPT_VERTEX_COLORS_OF(tri.sourceIndex), hit.b1, hit.b2));
   sh.light = tri.light;

@@ -1,0 +1,24 @@
+// The shared headers' scene access (shaders/shared/path.h lists the macros) over a
+// RenderScene named `scene`: what the CPU renderer, and host code that samples the
+// scene as the renderers do (the light table reading emissive textures), compile them with.
+#pragma once
+
+#include "render/render_scene.h"
+
+#define VKPT_SCENE_PARAM const ::vkpt::RenderScene &scene,
+#define VKPT_SCENE_ARG scene,
+#define VKPT_TRIANGLE(i) scene.triangles[i]
+#define VKPT_MATERIAL(i) scene.materials[i]
+#define VKPT_LIGHT(i) scene.lights[i]
+#define VKPT_LIGHT_CDF(i) scene.lights[i].cdf
+#define VKPT_SHADING(i) scene.shading[i]
+#define VKPT_VERTEX_COLORS (!scene.vertexColors.empty())
+#define VKPT_VERTEX_COLORS_OF(i) scene.vertexColors[i]
+#define VKPT_TEXTURES (!scene.textureRefs.empty())
+#define VKPT_TEXTURE(i) scene.textures[i]
+#define VKPT_TEXEL_WORD(i) scene.texels[i]
+#define VKPT_TEXEL_DECODE(i) scene.texelDecode[i]
+#define VKPT_TEXTURE_REF(i) scene.textureRefs[i]
+#define VKPT_UVS_OF(i) scene.uvs[i]
+#define VKPT_ENV_TEXEL(i) scene.environment.texels[i]
+#define VKPT_ENV_CDF(i) scene.environment.cdf[i]

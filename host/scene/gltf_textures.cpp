@@ -1,0 +1,240 @@
+#include "scene/gltf_textures.h"
+
+#include <cmath>
+#include <map>
+#include <span>
+#include <utility>
+
+#include "image/texture_decode.h"
+#include "util/byte_size.h"
+#include "util/parallel.h"
+
+namespace vkpt {
+namespace {
+
+// Host memory per texel of an image's level 0: the decoder's output and stb's working memory
+// (up to three times the output: texture_decode.h), the Scene's copy, and the renderer's store with its mip
+// levels (4/3 of level 0) four times over: the chains as built, the store, its staging
+// buffer and its device copy.
+constexpr uint64_t kBytesPerTexel = 16 + 4 + 4 * 6;
+
+// A material's use of a texture: which slot, and whether its RGB is colour (sRGB).
+struct Slot {
+  uint32_t slot;
+  const char* field;
+  bool srgb;
+};
+const Slot kBaseColor{shader::kSlotBaseColor, "pbrMetallicRoughness.baseColorTexture", true};
+const Slot kMetallicRoughness{shader::kSlotMetallicRoughness, "pbrMetallicRoughness.metallicRoughnessTexture", false};
+const Slot kEmissive{shader::kSlotEmissive, "emissiveTexture", true};
+
+uint32_t WrapMode(int gl, const std::string& what, const GltfSource& src) {
+  switch (gl) {
+    case TINYGLTF_TEXTURE_WRAP_REPEAT: return shader::kWrapRepeat;
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return shader::kWrapClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return shader::kWrapMirroredRepeat;
+    default: src.Fail(what + " is " + std::to_string(gl) + ", not a glTF wrap mode");
+  }
+}
+
+// A sampler's modes as shader::Texture sampler bits. Without a sampler, or a filter,
+// glTF leaves the choice to the renderer: repeat, and trilinear filtering.
+uint32_t SamplerBits(const GltfSource& src, int sampler) {
+  if (sampler < 0) return shader::kTextureMagLinear | shader::kTextureMinLinear | shader::kTextureMipLinear;
+  const tinygltf::Sampler& s = src.m.samplers[sampler];
+  const std::string name = "samplers[" + std::to_string(sampler) + "]";
+  uint32_t bits = WrapMode(s.wrapS, name + ".wrapS", src) << shader::kTextureWrapSShift |
+                  WrapMode(s.wrapT, name + ".wrapT", src) << shader::kTextureWrapTShift;
+  if (s.magFilter == -1 || s.magFilter == TINYGLTF_TEXTURE_FILTER_LINEAR) bits |= shader::kTextureMagLinear;
+  else if (s.magFilter != TINYGLTF_TEXTURE_FILTER_NEAREST)
+    src.Fail(name + ".magFilter is " + std::to_string(s.magFilter) + ", not NEAREST (9728) or LINEAR (9729)");
+  switch (s.minFilter) {
+    case -1:
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
+      return bits | shader::kTextureMinLinear | shader::kTextureMipLinear;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST: return bits;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR: return bits | shader::kTextureMinLinear;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return bits | shader::kTextureMipNearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      return bits | shader::kTextureMinLinear | shader::kTextureMipNearest;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return bits | shader::kTextureMipLinear;
+    default: src.Fail(name + ".minFilter is " + std::to_string(s.minFilter) + ", not a glTF minification filter");
+  }
+}
+
+// The encoded bytes of images[i]: its bufferView's, or what tinygltf read for its uri
+// (kept by the loader's image callback).
+std::span<const unsigned char> EncodedImage(const GltfSource& src, int image) {
+  const tinygltf::Image& im = src.m.images[image];
+  if (im.bufferView < 0) return im.image;
+  const tinygltf::BufferView& bv = src.m.bufferViews[im.bufferView];
+  return std::span<const unsigned char>(src.m.buffers[bv.buffer].data).subspan(bv.byteOffset, bv.byteLength);
+}
+
+class TextureReader {
+ public:
+  TextureReader(const GltfSource& src, Scene& scene) : src_(src), scene_(scene) {}
+
+  // Slot `slot` of materials[m] from `info` (a textureInfo; index −1: none).
+  void Read(uint32_t m, const Slot& slot, const tinygltf::TextureInfo& info) {
+    if (info.index < 0) return;
+    const std::string what = MaterialName(m) + "." + slot.field;
+    const tinygltf::Texture& tex = src_.m.textures[info.index];
+    if (tex.source < 0) {
+      // KHR_texture_basisu and EXT_texture_webp name their image in the extension and
+      // may leave no `source` to fall back on: vkpt decodes PNG and JPEG only.
+      scene_.warnings.push_back(what + ": textures[" + std::to_string(info.index) +
+                                "] has no PNG or JPEG source; the factor is used alone");
+      return;
+    }
+    shader::TextureRef ref = Transform(info, what);
+    if (ref.texCoord > 1) {
+      scene_.warnings.push_back(what + " reads TEXCOORD_" + std::to_string(ref.texCoord) +
+                                "; vkpt reads TEXCOORD_0 and TEXCOORD_1, so the factor is used alone");
+      return;
+    }
+    ref.texture = TextureIndex(info.index, slot.srgb, what);
+    if (scene_.textureRefs.empty())
+      scene_.textureRefs.assign(scene_.materials.size() * shader::kTextureSlots, Unused());
+    scene_.textureRefs[m * shader::kTextureSlots + slot.slot] = ref;
+    scene_.materials[m].flags |= shader::kMaterialTextured;
+  }
+
+  // The images the textures use, in glTF order, each with the first place that uses it.
+  const std::map<int, std::string>& Users() const { return users_; }
+
+ private:
+  static shader::TextureRef Unused() { return {shader::kInvalidIndex, 0u, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f}; }
+
+  std::string MaterialName(uint32_t m) const {
+    std::string name = "materials[" + std::to_string(m) + "]";
+    const std::string& own = src_.m.materials[m].name;
+    return own.empty() ? name : name + " \"" + own + "\"";
+  }
+
+  // KHR_texture_transform (offset, rotation, scale, texCoord) as the 2×3 matrix
+  // T · R · S of the extension's specification, R turning the UVs by `rotation`
+  // counter-clockwise as seen with v pointing down (the image's rows), the direction
+  // TextureTransformTest checks; the identity without it.
+  shader::TextureRef Transform(const tinygltf::TextureInfo& info, const std::string& what) const {
+    shader::TextureRef ref = Unused();
+    ref.texCoord = uint32_t(std::max(info.texCoord, 0));
+    auto ext = info.extensions.find("KHR_texture_transform");
+    if (ext == info.extensions.end()) return ref;
+    const tinygltf::Value& t = ext->second;
+    const std::string name = what + ".extensions.KHR_texture_transform";
+    double offset[2] = {0.0, 0.0}, scale[2] = {1.0, 1.0};
+    Pair(t, "offset", name, offset);
+    Pair(t, "scale", name, scale);
+    const double rotation = t.Has("rotation") ? Number(t.Get("rotation"), name + ".rotation") : 0.0;
+    if (t.Has("texCoord")) {
+      const tinygltf::Value& tc = t.Get("texCoord");
+      if (!tc.IsInt() || tc.GetNumberAsInt() < 0) src_.Fail(name + ".texCoord is not a non-negative integer");
+      ref.texCoord = uint32_t(tc.GetNumberAsInt());
+    }
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    ref.m00 = float(c * scale[0]);
+    ref.m01 = float(s * scale[1]);
+    ref.m02 = float(offset[0]);
+    ref.m10 = float(-s * scale[0]);
+    ref.m11 = float(c * scale[1]);
+    ref.m12 = float(offset[1]);
+    for (float x : {ref.m00, ref.m01, ref.m02, ref.m10, ref.m11, ref.m12})
+      if (!std::isfinite(x)) src_.Fail(name + " makes a transform that is not finite in single precision");
+    return ref;
+  }
+
+  double Number(const tinygltf::Value& v, const std::string& what) const {
+    if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble())) src_.Fail(what + " is not a finite number");
+    return v.GetNumberAsDouble();
+  }
+
+  void Pair(const tinygltf::Value& t, const char* field, const std::string& name, double out[2]) const {
+    if (!t.Has(field)) return;
+    const tinygltf::Value& v = t.Get(field);
+    const std::string what = name + "." + field;
+    if (!v.IsArray() || v.ArrayLen() != 2) src_.Fail(what + " is not an array of two numbers");
+    for (int i = 0; i < 2; ++i) out[i] = Number(v.Get(i), what + "[" + std::to_string(i) + "]");
+  }
+
+  uint32_t TextureIndex(int gltfTexture, bool srgb, const std::string& what) {
+    auto [it, added] = textures_.try_emplace({gltfTexture, srgb}, uint32_t(scene_.textures.size()));
+    if (added) {
+      const tinygltf::Texture& tex = src_.m.textures[gltfTexture];
+      scene_.textures.push_back(
+          {uint32_t(tex.source), SamplerBits(src_, tex.sampler) | (srgb ? shader::kTextureSrgb : 0u)});
+      users_.try_emplace(tex.source, what);
+    }
+    return it->second;
+  }
+
+  const GltfSource& src_;
+  Scene& scene_;
+  std::map<std::pair<int, bool>, uint32_t> textures_;  // (glTF texture, sRGB) → Scene::textures
+  std::map<int, std::string> users_;                   // glTF image → the first textureInfo using it
+};
+
+std::string ImageName(const GltfSource& src, int image) {
+  std::string name = "images[" + std::to_string(image) + "]";
+  const tinygltf::Image& im = src.m.images[image];
+  if (!im.name.empty()) return name + " \"" + im.name + "\"";
+  if (!im.uri.empty() && !im.uri.starts_with("data:")) return name + " \"" + im.uri + "\"";
+  return name;
+}
+
+}  // namespace
+
+void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget& budget, Scene& scene) {
+  TextureReader reader(src, scene);
+  for (uint32_t m = 0; m < src.m.materials.size(); ++m) {
+    const tinygltf::Material& mat = src.m.materials[m];
+    reader.Read(m, kBaseColor, mat.pbrMetallicRoughness.baseColorTexture);
+    reader.Read(m, kMetallicRoughness, mat.pbrMetallicRoughness.metallicRoughnessTexture);
+    reader.Read(m, kEmissive, mat.emissiveTexture);
+  }
+  if (scene.textures.empty()) return;
+
+  // Every header is read, and the budgets charged, before the first image is decoded.
+  struct Job {
+    int image;
+    std::string name;  // "images[2] "wood.png" (used by materials[0] … baseColorTexture)"
+    TextureImageHeader header;
+  };
+  std::vector<Job> jobs;
+  std::map<int, uint32_t> index;  // glTF image → Scene::images
+  const uint64_t maxTexels = limits.maxTextureTexels ? limits.maxTextureTexels : kDefaultMaxTextureTexels;
+  uint64_t texels = 0;
+  for (const auto& [image, user] : reader.Users()) {
+    Job job{image, ImageName(src, image) + " (used by " + user + ")", {}};
+    try {
+      job.header = ReadTextureImageHeader(EncodedImage(src, image), src.m.images[image].mimeType);
+    } catch (const Error& e) {
+      src.Fail(job.name + " " + e.what());
+    }
+    const uint64_t n = uint64_t(job.header.width) * job.header.height;
+    texels += n;
+    if (texels > maxTexels)
+      src.Fail(job.name + " brings the scene's texture texels to " + std::to_string(texels) +
+               ", more than --max-texels " + std::to_string(maxTexels));
+    budget.Charge(n * kBytesPerTexel, job.name + " (" + std::to_string(job.header.width) + " × " +
+                                          std::to_string(job.header.height) + " texels)");
+    index[image] = uint32_t(jobs.size());
+    jobs.push_back(std::move(job));
+  }
+
+  scene.images.resize(jobs.size());
+  std::vector<std::string> errors(jobs.size());
+  ParallelFor(jobs.size(), ThreadCount(0), [&](size_t k) {
+    try {
+      Rgba8Image decoded = DecodeTextureImage(EncodedImage(src, jobs[k].image), jobs[k].header);
+      scene.images[k] = {ImageName(src, jobs[k].image), decoded.width, decoded.height, std::move(decoded.texels)};
+    } catch (const Error& e) {
+      errors[k] = jobs[k].name + " " + e.what();
+    }
+  });
+  for (const std::string& e : errors)
+    if (!e.empty()) src.Fail(e);
+  for (SceneTexture& t : scene.textures) t.image = index.at(int(t.image));
+}
+
+}  // namespace vkpt

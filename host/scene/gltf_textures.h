@@ -1,0 +1,21 @@
+// glTF textures (spec §3.8) as the materials use them: each textureInfo becomes a
+// shader::TextureRef (texture, TEXCOORD set, KHR_texture_transform), each texture a
+// SceneTexture with its sampler, each image they need is decoded once. Images are
+// untrusted: their size is checked from the header and counted against the texel and
+// memory budgets before anything is decoded.
+#pragma once
+
+#include <string>
+
+#include "scene/gltf_source.h"
+#include "scene/load_limits.h"
+#include "scene/scene.h"
+
+namespace vkpt {
+
+// Fills scene.textureRefs, textures and images (nothing when no material has a texture)
+// and sets kMaterialTextured on the materials that have one. `scene.materials` must be
+// loaded, in glTF order.
+void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget& budget, Scene& scene);
+
+}  // namespace vkpt

@@ -1,0 +1,61 @@
+// A material's textures applied at a surface point (glTF 2.0 §3.9): the base colour
+// texture multiplies baseColorFactor, the metallic-roughness texture's G and B channels
+// the roughness and metallic factors, the emissive texture the emissive factor.
+//
+// Scene access, as in texture.h, plus
+//   VKPT_TEXTURE_REF(i)  TextureRef i: slot s of material m is i = m · kTextureSlots + s
+//   VKPT_UVS_OF(i)       the TriangleUVs of scene triangle i
+#ifndef VKPT_MATERIAL_TEXTURES_H
+#define VKPT_MATERIAL_TEXTURES_H
+#include "prelude.h"  // first, as in every shared header
+
+#include "layout.h"
+#include "texture.h"
+
+// A shader may define VKPT_TEXTURES as a specialization constant that is false when no
+// material has a texture (and the scene has no TriangleUVs to read).
+#ifndef VKPT_TEXTURES
+#define VKPT_TEXTURES true
+#endif
+
+VKPT_BEGIN_NAMESPACE
+
+// TEXCOORD_<set> at barycentrics (b1, b2).
+VKPT_FN vec2 InterpolatedUV(TriangleUVs t, uint set, float b1, float b2) {
+  vec2 a = set == 0u ? t.uv00 : t.uv10;
+  vec2 b = set == 0u ? t.uv01 : t.uv11;
+  vec2 c = set == 0u ? t.uv02 : t.uv12;
+  VKPT_PRECISE vec2 uv = (1.0f - b1 - b2) * a + b1 * b + b2 * c;
+  return uv;
+}
+
+// Slot `slot` of `material` at the point, or 1 where the slot has no texture.
+VKPT_FN vec4 SampleSlot(VKPT_SCENE_PARAM uint material, uint slot, TriangleUVs uvs, float b1, float b2) {
+  TextureRef ref = VKPT_TEXTURE_REF(material * kTextureSlots + slot);
+  if (ref.texture == kInvalidIndex) return vec4(1.0f);
+  vec2 uv = TransformUV(ref, InterpolatedUV(uvs, ref.texCoord, b1, b2));
+  // Level 0 everywhere: the pixel's many samples average its footprint.
+  return SampleTexture(VKPT_SCENE_ARG VKPT_TEXTURE(ref.texture), uv, 0.0f);
+}
+
+// `mat` (material `material`, read from the table) at the point (b1, b2) of scene
+// triangle `sourceIndex`.
+VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, uint material, uint sourceIndex, float b1,
+                                   float b2) {
+  TriangleUVs uvs = VKPT_UVS_OF(sourceIndex);
+  mat.baseColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotBaseColor, uvs, b1, b2));
+  vec4 mr = SampleSlot(VKPT_SCENE_ARG material, kSlotMetallicRoughness, uvs, b1, b2);
+  mat.roughness *= mr.g;
+  mat.metallic *= mr.b;
+  mat.emission *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotEmissive, uvs, b1, b2));
+}
+
+// The emissive texture alone, for light sampling: the factor by which the emission at
+// (b1, b2) of scene triangle `sourceIndex` differs from its material's emissive factor.
+VKPT_FN vec3 EmissiveTexture(VKPT_SCENE_PARAM uint material, uint sourceIndex, float b1, float b2) {
+  return vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotEmissive, VKPT_UVS_OF(sourceIndex), b1, b2));
+}
+
+VKPT_END_NAMESPACE
+
+#endif

@@ -1,0 +1,133 @@
+// Texture lookups (glTF 2.0 §3.8 textures and samplers), written once for both
+// renderers. The CPU and the shader return the same bits for the same lookup: every
+// float operation here is a single correctly rounded IEEE operation (no division, no
+// transcendental; bytes become floats through the exactly rounded kBindingTexelDecode
+// tables), and the values are VKPT_PRECISE so that no compiler fuses a multiply and an
+// add into an FMA (lavapipe's NIR does where it may).
+//
+// Scene access, as in path.h:
+//   VKPT_TEXTURE(i)      Texture i
+//   VKPT_TEXEL_WORD(i)   the i-th RGBA8 texel of the store as a uint, R in the low byte
+//   VKPT_TEXEL_DECODE(i) entry i of the byte → float tables (layout.h)
+#ifndef VKPT_TEXTURE_H
+#define VKPT_TEXTURE_H
+#include "prelude.h"  // first, as in every shared header
+
+#include "layout.h"
+
+VKPT_BEGIN_NAMESPACE
+
+// A texture coordinate brought into [0, 1] by the wrap mode; the texel index is wrapped
+// once more below (WrapTexel), since filtering reaches half a texel past either edge.
+// MIRRORED_REPEAT folds the coordinate, after which clamping the index is exact: the
+// texel mirrored across an edge is the edge texel itself. Coordinates that are not
+// finite, or so large that no fraction is left, read at 0.
+VKPT_FN float WrapCoordinate(float u, uint mode) {
+  if (!(abs(u) < 1e30f)) u = 0.0f;
+  if (mode == kWrapClampToEdge) return clamp(u, 0.0f, 1.0f);
+  if (mode == kWrapMirroredRepeat) {
+    VKPT_PRECISE float t = u - 2.0f * floor(0.5f * u);  // [0, 2]
+    return t > 1.0f ? 2.0f - t : t;
+  }
+  VKPT_PRECISE float f = u - floor(u);  // [0, 1]: 1 when rounding takes a tiny negative u there
+  return f;
+}
+
+// A texel index in [−1, n] (see TexelSpan) into [0, n).
+VKPT_FN int WrapTexel(int x, int n, uint mode) {
+  if (mode != kWrapRepeat) return clamp(x, 0, n - 1);
+  return x < 0 ? x + n : (x >= n ? x - n : x);
+}
+
+// Texel k of a texture's store, as floats: RGB through the sRGB table when the texture
+// holds colour, alpha (and everything else) as byte / 255.
+VKPT_FN vec4 TexelValue(VKPT_SCENE_PARAM uint mode, uint k) {
+  uint word = VKPT_TEXEL_WORD(k);
+  uint rgb = (mode & kTextureSrgb) != 0u ? 0u : kTexelDecodeLinear;
+  return vec4(VKPT_TEXEL_DECODE(rgb + (word & 0xFFu)), VKPT_TEXEL_DECODE(rgb + ((word >> 8u) & 0xFFu)),
+              VKPT_TEXEL_DECODE(rgb + ((word >> 16u) & 0xFFu)), VKPT_TEXEL_DECODE(kTexelDecodeLinear + (word >> 24u)));
+}
+
+// One level of a texture: where it starts in the store and its size.
+struct TextureLevel {
+  uint offset;
+  int width;
+  int height;
+};
+
+// The store begins each texture with the offsets of its levels (see Texture), so that
+// finding one takes a single read and no loop (lavapipe counts every loop pass against
+// its budget: traverse.glsl).
+VKPT_FN TextureLevel LevelOf(VKPT_SCENE_PARAM Texture t, uint level) {
+  TextureLevel l;
+  l.offset = VKPT_TEXEL_WORD(t.offset + level);
+  l.width = int(max(t.width >> level, 1u));
+  l.height = int(max(t.height >> level, 1u));
+  return l;
+}
+
+// The level's value at (s, t) ∈ [0, 1]² (wrapped already): the nearest texel, or the
+// bilinear blend of the four whose centres surround the point.
+VKPT_FN vec4 SampleLevel(VKPT_SCENE_PARAM uint mode, TextureLevel l, vec2 st, bool linear) {
+  uint wrapS = (mode >> kTextureWrapSShift) & 3u;
+  uint wrapT = (mode >> kTextureWrapTShift) & 3u;
+  if (!linear) {
+    int x = WrapTexel(int(floor(st.x * float(l.width))), l.width, wrapS);
+    int y = WrapTexel(int(floor(st.y * float(l.height))), l.height, wrapT);
+    return TexelValue(VKPT_SCENE_ARG mode, l.offset + uint(y * l.width + x));
+  }
+  VKPT_PRECISE float sx = st.x * float(l.width) - 0.5f;
+  VKPT_PRECISE float sy = st.y * float(l.height) - 0.5f;
+  float x0f = floor(sx), y0f = floor(sy);
+  VKPT_PRECISE float fx = sx - x0f;
+  VKPT_PRECISE float fy = sy - y0f;
+  int x0 = WrapTexel(int(x0f), l.width, wrapS), x1 = WrapTexel(int(x0f) + 1, l.width, wrapS);
+  uint row0 = l.offset + uint(WrapTexel(int(y0f), l.height, wrapT) * l.width);
+  uint row1 = l.offset + uint(WrapTexel(int(y0f) + 1, l.height, wrapT) * l.width);
+  vec4 a = TexelValue(VKPT_SCENE_ARG mode, row0 + uint(x0));
+  vec4 b = TexelValue(VKPT_SCENE_ARG mode, row0 + uint(x1));
+  vec4 c = TexelValue(VKPT_SCENE_ARG mode, row1 + uint(x0));
+  vec4 d = TexelValue(VKPT_SCENE_ARG mode, row1 + uint(x1));
+  VKPT_PRECISE vec4 top = a * (1.0f - fx) + b * fx;
+  VKPT_PRECISE vec4 bottom = c * (1.0f - fx) + d * fx;
+  VKPT_PRECISE vec4 v = top * (1.0f - fy) + bottom * fy;
+  return v;
+}
+
+// The filtered value of texture t at uv for level of detail `lod` (log2 of the texels
+// a footprint spans on level 0): magnification when lod ≤ 0 (or NaN), minification
+// otherwise, from level 0, the nearest level or the two around lod by the sampler's
+// minFilter (OpenGL 4.6 §8.14).
+VKPT_FN vec4 SampleTexture(VKPT_SCENE_PARAM Texture t, vec2 uv, float lod) {
+  vec2 st = vec2(WrapCoordinate(uv.x, (t.mode >> kTextureWrapSShift) & 3u),
+                 WrapCoordinate(uv.y, (t.mode >> kTextureWrapTShift) & 3u));
+  if (!(lod > 0.0f))
+    return SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, 0u), st, (t.mode & kTextureMagLinear) != 0u);
+  bool linear = (t.mode & kTextureMinLinear) != 0u;
+  float last = float((t.mode >> kTextureLevelShift) - 1u);
+  float level = min(lod, last);
+  if ((t.mode & kTextureMipNearest) != 0u)
+    return SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, uint(min(floor(level + 0.5f), last))), st,
+                       linear);
+  if ((t.mode & kTextureMipLinear) == 0u)
+    return SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, 0u), st, linear);
+  float l0 = floor(level);
+  VKPT_PRECISE float f = level - l0;
+  vec4 a = SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, uint(l0)), st, linear);
+  if (f == 0.0f) return a;
+  vec4 b = SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, uint(l0) + 1u), st, linear);
+  VKPT_PRECISE vec4 v = a * (1.0f - f) + b * f;
+  return v;
+}
+
+// The texture coordinate a TextureRef reads: its TEXCOORD set, through its
+// KHR_texture_transform.
+VKPT_FN vec2 TransformUV(TextureRef ref, vec2 uv) {
+  VKPT_PRECISE float u = ref.m00 * uv.x + ref.m01 * uv.y + ref.m02;
+  VKPT_PRECISE float v = ref.m10 * uv.x + ref.m11 * uv.y + ref.m12;
+  return vec2(u, v);
+}
+
+VKPT_END_NAMESPACE
+
+#endif
