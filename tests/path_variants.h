@@ -25,5 +25,7 @@ RenderResult RenderMutantSpotFalloffLinear(const RenderScene& scene, const shade
 RenderResult RenderMutantRangeWindowSquared(const RenderScene& scene, const shader::FrameParams& params);
 RenderResult RenderMutantPointNoInverseSquare(const RenderScene& scene, const shader::FrameParams& params);
 RenderResult RenderMutantDirectionalExtraCosine(const RenderScene& scene, const shader::FrameParams& params);
+// Mutant of triangle lights (lights.h): a light sample's emission without the emissive texture.
+RenderResult RenderMutantLightSampleWithoutTexture(const RenderScene& scene, const shader::FrameParams& params);
 
 }  // namespace vkpt::test

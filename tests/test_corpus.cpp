@@ -239,9 +239,9 @@ INSTANTIATE_TEST_SUITE_P(Corpus, CorpusInvalid, ::testing::ValuesIn(DiscoverInva
 
 // ---------------------------------------------------------------------------------------
 // The glTF PBR models (../shared/gltf-pbr): test_gpu.cpp renders them on both backends;
-// here the command line reports what a textured one does not render yet.
+// here the command line reports the textures of a textured one.
 
-TEST(CorpusPbr, VerboseListsTheIgnoredTextures) {
+TEST(CorpusPbr, VerboseListsTheTextures) {
   const std::string path = CorpusPath("../gltf-pbr/EmissiveStrengthTest/glTF-Binary/EmissiveStrengthTest.glb");
   ASSERT_TRUE(fs::exists(path)) << path << " is missing (../shared/gltf-pbr beside the checkout)";
   const std::string out = TempPath("corpus-pbr-verbose.pfm");
@@ -249,7 +249,8 @@ TEST(CorpusPbr, VerboseListsTheIgnoredTextures) {
       {"--scene", path, "--backend", "cpu", "--spp", "1", "--width", "16", "--height", "16", "-v", "--out", out}, 60.0);
   std::remove(out.c_str());
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
-  EXPECT_NE(r.out.find("ignored: 1 texture(s): materials use their constant factors"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("textures: 1 from 1 images"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("ignored: "), std::string::npos) << r.out;
 }
 
 }  // namespace

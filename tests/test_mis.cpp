@@ -13,6 +13,7 @@
 #include "cpu/path_tracer.h"
 #include "gltf_builder.h"
 #include "path_variants.h"
+#include "png_writer.h"
 #include "render/render_scene.h"
 #include "test_util.h"
 
@@ -27,7 +28,8 @@ const double kRoughness[] = {0.1, 0.3, 0.7};
 // A 6 × 6 plane y = 0 of material `planeMaterial` (glTF JSON) and a one-sided emissive quad
 // (1 × 1, radiance 4) at height `lightY`, facing the plane; the camera (Frame) sees the
 // plane, not the light.
-Scene PlaneAndQuadLight(const std::string& planeMaterial, float lightY, const std::vector<std::string>& extensions) {
+GltfBuilder PlaneAndQuadLightModel(const std::string& planeMaterial, float lightY,
+                                   const std::vector<std::string>& extensions) {
   GltfBuilder b;
   int plane = b.Positions({{-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}});
   int light =
@@ -44,7 +46,11 @@ Scene PlaneAndQuadLight(const std::string& planeMaterial, float lightY, const st
   b.scenes = {R"({"nodes":[0,1]})"};
   b.extensionsUsed = extensions;
   b.extensionsUsed.push_back("KHR_materials_emissive_strength");
-  return Load(b);
+  return b;
+}
+
+Scene PlaneAndQuadLight(const std::string& planeMaterial, float lightY, const std::vector<std::string>& extensions) {
+  return Load(PlaneAndQuadLightModel(planeMaterial, lightY, extensions));
 }
 
 // A metal plane (baseColor copper-like, metallic 1, the given roughness) under the light
@@ -64,6 +70,28 @@ Scene LightBehindThinWall(double roughness) {
       R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0,"roughnessFactor":)" + Num(roughness) +
           R"(},"extensions":{"KHR_materials_transmission":{"transmissionFactor":1}}})",
       -1.5f, {"KHR_materials_transmission"});
+}
+
+// The glossy plane under a light whose emission an emissive texture paints: 4 × 4 texels
+// of different colours and brightness, NEAREST, over the quad. Light sampling
+// must read the texture at the point it picks as a hit there would.
+Scene GlossyPlaneUnderTexturedLight(double roughness) {
+  GltfBuilder b = PlaneAndQuadLightModel(R"({"pbrMetallicRoughness":{"baseColorFactor":[0.95,0.64,0.54,1],)"
+                                         R"("metallicFactor":1,"roughnessFactor":)" +
+                                             Num(roughness) + "}}",
+                                         1.5f, {});
+  std::vector<uint8_t> texels;
+  for (int k = 0; k < 16; ++k)
+    texels.insert(texels.end(), {uint8_t(k * 17), uint8_t(255 - k * 13), uint8_t(k * 40 % 256)});
+  const int uv = b.Accessor(b.View(Bytes(std::vector<float>{0, 0, 1, 0, 1, 1, 0, 1})), kFloat, 4, "VEC2");
+  b.meshes[1].insert(b.meshes[1].find("\"POSITION\""), "\"TEXCOORD_0\":" + std::to_string(uv) + ",");
+  const std::vector<unsigned char> png = MakePng(4, 4, 8, 2, texels);
+  b.images.push_back(R"({"mimeType":"image/png","bufferView":)" +
+                     std::to_string(b.View(std::string(png.begin(), png.end()))) + "}");
+  b.textures.push_back(R"({"source":0,"sampler":0})");
+  b.extraTopLevel += R"(,"samplers":[{"magFilter":9728,"minFilter":9728}])";
+  b.materials[1].insert(b.materials[1].find("\"emissiveFactor\""), R"("emissiveTexture":{"index":0},)");
+  return Load(b);
 }
 
 // 48 × 32, `spp` samples, one bounce (the light reflected once), black background.
@@ -170,6 +198,22 @@ TEST(Mis, LightBsdfAndMisEstimatesAgreeAtThreeRoughnesses) {
 TEST(Mis, LightThroughAThinWallAgreesAtThreeRoughnesses) {
   Verdict v = CompareEstimators(Estimators{}, kSpp, LightBehindThinWall);
   EXPECT_EQ(v.failures, 0);
+}
+
+// Light sampling reads the emissive texture where it samples the light (the emission of
+// the sampled point), as BSDF sampling reads it where its ray hits.
+TEST(Mis, TexturedLightAgreesAtThreeRoughnesses) {
+  Verdict v = CompareEstimators(Estimators{}, kSpp, GlossyPlaneUnderTexturedLight);
+  EXPECT_EQ(v.failures, 0);
+}
+
+// Light samples that take the emissive factor for the emission, texture ignored.
+TEST(Mis, MutantLightSampleWithoutTextureIsCaught) {
+  Estimators e;
+  e.lightOnly = RenderMutantLightSampleWithoutTexture;
+  e.mis = RenderMutantLightSampleWithoutTexture;
+  e.name = "mutant: light samples ignore the emissive texture";
+  EXPECT_GT(CompareEstimators(e, kMutantSpp, GlossyPlaneUnderTexturedLight).failures, 0);
 }
 
 // Both strategies counted in full: the light's reflection twice.

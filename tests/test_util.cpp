@@ -18,6 +18,7 @@
 #include <iterator>
 #include <random>
 
+#include "render/texture_store.h"
 #include "shared/estimator.h"
 
 namespace vkpt::test {
@@ -334,6 +335,45 @@ int PixelsOffVertexColorQuad(const Image& image, const shader::FrameParams& para
       const glm::vec3 L = image.pixels[py * params.width + px];
       const float eps = 1e-4f;
       off += glm::any(glm::lessThan(L, lo - eps)) || glm::any(glm::greaterThan(L, hi + eps));
+    }
+  return off;
+}
+
+glm::u8vec4 TexturedQuadTexel(int x, int y) {
+  return {uint8_t(16 + 60 * x), uint8_t(200 - 50 * y), uint8_t(37 * (x ^ y)), 255};
+}
+
+Scene TexturedQuadScene() {
+  Material m{};
+  m.baseColor = glm::vec3(1.0f);
+  m.flags = shader::kMaterialUnlit | shader::kMaterialTextured;
+  const glm::vec3 a(-1, -1, 0), b(1, -1, 0), c(1, 1, 0), d(-1, 1, 0);
+  Scene s = MakeScene({{a, b, c, 0}, {a, c, d, 0}}, {m});
+  // u from left to right, v from top to bottom (the image's rows).
+  auto uv = [](glm::vec3 p) { return glm::vec2(0.5f * (p.x + 1.0f), 0.5f * (1.0f - p.y)); };
+  for (const SceneTriangle& t : s.triangles) s.uvs.push_back({{uv(t.v0), uv(t.v1), uv(t.v2)}, {}});
+  TextureImage im{"quad", 4, 4, {}};
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) {
+      const glm::u8vec4 t = TexturedQuadTexel(x, y);
+      im.rgba.insert(im.rgba.end(), {t.r, t.g, t.b, t.a});
+    }
+  s.images.push_back(im);
+  s.textures.push_back({0, shader::kTextureSrgb | shader::kWrapClampToEdge << shader::kTextureWrapSShift |
+                               shader::kWrapClampToEdge << shader::kTextureWrapTShift});
+  s.textureRefs.assign(shader::kTextureSlots, {shader::kInvalidIndex, 0, 1, 0, 0, 0, 1, 0});
+  s.textureRefs[shader::kSlotBaseColor].texture = 0;
+  s.cameras.push_back(OrthographicAlongMinusZ(2.0f, 1.0f));
+  return s;
+}
+
+int PixelsOffTexturedQuad(const Image& image) {
+  const std::vector<float> table = TexelDecodeTable();
+  int off = 0;
+  for (uint32_t py = 0; py < image.height; ++py)
+    for (uint32_t px = 0; px < image.width; ++px) {
+      const glm::u8vec4 t = TexturedQuadTexel(int(px * 4 / image.width), int(py * 4 / image.height));
+      off += image.pixels[py * image.width + px] != glm::vec3(table[t.r], table[t.g], table[t.b]);
     }
   return off;
 }

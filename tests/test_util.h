@@ -102,6 +102,17 @@ glm::vec4 VertexColorQuadColorAt(float x, float y);  // linear in x and y
 // lies within the colour's range over the pixel's footprint (plus float rounding).
 int PixelsOffVertexColorQuad(const Image& image, const shader::FrameParams& params, glm::vec3 baseColor);
 
+// The square [−1, 1]² at z = 0, unlit (KHR_materials_unlit: every camera ray returns its
+// base colour), textured by a 4 × 4 texture of 16 different sRGB colours (TexturedQuadTexel)
+// with NEAREST filters and CLAMP_TO_EDGE: texel (0, 0) at the top left (−1, 1). Seen by
+// an orthographic camera framing it exactly.
+Scene TexturedQuadScene();
+glm::u8vec4 TexturedQuadTexel(int x, int y);
+// Pixels of a render of TexturedQuadScene (width and height multiples of 4, background 0)
+// other than the decoded texel under them, bit for bit: a pixel's footprint lies inside one
+// texel, so each of its samples returns that texel's value.
+int PixelsOffTexturedQuad(const Image& image);
+
 // How many pixels of `image` are within `tolerance` (relative) of `expected` in every channel.
 int PixelsNear(const Image& image, glm::vec3 expected, float tolerance);
 

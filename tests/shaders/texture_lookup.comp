@@ -1,0 +1,31 @@
+#version 460
+// Test kernel: one texture lookup (shared/texture.h's SampleTexture) per invocation, with
+// the texture buffers of a RenderScene, so that tests can compare every result bit for
+// bit with the C++ build of the same header (tests/test_texture_gpu.cpp).
+#extension GL_GOOGLE_include_directive : require
+#include "shared/layout.h"
+
+layout(local_size_x = 64) in;
+
+#define VKPT_SCENE_PARAM
+#define VKPT_SCENE_ARG
+#define VKPT_TEXTURE(i) FetchTexture(i)
+#define VKPT_TEXEL_WORD(i) FetchTexelWord(i)
+#define VKPT_TEXEL_DECODE(i) FetchTexelDecode(i)
+#include "scene_fetch.glsl"
+#include "shared/texture.h"
+
+struct TextureLookup {
+  vec2 uv;
+  float lod;
+  uint texture;
+};
+layout(std430, binding = 20) readonly buffer In { TextureLookup lookups[]; };
+layout(std430, binding = 21) writeonly buffer Out { vec4 results[]; };
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= uint(lookups.length())) return;
+  TextureLookup l = lookups[i];
+  results[i] = SampleTexture(FetchTexture(l.texture), l.uv, l.lod);
+}

@@ -1,0 +1,206 @@
+// Textures from glTF to the render: textureInfo → TextureRef (texture, TEXCOORD set,
+// KHR_texture_transform), samplers → mode bits, one decoded image per glTF image,
+// TEXCOORD_0/1 per triangle, the errors bad images get, and a textured quad rendered
+// texel for texel. (The GPU twin of the render test is in test_gpu.cpp.)
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cpu/path_tracer.h"
+#include "gltf_builder.h"
+#include "png_writer.h"
+#include "render/render_scene.h"
+#include "scene/gltf_loader.h"
+#include "util/error.h"
+
+namespace vkpt {
+namespace {
+
+using namespace test;
+
+// A 2 × 2 RGBA PNG: red, green / blue, white with alpha 128.
+std::vector<unsigned char> SmallPng() {
+  return MakePng(2, 2, 8, 6, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 128});
+}
+
+std::string AsString(const std::vector<unsigned char>& bytes) { return std::string(bytes.begin(), bytes.end()); }
+
+// The unit triangle with TEXCOORD_0 = (0,0), (1,0), (0,1) and TEXCOORD_1 = (0.5,0.5),
+// (0.25,0.75), (1,2), material 0 = `material`, and images[0] = `image` in a bufferView
+// (`mimeType` "image/png"), used by textures[0] with samplers[0] = `sampler` (if any).
+GltfBuilder TexturedTriangle(const std::string& material, const std::vector<unsigned char>& image = SmallPng(),
+                             const std::string& sampler = "") {
+  GltfBuilder b;
+  const int positions = b.Positions(kUnitTriangle);
+  const int uv0 = b.Accessor(b.View(Bytes(std::vector<float>{0, 0, 1, 0, 0, 1})), kFloat, 3, "VEC2");
+  const int uv1 = b.Accessor(b.View(Bytes(std::vector<float>{0.5f, 0.5f, 0.25f, 0.75f, 1, 2})), kFloat, 3, "VEC2");
+  b.meshes.push_back(R"({"primitives":[{"attributes":{"POSITION":)" + std::to_string(positions) + R"(,"TEXCOORD_0":)" +
+                     std::to_string(uv0) + R"(,"TEXCOORD_1":)" + std::to_string(uv1) + R"(},"material":0}]})");
+  b.materials.push_back(material);
+  b.images.push_back(R"({"bufferView":)" + std::to_string(b.View(AsString(image))) + R"(,"mimeType":"image/png"})");
+  b.textures.push_back(sampler.empty() ? R"({"source":0})" : R"({"source":0,"sampler":0})");
+  if (!sampler.empty()) b.extraTopLevel += R"(,"samplers":[)" + sampler + "]";
+  b.Node(R"({"mesh":0})");
+  return b;
+}
+
+const shader::TextureRef& Ref(const Scene& s, uint32_t material, uint32_t slot) {
+  return s.textureRefs.at(material * shader::kTextureSlots + slot);
+}
+
+TEST(MaterialTextures, BaseColorTextureWithItsSamplerAndCoordinates) {
+  Scene s = Load(TexturedTriangle(R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0,"texCoord":1}}})",
+                                  SmallPng(), R"({"magFilter":9728,"minFilter":9985,"wrapS":33071,"wrapT":33648})"));
+  ASSERT_EQ(s.textures.size(), 1u);
+  ASSERT_EQ(s.images.size(), 1u);
+  using namespace shader;
+  EXPECT_EQ(s.textures[0].sampler, kTextureSrgb | kWrapClampToEdge << kTextureWrapSShift |
+                                       kWrapMirroredRepeat << kTextureWrapTShift | kTextureMinLinear |
+                                       kTextureMipNearest);
+  EXPECT_EQ(s.images[0].width, 2u);
+  EXPECT_EQ(s.images[0].rgba,
+            (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 128}));
+  EXPECT_NE(s.materials[0].flags & kMaterialTextured, 0u);
+  EXPECT_EQ(s.materials.back().flags & kMaterialTextured, 0u);  // glTF's default material
+  const TextureRef& r = Ref(s, 0, kSlotBaseColor);
+  EXPECT_EQ(r.texture, 0u);
+  EXPECT_EQ(r.texCoord, 1u);
+  EXPECT_EQ(glm::vec3(r.m00, r.m01, r.m02), glm::vec3(1, 0, 0));
+  EXPECT_EQ(glm::vec3(r.m10, r.m11, r.m12), glm::vec3(0, 1, 0));
+  EXPECT_EQ(Ref(s, 0, kSlotMetallicRoughness).texture, kInvalidIndex);
+  EXPECT_EQ(Ref(s, 0, kSlotEmissive).texture, kInvalidIndex);
+  ASSERT_EQ(s.uvs.size(), 1u);
+  EXPECT_EQ(s.uvs[0].set0[1], glm::vec2(1, 0));
+  EXPECT_EQ(s.uvs[0].set1[2], glm::vec2(1, 2));
+}
+
+// Without a sampler glTF leaves filtering to the renderer: repeat, trilinear.
+TEST(MaterialTextures, NoSamplerMeansRepeatAndTrilinear) {
+  Scene s = Load(TexturedTriangle(R"({"emissiveTexture":{"index":0}})"));
+  ASSERT_EQ(s.textures.size(), 1u);
+  using namespace shader;
+  EXPECT_EQ(s.textures[0].sampler, kTextureSrgb | kTextureMagLinear | kTextureMinLinear | kTextureMipLinear);
+  EXPECT_EQ(Ref(s, 0, kSlotEmissive).texture, 0u);
+}
+
+// Colour (sRGB) and data (linear) uses of one texture are two textures of one image.
+TEST(MaterialTextures, ColourAndDataUsesOfOneImage) {
+  Scene s = Load(TexturedTriangle(
+      R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0},"metallicRoughnessTexture":{"index":0}}})"));
+  ASSERT_EQ(s.textures.size(), 2u);
+  EXPECT_EQ(s.images.size(), 1u);
+  EXPECT_NE(s.textures[Ref(s, 0, shader::kSlotBaseColor).texture].sampler & shader::kTextureSrgb, 0u);
+  EXPECT_EQ(s.textures[Ref(s, 0, shader::kSlotMetallicRoughness).texture].sampler & shader::kTextureSrgb, 0u);
+  EXPECT_EQ(s.textures[0].image, s.textures[1].image);
+}
+
+// T · R · S with offset (0.5, 0.25), rotation π/2 and scale (2, 3): u' = 3v + 0.5,
+// v' = −2u + 0.25; its texCoord overrides the textureInfo's.
+TEST(MaterialTextures, TextureTransformIsTheExtensionsMatrix) {
+  Scene s = Load(TexturedTriangle(
+      R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0,"texCoord":0,"extensions":{"KHR_texture_transform":)"
+      R"({"offset":[0.5,0.25],"rotation":1.5707963267948966,"scale":[2,3],"texCoord":1}}}}})"));
+  const shader::TextureRef& r = Ref(s, 0, shader::kSlotBaseColor);
+  EXPECT_EQ(r.texCoord, 1u);
+  EXPECT_NEAR(r.m00, 0.0f, 1e-6f);
+  EXPECT_FLOAT_EQ(r.m01, 3.0f);
+  EXPECT_FLOAT_EQ(r.m02, 0.5f);
+  EXPECT_FLOAT_EQ(r.m10, -2.0f);
+  EXPECT_NEAR(r.m11, 0.0f, 1e-6f);
+  EXPECT_FLOAT_EQ(r.m12, 0.25f);
+  EXPECT_TRUE(s.ignoredFeatures.empty()) << ::testing::PrintToString(s.ignoredFeatures);
+}
+
+TEST(MaterialTextures, UnusableReferencesWarnAndKeepTheFactor) {
+  Scene s = Load(TexturedTriangle(R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0,"texCoord":2}}})"));
+  EXPECT_TRUE(s.textures.empty());
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("TEXCOORD_2"), std::string::npos) << s.warnings[0];
+  // A texture whose only image is in an extension vkpt cannot decode (WebP).
+  GltfBuilder webp = TexturedTriangle(R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})");
+  webp.textures[0] = R"({"extensions":{"EXT_texture_webp":{"source":0}}})";
+  webp.extensionsUsed.push_back("EXT_texture_webp");
+  Scene w = Load(webp);
+  EXPECT_TRUE(w.textures.empty());
+  ASSERT_EQ(w.warnings.size(), 1u);
+  EXPECT_NE(w.warnings[0].find("no PNG or JPEG source"), std::string::npos) << w.warnings[0];
+}
+
+TEST(MaterialTextures, BadImagesNameTheImageAndTheMaterial) {
+  const std::string material = R"({"name":"Floor","pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})";
+  const std::vector<std::string> where = {"images[0]", "materials[0] \"Floor\"", "baseColorTexture"};
+  std::vector<unsigned char> cut = SmallPng();
+  cut.resize(cut.size() - 20);
+  EXPECT_TRUE(FailsWith(TexturedTriangle(material, cut), {where[0], where[1], where[2], "truncated"}));
+  EXPECT_TRUE(
+      FailsWith(TexturedTriangle(material, MakePng(60000, 60000, 8, 6, {})), {where[0], where[1], "60000", "16384"}));
+  const std::string webp = "RIFF\x10\0\0\0WEBPVP8 ";
+  EXPECT_TRUE(FailsWith(TexturedTriangle(material, std::vector<unsigned char>(webp.begin(), webp.end())),
+                        {where[0], where[1], "neither PNG nor JPEG"}));
+  EXPECT_TRUE(FailsWith(TexturedTriangle(material, SmallPng(), R"({"wrapS":1234})"), {"samplers[0].wrapS", "1234"}));
+}
+
+// Texels are counted from the headers against --max-texels, memory against
+// --max-memory, before anything is decoded.
+TEST(MaterialTextures, TexelAndMemoryBudgetsAreCheckedFromTheHeader) {
+  const std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})";
+  TempFile small(TexturedTriangle(material).Json());
+  LoadLimits limits;
+  limits.maxTextureTexels = 4;
+  EXPECT_EQ(LoadGltf(small.path, limits).images.size(), 1u);
+  limits.maxTextureTexels = 3;
+  try {
+    LoadGltf(small.path, limits);
+    ADD_FAILURE() << "4 texels loaded with --max-texels 3";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("--max-texels 3"), std::string::npos) << e.what();
+  }
+  // 16384² texels declared by a 100-byte PNG: refused by the memory budget, not decoded.
+  TempFile big(TexturedTriangle(material, MakePng(16384, 16384, 8, 6, {})).Json());
+  limits = LoadLimits{};
+  limits.maxMemory = uint64_t(1) << 30;
+  try {
+    LoadGltf(big.path, limits);
+    ADD_FAILURE() << "a 16384² texture loaded within 1 GiB";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("16384 × 16384 texels"), std::string::npos) << e.what();
+  }
+}
+
+TEST(MaterialTextures, TexCoordsMustBeFiniteVec2) {
+  GltfBuilder b = TexturedTriangle(R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})");
+  const int bad = b.Accessor(b.View(Bytes(std::vector<float>{0, 0, NAN, 0, 0, 1})), kFloat, 3, "VEC2");
+  b.meshes[0] =
+      R"({"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":)" + std::to_string(bad) + R"(},"material":0}]})";
+  EXPECT_TRUE(FailsWith(b, {"TEXCOORD_0", "element 1", "not a finite texture coordinate"}));
+  b.meshes[0] = R"({"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":0},"material":0}]})";  // VEC3
+  EXPECT_TRUE(FailsWith(b, {"TEXCOORD_0", "must be a VEC2 accessor"}));
+}
+
+// Untextured scenes keep no texture coordinates (nor pay for them).
+TEST(MaterialTextures, UntexturedScenesHaveNoCoordinates) {
+  GltfBuilder b = TexturedTriangle(R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1]}})");
+  Scene s = Load(b);
+  EXPECT_TRUE(s.uvs.empty());
+  EXPECT_TRUE(s.textureRefs.empty());
+  EXPECT_TRUE(s.images.empty());
+}
+
+// Bit for bit, every pixel its texel (the footprint of each lies inside one texel).
+// A mutant reading v upwards (1 − v) put 4096 of 4096 pixels off (checked).
+TEST(MaterialTextures, TexturedQuadShowsItsTexels) {
+  Scene s = TexturedQuadScene();
+  RenderScene rs = PrepareRenderScene(s);
+  shader::FrameParams p = MakeFrameParams(rs, s.cameras[0], 64, 64);
+  p.seed = 3;
+  p.sampleCount = 2;
+  p.maxDepth = 4;
+  p.rrDepth = 4;
+  EXPECT_EQ(PixelsOffTexturedQuad(RenderCpu(rs, p).image), 0);
+}
+
+}  // namespace
+}  // namespace vkpt
