@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 // Only the PNG and JPEG decoders, with internal linkage: Debian's tinygltf links its own
@@ -57,15 +58,20 @@ std::string ChunkName(std::span<const unsigned char> b, size_t at) {
   return name;
 }
 
-// Walks a PNG's chunks from the signature to IEND, so that a file cut anywhere, even in
-// the CRC of IEND (which stb never reads), is refused before decoding. Returns whether a
-// tRNS chunk precedes the image data (a palette image then has alpha).
+// Walks a PNG's chunks from the signature to IEND, so that a file cut anywhere is refused
+// before decoding, with a message that says where. Returns whether a tRNS chunk precedes
+// the image data (a palette image then has alpha).
 bool WalkPngChunks(std::span<const unsigned char> b) {
   bool trns = false, data = false;
   for (size_t at = sizeof(kPngSignature);;) {
     if (b.size() - at < 12) Truncated("PNG: it ends at byte " + std::to_string(b.size()) + ", before its IEND chunk");
     const uint32_t length = Be32(b, at);
     const std::string name = ChunkName(b, at + 4);
+    if (name == "?") Corrupt("PNG: the chunk at byte " + std::to_string(at) + " has a type that is not four letters");
+    // stb reports an unknown critical chunk (an upper-case first letter) by writing its name
+    // into one static buffer that all threads share: refusing them here keeps decodes off it.
+    if (name[0] <= 'Z' && name != "IHDR" && name != "PLTE" && name != "IDAT" && name != "IEND")
+      Corrupt("PNG: unknown critical chunk " + name + " at byte " + std::to_string(at));
     if (length > 0x7fffffffu)
       Corrupt("PNG: the " + name + " chunk at byte " + std::to_string(at) + " declares " + std::to_string(length) +
               " bytes");
@@ -98,45 +104,79 @@ TextureImageHeader ReadPngHeader(std::span<const unsigned char> b) {
   return header;
 }
 
-// The frame header (SOFn) is the first segment that says how large the image is; the
-// segments before it (APPn, DQT, DHT, comments) are skipped by their lengths.
+// stb_image 2.27 (Debian 12's) does not bound the code count of a Huffman table: above
+// 256 it writes past its tables, inside the decoder's state (UBSan found it). Every DHT
+// segment is checked here before stb sees it.
+void CheckHuffmanTables(std::span<const unsigned char> b, size_t at, size_t end) {
+  while (at < end) {
+    const std::string table = "JPEG: the Huffman table at byte " + std::to_string(at);
+    if (end - at < 17) Corrupt(table + " is cut short");
+    if (b[at] >> 4 > 1 || (b[at] & 15) > 3) Corrupt(table + " has an invalid class or number");
+    size_t codes = 0;
+    for (size_t i = 1; i <= 16; ++i) codes += b[at + i];
+    if (codes > 256) Corrupt(table + " declares " + std::to_string(codes) + " codes; at most 256 exist");
+    if (end - at - 17 < codes) Corrupt(table + " is cut short");
+    at += 17 + codes;
+  }
+}
+
+// Where the entropy-coded data that begins at `at` ends: at the 0xFF of the next marker
+// (in the data a 0xFF byte is followed by 0, and restart markers belong to the data).
+size_t SkipScanData(std::span<const unsigned char> b, size_t at) {
+  for (; at + 1 < b.size(); ++at)
+    if (b[at] == 0xff && b[at + 1] != 0 && !(b[at + 1] >= 0xd0 && b[at + 1] <= 0xd7)) return at;
+  Truncated("JPEG: it ends inside its image data");
+}
+
+// The frame header (SOFn) segment whose length field is at `at`.
+TextureImageHeader ReadJpegFrame(std::span<const unsigned char> b, unsigned marker, size_t at, size_t length) {
+  char sof[8];
+  std::snprintf(sof, sizeof sof, "FF %02X", marker);
+  // stb decodes baseline, extended sequential and progressive Huffman JPEGs, 8-bit only.
+  if (marker > 0xc2)
+    throw Error("is a JPEG coded in a way stb_image cannot decode (frame marker " + std::string(sof) +
+                ": lossless, hierarchical or arithmetic); only baseline and progressive JPEGs are supported");
+  if (length < 8) Corrupt("JPEG: its frame header is " + std::to_string(length) + " bytes long");
+  if (b[at + 2] != 8)
+    throw Error("is a JPEG with " + std::to_string(b[at + 2]) + "-bit samples; only 8-bit JPEGs are supported");
+  TextureImageHeader header{Be16(b, at + 5), Be16(b, at + 3), 0, false, "JPEG"};
+  if (header.height == 0) throw Error("is a JPEG that gives its height only after the image data (DNL)");
+  CheckSize(header.width, header.height);
+  const unsigned components = b[at + 7];
+  if (components != 1 && components != 3 && components != 4)
+    throw Error("is a JPEG with " + std::to_string(components) + " colour components; 1, 3 or 4 are supported");
+  header.channels = components == 1 ? 1 : 3;  // stb converts CMYK (4) to RGB
+  return header;
+}
+
+// Walks a JPEG's segments and scans from SOI to EOI: one frame header, before any scan;
+// Huffman tables stb can hold; nothing cut short.
 TextureImageHeader ReadJpegHeader(std::span<const unsigned char> b) {
+  std::optional<TextureImageHeader> header;
   for (size_t at = 2;;) {
-    if (at >= b.size()) Truncated("JPEG: it ends at byte " + std::to_string(b.size()) + ", before its frame header");
+    if (at >= b.size()) Truncated("JPEG: it ends at byte " + std::to_string(b.size()) + ", before its end marker");
     if (b[at] != 0xff) Corrupt("JPEG: no marker at byte " + std::to_string(at));
     while (at < b.size() && b[at] == 0xff) ++at;  // fill bytes may precede a marker
     if (at >= b.size()) Truncated("JPEG: it ends inside a marker");
     const unsigned marker = b[at++];
+    if (marker == 0xd9) {
+      if (!header) Corrupt("JPEG: it has no frame header");
+      return *header;
+    }
     if (marker == 0xd8 || marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) continue;  // no length
-    if (marker == 0xd9 || marker == 0xda) Corrupt("JPEG: its image data comes before a frame header");
     if (b.size() - at < 2) Truncated("JPEG: it ends inside a marker");
     const size_t length = Be16(b, at);
     if (length < 2) Corrupt("JPEG: a segment at byte " + std::to_string(at - 2) + " declares a length below 2");
     if (b.size() - at < length)
       Truncated("JPEG: the segment at byte " + std::to_string(at - 2) + " needs " + std::to_string(length) +
                 " bytes, " + std::to_string(b.size() - at) + " remain");
-    const bool frame = marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc;
-    if (!frame) {
-      at += length;
-      continue;
+    if (marker == 0xc4) CheckHuffmanTables(b, at + 2, at + length);
+    if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc) {
+      if (header) Corrupt("JPEG: a second frame header at byte " + std::to_string(at - 2));
+      header = ReadJpegFrame(b, marker, at, length);
     }
-    char sof[8];
-    std::snprintf(sof, sizeof sof, "FF %02X", marker);
-    // stb decodes baseline, extended sequential and progressive Huffman JPEGs, 8-bit only.
-    if (marker > 0xc2)
-      throw Error("is a JPEG coded in a way stb_image cannot decode (frame marker " + std::string(sof) +
-                  ": lossless, hierarchical or arithmetic); only baseline and progressive JPEGs are supported");
-    if (length < 8) Corrupt("JPEG: its frame header is " + std::to_string(length) + " bytes long");
-    if (b[at + 2] != 8)
-      throw Error("is a JPEG with " + std::to_string(b[at + 2]) + "-bit samples; only 8-bit JPEGs are supported");
-    TextureImageHeader header{Be16(b, at + 5), Be16(b, at + 3), 0, false, "JPEG"};
-    if (header.height == 0) throw Error("is a JPEG that gives its height only after the image data (DNL)");
-    CheckSize(header.width, header.height);
-    const unsigned components = b[at + 7];
-    if (components != 1 && components != 3 && components != 4)
-      throw Error("is a JPEG with " + std::to_string(components) + " colour components; 1, 3 or 4 are supported");
-    header.channels = components == 1 ? 1 : 3;  // stb converts CMYK (4) to RGB
-    return header;
+    if (marker == 0xda && !header) Corrupt("JPEG: its image data comes before a frame header");
+    at = marker == 0xda ? SkipScanData(b, at + length) : at + length;
   }
 }
 
@@ -176,12 +216,15 @@ TextureImageHeader ReadTextureImageHeader(std::span<const unsigned char> bytes, 
 
 Rgba8Image DecodeTextureImage(std::span<const unsigned char> bytes, const TextureImageHeader& header) {
   if (bytes.empty()) throw Error("is empty (0 bytes)");
-  // The signature and the chunk walk again: a header read from other bytes must not let a
-  // cut PNG through.
-  if (header.format == "PNG" ? !IsPng(bytes) : header.format == "JPEG" ? !IsJpeg(bytes) : true)
-    throw Error("does not begin with the signature of its format \"" + header.format + "\" (PNG or JPEG)");
   CheckSize(header.width, header.height);
-  if (header.format == "PNG") WalkPngChunks(bytes);
+  // The structure walk again (it costs little): a header read from other bytes must not
+  // let a cut or malformed file through to stb.
+  const TextureImageHeader actual = ReadTextureImageHeader(bytes, "");
+  if (actual.format != header.format || actual.width != header.width || actual.height != header.height ||
+      actual.sixteenBit != header.sixteenBit)
+    throw Error("is a " + std::to_string(actual.width) + " × " + std::to_string(actual.height) + " " + actual.format +
+                ", not the " + std::to_string(header.width) + " × " + std::to_string(header.height) + " " +
+                header.format + " its header said");
   // Zeros past the end: they end stb's JPEG marker search, where 0xFF would not.
   StbSource source{bytes, '\0'};
   Rgba8Image image{header.width, header.height, {}};

@@ -38,11 +38,14 @@ struct Rgba8Image {
 
 // Identifies the format by its signature (not by mimeType, which is used only in the
 // message when the bytes are neither PNG nor JPEG), reads the header, checks
-// 1 <= width, height <= kMaxTextureSide. For a PNG it also walks the chunk list, so an
-// image cut short is refused here already. Throws vkpt::Error on any problem.
+// 1 <= width, height <= kMaxTextureSide. It also walks the whole file's structure (PNG
+// chunks, JPEG segments and scans), so an image cut short, or one with parts that would
+// trip stb (a JPEG Huffman table of more than 256 codes, an unknown critical PNG chunk),
+// is refused here already. Throws vkpt::Error on any problem.
 TextureImageHeader ReadTextureImageHeader(std::span<const unsigned char> bytes, std::string_view mimeType);
 
-// Decodes an image whose header ReadTextureImageHeader accepted. Grey → (g,g,g,255),
+// Decodes an image whose header ReadTextureImageHeader accepted (it walks the file again,
+// so bytes that do not match `header` are refused too). Grey → (g,g,g,255),
 // grey+alpha → (g,g,g,a), RGB → (r,g,b,255); a PNG's tRNS colour key becomes alpha.
 // 16-bit channels become 8-bit by round(v·255/65535), exactly: (v*255 + 32767) / 65535.
 // Throws vkpt::Error for a truncated or corrupt image. Besides the result, stb needs
