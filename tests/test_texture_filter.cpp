@@ -12,6 +12,7 @@
 #include "cpu/cpu_path.h"
 #include "render/render_scene.h"
 #include "render/texture_store.h"
+#include "test_util.h"
 
 namespace vkpt {
 namespace {
@@ -24,12 +25,7 @@ RenderScene OneTexture(uint32_t w, uint32_t h, const std::vector<uint8_t>& bytes
   Scene s;
   s.images.push_back({"test", w, h, bytes});
   s.textures.push_back({0, mode});
-  TextureStore store = BuildTextureStore(s, 1);
-  RenderScene rs;
-  rs.textures = store.textures;
-  rs.texels = store.words;
-  rs.texelDecode = TexelDecodeTable();
-  return rs;
+  return test::TexturesOnly(s);
 }
 
 // A w × h texture whose texel (x, y) has R = x·step, G = y·step, B = 0, A = 255.
@@ -141,13 +137,17 @@ TEST(TextureFilter, MipSelectionFollowsTheMinificationFilter) {
 }
 
 // Each level's mean (in linear space) equals level 0's, up to the rounding of each level
-// to bytes, for sizes that halve evenly and sizes that do not.
+// to bytes, for sizes that halve evenly and sizes that do not. A filter averaging texels
+// 2i and 2i + 1 (dropping an odd size's last column) fails 10 of the checks (checked).
 TEST(TextureFilter, MipChainsConserveTheMean) {
   std::mt19937 rng(7);
   for (bool srgb : {false, true})
     for (glm::uvec2 size : {glm::uvec2(64, 32), glm::uvec2(37, 23), glm::uvec2(5, 1)}) {
-      TextureImage im{"random", size.x, size.y, std::vector<uint8_t>(size_t(4) * size.x * size.y)};
-      for (uint8_t& b : im.rgba) b = uint8_t(rng() & 0xFF);
+      // Red ramps up from left to right (a filter that drops an odd size's last column
+      // or row shifts its mean), the other channels are random.
+      TextureImage im{"ramp", size.x, size.y, std::vector<uint8_t>(size_t(4) * size.x * size.y)};
+      for (size_t i = 0; i < im.rgba.size(); ++i)
+        im.rgba[i] = i % 4 == 0 ? uint8_t(255 * (i / 4 % size.x) / std::max(size.x - 1, 1u)) : uint8_t(rng() & 0xFF);
       const std::vector<std::vector<uint32_t>> chain = MipChain(im, srgb);
       ASSERT_EQ(chain.size(), 1 + uint32_t(std::log2(std::max(size.x, size.y))));
       EXPECT_EQ(chain.back().size(), 1u);

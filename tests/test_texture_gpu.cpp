@@ -14,6 +14,7 @@
 #include "render/scene_access.h"
 #include "render/texture_store.h"
 #include "shared/texture.h"
+#include "test_util.h"
 #include "vk/buffer.h"
 #include "vk/compute_pipeline.h"
 
@@ -55,12 +56,7 @@ RenderScene AllKindsOfTextures(std::mt19937& rng) {
           const uint32_t image = uint32_t(rng() % s.images.size());
           s.textures.push_back({image, wrapS << kTextureWrapSShift | wrapT << kTextureWrapTShift | mag | min | srgb});
         }
-  TextureStore store = BuildTextureStore(s, 0);
-  RenderScene rs;
-  rs.textures = store.textures;
-  rs.texels = store.words;
-  rs.texelDecode = TexelDecodeTable();
-  return rs;
+  return test::TexturesOnly(s);
 }
 
 // Random coordinates over several periods, with the cases where rounding decides:

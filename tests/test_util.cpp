@@ -378,6 +378,25 @@ int PixelsOffTexturedQuad(const Image& image) {
   return off;
 }
 
+shader::FrameParams TestFrame(const RenderScene& rs, const Scene& s, uint32_t size, uint32_t spp, uint32_t seed,
+                              uint32_t depth) {
+  shader::FrameParams p = MakeFrameParams(rs, s.cameras[0], size, size);
+  p.seed = seed;
+  p.sampleCount = spp;
+  p.maxDepth = depth;
+  p.rrDepth = depth;
+  return p;
+}
+
+RenderScene TexturesOnly(const Scene& s) {
+  TextureStore store = BuildTextureStore(s, 0);
+  RenderScene rs;
+  rs.textures = std::move(store.textures);
+  rs.texels = std::move(store.words);
+  rs.texelDecode = TexelDecodeTable();
+  return rs;
+}
+
 int PixelsNear(const Image& image, glm::vec3 expected, float tolerance) {
   int n = 0;
   for (const glm::vec3& px : image.pixels)

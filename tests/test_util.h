@@ -113,6 +113,15 @@ glm::u8vec4 TexturedQuadTexel(int x, int y);
 // texel, so each of its samples returns that texel's value.
 int PixelsOffTexturedQuad(const Image& image);
 
+// A render of the scene's first camera at size × size: `spp` samples from seed `seed`,
+// paths of at most `depth` bounces with no Russian roulette, background 0.
+shader::FrameParams TestFrame(const RenderScene& rs, const Scene& s, uint32_t size, uint32_t spp, uint32_t seed,
+                              uint32_t depth);
+
+// A RenderScene with the textures of `s` (TextureStore) and nothing else: what
+// shared/texture.h's lookups read.
+RenderScene TexturesOnly(const Scene& s);
+
 // How many pixels of `image` are within `tolerance` (relative) of `expected` in every channel.
 int PixelsNear(const Image& image, glm::vec3 expected, float tolerance);
 

@@ -141,11 +141,7 @@ TEST(VertexColors, MultiplyTheBaseColorInARender) {
   const glm::vec3 base(0.8f, 0.6f, 1.0f);
   Scene s = VertexColorQuadScene(base);
   RenderScene rs = PrepareRenderScene(s);
-  shader::FrameParams p = MakeFrameParams(rs, s.cameras[0], 64, 64);
-  p.seed = 3;
-  p.sampleCount = 4;
-  p.maxDepth = 4;
-  p.rrDepth = 4;
+  shader::FrameParams p = TestFrame(rs, s, 64, 4, 3, 4);
   p.background = glm::vec3(2.0f, 1.0f, 0.5f);
   RenderResult r = RenderCpu(rs, p);
   const int off = PixelsOffVertexColorQuad(r.image, p, base);
