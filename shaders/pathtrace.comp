@@ -59,6 +59,9 @@ layout(constant_id = 5) const uint kSceneHasVolumes = 1u;
 // 0 when no material has a texture: see shared/material_textures.h.
 layout(constant_id = 6) const uint kSceneHasTextures = 1u;
 #define VKPT_TEXTURES (kSceneHasTextures != 0u)
+// 0 when no material has a normal texture: see shared/shading_frame.h.
+layout(constant_id = 7) const uint kSceneHasNormalMaps = 1u;
+#define VKPT_NORMAL_MAPS (kSceneHasNormalMaps != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -74,6 +77,7 @@ layout(constant_id = 6) const uint kSceneHasTextures = 1u;
 #define VKPT_TEXEL_DECODE(i) FetchTexelDecode(i)
 #define VKPT_TEXTURE_REF(i) FetchTextureRef(i)
 #define VKPT_UVS_OF(i) FetchUVs(i)
+#define VKPT_TANGENTS_OF(i) FetchTangents(i)
 #define VKPT_ENV_TEXEL(i) FetchEnvTexel(i)
 #define VKPT_ENV_CDF(i) FetchEnvCdf(i)
 

@@ -22,6 +22,7 @@ layout(binding = kBindingGgxAlbedo) uniform usamplerBuffer ggxAlbedoTexels;
 layout(binding = kBindingShading) uniform usamplerBuffer shadingTexels;
 layout(binding = kBindingVertexColors) uniform usamplerBuffer colorTexels;
 layout(binding = kBindingVertexUVs) uniform usamplerBuffer uvTexels;
+layout(binding = kBindingTangents) uniform usamplerBuffer tangentTexels;
 layout(binding = kBindingMaterialTextures) uniform usamplerBuffer textureRefTexels;
 layout(binding = kBindingTextures) uniform usamplerBuffer textureTexels;
 layout(binding = kBindingTexels) uniform usamplerBuffer texelWords;
@@ -71,7 +72,7 @@ Material FetchMaterial(uint m) {
   mat.ior = uintBitsToFloat(d.w);
   mat.transmission = uintBitsToFloat(e.x);
   mat.flags = e.y;
-  mat.pad0 = e.z;
+  mat.normalScale = uintBitsToFloat(e.z);
   mat.pad1 = e.w;
   return mat;
 }
@@ -143,6 +144,17 @@ TriangleUVs FetchUVs(uint i) {
   t.uv10 = uintBitsToFloat(b.zw);
   t.uv11 = uintBitsToFloat(c.xy);
   t.uv12 = uintBitsToFloat(c.zw);
+  return t;
+}
+
+// i: a Triangle's sourceIndex.
+TriangleTangents FetchTangents(uint i) {
+  uvec4 a = texelFetch(tangentTexels, int(kTexelsPerTangents * i));
+  TriangleTangents t;
+  t.t0 = a.x;
+  t.t1 = a.y;
+  t.t2 = a.z;
+  t.signs = a.w;
   return t;
 }
 

@@ -34,6 +34,8 @@
 #define VKPT_VOLUMES false
 #undef VKPT_TEXTURES
 #define VKPT_TEXTURES false
+#undef VKPT_NORMAL_MAPS
+#define VKPT_NORMAL_MAPS false
 #undef VKPT_BEGIN_NAMESPACE
 #undef VKPT_END_NAMESPACE
 #define VKPT_BEGIN_NAMESPACE namespace vkpt::shader::simple {

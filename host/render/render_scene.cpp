@@ -129,6 +129,21 @@ void AddTextures(const Scene& scene, unsigned threads, RenderScene& rs) {
   for (const VertexUVs& u : scene.uvs)
     rs.uvs.push_back({u.set0[0], u.set0[1], u.set0[2], u.set1[0], u.set1[1], u.set1[2]});
   rs.textureRefs = scene.textureRefs;
+  if (!scene.tangents.empty() && scene.tangents.size() != scene.triangles.size())
+    throw Error(scene.path + ": " + std::to_string(scene.tangents.size()) + " tangent triples for " +
+                std::to_string(scene.triangles.size()) + " triangles");
+  rs.tangents.reserve(scene.tangents.size());
+  for (const VertexTangents& t : scene.tangents) {
+    shader::TriangleTangents packed{0, 0, 0, 0};
+    uint32_t* codes[3] = {&packed.t0, &packed.t1, &packed.t2};
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 v(t.t[k]);
+      if (glm::dot(v, v) > 0.0f) *codes[k] = EncodeOctahedral(glm::normalize(v));
+      else packed.signs |= shader::kTangentsMissing;  // the normal map is not applied here
+      if (t.t[k].w < 0.0f) packed.signs |= 1u << k;
+    }
+    rs.tangents.push_back(packed);
+  }
   TextureStore store = BuildTextureStore(scene, threads);
   rs.textures = std::move(store.textures);
   rs.texels = std::move(store.words);

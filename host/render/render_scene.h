@@ -29,8 +29,9 @@ struct RenderScene {
   // Indexed like `shading`; empty when no triangle has vertex colours.
   std::vector<shader::TriangleColors> vertexColors;
   // Textures (shared/texture.h, material_textures.h); all empty when no material has one.
-  std::vector<shader::TriangleUVs> uvs;         // indexed like `shading`
-  std::vector<shader::TextureRef> textureRefs;  // kTextureSlots per material
+  std::vector<shader::TriangleTangents> tangents;  // indexed like `shading`; empty without normal maps
+  std::vector<shader::TriangleUVs> uvs;            // indexed like `shading`
+  std::vector<shader::TextureRef> textureRefs;     // kTextureSlots per material
   std::vector<shader::Texture> textures;
   std::vector<uint32_t> texels;    // TextureStore::words
   std::vector<float> texelDecode;  // TexelDecodeTable()

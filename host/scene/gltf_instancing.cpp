@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/gltf_lights.h"
+#include "scene/gltf_textures.h"
 
 namespace vkpt {
 namespace {
@@ -16,7 +17,7 @@ class Instancer {
  public:
   Instancer(const GltfSource& src, const std::vector<int>& parents,
             const std::vector<std::vector<DecodedPrimitive>>& meshes, Scene& scene)
-      : src_(src), parents_(parents), meshes_(meshes), scene_(scene) {}
+      : src_(src), parents_(parents), meshes_(meshes), scene_(scene), withTangents_(UsesNormalMaps(scene)) {}
 
   void Run() {
     for (size_t s = 0; s < src_.m.scenes.size(); ++s)
@@ -127,6 +128,15 @@ class Instancer {
         }
         std::vector<glm::vec3> nw(prim.normals.size());
         for (size_t v = 0; v < nw.size(); ++v) nw[v] = WorldNormal(normalMatrix, prim.normals[v]);
+        // Tangents lie in the surface: they transform as directions, and a mirroring
+        // transform flips the bitangent (w).
+        std::vector<glm::vec4> tw(prim.tangents.size());
+        for (size_t v = 0; v < tw.size(); ++v) {
+          const glm::dvec3 t = glm::dmat3(world) * glm::dvec3(prim.tangents[v]);
+          const double len = glm::length(t);
+          if (len > 0.0 && std::isfinite(len))
+            tw[v] = glm::vec4(glm::vec3(t / len), prim.tangents[v].w * (mirrored ? -1.0f : 1.0f));
+        }
         for (size_t k = 0; k < prim.indices.size(); k += 3) {
           const uint32_t i0 = prim.indices[k], i1 = prim.indices[k + 1], i2 = prim.indices[k + 2];
           SceneTriangle t{p[i0], p[i1], p[i2], prim.material};
@@ -141,14 +151,17 @@ class Instancer {
             glm::vec2* out = set == 0 ? vu.set0 : vu.set1;
             if (!uv.empty()) out[0] = uv[i0], out[1] = uv[i1], out[2] = uv[i2];
           }
+          VertexTangents vt;
+          if (!tw.empty()) vt = {{tw[i0], tw[i1], tw[i2]}};
           if (mirrored) {
             std::swap(t.v1, t.v2);
+            std::swap(vt.t[1], vt.t[2]);
             std::swap(vn.n1, vn.n2);
             std::swap(vc.c1, vc.c2);
             std::swap(vu.set0[1], vu.set0[2]);
             std::swap(vu.set1[1], vu.set1[2]);
           }
-          AddTriangle(t, vn, vc, !c.empty(), vu);
+          AddTriangle(t, vn, vc, !c.empty(), vu, vt);
         }
       }
     }
@@ -159,13 +172,14 @@ class Instancer {
   // a normal that vanishes or overflows (a singular or extreme scale) has no direction
   // left to interpolate, but the geometry is still fine.
   void AddTriangle(const SceneTriangle& t, VertexNormals vn, const VertexColors& vc, bool hasColors,
-                   const VertexUVs& vu) {
+                   const VertexUVs& vu, const VertexTangents& vt) {
     const glm::vec3 zero(0.0f);
     if (vn.n0 == zero || vn.n1 == zero || vn.n2 == zero) vn = VertexNormals{};
     AppendParallel(scene_.normals, vn, vn.Present());
     AppendParallel(scene_.colors, vc, hasColors);
     // Every triangle of a textured scene, whether or not its primitive has coordinates.
     AppendParallel(scene_.uvs, vu, !scene_.textureRefs.empty());
+    AppendParallel(scene_.tangents, vt, withTangents_);
     scene_.bounds.Extend(t.v0);
     scene_.bounds.Extend(t.v1);
     scene_.bounds.Extend(t.v2);
@@ -194,6 +208,7 @@ class Instancer {
   const std::vector<int>& parents_;
   const std::vector<std::vector<DecodedPrimitive>>& meshes_;
   Scene& scene_;
+  const bool withTangents_;  // some material has a normal texture
 };
 
 }  // namespace

@@ -46,6 +46,9 @@ constexpr uint64_t kBytesPerColoredTriangle = 144;
 // And per triangle with textures: the Scene's VertexUVs (48 bytes), the packed TriangleUVs
 // (48) and their staging and device copies (48 each).
 constexpr uint64_t kBytesPerTexturedTriangle = 192;
+// And per triangle with normal maps: the Scene's VertexTangents (48 bytes), the packed
+// TriangleTangents (16) and their staging and device copies (16 each).
+constexpr uint64_t kBytesPerTangentTriangle = 96;
 // Decoding an accessor holds each component as a double, then as a float.
 constexpr uint64_t kBytesPerDecodedComponent = 12;
 
@@ -68,14 +71,15 @@ uint64_t DecodedBytes(const GltfSource& src, int accessor) {
 // The memory the meshes will take, counted before any is decoded: each primitive's
 // positions, normals, colours and indices, and every triangle of every instance through to the
 // renderer.
-// `textured`: the scene keeps the texture coordinates of every triangle.
-void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, bool textured,
+// `textured`, `normalMapped`: the scene keeps the texture coordinates, the tangents of
+// every triangle.
+void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, bool textured, bool normalMapped,
                     MemoryBudget& budget) {
   for (size_t i = 0; i < src.m.meshes.size(); ++i) {
     uint64_t decoded = 0, triangles = 0, colored = 0;
     for (const tinygltf::Primitive& prim : src.m.meshes[i].primitives) {
       decoded += DecodedBytes(src, prim.indices);
-      for (const char* attr : {"POSITION", "NORMAL", "COLOR_0", "TEXCOORD_0", "TEXCOORD_1"})
+      for (const char* attr : {"POSITION", "NORMAL", "COLOR_0", "TEXCOORD_0", "TEXCOORD_1", "TANGENT"})
         if (auto it = prim.attributes.find(attr); it != prim.attributes.end()) decoded += DecodedBytes(src, it->second);
       triangles += TriangleCount(src, prim);
       if (prim.attributes.count("COLOR_0")) colored += TriangleCount(src, prim);
@@ -93,6 +97,9 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
     if (textured)
       budget.Charge(SaturatingMul(total, kBytesPerTexturedTriangle),
                     name + " (texture coordinates of " + std::to_string(total) + " triangles)");
+    if (normalMapped)
+      budget.Charge(SaturatingMul(total, kBytesPerTangentTriangle),
+                    name + " (tangents of " + std::to_string(total) + " triangles)");
   }
 }
 
@@ -113,10 +120,9 @@ bool IsRenderedExtension(const std::string& ext) {
 // What the file uses that vkpt does not render yet (printed by -v).
 void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   auto& ig = scene.ignoredFeatures;
-  bool normalTex = false, occlusionTex = false, transparent = false;
+  bool occlusionTex = false, transparent = false;
   std::set<std::string> extensionTextures;
   for (const tinygltf::Material& mat : src.m.materials) {
-    normalTex |= mat.normalTexture.index >= 0;
     occlusionTex |= mat.occlusionTexture.index >= 0;
     transparent |= mat.alphaMode != "OPAQUE";
     for (const auto& [name, ext] : mat.extensions)
@@ -125,7 +131,6 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
           if (key.ends_with("Texture")) extensionTextures.insert(name + "." + key);
   }
   if (transparent) ig.push_back("alphaMode MASK/BLEND: surfaces are rendered opaque");
-  if (normalTex) ig.push_back("normal maps");
   if (occlusionTex) ig.push_back("occlusion textures: not applied (a path tracer computes occlusion)");
   for (const std::string& t : extensionTextures) ig.push_back(t + ": the factor is used alone");
   if (!src.m.animations.empty())
@@ -148,12 +153,12 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, Scene& scene, M
   CheckTexturesAndMaterials(src);
   const uint32_t defaultMaterial = LoadMaterials(src, scene);
   LoadTextures(src, limits, budget, scene);
-  const bool textured = !scene.textureRefs.empty();
+  const bool textured = !scene.textureRefs.empty(), normalMapped = UsesNormalMaps(scene);
   const std::vector<int> parents = CheckNodeGraph(src);
-  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), textured, budget);
+  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), textured, normalMapped, budget);
   std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
   for (size_t i = 0; i < src.m.meshes.size(); ++i)
-    meshes[i] = DecodeMesh(src, int(i), defaultMaterial, textured, scene.warnings);
+    meshes[i] = DecodeMesh(src, int(i), defaultMaterial, textured, normalMapped, scene.warnings);
   CheckCameras(src);
   CheckLights(src);
   InstantiateScene(src, parents, meshes, scene);

@@ -118,10 +118,26 @@ std::vector<glm::vec2> ReadUVs(const GltfSource& src, int accessor, const std::s
   return out;
 }
 
+// TANGENT: xyz as given (the instancer normalizes after the transform), w reduced to its
+// sign (the spec asks for ±1).
+std::vector<glm::vec4> ReadTangents(const GltfSource& src, int accessor, const std::string& name) {
+  std::vector<double> raw = ReadAccessor(src, accessor);
+  std::vector<glm::vec4> out(raw.size() / 4);
+  for (size_t v = 0; v < out.size(); ++v)
+    for (int c = 0; c < 4; ++c) {
+      const float x = float(raw[v * 4 + c]);
+      if (!std::isfinite(x))
+        src.Fail(name + ".attributes.TANGENT (accessors[" + std::to_string(accessor) + "]) element " +
+                 std::to_string(v) + " is not a finite tangent");
+      out[v][c] = c < 3 ? x : (x < 0.0f ? -1.0f : 1.0f);
+    }
+  return out;
+}
+
 }  // namespace
 
 std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial, bool withUVs,
-                                         std::vector<std::string>& warnings) {
+                                         bool withTangents, std::vector<std::string>& warnings) {
   std::vector<DecodedPrimitive> decoded;
   const tinygltf::Mesh& mesh = src.m.meshes[meshIndex];
   for (size_t p = 0; p < mesh.primitives.size(); ++p) {
@@ -145,6 +161,8 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
       if (auto tc = prim.attributes.find(attr); tc != prim.attributes.end())
         out.uvs[set] = ReadUVs(src, tc->second, name, attr);
     }
+    if (auto tan = prim.attributes.find("TANGENT"); withTangents && tan != prim.attributes.end())
+      out.tangents = ReadTangents(src, tan->second, name);
     out.indices = TriangleList(src, prim, out.positions.size(), name);
     out.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial;
     decoded.push_back(std::move(out));

@@ -18,6 +18,7 @@ struct DecodedPrimitive {
   std::vector<glm::vec3> normals;    // object space, one per position; empty without NORMAL
   std::vector<glm::vec4> colors;     // COLOR_0, linear RGBA in [0, 1], one per position; empty without it
   std::vector<glm::vec2> uvs[2];     // TEXCOORD_0 and TEXCOORD_1, one per position; empty without them
+  std::vector<glm::vec4> tangents;   // TANGENT (w = ±1), one per position; empty without it
   std::vector<uint32_t> indices;     // triangle list, 3 per triangle
   uint32_t material;
 };
@@ -25,9 +26,10 @@ struct DecodedPrimitive {
 // Checks and decodes the triangle primitives of meshes[meshIndex]: positions, normals and
 // colours finite, indices in range and no primitive-restart values. Points and lines add a
 // warning, and so do colours outside [0, 1] (clamped). Texture coordinates are read only
-// when `withUVs` (some material has a texture), and must be finite.
+// when `withUVs` (some material has a texture), tangents when `withTangents` (some
+// material has a normal map); both must be finite.
 std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial, bool withUVs,
-                                         std::vector<std::string>& warnings);
+                                         bool withTangents, std::vector<std::string>& warnings);
 
 // Triangles a primitive makes, from its accessors' counts alone (nothing is decoded).
 uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim);

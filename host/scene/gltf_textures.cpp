@@ -27,6 +27,7 @@ struct Slot {
 const Slot kBaseColor{shader::kSlotBaseColor, "pbrMetallicRoughness.baseColorTexture", true};
 const Slot kMetallicRoughness{shader::kSlotMetallicRoughness, "pbrMetallicRoughness.metallicRoughnessTexture", false};
 const Slot kEmissive{shader::kSlotEmissive, "emissiveTexture", true};
+const Slot kNormal{shader::kSlotNormal, "normalTexture", false};
 
 uint32_t WrapMode(int gl, const std::string& what, const GltfSource& src) {
   switch (gl) {
@@ -184,6 +185,12 @@ std::string ImageName(const GltfSource& src, int image) {
 
 }  // namespace
 
+bool UsesNormalMaps(const Scene& scene) {
+  for (size_t i = shader::kSlotNormal; i < scene.textureRefs.size(); i += shader::kTextureSlots)
+    if (scene.textureRefs[i].texture != shader::kInvalidIndex) return true;
+  return false;
+}
+
 void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget& budget, Scene& scene) {
   TextureReader reader(src, scene);
   for (uint32_t m = 0; m < src.m.materials.size(); ++m) {
@@ -191,6 +198,15 @@ void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget&
     reader.Read(m, kBaseColor, mat.pbrMetallicRoughness.baseColorTexture);
     reader.Read(m, kMetallicRoughness, mat.pbrMetallicRoughness.metallicRoughnessTexture);
     reader.Read(m, kEmissive, mat.emissiveTexture);
+    tinygltf::TextureInfo normal;  // a normalTextureInfo is a textureInfo with a scale
+    normal.index = mat.normalTexture.index;
+    normal.texCoord = mat.normalTexture.texCoord;
+    normal.extensions = mat.normalTexture.extensions;
+    reader.Read(m, kNormal, normal);
+    const double scale = mat.normalTexture.scale;
+    if (!std::isfinite(scale) || std::abs(scale) > 1e6)
+      src.Fail("materials[" + std::to_string(m) + "].normalTexture.scale is not a finite number of at most 1e6");
+    scene.materials[m].normalScale = float(scale);
   }
   if (scene.textures.empty()) return;
 

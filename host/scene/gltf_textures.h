@@ -18,4 +18,8 @@ namespace vkpt {
 // loaded, in glTF order.
 void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget& budget, Scene& scene);
 
+// Whether some material of the loaded scene has a normal texture (and so its triangles
+// need tangents).
+bool UsesNormalMaps(const Scene& scene);
+
 }  // namespace vkpt

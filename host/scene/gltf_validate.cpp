@@ -166,6 +166,14 @@ void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, cons
                "]) must be a VEC2 accessor of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT" +
                (quantized ? " or, with KHR_mesh_quantization, of (normalized) BYTE/SHORT" : ""));
   }
+  if (auto tan = prim.attributes.find("TANGENT"); tan != prim.attributes.end()) {
+    const tinygltf::Accessor& ta = src.m.accessors[tan->second];
+    const bool snorm = ta.normalized && (ta.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                                         ta.componentType == TINYGLTF_COMPONENT_TYPE_SHORT);
+    if (ta.type != TINYGLTF_TYPE_VEC4 || !(ta.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || (quantized && snorm)))
+      src.Fail(name + ".attributes.TANGENT (accessors[" + std::to_string(tan->second) +
+               "]) must be a FLOAT VEC4 accessor" + (quantized ? " or a normalized BYTE/SHORT VEC4 one" : ""));
+  }
   for (const auto& [attr, acc] : prim.attributes)
     if (src.m.accessors[acc].count != pa.count)
       src.Fail(name + ".attributes." + attr + " (accessors[" + std::to_string(acc) + "]) has " +

@@ -24,6 +24,7 @@ static_assert(offsetof(Material, emission) == 16 && offsetof(Material, roughness
 static_assert(offsetof(Material, specularColor) == 32 && offsetof(Material, specular) == 44);
 static_assert(offsetof(Material, attenuation) == 48 && offsetof(Material, ior) == 60);
 static_assert(offsetof(Material, transmission) == 64 && offsetof(Material, flags) == 68);
+static_assert(offsetof(Material, normalScale) == 72);
 
 static_assert(sizeof(Light) == 64);
 static_assert(offsetof(Light, position) == 0 && offsetof(Light, triangle) == 12);
@@ -40,6 +41,7 @@ static_assert(offsetof(TriangleColors, rg1) == 8 && offsetof(TriangleColors, ba2
 
 static_assert(sizeof(vec2) == 8 && sizeof(TriangleUVs) == 16 * kTexelsPerUVs);
 static_assert(offsetof(TriangleUVs, uv02) == 16 && offsetof(TriangleUVs, uv10) == 24);
+static_assert(sizeof(TriangleTangents) == 16 * kTexelsPerTangents && offsetof(TriangleTangents, signs) == 12);
 static_assert(sizeof(Texture) == 16 && offsetof(Texture, mode) == 12);
 static_assert(sizeof(TextureRef) == 16 * kTexelsPerTextureRef);
 static_assert(offsetof(TextureRef, m00) == 8 && offsetof(TextureRef, m12) == 28);

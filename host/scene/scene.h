@@ -42,6 +42,12 @@ struct VertexUVs {
   glm::vec2 set0[3]{}, set1[3]{};
 };
 
+// TANGENT of one triangle's vertices in world space (xyz unit; w = ±1, the bitangent
+// sign), or MikkTSpace tangents the loader generated; zero where none could be had.
+struct VertexTangents {
+  glm::vec4 t[3]{};
+};
+
 // A decoded image (glTF images[i]): RGBA8, row-major from the top row.
 struct TextureImage {
   std::string name;  // for messages: images[i] "name"
@@ -92,6 +98,8 @@ struct Scene {
   std::vector<VertexColors> colors;
   // Parallel to `triangles`, or empty when no material has a texture.
   std::vector<VertexUVs> uvs;
+  // Parallel to `triangles`, or empty when no material has a normal texture.
+  std::vector<VertexTangents> tangents;
   std::vector<Material> materials;
   // shader::kTextureSlots per material, or empty when no material has a texture.
   std::vector<shader::TextureRef> textureRefs;

@@ -50,11 +50,11 @@ class GpuRenderer {
   // The vertex colours; without any, one zero texel that the shader never reads.
   TexelBuffer vertexColors_;
   // Texture coordinates and textures (shared/texture.h); one zero texel each without.
-  TexelBuffer uvs_, textureRefs_, textures_, texels_, texelDecode_;
+  TexelBuffer uvs_, tangents_, textureRefs_, textures_, texels_, texelDecode_;
   // The environment map's texels and CDFs; without a map one zero texel each, so that the
   // descriptor set is complete all the same.
   TexelBuffer envRadiance_, envDistribution_;
-  // What the scene has, for pathtrace.comp's specialization constants 0-6 (the frame
+  // What the scene has, for pathtrace.comp's specialization constants 0-7 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
   uint32_t lightTypes_ = 0;          // bit 1 << type for each type in the light table
   bool hasGlossy_;                   // some triangle's material is not Lambertian
@@ -62,6 +62,7 @@ class GpuRenderer {
   bool hasVertexColors_;             // some triangle has COLOR_0
   bool hasVolumes_;                  // some triangle's material bounds a volume
   bool hasTextures_;                 // some material has a texture
+  bool hasNormalMaps_;               // some material has a normal texture
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 

@@ -33,6 +33,7 @@ const uint kBindingTexels = 16u;            // RGBA8 texels of every texture's l
 const uint kBindingTexelDecode = 17u;       // kTexelDecodeSize floats, four per texel: byte → float
 const uint kBindingMaterialTextures = 18u;  // texel buffer of TextureRef, kTextureSlots per material
 const uint kBindingVertexUVs = 19u;         // texel buffer of TriangleUVs, indexed by Triangle.sourceIndex
+const uint kBindingTangents = 20u;          // texel buffer of TriangleTangents, indexed by Triangle.sourceIndex
 
 // The environment map (shared/environment.h), both as RGBA32UI texel buffers; a 1-texel
 // dummy of each when there is none (FrameParams::envWidth == 0).
@@ -92,7 +93,7 @@ struct Material {
   float ior;           // KHR_materials_ior (1.5 when absent; 0: Fresnel is 1)
   float transmission;  // KHR_materials_transmission: the share of the dielectric base that is transmissive
   uint flags;          // kMaterialDoubleSided | kMaterialUnlit | kMaterialVolume | kMaterialTextured
-  uint pad0;
+  float normalScale;   // normalTexture.scale: scales the tangent-space normal's x and y
   uint pad1;
 };
 
@@ -133,6 +134,18 @@ struct TriangleUVs {
   vec2 uv11;
   vec2 uv12;
 };
+
+// Per scene triangle (indexed by Triangle::sourceIndex): glTF TANGENT of its three
+// vertices in world space, octahedrally encoded like TriangleShading's normals, and in
+// bit k of `signs` whether vertex k's bitangent sign (TANGENT.w) is −1; kTangentsMissing
+// where some vertex has none. Present only when some material has a normal texture.
+struct TriangleTangents {
+  uint t0;
+  uint t1;
+  uint t2;
+  uint signs;
+};
+const uint kTangentsMissing = 8u;
 
 // A texture: an image with its mip levels in the texel store, and how it is sampled.
 // Level l is max(1, width >> l) × max(1, height >> l) texels, row-major from the image's
@@ -176,7 +189,8 @@ struct TextureRef {
 const uint kSlotBaseColor = 0u;          // RGB × baseColor, A × alpha
 const uint kSlotMetallicRoughness = 1u;  // G × roughness, B × metallic
 const uint kSlotEmissive = 2u;           // RGB × emission
-const uint kTextureSlots = 3u;
+const uint kSlotNormal = 3u;             // tangent-space normal (shared/normal_map.h)
+const uint kTextureSlots = 4u;
 
 // Light types (shared/lights.h).
 const uint kLightTriangle = 0u;          // emits from its front face
@@ -211,6 +225,7 @@ const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
 const uint kTexelsPerColors = 2u;
 const uint kTexelsPerUVs = 3u;
+const uint kTexelsPerTangents = 1u;
 const uint kTexelsPerTextureRef = 2u;
 
 // The environment map's sampling distribution is one float array: the conditional CDF of

@@ -1,12 +1,14 @@
 // What the estimator knows about a surface point a ray has hit: position, geometric
 // normal, the shading frame the BSDF works in, the material and whether it emits.
-// Scene access as in path.h, plus VKPT_SHADING(i) and VKPT_VERTEX_COLORS_OF(i): the
-// TriangleShading and TriangleColors of scene triangle i, and material_textures.h's.
+// Scene access as in path.h, plus VKPT_SHADING(i), VKPT_VERTEX_COLORS_OF(i) and
+// VKPT_TANGENTS_OF(i): the TriangleShading, TriangleColors and TriangleTangents of scene
+// triangle i, and material_textures.h's.
 #ifndef VKPT_SHADING_FRAME_H
 #define VKPT_SHADING_FRAME_H
 #include "estimator.h"
 #include "layout.h"
 #include "material_textures.h"
+#include "normal_map.h"
 #include "prelude.h"
 #include "sampling.h"
 #include "shading_normal.h"
@@ -23,6 +25,11 @@
 // TriangleColors to read).
 #ifndef VKPT_VERTEX_COLORS
 #define VKPT_VERTEX_COLORS true
+#endif
+// And VKPT_NORMAL_MAPS: false when no material has a normal texture (and the scene has no
+// TriangleTangents to read).
+#ifndef VKPT_NORMAL_MAPS
+#define VKPT_NORMAL_MAPS true
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -73,15 +80,30 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
   sh.ng = frontFace ? ng : -ng;
   sh.emits = frontFace || (sh.material.flags & kMaterialDoubleSided) != 0u;
   sh.p = tri.v0 + hit.b1 * tri.e1 + hit.b2 * tri.e2;
-  vec3 ns = sh.ng;
+  // The shading normal on the front side: interpolated vertex normals, bent by the
+  // normal map; the face normal where there are neither.
+  vec3 n = ng;
+  bool shadingNormal = false;
   if (VKPT_SMOOTH_NORMALS) {
     TriangleShading shading = VKPT_SHADING(tri.sourceIndex);
     if ((shading.flags & kShadingHasNormals) != 0u) {
-      vec3 n = InterpolatedNormal(shading, hit.b1, hit.b2);
+      vec3 interpolated = InterpolatedNormal(shading, hit.b1, hit.b2);
       // Vertex normals that cancel out (or NaN from them) leave the flat normal.
-      if (abs(dot(n, n) - 1.0f) < 1e-3f) ns = AdaptShadingNormal(frontFace ? n : -n, sh.ng, -ray.dir);
+      shadingNormal = abs(dot(interpolated, interpolated) - 1.0f) < 1e-3f;
+      if (shadingNormal) n = interpolated;
     }
   }
+  if (VKPT_NORMAL_MAPS && (sh.material.flags & kMaterialTextured) != 0u) {
+    TextureRef ref = VKPT_TEXTURE_REF(tri.material * kTextureSlots + kSlotNormal);
+    if (ref.texture != kInvalidIndex) {
+      vec3 texel =
+          vec3(SampleSlot(VKPT_SCENE_ARG tri.material, kSlotNormal, VKPT_UVS_OF(tri.sourceIndex), hit.b1, hit.b2));
+      n = PerturbedNormal(n, InterpolatedTangent(VKPT_TANGENTS_OF(tri.sourceIndex), hit.b1, hit.b2), texel,
+                          sh.material.normalScale);
+      shadingNormal = true;
+    }
+  }
+  vec3 ns = shadingNormal ? AdaptShadingNormal(frontFace ? n : -n, sh.ng, -ray.dir) : sh.ng;
   // A flat surface needs no adaptation: the mirror direction of any ωo above it is above it.
   sh.frame = FrameFromNormal(ns);
   return sh;
