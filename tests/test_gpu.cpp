@@ -500,7 +500,11 @@ INSTANTIATE_TEST_SUITE_P(
                       PbrModel{"TransmissionTest/glTF-Binary/TransmissionTest.glb", true},
                       PbrModel{"TransmissionRoughnessTest/glTF-Binary/TransmissionRoughnessTest.glb", true},
                       PbrModel{"LightsPunctualLamp/glTF/LightsPunctualLamp.gltf", true},
-                      PbrModel{"EmissiveStrengthTest/glTF-Binary/EmissiveStrengthTest.glb", true}),
+                      PbrModel{"EmissiveStrengthTest/glTF-Binary/EmissiveStrengthTest.glb", true},
+                      PbrModel{"MultiUVTest/glTF-Binary/MultiUVTest.glb", true},
+                      PbrModel{"TextureTransformTest/glTF/TextureTransformTest.gltf", true},
+                      PbrModel{"TextureLinearInterpolationTest/glTF-Binary/TextureLinearInterpolationTest.glb", true},
+                      PbrModel{"NormalTangentMirrorTest/glTF-Binary/NormalTangentMirrorTest.glb", true}),
     [](const auto& info) {
       std::string n = info.param.file.substr(0, info.param.file.find('/'));
       return n;
