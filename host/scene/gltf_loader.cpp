@@ -159,6 +159,12 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, Scene& scene, M
   std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
   for (size_t i = 0; i < src.m.meshes.size(); ++i)
     meshes[i] = DecodeMesh(src, int(i), defaultMaterial, textured, normalMapped, scene.warnings);
+  for (std::vector<DecodedPrimitive>& mesh : meshes)
+    for (DecodedPrimitive& prim : mesh) {
+      if (!normalMapped) break;
+      const shader::TextureRef& ref = scene.textureRefs[prim.material * shader::kTextureSlots + shader::kSlotNormal];
+      if (ref.texture != shader::kInvalidIndex) GenerateMissingTangents(prim, ref.texCoord);
+    }
   CheckCameras(src);
   CheckLights(src);
   InstantiateScene(src, parents, meshes, scene);

@@ -5,6 +5,7 @@
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_validate.h"
+#include "scene/tangent_space.h"
 
 namespace vkpt {
 namespace {
@@ -168,6 +169,23 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
     decoded.push_back(std::move(out));
   }
   return decoded;
+}
+
+void GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet) {
+  if (!prim.tangents.empty() || uvSet > 1 || prim.uvs[uvSet].empty()) return;
+  std::vector<glm::vec3> normals = prim.normals;
+  if (normals.empty()) {
+    normals.assign(prim.positions.size(), glm::vec3(0.0f));
+    for (size_t k = 0; k + 2 < prim.indices.size(); k += 3) {
+      const uint32_t i0 = prim.indices[k], i1 = prim.indices[k + 1], i2 = prim.indices[k + 2];
+      const glm::vec3 face =
+          glm::cross(prim.positions[i1] - prim.positions[i0], prim.positions[i2] - prim.positions[i0]);
+      for (uint32_t i : {i0, i1, i2}) normals[i] += face;
+    }
+    for (glm::vec3& n : normals)
+      if (glm::dot(n, n) > 0.0f) n = glm::normalize(n);
+  }
+  prim.tangents = GenerateTangents(prim.positions, normals, prim.uvs[uvSet], prim.indices);
 }
 
 uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim) {

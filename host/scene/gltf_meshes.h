@@ -31,6 +31,11 @@ struct DecodedPrimitive {
 std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial, bool withUVs,
                                          bool withTangents, std::vector<std::string>& warnings);
 
+// MikkTSpace tangents (scene/tangent_space.h) for a primitive that supplies no TANGENT,
+// from its normals — for a flat primitive, the area-weighted face normals around each
+// vertex — and texture coordinate set `uvSet`; it keeps none without those coordinates.
+void GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet);
+
 // Triangles a primitive makes, from its accessors' counts alone (nothing is decoded).
 uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim);
 
