@@ -104,33 +104,20 @@ std::vector<glm::vec4> ReadColors(const GltfSource& src, int accessor, const std
   return out;
 }
 
-// TEXCOORD_n as floats (normalized integers already mapped to [0, 1] or [-1, 1]).
-std::vector<glm::vec2> ReadUVs(const GltfSource& src, int accessor, const std::string& name, const char* attr) {
+// The elements of a checked N-component attribute (TEXCOORD_n, TANGENT) as floats, each
+// finite (normalized integers already mapped to [0, 1] or [-1, 1]).
+template <int N>
+std::vector<glm::vec<N, float>> ReadFinite(const GltfSource& src, int accessor, const std::string& name,
+                                           const char* attr, const char* noun) {
   std::vector<double> raw = ReadAccessor(src, accessor);
-  std::vector<glm::vec2> out(raw.size() / 2);
+  std::vector<glm::vec<N, float>> out(raw.size() / N);
   for (size_t v = 0; v < out.size(); ++v)
-    for (int c = 0; c < 2; ++c) {
-      const float x = float(raw[v * 2 + c]);
+    for (int c = 0; c < N; ++c) {
+      const float x = float(raw[v * N + c]);
       if (!std::isfinite(x))
         src.Fail(name + ".attributes." + attr + " (accessors[" + std::to_string(accessor) + "]) element " +
-                 std::to_string(v) + " is not a finite texture coordinate");
+                 std::to_string(v) + " is not a finite " + noun);
       out[v][c] = x;
-    }
-  return out;
-}
-
-// TANGENT: xyz as given (the instancer normalizes after the transform), w reduced to its
-// sign (the spec asks for ±1).
-std::vector<glm::vec4> ReadTangents(const GltfSource& src, int accessor, const std::string& name) {
-  std::vector<double> raw = ReadAccessor(src, accessor);
-  std::vector<glm::vec4> out(raw.size() / 4);
-  for (size_t v = 0; v < out.size(); ++v)
-    for (int c = 0; c < 4; ++c) {
-      const float x = float(raw[v * 4 + c]);
-      if (!std::isfinite(x))
-        src.Fail(name + ".attributes.TANGENT (accessors[" + std::to_string(accessor) + "]) element " +
-                 std::to_string(v) + " is not a finite tangent");
-      out[v][c] = c < 3 ? x : (x < 0.0f ? -1.0f : 1.0f);
     }
   return out;
 }
@@ -160,10 +147,14 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
     for (int set = 0; set < 2 && withUVs; ++set) {
       const char* attr = set == 0 ? "TEXCOORD_0" : "TEXCOORD_1";
       if (auto tc = prim.attributes.find(attr); tc != prim.attributes.end())
-        out.uvs[set] = ReadUVs(src, tc->second, name, attr);
+        out.uvs[set] = ReadFinite<2>(src, tc->second, name, attr, "texture coordinate");
     }
-    if (auto tan = prim.attributes.find("TANGENT"); withTangents && tan != prim.attributes.end())
-      out.tangents = ReadTangents(src, tan->second, name);
+    if (auto tan = prim.attributes.find("TANGENT"); withTangents && tan != prim.attributes.end()) {
+      // xyz as given (the instancer normalizes after the transform), w reduced to its
+      // sign (the spec asks for ±1).
+      out.tangents = ReadFinite<4>(src, tan->second, name, "TANGENT", "tangent");
+      for (glm::vec4& t : out.tangents) t.w = t.w < 0.0f ? -1.0f : 1.0f;
+    }
     out.indices = TriangleList(src, prim, out.positions.size(), name);
     out.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial;
     decoded.push_back(std::move(out));

@@ -117,6 +117,24 @@ std::vector<int> CheckNodeGraph(const GltfSource& src) {
   return parent;
 }
 
+namespace {
+
+// NORMAL, TANGENT: FLOAT, or with KHR_mesh_quantization also normalized BYTE or SHORT.
+void CheckDirectionAttribute(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name,
+                             const char* attr, int type, const char* typeName, bool quantized) {
+  auto it = prim.attributes.find(attr);
+  if (it == prim.attributes.end()) return;
+  const tinygltf::Accessor& a = src.m.accessors[it->second];
+  const bool snorm = a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                                      a.componentType == TINYGLTF_COMPONENT_TYPE_SHORT);
+  if (a.type != type || !(a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || (quantized && snorm)))
+    src.Fail(name + ".attributes." + attr + " (accessors[" + std::to_string(it->second) + "]) must be a FLOAT " +
+             typeName + " accessor" +
+             (quantized ? std::string(" or a normalized BYTE/SHORT ") + typeName + " one" : ""));
+}
+
+}  // namespace
+
 void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name) {
   const bool quantized =
       std::count(src.m.extensionsUsed.begin(), src.m.extensionsUsed.end(), "KHR_mesh_quantization") > 0;
@@ -133,15 +151,8 @@ void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, cons
   std::string pan = "accessors[" + std::to_string(pos->second) + "]";
   if (pa.type != TINYGLTF_TYPE_VEC3 || (pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized))
     src.Fail(name + ".attributes.POSITION (" + pan + ") must be a FLOAT VEC3 accessor");
-  if (auto nrm = prim.attributes.find("NORMAL"); nrm != prim.attributes.end()) {
-    // KHR_mesh_quantization allows normalized BYTE and SHORT normals besides FLOAT.
-    const tinygltf::Accessor& na = src.m.accessors[nrm->second];
-    const bool snorm = na.normalized && (na.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
-                                         na.componentType == TINYGLTF_COMPONENT_TYPE_SHORT);
-    if (na.type != TINYGLTF_TYPE_VEC3 || !(na.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || (quantized && snorm)))
-      src.Fail(name + ".attributes.NORMAL (accessors[" + std::to_string(nrm->second) +
-               "]) must be a FLOAT VEC3 accessor" + (quantized ? " or a normalized BYTE/SHORT VEC3 one" : ""));
-  }
+  CheckDirectionAttribute(src, prim, name, "NORMAL", TINYGLTF_TYPE_VEC3, "VEC3", quantized);
+  CheckDirectionAttribute(src, prim, name, "TANGENT", TINYGLTF_TYPE_VEC4, "VEC4", quantized);
   if (auto col = prim.attributes.find("COLOR_0"); col != prim.attributes.end()) {
     const tinygltf::Accessor& ca = src.m.accessors[col->second];
     const bool unorm = ca.normalized && (ca.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
@@ -165,14 +176,6 @@ void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, cons
       src.Fail(name + ".attributes." + attr + " (accessors[" + std::to_string(tc->second) +
                "]) must be a VEC2 accessor of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT" +
                (quantized ? " or, with KHR_mesh_quantization, of (normalized) BYTE/SHORT" : ""));
-  }
-  if (auto tan = prim.attributes.find("TANGENT"); tan != prim.attributes.end()) {
-    const tinygltf::Accessor& ta = src.m.accessors[tan->second];
-    const bool snorm = ta.normalized && (ta.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
-                                         ta.componentType == TINYGLTF_COMPONENT_TYPE_SHORT);
-    if (ta.type != TINYGLTF_TYPE_VEC4 || !(ta.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || (quantized && snorm)))
-      src.Fail(name + ".attributes.TANGENT (accessors[" + std::to_string(tan->second) +
-               "]) must be a FLOAT VEC4 accessor" + (quantized ? " or a normalized BYTE/SHORT VEC4 one" : ""));
   }
   for (const auto& [attr, acc] : prim.attributes)
     if (src.m.accessors[acc].count != pa.count)
