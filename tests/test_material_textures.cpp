@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -158,16 +159,30 @@ TEST(MaterialTextures, TexelAndMemoryBudgetsAreCheckedFromTheHeader) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("--max-texels 3"), std::string::npos) << e.what();
   }
-  // 16384² texels declared by a 100-byte PNG: refused by the memory budget, not decoded.
-  TempFile big(TexturedTriangle(material, MakePng(16384, 16384, 8, 6, {})).Json());
+  // 512² texels (44 bytes each through to the device) within 8 MiB: refused from the
+  // header, before the image is decoded. The image is a file beside the glTF, charged by
+  // its size (an embedded one would cost the JSON parse more than that).
+  const std::vector<unsigned char> png = MakePng(512, 512, 8, 6, std::vector<uint8_t>(512 * 512 * 4, 7));
+  TempFile image(AsString(png), ".png");
+  GltfBuilder b = TexturedTriangle(material);
+  b.images[0] = R"({"uri":")" + std::filesystem::path(image.path).filename().string() + R"("})";
+  TempFile big(b.Json());
   limits = LoadLimits{};
-  limits.maxMemory = uint64_t(1) << 30;
+  limits.maxMemory = uint64_t(8) << 20;
   try {
     LoadGltf(big.path, limits);
-    ADD_FAILURE() << "a 16384² texture loaded within 1 GiB";
+    ADD_FAILURE() << "a 512² texture loaded within 8 MiB";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("16384 × 16384 texels"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("512 × 512 texels"), std::string::npos) << e.what();
   }
+}
+
+// A decompression bomb: a 100-byte PNG whose header claims 16384² pixels (1 GiB decoded)
+// is refused from its size, before stb would allocate the image.
+TEST(MaterialTextures, PngTooSmallForItsHeaderIsRefused) {
+  const std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})";
+  EXPECT_TRUE(FailsWith(TexturedTriangle(material, MakePng(16384, 16384, 8, 6, {})),
+                        {"images[0]", "bytes of compressed image data cannot hold 16384 × 16384 pixels"}));
 }
 
 TEST(MaterialTextures, TexCoordsMustBeFiniteVec2) {

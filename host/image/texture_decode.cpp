@@ -58,11 +58,16 @@ std::string ChunkName(std::span<const unsigned char> b, size_t at) {
   return name;
 }
 
+struct PngChunks {
+  bool trns = false;  // a tRNS chunk precedes the image data (a palette image then has alpha)
+  uint64_t idat = 0;  // bytes of compressed image data
+};
+
 // Walks a PNG's chunks from the signature to IEND, so that a file cut anywhere is refused
-// before decoding, with a message that says where. Returns whether a tRNS chunk precedes
-// the image data (a palette image then has alpha).
-bool WalkPngChunks(std::span<const unsigned char> b) {
-  bool trns = false, data = false;
+// before decoding, with a message that says where.
+PngChunks WalkPngChunks(std::span<const unsigned char> b) {
+  PngChunks chunks;
+  bool data = false;
   for (size_t at = sizeof(kPngSignature);;) {
     if (b.size() - at < 12) Truncated("PNG: it ends at byte " + std::to_string(b.size()) + ", before its IEND chunk");
     const uint32_t length = Be32(b, at);
@@ -78,9 +83,10 @@ bool WalkPngChunks(std::span<const unsigned char> b) {
     if (b.size() - at - 12 < length)
       Truncated("PNG: the " + name + " chunk at byte " + std::to_string(at) + " needs " + std::to_string(length) +
                 " bytes, " + std::to_string(b.size() - at - 12) + " remain");
-    if (name == "IEND") return trns;
+    if (name == "IEND") return chunks;
     data = data || name == "IDAT";
-    trns = trns || (name == "tRNS" && !data);
+    if (name == "IDAT") chunks.idat += length;
+    chunks.trns = chunks.trns || (name == "tRNS" && !data);
     at += 12 + size_t(length);
   }
 }
@@ -98,8 +104,16 @@ TextureImageHeader ReadPngHeader(std::span<const unsigned char> b) {
                      ((colour == 2 || colour == 4 || colour == 6) && (depth == 8 || depth == 16));
   if (!valid) Corrupt("PNG: colour type " + std::to_string(colour) + " with " + std::to_string(depth) + "-bit samples");
   CheckSize(header.width, header.height);
-  const bool trns = WalkPngChunks(b);
-  header.channels = colour == 0 ? 1 : colour == 4 ? 2 : colour == 6 ? 4 : colour == 3 && trns ? 4 : 3;
+  const PngChunks chunks = WalkPngChunks(b);
+  // Deflate compresses at most 1032:1 (a 258-byte match in 2 bits), so image data too
+  // short for the filtered rows the header declares is refused here, before stb allocates
+  // the whole image: a decompression bomb's small file cannot claim 16384² pixels.
+  const uint64_t samples = colour == 0 || colour == 3 ? 1 : colour == 4 ? 2 : colour == 2 ? 3 : 4;
+  const uint64_t rows = uint64_t(header.height) * (1 + (uint64_t(header.width) * samples * depth + 7) / 8);
+  if (chunks.idat * 1032 + 1032 < rows)
+    Corrupt("PNG: " + std::to_string(chunks.idat) + " bytes of compressed image data cannot hold " +
+            std::to_string(header.width) + " × " + std::to_string(header.height) + " pixels");
+  header.channels = colour == 0 ? 1 : colour == 4 ? 2 : colour == 6 ? 4 : colour == 3 && chunks.trns ? 4 : 3;
   header.sixteenBit = depth == 16;
   return header;
 }
