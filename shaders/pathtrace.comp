@@ -62,6 +62,9 @@ layout(constant_id = 6) const uint kSceneHasTextures = 1u;
 // 0 when no material has a normal texture: see shared/shading_frame.h.
 layout(constant_id = 7) const uint kSceneHasNormalMaps = 1u;
 #define VKPT_NORMAL_MAPS (kSceneHasNormalMaps != 0u)
+// 0 when no triangle's material is alpha MASK or BLEND: see shared/alpha.h.
+layout(constant_id = 8) const uint kSceneHasAlpha = 1u;
+#define VKPT_ALPHA (kSceneHasAlpha != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -118,7 +121,8 @@ void main() {
     // bounce rays share the traversal loops instead of waiting for each other.
     bool shadow = path.shadowPending;
     Ray ray = shadow ? path.shadowRay : path.ray;
-    HitRecord hit = TraceRay(ray.origin, ray.dir, shadow ? path.shadowTMax : kInfinity, shadow);
+    HitRecord hit = TraceRay(ray.origin, ray.dir, shadow ? path.shadowTMax : kInfinity, shadow,
+                             RayAlphaKey(params, path, shadow));
     if (shadow) AddLightIfVisible(path, hit.t >= 0.0f);
     else more = ShadeHit(params, path, hit);
     if (!more && !path.shadowPending) {

@@ -61,6 +61,7 @@ Material FetchMaterial(uint m) {
   uvec4 c = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 2u));
   uvec4 d = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 3u));
   uvec4 e = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 4u));
+  uvec4 f = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 5u));
   Material mat;
   mat.baseColor = uintBitsToFloat(a.xyz);
   mat.metallic = uintBitsToFloat(a.w);
@@ -73,7 +74,11 @@ Material FetchMaterial(uint m) {
   mat.transmission = uintBitsToFloat(e.x);
   mat.flags = e.y;
   mat.normalScale = uintBitsToFloat(e.z);
-  mat.pad1 = e.w;
+  mat.alpha = uintBitsToFloat(e.w);
+  mat.alphaCutoff = uintBitsToFloat(f.x);
+  mat.pad0 = f.y;
+  mat.pad1 = f.z;
+  mat.pad2 = f.w;
   return mat;
 }
 

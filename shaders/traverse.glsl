@@ -82,10 +82,23 @@ uint WalkToLeaf(vec3 origin, vec3 invDir, float tMax, inout uint i, inout uint k
   return steps;
 }
 
+// Alpha (shared/alpha.h): a shader that defines VKPT_ALPHA (pathtrace.comp, as a
+// specialization constant) has the scene access it needs; the trace-only kernel's
+// triangles are all opaque.
+#ifdef VKPT_ALPHA
+#include "shared/alpha.h"
+bool AlphaRejectsHit(Triangle t, vec3 r, uint alphaKey) {
+  return VKPT_ALPHA && AlphaRejects(t.material, t.sourceIndex, r.y, r.z, alphaKey);
+}
+#else
+bool AlphaRejectsHit(Triangle t, vec3 r, uint alphaKey) { return false; }
+#endif
+
 // The closest hit with t ∈ (0, tMax), or with anyHit the first hit found (a shadow ray
-// needs no more). One function for both kinds, so that pathtrace.comp's lanes can trace
+// needs no more), passing through the hits alpha leaves out (alphaKey: RayAlphaKey in
+// shared/path.h). One function for both kinds, so that pathtrace.comp's lanes can trace
 // whichever kind of ray each has next in the same loop.
-HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit) {
+HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, uint alphaKey) {
   HitRecord hit;
   hit.t = -1.0f;
   hit.b1 = 0.0f;
@@ -108,7 +121,7 @@ HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit) {
         ++triangleSteps;
         Triangle t = FetchTriangle(k);
         vec3 r = IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax);
-        if (r.x >= 0.0f) {
+        if (r.x >= 0.0f && !AlphaRejectsHit(t, r, alphaKey)) {
           tMax = r.x;
           hit.t = r.x;
           hit.b1 = r.y;
@@ -128,9 +141,13 @@ HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit) {
   return hit;
 }
 
-HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax) { return TraceRay(origin, dir, tMax, false); }
+HitRecord TraceClosest(vec3 origin, vec3 dir, float tMax, uint alphaKey) {
+  return TraceRay(origin, dir, tMax, false, alphaKey);
+}
 
 // Any hit with t ∈ (0, tMax).
-bool TraceOccluded(vec3 origin, vec3 dir, float tMax) { return TraceRay(origin, dir, tMax, true).t >= 0.0f; }
+bool TraceOccluded(vec3 origin, vec3 dir, float tMax, uint alphaKey) {
+  return TraceRay(origin, dir, tMax, true, alphaKey).t >= 0.0f;
+}
 
 #endif

@@ -504,7 +504,8 @@ INSTANTIATE_TEST_SUITE_P(
                       PbrModel{"MultiUVTest/glTF-Binary/MultiUVTest.glb", true},
                       PbrModel{"TextureTransformTest/glTF/TextureTransformTest.gltf", true},
                       PbrModel{"TextureLinearInterpolationTest/glTF-Binary/TextureLinearInterpolationTest.glb", true},
-                      PbrModel{"NormalTangentMirrorTest/glTF-Binary/NormalTangentMirrorTest.glb", true}),
+                      PbrModel{"NormalTangentMirrorTest/glTF-Binary/NormalTangentMirrorTest.glb", true},
+                      PbrModel{"AlphaBlendModeTest/glTF-Binary/AlphaBlendModeTest.glb", true}),
     [](const auto& info) {
       std::string n = info.param.file.substr(0, info.param.file.find('/'));
       return n;

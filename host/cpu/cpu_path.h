@@ -9,12 +9,14 @@
 
 namespace vkpt::shader {
 
-inline HitRecord TraceClosest(const RenderScene& scene, vec3 origin, vec3 dir, float tMax) {
-  return IntersectClosest(scene, origin, dir, tMax);
+// Scenes without MASK or BLEND materials take the walk that tests no alpha.
+inline HitRecord TraceClosest(const RenderScene& scene, vec3 origin, vec3 dir, float tMax, uint alphaKey) {
+  return scene.alphaTested ? IntersectClosestAlpha(scene, origin, dir, tMax, alphaKey)
+                           : IntersectClosest(scene, origin, dir, tMax);
 }
 
-inline bool TraceOccluded(const RenderScene& scene, vec3 origin, vec3 dir, float tMax) {
-  return Occluded(scene, origin, dir, tMax);
+inline bool TraceOccluded(const RenderScene& scene, vec3 origin, vec3 dir, float tMax, uint alphaKey) {
+  return scene.alphaTested ? OccludedAlpha(scene, origin, dir, tMax, alphaKey) : Occluded(scene, origin, dir, tMax);
 }
 
 }  // namespace vkpt::shader

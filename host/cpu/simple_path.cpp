@@ -36,6 +36,8 @@
 #define VKPT_TEXTURES false
 #undef VKPT_NORMAL_MAPS
 #define VKPT_NORMAL_MAPS false
+#undef VKPT_ALPHA
+#define VKPT_ALPHA ((void)scene, false)  // read, so that path.h's RayAlphaKey uses its scene parameter
 #undef VKPT_BEGIN_NAMESPACE
 #undef VKPT_END_NAMESPACE
 #define VKPT_BEGIN_NAMESPACE namespace vkpt::shader::simple {
@@ -51,7 +53,7 @@ bool IsSimpleScene(const RenderScene& scene, const shader::FrameParams& params) 
     if (((1u << l.type) & shader::simple::kTriangleLightTypes) == 0u) return false;
   for (const shader::TriangleShading& s : scene.shading)
     if ((s.flags & shader::kShadingHasNormals) != 0u) return false;
-  return params.envWidth == 0u && scene.vertexColors.empty() && scene.textureRefs.empty() &&
+  return params.envWidth == 0u && scene.vertexColors.empty() && scene.textureRefs.empty() && !scene.alphaTested &&
          !UsesGlossyMaterial(scene) && !UsesVolumeMaterial(scene);
 }
 

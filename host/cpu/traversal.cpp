@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "render/scene_access.h"
+#include "shared/alpha.h"
 #include "shared/intersect.h"
 #include "util/float4.h"
 
@@ -116,15 +118,31 @@ class DeferredStack {
   int top_ = 0;
 };
 
+// The query: closest or any hit, and whether alpha is tested (with the ray's key).
+template <bool kAnyHit, bool kAlpha>
+struct Query {
+  const RenderScene& scene;
+  uint32_t alphaKey;
+
+  // Whether the ray passes through the hit (b1, b2) of leaf-order triangle i.
+  bool Rejects(uint32_t i, float b1, float b2) const {
+    if (!kAlpha) return false;
+    const shader::Triangle& tri = scene.triangles[i];
+    return shader::AlphaRejects(scene, tri.material, tri.sourceIndex, b1, b2, alphaKey);
+  }
+};
+
 // Tests the triangles of leaf `code`, lanes in order, each against the closest hit so far
 // (the scalar loop's result), narrowing tMax. True when an any-hit query has its hit.
-template <bool kAnyHit>
-bool TestLeaf(const std::vector<TrianglePacket>& packets, uint32_t code, const RaySlabs& slabs, float& tMax, Hit& hit) {
+template <bool kAnyHit, bool kAlpha>
+bool TestLeaf(const Query<kAnyHit, kAlpha>& q, uint32_t code, const RaySlabs& slabs, float& tMax, Hit& hit) {
+  const std::vector<TrianglePacket>& packets = q.scene.pairLayout.packets;
   for (uint32_t k = code >> 4, e = k + ((code & 15u) + 3) / 4; k < e; ++k) {
     Float4 t, b1, b2;
     const int mask = IntersectPacket(packets[k], slabs, tMax, t, b1, b2);
     for (int lane = 0; lane < 4; ++lane) {
       if (!(mask >> lane & 1) || !(t[lane] < tMax)) continue;
+      if (q.Rejects(packets[k].index[lane], b1[lane], b2[lane])) continue;
       hit = {t[lane], b1[lane], b2[lane], packets[k].index[lane]};
       if (kAnyHit) return true;
       tMax = t[lane];
@@ -135,8 +153,9 @@ bool TestLeaf(const std::vector<TrianglePacket>& packets, uint32_t code, const R
 
 // The ordered walk over the child pairs: both children's boxes at once, the nearer
 // entered first, the farther deferred.
-template <bool kAnyHit>
-Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax) {
+template <bool kAnyHit, bool kAlpha>
+Hit Traverse(const Query<kAnyHit, kAlpha>& q, glm::vec3 origin, glm::vec3 dir, float tMax) {
+  const RenderScene& scene = q.scene;
   Hit hit{-1.0f, 0.0f, 0.0f, shader::kInvalidIndex};
   const std::vector<BvhPairNode>& pairs = scene.pairLayout.pairs;
   const RaySlabs slabs = MakeSlabs(origin, dir);
@@ -146,7 +165,7 @@ Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tM
   uint32_t code = scene.pairLayout.rootLeaf;
   for (;;) {
     if (IsLeafCode(code)) {
-      if (TestLeaf<kAnyHit>(scene.pairLayout.packets, code, slabs, tMax, hit)) return hit;
+      if (TestLeaf(q, code, slabs, tMax, hit)) return hit;
     } else {
       const BvhPairNode& p = pairs[code >> 4];
       float t[2];
@@ -174,11 +193,19 @@ Hit Traverse(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tM
 }  // namespace
 
 Hit IntersectClosest(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax) {
-  return Traverse<false>(scene, origin, dir, tMax);
+  return Traverse(Query<false, false>{scene, 0u}, origin, dir, tMax);
 }
 
 bool Occluded(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax) {
-  return Traverse<true>(scene, origin, dir, tMax).t >= 0.0f;
+  return Traverse(Query<true, false>{scene, 0u}, origin, dir, tMax).t >= 0.0f;
+}
+
+Hit IntersectClosestAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax, uint32_t alphaKey) {
+  return Traverse(Query<false, true>{scene, alphaKey}, origin, dir, tMax);
+}
+
+bool OccludedAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax, uint32_t alphaKey) {
+  return Traverse(Query<true, true>{scene, alphaKey}, origin, dir, tMax).t >= 0.0f;
 }
 
 }  // namespace vkpt

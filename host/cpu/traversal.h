@@ -12,9 +12,15 @@ namespace vkpt {
 // The hit record the GPU returns too (shaders/shared/layout.h): t < 0 means no hit.
 using Hit = shader::HitRecord;
 
+// Every triangle opaque: the geometry alone.
 Hit IntersectClosest(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax);
 
 // True if anything is hit with t in (0, tMax). `dir` need not be unit length.
 bool Occluded(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax);
+
+// The same, passing through the hits that alpha (shaders/shared/alpha.h) leaves out for
+// the ray with key `alphaKey`.
+Hit IntersectClosestAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax, uint32_t alphaKey);
+bool OccludedAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax, uint32_t alphaKey);
 
 }  // namespace vkpt

@@ -202,6 +202,8 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   BuildLightTable(scene, rs);
   rs.shading = TriangleShadings(scene, options.threads);
   rs.vertexColors = PackVertexColors(scene);
+  rs.alphaTested =
+      SomeTriangleUses(rs, [](const shader::Material& m) { return (m.flags & shader::kMaterialAlphaTested) != 0u; });
   return rs;
 }
 

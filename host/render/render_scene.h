@@ -35,6 +35,7 @@ struct RenderScene {
   std::vector<shader::Texture> textures;
   std::vector<uint32_t> texels;    // TextureStore::words
   std::vector<float> texelDecode;  // TexelDecodeTable()
+  bool alphaTested = false;        // some triangle's material is alpha MASK or BLEND (shared/alpha.h)
   BvhStats bvhStats;
   uint32_t degenerateTriangles = 0;  // dropped: zero area (see IsDegenerate)
   double totalEmittedPower = 0.0;    // Σ of the lights' power estimates

@@ -21,6 +21,7 @@
 #define VKPT_TEXTURE_REF(i) scene.textureRefs[i]
 #define VKPT_UVS_OF(i) scene.uvs[i]
 #define VKPT_NORMAL_MAPS (!scene.tangents.empty())
+#define VKPT_ALPHA scene.alphaTested
 #define VKPT_TANGENTS_OF(i) scene.tangents[i]
 #define VKPT_ENV_TEXEL(i) scene.environment.texels[i]
 #define VKPT_ENV_CDF(i) scene.environment.cdf[i]

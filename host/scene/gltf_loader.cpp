@@ -120,17 +120,15 @@ bool IsRenderedExtension(const std::string& ext) {
 // What the file uses that vkpt does not render yet (printed by -v).
 void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   auto& ig = scene.ignoredFeatures;
-  bool occlusionTex = false, transparent = false;
+  bool occlusionTex = false;
   std::set<std::string> extensionTextures;
   for (const tinygltf::Material& mat : src.m.materials) {
     occlusionTex |= mat.occlusionTexture.index >= 0;
-    transparent |= mat.alphaMode != "OPAQUE";
     for (const auto& [name, ext] : mat.extensions)
       if (ext.IsObject())
         for (const std::string& key : ext.Keys())
           if (key.ends_with("Texture")) extensionTextures.insert(name + "." + key);
   }
-  if (transparent) ig.push_back("alphaMode MASK/BLEND: surfaces are rendered opaque");
   if (occlusionTex) ig.push_back("occlusion textures: not applied (a path tracer computes occlusion)");
   for (const std::string& t : extensionTextures) ig.push_back(t + ": the factor is used alone");
   if (!src.m.animations.empty())

@@ -35,11 +35,28 @@ class MaterialReader {
     mat.transmission = float(Unit(ExtensionNumber("KHR_materials_transmission", "transmissionFactor", 0.0),
                                   "KHR_materials_transmission.transmissionFactor"));
     mat.flags = (in_.doubleSided ? shader::kMaterialDoubleSided : 0u) |
-                (in_.extensions.count("KHR_materials_unlit") ? shader::kMaterialUnlit : 0u) | ReadVolume(mat);
+                (in_.extensions.count("KHR_materials_unlit") ? shader::kMaterialUnlit : 0u) | ReadVolume(mat) |
+                ReadAlpha(mat);
     return mat;
   }
 
  private:
+  // glTF §3.9.4 alpha coverage: baseColorFactor's alpha and the mode and cutoff that say
+  // how it is used. Returns kMaterialAlphaMask, kMaterialAlphaBlend or 0 (OPAQUE: alpha
+  // is ignored).
+  uint32_t ReadAlpha(Material& mat) const {
+    const double alpha =
+        in_.pbrMetallicRoughness.baseColorFactor.size() == 4 ? in_.pbrMetallicRoughness.baseColorFactor[3] : 1.0;
+    if (!(alpha >= 0.0 && alpha <= 1.0)) Fail("pbrMetallicRoughness.baseColorFactor[3] is not in [0, 1]");
+    if (!(in_.alphaCutoff >= 0.0 && std::isfinite(in_.alphaCutoff))) Fail("alphaCutoff must be a finite number >= 0");
+    mat.alpha = float(alpha);
+    mat.alphaCutoff = float(in_.alphaCutoff);
+    if (in_.alphaMode == "OPAQUE") return 0u;
+    if (in_.alphaMode == "MASK") return shader::kMaterialAlphaMask;
+    if (in_.alphaMode == "BLEND") return shader::kMaterialAlphaBlend;
+    Fail("alphaMode \"" + in_.alphaMode + "\" is not OPAQUE, MASK or BLEND");
+  }
+
   // KHR_materials_volume: a thickness > 0 makes the transmissive surface the boundary of
   // a volume (rays refract, and attenuate inside by Beer–Lambert); without it the surface
   // is thin-walled. Returns kMaterialVolume or 0 and sets mat.attenuation.

@@ -178,6 +178,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       hasVolumes_(UsesVolumeMaterial(scene)),
       hasTextures_(!scene.textureRefs.empty()),
       hasNormalMaps_(!scene.tangents.empty()),
+      hasAlpha_(scene.alphaTested),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {
   for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
@@ -208,7 +209,7 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
                            "pathtrace", 2 * sizeof(uint32_t),
                            {frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
                             frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u, hasVolumes_ ? 1u : 0u,
-                            hasTextures_ ? 1u : 0u, hasNormalMaps_ ? 1u : 0u});
+                            hasTextures_ ? 1u : 0u, hasNormalMaps_ ? 1u : 0u, hasAlpha_ ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);

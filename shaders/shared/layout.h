@@ -80,6 +80,11 @@ const uint kMaterialDoubleSided = 1u;
 const uint kMaterialUnlit = 2u;     // KHR_materials_unlit: shows baseColor, reflects nothing
 const uint kMaterialVolume = 4u;    // KHR_materials_volume with thickness > 0: refracts, attenuates inside
 const uint kMaterialTextured = 8u;  // some TextureRef of the material names a texture
+// glTF alphaMode (shared/alpha.h): MASK cuts the surface where its alpha is below
+// alphaCutoff, BLEND makes it present with probability alpha; neither: OPAQUE.
+const uint kMaterialAlphaMask = 16u;
+const uint kMaterialAlphaBlend = 32u;
+const uint kMaterialAlphaTested = kMaterialAlphaMask | kMaterialAlphaBlend;
 
 // A glTF metallic-roughness material (shared/bsdf.h) plus emission.
 struct Material {
@@ -92,9 +97,13 @@ struct Material {
   vec3 attenuation;    // KHR_materials_volume: σ = −ln(attenuationColor) / attenuationDistance, per unit length
   float ior;           // KHR_materials_ior (1.5 when absent; 0: Fresnel is 1)
   float transmission;  // KHR_materials_transmission: the share of the dielectric base that is transmissive
-  uint flags;          // kMaterialDoubleSided | kMaterialUnlit | kMaterialVolume | kMaterialTextured
+  uint flags;          // kMaterialDoubleSided | kMaterialUnlit | kMaterialVolume | kMaterialTextured | kMaterialAlpha*
   float normalScale;   // normalTexture.scale: scales the tangent-space normal's x and y
+  float alpha;         // baseColorFactor's alpha
+  float alphaCutoff;   // MASK: the surface is present where its alpha is >= alphaCutoff
+  uint pad0;
   uint pad1;
+  uint pad2;
 };
 
 const uint kShadingHasNormals = 1u;
@@ -220,7 +229,7 @@ struct Light {
 // 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
 const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
-const uint kTexelsPerMaterial = 5u;
+const uint kTexelsPerMaterial = 6u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
 const uint kTexelsPerColors = 2u;

@@ -25,6 +25,7 @@
 //                                             at the sampled point, its texture ignored
 #ifndef VKPT_LIGHTS_H
 #define VKPT_LIGHTS_H
+#include "alpha.h"
 #include "environment.h"
 #include "estimator.h"
 #include "intersect.h"
@@ -130,10 +131,16 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
     ls.radiance = l.radiance;
     // The emission at x, as a ray hitting x would find it (shading_frame.h), so that both
     // strategies of multiple importance sampling estimate the same integrand.
+    // Where alpha leaves part of the emitter out, a ray finds that part with probability
+    // (its coverage), so the sample counts its emission times that.
+    if (VKPT_TEXTURES || VKPT_ALPHA) {
+      Material mat = VKPT_MATERIAL(tri.material);
 #ifndef VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_TEXTURE
-    if (VKPT_TEXTURES && (VKPT_MATERIAL(tri.material).flags & kMaterialTextured) != 0u)
-      ls.radiance *= EmissiveTexture(VKPT_SCENE_ARG tri.material, tri.sourceIndex, b.x, b.y);
+      if (VKPT_TEXTURES && (mat.flags & kMaterialTextured) != 0u)
+        ls.radiance *= EmissiveTexture(VKPT_SCENE_ARG tri.material, tri.sourceIndex, b.x, b.y);
 #endif
+      if (VKPT_ALPHA) ls.radiance *= Coverage(VKPT_SCENE_ARG mat, tri.material, tri.sourceIndex, b.x, b.y);
+    }
     // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
     // unnormalised direction: the emitter itself then lies beyond tMax.
     ls.shadowRay.dir = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl) - origin;

@@ -21,8 +21,9 @@
 //   VKPT_SCENE_ARG            the matching leading argument ("" in GLSL)
 //   VKPT_TRIANGLE(i), VKPT_MATERIAL(i), VKPT_LIGHT(i)   element access
 //   VKPT_LIGHT_CDF(i)         VKPT_LIGHT(i).cdf (the GPU fetches one texel for it)
-//   HitRecord TraceClosest(VKPT_SCENE_PARAM vec3 origin, vec3 dir, float tMax)
-//   bool TraceOccluded(VKPT_SCENE_PARAM vec3 origin, vec3 dir, float tMax)
+//   HitRecord TraceClosest(VKPT_SCENE_PARAM vec3 origin, vec3 dir, float tMax, uint alphaKey)
+//   bool TraceOccluded(VKPT_SCENE_PARAM vec3 origin, vec3 dir, float tMax, uint alphaKey)
+// which pass through the hits alpha.h's AlphaRejects(…, alphaKey) leaves out.
 #ifndef VKPT_PATH_H
 #define VKPT_PATH_H
 #include "bsdf.h"
@@ -252,6 +253,15 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   return true;
 }
 
+// The key of the alpha decisions (alpha.h) along the path's next ray: its shadow ray if
+// `shadow`, else s.ray. 0 where no material is MASK or BLEND.
+VKPT_FN uint RayAlphaKey(VKPT_SCENE_PARAM FrameParams params, PathState s, bool shadow) {
+  if (!VKPT_ALPHA) return 0u;
+  // ShadeHit has counted the vertex that set the shadow ray.
+  uvec4 h = RandomBits4(params.seed, s.pixel, s.sampleIndex, LightGroup(shadow ? s.bounce - 1u : s.bounce));
+  return shadow ? h.z : h.y;
+}
+
 // The pending shadow ray has been traced: the light sample counts if nothing blocked it.
 VKPT_FN void AddLightIfVisible(VKPT_INOUT(PathState) s, bool occluded) {
   s.shadowPending = false;
@@ -263,10 +273,12 @@ VKPT_FN PathSample TracePath(VKPT_SCENE_PARAM FrameParams params, uint px, uint 
   PathState s = StartPath(params, px, py, sampleIndex);
   bool more = true;
   while (more) {
-    HitRecord hit = TraceClosest(VKPT_SCENE_ARG s.ray.origin, s.ray.dir, kInfinity);
+    HitRecord hit =
+        TraceClosest(VKPT_SCENE_ARG s.ray.origin, s.ray.dir, kInfinity, RayAlphaKey(VKPT_SCENE_ARG params, s, false));
     more = ShadeHit(VKPT_SCENE_ARG params, s, hit);
     if (s.shadowPending)
-      AddLightIfVisible(s, TraceOccluded(VKPT_SCENE_ARG s.shadowRay.origin, s.shadowRay.dir, s.shadowTMax));
+      AddLightIfVisible(s, TraceOccluded(VKPT_SCENE_ARG s.shadowRay.origin, s.shadowRay.dir, s.shadowTMax,
+                                         RayAlphaKey(VKPT_SCENE_ARG params, s, true)));
   }
   return s.result;
 }

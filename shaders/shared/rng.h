@@ -30,8 +30,12 @@ VKPT_FN uvec4 Pcg4d(uvec4 v) {
 // The top 24 bits as a float in [0, 1): exact in binary32 on both sides, never 1.0.
 VKPT_FN float ToUnitFloat(uint bits) { return float(bits >> 8u) * (1.0f / 16777216.0f); }
 
+VKPT_FN uvec4 RandomBits4(uint seed, uint pixel, uint sampleIndex, uint group) {
+  return Pcg4d(uvec4(pixel, sampleIndex, group, seed));
+}
+
 VKPT_FN vec4 Random4(uint seed, uint pixel, uint sampleIndex, uint group) {
-  uvec4 h = Pcg4d(uvec4(pixel, sampleIndex, group, seed));
+  uvec4 h = RandomBits4(seed, pixel, sampleIndex, group);
   return vec4(ToUnitFloat(h.x), ToUnitFloat(h.y), ToUnitFloat(h.z), ToUnitFloat(h.w));
 }
 
@@ -100,7 +104,9 @@ VKPT_FN vec2 Sample2D(uint seed, uint pixel, uint sampleIndex, uint pair) {
 
 // How the estimator spends its dimensions (groups of four), identically on CPU and GPU.
 // Pair kGroupCamera of Sample2D: film jitter. At path vertex `bounce` (0 = camera hit):
-//   Random4(LightGroup): x: the BSDF lobe, w: Russian roulette (y, z unused)
+//   Random4(LightGroup): x: the BSDF lobe, w: Russian roulette
+//   RandomBits4(LightGroup): y: the alpha key (alpha.h) of the ray that finds the vertex
+//                        (the camera ray for vertex 0), z: that of the vertex's shadow ray
 //   Sample2D(LightGroup): the light and the point on it
 //   Sample2D(BsdfGroup):  the scattered direction within the lobe
 const uint kGroupCamera = 0u;
