@@ -38,11 +38,10 @@ VKPT_FN vec4 SampleSlot(VKPT_SCENE_PARAM uint material, uint slot, TriangleUVs u
   return SampleTexture(VKPT_SCENE_ARG VKPT_TEXTURE(ref.texture), uv, 0.0f);
 }
 
-// `mat` (material `material`, read from the table) at the point (b1, b2) of scene
-// triangle `sourceIndex`.
-VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, uint material, uint sourceIndex, float b1,
+// `mat` (material `material`, read from the table) at the point (b1, b2) of a triangle
+// with texture coordinates `uvs`.
+VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, uint material, TriangleUVs uvs, float b1,
                                    float b2) {
-  TriangleUVs uvs = VKPT_UVS_OF(sourceIndex);
   mat.baseColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotBaseColor, uvs, b1, b2));
   vec4 mr = SampleSlot(VKPT_SCENE_ARG material, kSlotMetallicRoughness, uvs, b1, b2);
   mat.roughness *= mr.g;

@@ -69,8 +69,17 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
   Triangle tri = VKPT_TRIANGLE(hit.triangle);
   SurfaceHit sh;
   sh.material = VKPT_MATERIAL(tri.material);
-  if (VKPT_TEXTURES && (sh.material.flags & kMaterialTextured) != 0u)
-    ApplyMaterialTextures(VKPT_SCENE_ARG sh.material, tri.material, tri.sourceIndex, hit.b1, hit.b2);
+  // The texture coordinates are read once, for the material's textures and its normal map.
+  bool normalMapped = false;
+  vec3 normalTexel = vec3(0.0f);
+  if (VKPT_TEXTURES && (sh.material.flags & kMaterialTextured) != 0u) {
+    TriangleUVs uvs = VKPT_UVS_OF(tri.sourceIndex);
+    ApplyMaterialTextures(VKPT_SCENE_ARG sh.material, tri.material, uvs, hit.b1, hit.b2);
+    if (VKPT_NORMAL_MAPS) {
+      normalMapped = VKPT_TEXTURE_REF(tri.material * kTextureSlots + kSlotNormal).texture != kInvalidIndex;
+      if (normalMapped) normalTexel = vec3(SampleSlot(VKPT_SCENE_ARG tri.material, kSlotNormal, uvs, hit.b1, hit.b2));
+    }
+  }
   if (VKPT_VERTEX_COLORS)
     sh.material.baseColor *= vec3(InterpolatedColor(VKPT_VERTEX_COLORS_OF(tri.sourceIndex), hit.b1, hit.b2));
   sh.light = tri.light;
@@ -93,15 +102,10 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
       if (shadingNormal) n = interpolated;
     }
   }
-  if (VKPT_NORMAL_MAPS && (sh.material.flags & kMaterialTextured) != 0u) {
-    TextureRef ref = VKPT_TEXTURE_REF(tri.material * kTextureSlots + kSlotNormal);
-    if (ref.texture != kInvalidIndex) {
-      vec3 texel =
-          vec3(SampleSlot(VKPT_SCENE_ARG tri.material, kSlotNormal, VKPT_UVS_OF(tri.sourceIndex), hit.b1, hit.b2));
-      n = PerturbedNormal(n, InterpolatedTangent(VKPT_TANGENTS_OF(tri.sourceIndex), hit.b1, hit.b2), texel,
-                          sh.material.normalScale);
-      shadingNormal = true;
-    }
+  if (normalMapped) {
+    n = PerturbedNormal(n, InterpolatedTangent(VKPT_TANGENTS_OF(tri.sourceIndex), hit.b1, hit.b2), normalTexel,
+                        sh.material.normalScale);
+    shadingNormal = true;
   }
   vec3 ns = shadingNormal ? AdaptShadingNormal(frontFace ? n : -n, sh.ng, -ray.dir) : sh.ng;
   // A flat surface needs no adaptation: the mirror direction of any ωo above it is above it.
