@@ -38,18 +38,17 @@ glm::dvec3 MeanEmissiveTexture(const RenderScene& scene, const shader::Triangle&
   const shader::Texture& tex = scene.textures[ref.texture];
   const shader::TriangleUVs& uvs = scene.uvs[t.sourceIndex];
   auto uvAt = [&](float b1, float b2) {
-    glm::vec2 uv = shader::TransformUV(ref, shader::InterpolatedUV(uvs, ref.texCoord, b1, b2));
-    return glm::dvec2(uv) * glm::dvec2(tex.width, tex.height);
+    return shader::TransformUV(ref, shader::InterpolatedUV(uvs, ref.texCoord, b1, b2));
   };
-  const glm::dvec2 e1 = uvAt(1, 0) - uvAt(0, 0), e2 = uvAt(0, 1) - uvAt(0, 0);
+  auto texelAt = [&](float b1, float b2) { return glm::dvec2(uvAt(b1, b2)) * glm::dvec2(tex.width, tex.height); };
+  const glm::dvec2 e1 = texelAt(1, 0) - texelAt(0, 0), e2 = texelAt(0, 1) - texelAt(0, 0);
   const double texels = 0.5 * std::abs(e1.x * e2.y - e1.y * e2.x);
   const float lod = texels > 16.0 ? float(0.5 * std::log2(texels / 16.0)) : 0.0f;
   glm::dvec3 sum(0.0);
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       glm::vec2 b = shader::SampleUniformTriangle((i + 0.5f) / 4.0f, (j + 0.5f) / 4.0f);
-      glm::vec2 uv = shader::TransformUV(ref, shader::InterpolatedUV(uvs, ref.texCoord, b.x, b.y));
-      sum += glm::dvec3(shader::SampleTexture(scene, tex, uv, lod));
+      sum += glm::dvec3(shader::SampleTexture(scene, tex, uvAt(b.x, b.y), lod));
     }
   return sum / 16.0;
 }
