@@ -105,6 +105,27 @@ std::vector<shader::TriangleShading> TriangleShadings(const Scene& scene, unsign
   return shading;
 }
 
+// The scene's tangents, octahedrally encoded like the normals (TriangleShadings), as
+// many and threaded alike.
+std::vector<shader::TriangleTangents> PackTangents(const Scene& scene, unsigned threads) {
+  std::vector<shader::TriangleTangents> packed(scene.tangents.size(), shader::TriangleTangents{0, 0, 0, 0});
+  ParallelFor(
+      scene.tangents.size(), ThreadCount(threads),
+      [&](size_t i) {
+        const VertexTangents& t = scene.tangents[i];
+        shader::TriangleTangents& p = packed[i];
+        uint32_t* codes[3] = {&p.t0, &p.t1, &p.t2};
+        for (int k = 0; k < 3; ++k) {
+          const glm::vec3 v(t.t[k]);
+          if (glm::dot(v, v) > 0.0f) *codes[k] = EncodeOctahedral(glm::normalize(v));
+          else p.signs |= shader::kTangentsMissing;  // the normal map is not applied here
+          if (t.t[k].w < 0.0f) p.signs |= 1u << k;
+        }
+      },
+      4096);
+  return packed;
+}
+
 // The scene's vertex colours as unorm16 pairs (shared/vertex_color.h), or none.
 std::vector<shader::TriangleColors> PackVertexColors(const Scene& scene) {
   if (!scene.colors.empty() && scene.colors.size() != scene.triangles.size())
@@ -132,18 +153,7 @@ void AddTextures(const Scene& scene, unsigned threads, RenderScene& rs) {
   if (!scene.tangents.empty() && scene.tangents.size() != scene.triangles.size())
     throw Error(scene.path + ": " + std::to_string(scene.tangents.size()) + " tangent triples for " +
                 std::to_string(scene.triangles.size()) + " triangles");
-  rs.tangents.reserve(scene.tangents.size());
-  for (const VertexTangents& t : scene.tangents) {
-    shader::TriangleTangents packed{0, 0, 0, 0};
-    uint32_t* codes[3] = {&packed.t0, &packed.t1, &packed.t2};
-    for (int k = 0; k < 3; ++k) {
-      const glm::vec3 v(t.t[k]);
-      if (glm::dot(v, v) > 0.0f) *codes[k] = EncodeOctahedral(glm::normalize(v));
-      else packed.signs |= shader::kTangentsMissing;  // the normal map is not applied here
-      if (t.t[k].w < 0.0f) packed.signs |= 1u << k;
-    }
-    rs.tangents.push_back(packed);
-  }
+  rs.tangents = PackTangents(scene, threads);
   TextureStore store = BuildTextureStore(scene, threads);
   rs.textures = std::move(store.textures);
   rs.texels = std::move(store.words);
