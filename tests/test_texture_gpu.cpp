@@ -101,13 +101,10 @@ TEST_F(TextureGpuTest, LookupsReturnTheCpusBits) {
                  VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "results");
   vk::Buffer host(ctx, out.Size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "readback");
-  auto texel = [](uint32_t binding, const vk::TexelBuffer& t) {
-    return vk::BufferBinding{binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, t.buffer.Handle(), t.view.Handle()};
-  };
   vk::ComputePipeline pipe(ctx, kTextureLookupSpirv, sizeof(kTextureLookupSpirv),
-                           {texel(shader::kBindingTextures, textures),
-                            texel(shader::kBindingTexels, texels),
-                            texel(shader::kBindingTexelDecode, decode),
+                           {vk::TexelBinding(shader::kBindingTextures, textures),
+                            vk::TexelBinding(shader::kBindingTexels, texels),
+                            vk::TexelBinding(shader::kBindingTexelDecode, decode),
                             {20, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, in.Handle()},
                             {21, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, out.Handle()}},
                            "texture lookups");

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "vk/buffer.h"
 #include "vk/context.h"
 
 namespace vkpt::vk {
@@ -20,6 +21,10 @@ struct BufferBinding {
   VkBuffer buffer;        // the buffer types
   VkBufferView view = VK_NULL_HANDLE;  // UNIFORM_TEXEL_BUFFER
 };
+
+inline BufferBinding TexelBinding(uint32_t binding, const TexelBuffer& t) {
+  return {binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, t.buffer.Handle(), t.view.Handle()};
+}
 
 class ComputePipeline {
  public:

@@ -29,10 +29,6 @@ TexelBuffer UploadArray(const Context& ctx, std::span<const T> v, const char* wh
   return UploadTexelBuffer(ctx, v.data(), v.size() * sizeof(T), what);
 }
 
-BufferBinding TexelBinding(uint32_t binding, const TexelBuffer& t) {
-  return {binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, t.buffer.Handle(), t.view.Handle()};
-}
-
 Buffer Storage(const Context& ctx, VkDeviceSize size, const char* what) {
   const VkDeviceSize limit = ctx.Properties().limits.maxStorageBufferRange;
   if (size > limit)
