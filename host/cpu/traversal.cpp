@@ -38,8 +38,10 @@ int IntersectPair(const BvhPairNode& p, const RaySlabs& r, float tMax, float tEn
 // shader::IntersectTriangle (Möller–Trumbore) on the four triangles of a packet: the same
 // operations in the same order (glm's cross and left-to-right dot), so t, b1 and b2 are
 // bit-identical to the scalar test's. Returns the 4-bit mask of lanes with a hit in
-// (0, tMax).
-int IntersectPacket(const TrianglePacket& p, const RaySlabs& r, float tMax, Float4& t, Float4& b1, Float4& b2) {
+// (0, tMax). Always inlined: with four walks (closest or any hit, with or without alpha)
+// GCC stops inlining it, and the Cornell box's shadow rays cost 4 % more instructions.
+[[gnu::always_inline]] inline int IntersectPacket(const TrianglePacket& p, const RaySlabs& r, float tMax, Float4& t,
+                                                  Float4& b1, Float4& b2) {
   const Float4* d = r.dir;
   const Float4 px = d[1] * p.e2[2] - p.e2[1] * d[2];
   const Float4 py = d[2] * p.e2[0] - p.e2[2] * d[0];
