@@ -183,9 +183,9 @@ Verdict CompareEstimators(const Estimators& e, uint32_t spp, Scene (*makeScene)(
 }
 
 // The agreement test takes 512 samples per pixel (light sampling alone is the noisiest at
-// roughness 0.1); the mutants are caught with a quarter of that, and a bias only stands
-// out more with more samples.
-constexpr uint32_t kSpp = 512, kMutantSpp = 128;
+// roughness 0.1; a quarter under sanitizers); the mutants are caught with a quarter of
+// that, and a bias only stands out more with more samples.
+constexpr uint32_t kSpp = 512 / kSampleDivisor, kMutantSpp = 128;
 
 TEST(Mis, LightBsdfAndMisEstimatesAgreeAtThreeRoughnesses) {
   Verdict v = CompareEstimators(Estimators{}, kSpp);

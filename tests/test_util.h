@@ -19,6 +19,13 @@ namespace vkpt::test {
 #define VKPT_TIME_SCALE 1
 #endif
 constexpr double kTimeScale = VKPT_TIME_SCALE;
+// The longest statistical tests, whose correct estimators must pass, take this many
+// times fewer samples in a sanitizer build: there they run the code for the sanitizers,
+// and the plain build measures (their mutants keep their samples everywhere).
+#ifndef VKPT_SAMPLE_DIVISOR
+#define VKPT_SAMPLE_DIVISOR 1
+#endif
+constexpr uint32_t kSampleDivisor = VKPT_SAMPLE_DIVISOR;
 
 std::string SourcePath(const std::string& relative);  // <repo>/relative
 std::string CorpusPath(const std::string& relative);  // ../shared/gltf-corpus/relative
