@@ -65,6 +65,10 @@ layout(constant_id = 7) const uint kSceneHasNormalMaps = 1u;
 // 0 when no triangle's material is alpha MASK or BLEND: see shared/alpha.h.
 layout(constant_id = 8) const uint kSceneHasAlpha = 1u;
 #define VKPT_ALPHA (kSceneHasAlpha != 0u)
+// 0 when no material has a transmission, specular or specular colour texture: see
+// shared/material_textures.h.
+layout(constant_id = 9) const uint kSceneHasExtensionTextures = 1u;
+#define VKPT_EXTENSION_TEXTURES (kSceneHasExtensionTextures != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

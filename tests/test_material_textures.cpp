@@ -14,7 +14,10 @@
 #include "gltf_builder.h"
 #include "png_writer.h"
 #include "render/render_scene.h"
+#include "render/scene_access.h"
+#include "render/texture_store.h"
 #include "scene/gltf_loader.h"
+#include "shared/material_textures.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -79,6 +82,77 @@ TEST(MaterialTextures, BaseColorTextureWithItsSamplerAndCoordinates) {
 }
 
 // Without a sampler glTF leaves filtering to the renderer: repeat, trilinear.
+// Every slot scales its factors by its own channels: one 1 × 1 image whose four bytes
+// differ, read as colour (sRGB) by the colour slots and as data by the others.
+TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
+  using namespace shader;
+  Scene s;
+  s.images.push_back({"texel", 1, 1, {51, 102, 153, 204}});
+  s.textures = {{0, 0u}, {0, kTextureSrgb}};
+  RenderScene rs = TexturesOnly(s);
+  const bool colour[kTextureSlots] = {true, false, true, false, false, false, true};
+  for (uint32_t slot = 0; slot < kTextureSlots; ++slot)
+    rs.textureRefs.push_back({colour[slot] ? 1u : 0u, 0, 1, 0, 0, 0, 1, 0});
+  rs.uvs.push_back({});
+  Material m{};
+  m.baseColor = m.emission = m.specularColor = glm::vec3(1.0f);
+  m.metallic = m.roughness = m.transmission = m.specular = 1.0f;
+  m.flags = kMaterialTextured | kMaterialExtensionTextured;
+  ApplyMaterialTextures(rs, m, 0, rs.uvs[0], 0.25f, 0.25f);
+  const std::vector<float> table = TexelDecodeTable();
+  const glm::vec3 srgb(table[51], table[102], table[153]);
+  auto data = [&](int byte) { return table[kTexelDecodeLinear + byte]; };
+  EXPECT_EQ(m.baseColor, srgb);
+  EXPECT_EQ(m.roughness, data(102));  // G
+  EXPECT_EQ(m.metallic, data(153));   // B
+  EXPECT_EQ(m.emission, srgb);
+  EXPECT_EQ(m.transmission, data(51));  // R
+  EXPECT_EQ(m.specular, data(204));     // A
+  EXPECT_EQ(m.specularColor, srgb);
+  // Without kMaterialExtensionTextured the extensions' slots are not read.
+  Material plain{};
+  plain.transmission = plain.specular = 1.0f;
+  plain.specularColor = glm::vec3(1.0f);
+  plain.flags = kMaterialTextured;
+  ApplyMaterialTextures(rs, plain, 0, rs.uvs[0], 0.25f, 0.25f);
+  EXPECT_EQ(plain.transmission, 1.0f);
+  EXPECT_EQ(plain.specular, 1.0f);
+}
+
+// The material extensions' textureInfos reach their slots; thicknessTexture, which vkpt
+// does not apply, is listed.
+TEST(MaterialTextures, ExtensionTexturesFillTheirSlots) {
+  Scene s = Load(TexturedTriangle(
+      R"({"extensions":{"KHR_materials_transmission":{"transmissionTexture":{"index":0,"texCoord":1}},)"
+      R"("KHR_materials_specular":{"specularTexture":{"index":0},"specularColorTexture":{"index":0,)"
+      R"("extensions":{"KHR_texture_transform":{"offset":[0.5,0]}}}},)"
+      R"("KHR_materials_volume":{"thicknessFactor":1,"thicknessTexture":{"index":0}}}})"));
+  using namespace shader;
+  EXPECT_NE(s.materials[0].flags & kMaterialExtensionTextured, 0u);
+  EXPECT_EQ(Ref(s, 0, kSlotTransmission).texCoord, 1u);
+  EXPECT_EQ(Ref(s, 0, kSlotSpecular).texture, Ref(s, 0, kSlotTransmission).texture);  // both data
+  EXPECT_EQ(s.textures[Ref(s, 0, kSlotTransmission).texture].sampler & kTextureSrgb, 0u);
+  EXPECT_NE(s.textures[Ref(s, 0, kSlotSpecularColor).texture].sampler & kTextureSrgb, 0u);
+  EXPECT_EQ(Ref(s, 0, kSlotSpecularColor).m02, 0.5f);
+  EXPECT_EQ(Ref(s, 0, kSlotBaseColor).texture, kInvalidIndex);
+  std::string ignored;
+  for (const std::string& f : s.ignoredFeatures) ignored += f + "\n";
+  EXPECT_NE(ignored.find("KHR_materials_volume.thicknessTexture"), std::string::npos) << ignored;
+  EXPECT_EQ(ignored.find("transmissionTexture"), std::string::npos) << ignored;
+  EXPECT_EQ(ignored.find("specularTexture"), std::string::npos) << ignored;
+}
+
+TEST(MaterialTextures, ExtensionTextureIndicesAreChecked) {
+  try {
+    Load(TexturedTriangle(R"({"extensions":{"KHR_materials_transmission":{"transmissionTexture":{"index":3}}}})"));
+    FAIL() << "an out-of-range index loaded";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("KHR_materials_transmission.transmissionTexture.index refers to index 3"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(MaterialTextures, NoSamplerMeansRepeatAndTrilinear) {
   Scene s = Load(TexturedTriangle(R"({"emissiveTexture":{"index":0}})"));
   ASSERT_EQ(s.textures.size(), 1u);

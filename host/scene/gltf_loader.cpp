@@ -117,6 +117,12 @@ bool IsRenderedExtension(const std::string& ext) {
   return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
 }
 
+// Textures of material extensions that vkpt applies (host/scene/gltf_textures.cpp).
+bool IsAppliedExtensionTexture(const std::string& extension, const std::string& field) {
+  return (extension == "KHR_materials_transmission" && field == "transmissionTexture") ||
+         (extension == "KHR_materials_specular" && (field == "specularTexture" || field == "specularColorTexture"));
+}
+
 // What the file uses that vkpt does not render yet (printed by -v).
 void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   auto& ig = scene.ignoredFeatures;
@@ -127,7 +133,8 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
     for (const auto& [name, ext] : mat.extensions)
       if (ext.IsObject())
         for (const std::string& key : ext.Keys())
-          if (key.ends_with("Texture")) extensionTextures.insert(name + "." + key);
+          if (key.ends_with("Texture") && !IsAppliedExtensionTexture(name, key))
+            extensionTextures.insert(name + "." + key);
   }
   if (occlusionTex) ig.push_back("occlusion textures: not applied (a path tracer computes occlusion)");
   for (const std::string& t : extensionTextures) ig.push_back(t + ": the factor is used alone");

@@ -28,6 +28,9 @@ const Slot kBaseColor{shader::kSlotBaseColor, "pbrMetallicRoughness.baseColorTex
 const Slot kMetallicRoughness{shader::kSlotMetallicRoughness, "pbrMetallicRoughness.metallicRoughnessTexture", false};
 const Slot kEmissive{shader::kSlotEmissive, "emissiveTexture", true};
 const Slot kNormal{shader::kSlotNormal, "normalTexture", false};
+const Slot kTransmission{shader::kSlotTransmission, "extensions.KHR_materials_transmission.transmissionTexture", false};
+const Slot kSpecular{shader::kSlotSpecular, "extensions.KHR_materials_specular.specularTexture", false};
+const Slot kSpecularColor{shader::kSlotSpecularColor, "extensions.KHR_materials_specular.specularColorTexture", true};
 
 uint32_t WrapMode(int gl, const std::string& what, const GltfSource& src) {
   switch (gl) {
@@ -99,6 +102,32 @@ class TextureReader {
       scene_.textureRefs.assign(scene_.materials.size() * shader::kTextureSlots, Unused());
     scene_.textureRefs[m * shader::kTextureSlots + slot.slot] = ref;
     scene_.materials[m].flags |= shader::kMaterialTextured;
+    if (slot.slot >= shader::kSlotTransmission) scene_.materials[m].flags |= shader::kMaterialExtensionTextured;
+  }
+
+  // The textureInfo `field` of materials[m]'s extension `extension` (index −1: none).
+  tinygltf::TextureInfo ExtensionTexture(uint32_t m, const char* extension, const char* field) const {
+    tinygltf::TextureInfo info;
+    const tinygltf::ExtensionMap& exts = src_.m.materials[m].extensions;
+    auto ext = exts.find(extension);
+    if (ext == exts.end() || !ext->second.IsObject() || !ext->second.Has(field)) return info;
+    const tinygltf::Value& v = ext->second.Get(field);
+    const std::string what = MaterialName(m) + ".extensions." + extension + "." + field;
+    if (!v.IsObject()) src_.Fail(what + " is not an object");
+    if (!v.Has("index") || !v.Get("index").IsInt()) src_.Fail(what + ".index is missing or not an integer");
+    info.index = v.Get("index").GetNumberAsInt();
+    src_.CheckIndex(info.index, src_.m.textures, what + ".index");
+    if (v.Has("texCoord")) {
+      const tinygltf::Value& tc = v.Get("texCoord");
+      if (!tc.IsInt() || tc.GetNumberAsInt() < 0) src_.Fail(what + ".texCoord is not a non-negative integer");
+      info.texCoord = tc.GetNumberAsInt();
+    }
+    if (v.Has("extensions")) {
+      const tinygltf::Value& e = v.Get("extensions");
+      if (!e.IsObject()) src_.Fail(what + ".extensions is not an object");
+      for (const std::string& key : e.Keys()) info.extensions[key] = e.Get(key);
+    }
+    return info;
   }
 
   // The images the textures use, in glTF order, each with the first place that uses it.
@@ -207,6 +236,9 @@ void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget&
     if (!std::isfinite(scale) || std::abs(scale) > 1e6)
       src.Fail("materials[" + std::to_string(m) + "].normalTexture.scale is not a finite number of at most 1e6");
     scene.materials[m].normalScale = float(scale);
+    reader.Read(m, kTransmission, reader.ExtensionTexture(m, "KHR_materials_transmission", "transmissionTexture"));
+    reader.Read(m, kSpecular, reader.ExtensionTexture(m, "KHR_materials_specular", "specularTexture"));
+    reader.Read(m, kSpecularColor, reader.ExtensionTexture(m, "KHR_materials_specular", "specularColorTexture"));
   }
   if (scene.textures.empty()) return;
 

@@ -175,6 +175,9 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       hasTextures_(!scene.textureRefs.empty()),
       hasNormalMaps_(!scene.tangents.empty()),
       hasAlpha_(scene.alphaTested),
+      hasExtensionTextures_(
+          std::any_of(scene.materials.begin(), scene.materials.end(),
+                      [](const shader::Material& m) { return (m.flags & shader::kMaterialExtensionTextured) != 0u; })),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {
   for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
@@ -182,30 +185,31 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
 
 RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {
   FrameBuffers b = MakeFrameBuffers(ctx_, uint64_t(frame.width) * frame.height);
-  ComputePipeline pipeline(ctx_, spirv_, spirvBytes_,
-                           {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.Handle()},
-                            TexelBinding(shader::kBindingTriangles, triangles_),
-                            TexelBinding(shader::kBindingNodes, nodes_),
-                            TexelBinding(shader::kBindingMaterials, materials_),
-                            TexelBinding(shader::kBindingLights, lights_),
-                            TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
-                            TexelBinding(shader::kBindingShading, shading_),
-                            TexelBinding(shader::kBindingVertexColors, vertexColors_),
-                            TexelBinding(shader::kBindingVertexUVs, uvs_),
-                            TexelBinding(shader::kBindingTangents, tangents_),
-                            TexelBinding(shader::kBindingMaterialTextures, textureRefs_),
-                            TexelBinding(shader::kBindingTextures, textures_),
-                            TexelBinding(shader::kBindingTexels, texels_),
-                            TexelBinding(shader::kBindingTexelDecode, texelDecode_),
-                            TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
-                            TexelBinding(shader::kBindingEnvDistribution, envDistribution_),
-                            {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
-                            {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
-                            {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
-                           "pathtrace", 2 * sizeof(uint32_t),
-                           {frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
-                            frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u, hasVolumes_ ? 1u : 0u,
-                            hasTextures_ ? 1u : 0u, hasNormalMaps_ ? 1u : 0u, hasAlpha_ ? 1u : 0u});
+  ComputePipeline pipeline(
+      ctx_, spirv_, spirvBytes_,
+      {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.Handle()},
+       TexelBinding(shader::kBindingTriangles, triangles_),
+       TexelBinding(shader::kBindingNodes, nodes_),
+       TexelBinding(shader::kBindingMaterials, materials_),
+       TexelBinding(shader::kBindingLights, lights_),
+       TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
+       TexelBinding(shader::kBindingShading, shading_),
+       TexelBinding(shader::kBindingVertexColors, vertexColors_),
+       TexelBinding(shader::kBindingVertexUVs, uvs_),
+       TexelBinding(shader::kBindingTangents, tangents_),
+       TexelBinding(shader::kBindingMaterialTextures, textureRefs_),
+       TexelBinding(shader::kBindingTextures, textures_),
+       TexelBinding(shader::kBindingTexels, texels_),
+       TexelBinding(shader::kBindingTexelDecode, texelDecode_),
+       TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
+       TexelBinding(shader::kBindingEnvDistribution, envDistribution_),
+       {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
+       {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
+       {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
+      "pathtrace", 2 * sizeof(uint32_t),
+      {frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
+       frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u, hasVolumes_ ? 1u : 0u, hasTextures_ ? 1u : 0u,
+       hasNormalMaps_ ? 1u : 0u, hasAlpha_ ? 1u : 0u, hasExtensionTextures_ ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);

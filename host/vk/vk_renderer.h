@@ -54,7 +54,7 @@ class GpuRenderer {
   // The environment map's texels and CDFs; without a map one zero texel each, so that the
   // descriptor set is complete all the same.
   TexelBuffer envRadiance_, envDistribution_;
-  // What the scene has, for pathtrace.comp's specialization constants 0-8 (the frame
+  // What the scene has, for pathtrace.comp's specialization constants 0-9 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
   uint32_t lightTypes_ = 0;          // bit 1 << type for each type in the light table
   bool hasGlossy_;                   // some triangle's material is not Lambertian
@@ -64,6 +64,7 @@ class GpuRenderer {
   bool hasTextures_;                 // some material has a texture
   bool hasNormalMaps_;               // some material has a normal texture
   bool hasAlpha_;                    // some triangle's material is alpha MASK or BLEND
+  bool hasExtensionTextures_;        // some material has a texture of a material extension
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 

@@ -85,6 +85,7 @@ const uint kMaterialTextured = 8u;  // some TextureRef of the material names a t
 const uint kMaterialAlphaMask = 16u;
 const uint kMaterialAlphaBlend = 32u;
 const uint kMaterialAlphaTested = kMaterialAlphaMask | kMaterialAlphaBlend;
+const uint kMaterialExtensionTextured = 64u;  // a TextureRef of slot kSlotTransmission or above names a texture
 
 // A glTF metallic-roughness material (shared/bsdf.h) plus emission.
 struct Material {
@@ -97,7 +98,7 @@ struct Material {
   vec3 attenuation;    // KHR_materials_volume: σ = −ln(attenuationColor) / attenuationDistance, per unit length
   float ior;           // KHR_materials_ior (1.5 when absent; 0: Fresnel is 1)
   float transmission;  // KHR_materials_transmission: the share of the dielectric base that is transmissive
-  uint flags;          // kMaterialDoubleSided | kMaterialUnlit | kMaterialVolume | kMaterialTextured | kMaterialAlpha*
+  uint flags;          // kMaterial* above
   float normalScale;   // normalTexture.scale: scales the tangent-space normal's x and y
   float alpha;         // baseColorFactor's alpha
   float alphaCutoff;   // MASK: the surface is present where its alpha is >= alphaCutoff
@@ -199,7 +200,10 @@ const uint kSlotBaseColor = 0u;          // RGB × baseColor, A × alpha
 const uint kSlotMetallicRoughness = 1u;  // G × roughness, B × metallic
 const uint kSlotEmissive = 2u;           // RGB × emission
 const uint kSlotNormal = 3u;             // tangent-space normal (shared/normal_map.h)
-const uint kTextureSlots = 4u;
+const uint kSlotTransmission = 4u;       // R × transmission (KHR_materials_transmission)
+const uint kSlotSpecular = 5u;           // A × specular (KHR_materials_specular)
+const uint kSlotSpecularColor = 6u;      // RGB × specularColor (KHR_materials_specular)
+const uint kTextureSlots = 7u;
 
 // Light types (shared/lights.h).
 const uint kLightTriangle = 0u;          // emits from its front face

@@ -1,6 +1,9 @@
 // A material's textures applied at a surface point (glTF 2.0 §3.9): the base colour
 // texture multiplies baseColorFactor, the metallic-roughness texture's G and B channels
-// the roughness and metallic factors, the emissive texture the emissive factor.
+// the roughness and metallic factors, the emissive texture the emissive factor; and the
+// material extensions' textures their factors: KHR_materials_transmission's R channel
+// the transmission, KHR_materials_specular's A channel the specular factor and its colour
+// texture the specular colour.
 //
 // Scene access, as in texture.h, plus
 //   VKPT_TEXTURE_REF(i)  TextureRef i: slot s of material m is i = m · kTextureSlots + s
@@ -16,6 +19,11 @@
 // material has a texture (and the scene has no TriangleUVs to read).
 #ifndef VKPT_TEXTURES
 #define VKPT_TEXTURES true
+#endif
+// Likewise VKPT_EXTENSION_TEXTURES, false when no material has a texture in a slot from
+// kSlotTransmission on (kMaterialExtensionTextured).
+#ifndef VKPT_EXTENSION_TEXTURES
+#define VKPT_EXTENSION_TEXTURES true
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -47,6 +55,11 @@ VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, ui
   mat.roughness *= mr.g;
   mat.metallic *= mr.b;
   mat.emission *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotEmissive, uvs, b1, b2));
+  if (VKPT_EXTENSION_TEXTURES && (mat.flags & kMaterialExtensionTextured) != 0u) {
+    mat.transmission *= SampleSlot(VKPT_SCENE_ARG material, kSlotTransmission, uvs, b1, b2).r;
+    mat.specular *= SampleSlot(VKPT_SCENE_ARG material, kSlotSpecular, uvs, b1, b2).a;
+    mat.specularColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotSpecularColor, uvs, b1, b2));
+  }
 }
 
 // The emissive texture alone, for light sampling: the factor by which the emission at
