@@ -168,7 +168,8 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, Scene& scene, M
     for (DecodedPrimitive& prim : mesh) {
       if (!normalMapped) break;
       const shader::TextureRef& ref = scene.textureRefs[prim.material * shader::kTextureSlots + shader::kSlotNormal];
-      if (ref.texture != shader::kInvalidIndex) GenerateMissingTangents(prim, ref.texCoord);
+      if (ref.texture != shader::kInvalidIndex && GenerateMissingTangents(prim, ref.texCoord))
+        ++scene.generatedTangentPrimitives;
     }
   CheckCameras(src);
   CheckLights(src);

@@ -162,8 +162,8 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
   return decoded;
 }
 
-void GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet) {
-  if (!prim.tangents.empty() || uvSet > 1 || prim.uvs[uvSet].empty()) return;
+bool GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet) {
+  if (!prim.tangents.empty() || uvSet > 1 || prim.uvs[uvSet].empty()) return false;
   std::vector<glm::vec3> normals = prim.normals;
   if (normals.empty()) {
     normals.assign(prim.positions.size(), glm::vec3(0.0f));
@@ -177,6 +177,7 @@ void GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet) {
       if (glm::dot(n, n) > 0.0f) n = glm::normalize(n);
   }
   prim.tangents = GenerateTangents(prim.positions, normals, prim.uvs[uvSet], prim.indices);
+  return true;
 }
 
 uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim) {

@@ -34,7 +34,8 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
 // MikkTSpace tangents (scene/tangent_space.h) for a primitive that supplies no TANGENT,
 // from its normals — for a flat primitive, the area-weighted face normals around each
 // vertex — and texture coordinate set `uvSet`; it keeps none without those coordinates.
-void GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet);
+// Returns whether it generated them.
+bool GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet);
 
 // Triangles a primitive makes, from its accessors' counts alone (nothing is decoded).
 uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim);

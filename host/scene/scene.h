@@ -111,6 +111,7 @@ struct Scene {
   Bounds3f bounds;
 
   // What a user should know about what was (not) loaded; printed by -v.
+  uint32_t generatedTangentPrimitives = 0;  // normal-mapped primitives given MikkTSpace tangents
   std::vector<std::string> warnings;
   std::vector<std::string> ignoredFeatures;
   // ContentHash of the glTF file and every buffer it loaded (for reports: --stats).
