@@ -55,10 +55,10 @@ TEST(Cli, HelpListsEveryOption) {
     EXPECT_TRUE(r.err.empty()) << r.err;
     EXPECT_NE(r.out.find("usage:"), std::string::npos) << r.out;
     for (const char* opt :
-         {"--scene",    "--out",     "--width",   "--height",       "--spp",        "--seed",      "--max-depth",
-          "--rr-depth", "--backend", "--device",  "--list-devices", "--validation", "--batch",     "--threads",
-          "--compare",  "--diff",    "--camera",  "--background",   "--exposure",   "--leaf-size", "--splits",
-          "--stats",    "-v",        "--verbose", "--help",         "--version"})
+         {"--scene",    "--out",     "--width",   "--height",       "--spp",        "--seed",       "--max-depth",
+          "--rr-depth", "--backend", "--device",  "--list-devices", "--validation", "--batch",      "--threads",
+          "--compare",  "--diff",    "--camera",  "--background",   "--exposure",   "--leaf-size",  "--splits",
+          "--stats",    "-v",        "--verbose", "--help",         "--version",    "--texture-lod"})
       EXPECT_NE(r.out.find(opt), std::string::npos) << flag << " output does not mention " << opt;
     EXPECT_NE(r.out.find(".png"), std::string::npos);
     EXPECT_NE(r.out.find(".pfm"), std::string::npos);
@@ -94,12 +94,30 @@ TEST(Cli, UnknownOptionIsUsageError) {
 TEST(Cli, BadValuesAreUsageErrors) {
   const std::string out = TempPath("cli-bad-values.png");
   const std::vector<std::vector<std::string>> cases = {
-      {"--spp", "0"},         {"--spp", "abc"},        {"--spp", "4x"},          {"--spp", ""},
-      {"--width", "-3"},      {"--width", "0"},        {"--height", "99999"},    {"--threads", "0"},
-      {"--backend", "foo"},   {"--background", "1,2"}, {"--background", "1,2,3,4"}, {"--background", "-1"},
-      {"--background", "a"},  {"--leaf-size", "16"},   {"--exposure", "nan"},    {"--seed", "-1"},
-      {"--max-depth", "1.5"}, {"--camera", "x"},       {"--spp"},                {"--batch", "0"},
-      {"--device", ""},       {"--rr-depth", "1025"},      {"--splits", "sbvh"},
+      {"--spp", "0"},
+      {"--spp", "abc"},
+      {"--spp", "4x"},
+      {"--spp", ""},
+      {"--width", "-3"},
+      {"--width", "0"},
+      {"--height", "99999"},
+      {"--threads", "0"},
+      {"--backend", "foo"},
+      {"--background", "1,2"},
+      {"--background", "1,2,3,4"},
+      {"--background", "-1"},
+      {"--background", "a"},
+      {"--leaf-size", "16"},
+      {"--exposure", "nan"},
+      {"--seed", "-1"},
+      {"--max-depth", "1.5"},
+      {"--camera", "x"},
+      {"--spp"},
+      {"--batch", "0"},
+      {"--device", ""},
+      {"--rr-depth", "1025"},
+      {"--splits", "sbvh"},
+      {"--texture-lod", "auto"},
   };
   for (const std::vector<std::string>& c : cases) {
     std::vector<std::string> args = {"--scene", kCornell, "--out", out};

@@ -98,7 +98,7 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   m.baseColor = m.emission = m.specularColor = glm::vec3(1.0f);
   m.metallic = m.roughness = m.transmission = m.specular = 1.0f;
   m.flags = kMaterialTextured | kMaterialExtensionTextured;
-  ApplyMaterialTextures(rs, m, 0, rs.uvs[0], 0.25f, 0.25f);
+  ApplyMaterialTextures(rs, m, 0, rs.uvs[0], 0.25f, 0.25f, kLevelZero);
   const std::vector<float> table = TexelDecodeTable();
   const glm::vec3 srgb(table[51], table[102], table[153]);
   auto data = [&](int byte) { return table[kTexelDecodeLinear + byte]; };
@@ -114,7 +114,7 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   plain.transmission = plain.specular = 1.0f;
   plain.specularColor = glm::vec3(1.0f);
   plain.flags = kMaterialTextured;
-  ApplyMaterialTextures(rs, plain, 0, rs.uvs[0], 0.25f, 0.25f);
+  ApplyMaterialTextures(rs, plain, 0, rs.uvs[0], 0.25f, 0.25f, kLevelZero);
   EXPECT_EQ(plain.transmission, 1.0f);
   EXPECT_EQ(plain.specular, 1.0f);
 }

@@ -35,6 +35,15 @@ namespace {
 
 using shader::MaxComponent;
 
+// " alpha MASK (cutoff c)", " alpha BLEND", or nothing for OPAQUE; with the factor's alpha.
+std::string AlphaNote(const Material& m) {
+  char note[64] = "";
+  if (m.flags & shader::kMaterialAlphaMask)
+    std::snprintf(note, sizeof note, " alpha MASK %.3g (cutoff %.3g)", m.alpha, m.alphaCutoff);
+  else if (m.flags & shader::kMaterialAlphaBlend) std::snprintf(note, sizeof note, " alpha BLEND %.3g", m.alpha);
+  return note;
+}
+
 void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& cam, uint32_t camIndex) {
   std::printf("scene: %s\n", scene.path.c_str());
   std::printf("  triangles: %zu, materials: %zu (incl. default), lights: %zu\n", scene.triangles.size(),
@@ -43,11 +52,11 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
     const Material& m = scene.materials[i];
     std::printf(
         "  material %zu \"%s\": baseColor (%.4g, %.4g, %.4g) metallic %.3g roughness %.3g specular %.3g ior %.3g "
-        "transmission %.3g%s emission (%.6g, %.6g, %.6g)%s%s\n",
+        "transmission %.3g%s emission (%.6g, %.6g, %.6g)%s%s%s\n",
         i, scene.materialNames[i].c_str(), m.baseColor.x, m.baseColor.y, m.baseColor.z, m.metallic, m.roughness,
         m.specular, m.ior, m.transmission, (m.flags & shader::kMaterialVolume) ? " (volume)" : "", m.emission.x,
         m.emission.y, m.emission.z, (m.flags & shader::kMaterialDoubleSided) ? " double-sided" : "",
-        (m.flags & shader::kMaterialUnlit) ? " unlit" : "");
+        (m.flags & shader::kMaterialUnlit) ? " unlit" : "", AlphaNote(m).c_str());
   }
   if (!scene.colors.empty()) std::printf("  vertex colours (COLOR_0): multiply the base colour\n");
   if (!scene.textures.empty()) {
@@ -56,6 +65,9 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
     std::printf("  textures: %zu from %zu images, %llu texels at level 0\n", scene.textures.size(), scene.images.size(),
                 (unsigned long long)texels);
   }
+  if (scene.generatedTangentPrimitives > 0)
+    std::printf("  tangents: generated (MikkTSpace) for %u normal-mapped primitive(s) without TANGENT\n",
+                scene.generatedTangentPrimitives);
   std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", scene.bounds.lo.x, scene.bounds.lo.y,
               scene.bounds.lo.z, scene.bounds.hi.x, scene.bounds.hi.y, scene.bounds.hi.z);
   char which[16] = "default";
@@ -201,6 +213,7 @@ shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, g
   params.sampleCount = o.spp;
   params.maxDepth = o.maxDepth;
   params.rrDepth = o.rrDepth;
+  params.textureLod = o.textureLod ? 1u : 0u;
   if (!o.env.empty()) {
     SetEnvironmentParams(params, rs.environment, o.envRotation, o.envIntensity);
   } else if (o.background) {

@@ -71,6 +71,9 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      what faced -Z to -X [default: 0]
   --env-intensity X  scale the map's radiance by X >= 0 [default: 1]
   --exposure STOPS   PNG only: scale radiance by 2^STOPS before sRGB encoding [default: 0]
+  --texture-lod MODE mip levels of texture lookups: cones (each path's ray cone picks the
+                     level its footprint covers) or none (level 0 everywhere, which
+                     the samples of each pixel then average) [default: cones]
   --leaf-size N      maximum triangles per BVH leaf, 1..15 [default: 8]
   --splits MODE      how the BVH divides the scene: object (each triangle in one leaf),
                      spatial (planes may also cut triangles, which then sit in several
@@ -152,6 +155,11 @@ Options ParseOptions(int argc, const char* const* argv) {
        [&](const std::string& opt, const std::string& v) { o.envRotation = ParseNumber(opt, v, -3600.0f, 3600.0f); }},
       {"--env-intensity",
        [&](const std::string& opt, const std::string& v) { o.envIntensity = ParseNumber(opt, v, 0.0f, 1e30f); }},
+      {"--texture-lod",
+       [&](const std::string&, const std::string& v) {
+         if (v != "cones" && v != "none") throw UsageError("--texture-lod must be cones or none, got \"" + v + "\"");
+         o.textureLod = v == "cones";
+       }},
       {"--splits",
        [&](const std::string&, const std::string& v) {
          std::optional<SplitMode> mode = ParseSplitMode(v);

@@ -43,6 +43,7 @@ JsonObject OptionsJson(const Options& o) {
   j.Num("exposure", o.exposure)
       .Raw("background", o.background ? Vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]) : "null");
   j.Str("env", o.env).Num("env_rotation", o.envRotation).Num("env_intensity", o.envIntensity);
+  j.Str("texture_lod", o.textureLod ? "cones" : "none");
   j.Int("leaf_size", o.leafSize).Str("splits", SplitName(o.splits));
   j.Int("max_memory", o.load.maxMemory)
       .Int("max_texels", o.load.maxTextureTexels)

@@ -221,6 +221,7 @@ shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& came
   shader::FrameParams p{};
   p.lightCount = uint32_t(scene.lights.size());
   p.envLight = shader::kInvalidIndex;
+  p.textureLod = 1u;
   for (uint32_t i = 0; i < scene.lights.size(); ++i)
     if (scene.lights[i].type == shader::kLightEnvironment) p.envLight = i;
   p.nodeCount = scene.bvhStats.nodes;

@@ -67,7 +67,8 @@ bool HasLightSources(const RenderScene& scene);
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {}, bool forCpu = true);
 
 // The frame constants for a scene, camera and image size; seed, sample range, depths and
-// background are left 0 for the caller, the environment map unturned at intensity 1.
+// background are left 0 for the caller, the environment map unturned at intensity 1,
+// mip levels chosen by ray cones.
 shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height);
 
 }  // namespace vkpt

@@ -40,7 +40,7 @@ VKPT_FN float Coverage(VKPT_SCENE_PARAM Material mat, uint material, uint source
   if ((mat.flags & kMaterialAlphaTested) == 0u) return 1.0f;
   float alpha = mat.alpha;
   if (VKPT_TEXTURES && (mat.flags & kMaterialTextured) != 0u)
-    alpha *= SampleSlot(VKPT_SCENE_ARG material, kSlotBaseColor, VKPT_UVS_OF(sourceIndex), b1, b2).a;
+    alpha *= SampleSlot(VKPT_SCENE_ARG material, kSlotBaseColor, VKPT_UVS_OF(sourceIndex), b1, b2, kLevelZero).a;
   if (VKPT_VERTEX_COLORS) alpha *= InterpolatedColor(VKPT_VERTEX_COLORS_OF(sourceIndex), b1, b2).a;
   if ((mat.flags & kMaterialAlphaMask) != 0u) return alpha >= mat.alphaCutoff ? 1.0f : 0.0f;
   return alpha;

@@ -287,7 +287,7 @@ struct FrameParams {
   uint nodeCopies;    // 1, or 8 direction-ordered copies of the BVH (see bvh.h)
   uint tileRowStride; // GPU: workgroup row y renders tile row (y * stride) mod rows
   uint envLight;      // the environment map's entry in the light table, or kInvalidIndex
-  uint pad2;
+  uint textureLod;    // 1: mip levels chosen by ray cones (shared/ray_cone.h); 0: level 0 everywhere
   // The environment map (shared/environment.h): envWidth == 0 means none, and rays that
   // leave the scene see `background` instead.
   uint envWidth;

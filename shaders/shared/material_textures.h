@@ -13,6 +13,7 @@
 #include "prelude.h"  // first, as in every shared header
 
 #include "layout.h"
+#include "ray_cone.h"
 #include "texture.h"
 
 // A shader may define VKPT_TEXTURES as a specialization constant that is false when no
@@ -37,35 +38,39 @@ VKPT_FN vec2 InterpolatedUV(TriangleUVs t, uint set, float b1, float b2) {
   return uv;
 }
 
-// Slot `slot` of `material` at the point, or 1 where the slot has no texture.
-VKPT_FN vec4 SampleSlot(VKPT_SCENE_PARAM uint material, uint slot, TriangleUVs uvs, float b1, float b2) {
+// Slot `slot` of `material` at the point, or 1 where the slot has no texture, at the mip
+// level of a ray cone's `footprint` (ray_cone.h; kLevelZero: level 0).
+VKPT_FN vec4 SampleSlot(VKPT_SCENE_PARAM uint material, uint slot, TriangleUVs uvs, float b1, float b2,
+                        float footprint) {
   TextureRef ref = VKPT_TEXTURE_REF(material * kTextureSlots + slot);
   if (ref.texture == kInvalidIndex) return vec4(1.0f);
+  Texture tex = VKPT_TEXTURE(ref.texture);
   vec2 uv = TransformUV(ref, InterpolatedUV(uvs, ref.texCoord, b1, b2));
-  // Level 0 everywhere: the pixel's many samples average its footprint.
-  return SampleTexture(VKPT_SCENE_ARG VKPT_TEXTURE(ref.texture), uv, 0.0f);
+  float lod = footprint <= kLevelZero ? 0.0f : TextureLod(footprint, ref, tex, uvs);
+  return SampleTexture(VKPT_SCENE_ARG tex, uv, lod);
 }
 
 // `mat` (material `material`, read from the table) at the point (b1, b2) of a triangle
-// with texture coordinates `uvs`.
+// with texture coordinates `uvs`, for a ray cone of `footprint`. Emission reads level 0,
+// as light sampling does (EmissiveTexture), so both MIS strategies see the same emitter.
 VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, uint material, TriangleUVs uvs, float b1,
-                                   float b2) {
-  mat.baseColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotBaseColor, uvs, b1, b2));
-  vec4 mr = SampleSlot(VKPT_SCENE_ARG material, kSlotMetallicRoughness, uvs, b1, b2);
+                                   float b2, float footprint) {
+  mat.baseColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotBaseColor, uvs, b1, b2, footprint));
+  vec4 mr = SampleSlot(VKPT_SCENE_ARG material, kSlotMetallicRoughness, uvs, b1, b2, footprint);
   mat.roughness *= mr.g;
   mat.metallic *= mr.b;
-  mat.emission *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotEmissive, uvs, b1, b2));
+  mat.emission *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotEmissive, uvs, b1, b2, kLevelZero));
   if (VKPT_EXTENSION_TEXTURES && (mat.flags & kMaterialExtensionTextured) != 0u) {
-    mat.transmission *= SampleSlot(VKPT_SCENE_ARG material, kSlotTransmission, uvs, b1, b2).r;
-    mat.specular *= SampleSlot(VKPT_SCENE_ARG material, kSlotSpecular, uvs, b1, b2).a;
-    mat.specularColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotSpecularColor, uvs, b1, b2));
+    mat.transmission *= SampleSlot(VKPT_SCENE_ARG material, kSlotTransmission, uvs, b1, b2, footprint).r;
+    mat.specular *= SampleSlot(VKPT_SCENE_ARG material, kSlotSpecular, uvs, b1, b2, footprint).a;
+    mat.specularColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotSpecularColor, uvs, b1, b2, footprint));
   }
 }
 
 // The emissive texture alone, for light sampling: the factor by which the emission at
 // (b1, b2) of scene triangle `sourceIndex` differs from its material's emissive factor.
 VKPT_FN vec3 EmissiveTexture(VKPT_SCENE_PARAM uint material, uint sourceIndex, float b1, float b2) {
-  return vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotEmissive, VKPT_UVS_OF(sourceIndex), b1, b2));
+  return vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotEmissive, VKPT_UVS_OF(sourceIndex), b1, b2, kLevelZero));
 }
 
 VKPT_END_NAMESPACE

@@ -32,6 +32,7 @@
 #include "layout.h"
 #include "lights.h"
 #include "prelude.h"
+#include "ray_cone.h"
 #include "rng.h"
 #include "sampling.h"
 #include "shading_frame.h"
@@ -102,6 +103,8 @@ struct PathState {
   uint bounce;         // vertices found so far
   uint pixel;          // py * width + px
   uint sampleIndex;
+  float coneWidth;     // the ray cone around s.ray (ray_cone.h): its width at the origin,
+  float coneSpread;    // and its spread angle; in textured scenes only
   bool shadowPending;  // a light sample awaits its shadow ray
   Ray shadowRay;
   float shadowTMax;
@@ -117,6 +120,9 @@ VKPT_FN PathState StartPath(FrameParams params, uint px, uint py, uint sampleInd
   vec2 uc = Sample2D(params.seed, s.pixel, sampleIndex, kGroupCamera);
   s.ray = GenerateCameraRay(params, px, py, uc.x, uc.y);
   s.throughput = vec3(1.0f);
+  vec2 cone = CameraCone(params);
+  s.coneSpread = cone.x;
+  s.coneWidth = cone.y;
   s.bsdfPdf = 0.0f;
   s.result.radiance = vec3(0.0f);
   s.result.rays = 1u;  // the camera ray
@@ -213,7 +219,8 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
     s.result.radiance += s.throughput * EscapedRadiance(VKPT_SCENE_ARG params, s);
     return false;
   }
-  SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit);
+  float coneWidth = VKPT_TEXTURES ? ConeWidthAt(s.coneWidth, s.coneSpread, hit.t) : 0.0f;
+  SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit, params.textureLod != 0u ? coneWidth : 0.0f);
   if (VKPT_VOLUMES && !sh.frontFace && (sh.material.flags & kMaterialVolume) != 0u)
     s.throughput *= exp(-sh.material.attenuation * hit.t);
   s.result.radiance += s.throughput * WeightedEmission(VKPT_SCENE_ARG s, sh, hit.t);
@@ -249,6 +256,11 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   s.bsdfPdf = transmitted && !SamplesLightsThrough(sh, bsdf) ? 0.0f : bs.pdf;
   s.ray.origin = transmitted ? OffsetRayOrigin(sh.p, -sh.ng) : origin;
   s.ray.dir = wi;
+  if (VKPT_TEXTURES) {
+    s.coneWidth = coneWidth;
+    s.coneSpread =
+        ScatteredSpread(s.coneSpread, coneWidth, sh.curvature, MaxComponent(bs.weight) * bs.pdf / abs(bs.wi.z));
+  }
   s.result.rays += 1u;
   return true;
 }

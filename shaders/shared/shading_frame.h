@@ -42,6 +42,7 @@ struct SurfaceHit {
   bool frontFace;  // the ray arrived on the side the triangle's winding faces
   Frame frame;     // shading frame; frame.n is the shading normal
   Material material;
+  float curvature;  // of the vertex normals (ray_cone.h), in textured scenes; else 0
 };
 
 // The shading normal ns (interpolated vertex normals, on the side of ng) adapted so that
@@ -64,26 +65,30 @@ VKPT_FN vec3 AdaptShadingNormal(vec3 ns, vec3 ng, vec3 wo) {
 
 // Surfaces scatter on both sides: the geometric normal is turned to face the ray, and
 // the shading normal with it. One-sided materials emit from their front face only
-// (glTF's winding).
-VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
+// (glTF's winding). Textures are read at the mip level of a ray cone `coneWidth` wide at
+// the hit (0: level 0).
+VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit, float coneWidth) {
   Triangle tri = VKPT_TRIANGLE(hit.triangle);
   SurfaceHit sh;
   sh.material = VKPT_MATERIAL(tri.material);
+  sh.curvature = 0.0f;
+  vec3 ng = normalize(cross(tri.e1, tri.e2));
   // The texture coordinates are read once, for the material's textures and its normal map.
   bool normalMapped = false;
   vec3 normalTexel = vec3(0.0f);
   if (VKPT_TEXTURES && (sh.material.flags & kMaterialTextured) != 0u) {
     TriangleUVs uvs = VKPT_UVS_OF(tri.sourceIndex);
-    ApplyMaterialTextures(VKPT_SCENE_ARG sh.material, tri.material, uvs, hit.b1, hit.b2);
+    float footprint = FootprintLod(coneWidth, dot(ng, ray.dir), tri.e1, tri.e2);
+    ApplyMaterialTextures(VKPT_SCENE_ARG sh.material, tri.material, uvs, hit.b1, hit.b2, footprint);
     if (VKPT_NORMAL_MAPS) {
       normalMapped = VKPT_TEXTURE_REF(tri.material * kTextureSlots + kSlotNormal).texture != kInvalidIndex;
-      if (normalMapped) normalTexel = vec3(SampleSlot(VKPT_SCENE_ARG tri.material, kSlotNormal, uvs, hit.b1, hit.b2));
+      if (normalMapped)
+        normalTexel = vec3(SampleSlot(VKPT_SCENE_ARG tri.material, kSlotNormal, uvs, hit.b1, hit.b2, footprint));
     }
   }
   if (VKPT_VERTEX_COLORS)
     sh.material.baseColor *= vec3(InterpolatedColor(VKPT_VERTEX_COLORS_OF(tri.sourceIndex), hit.b1, hit.b2));
   sh.light = tri.light;
-  vec3 ng = normalize(cross(tri.e1, tri.e2));
   bool frontFace = dot(ng, ray.dir) < 0.0f;
   sh.frontFace = frontFace;
   sh.ng = frontFace ? ng : -ng;
@@ -100,6 +105,9 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit) {
       // Vertex normals that cancel out (or NaN from them) leave the flat normal.
       shadingNormal = abs(dot(interpolated, interpolated) - 1.0f) < 1e-3f;
       if (shadingNormal) n = interpolated;
+      if (VKPT_TEXTURES)  // only ray cones read it
+        sh.curvature = TriangleCurvature(DecodeOctahedral(shading.n0), DecodeOctahedral(shading.n1),
+                                         DecodeOctahedral(shading.n2), tri.e1, tri.e2);
     }
   }
   if (normalMapped) {
