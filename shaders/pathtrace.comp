@@ -69,6 +69,9 @@ layout(constant_id = 8) const uint kSceneHasAlpha = 1u;
 // shared/material_textures.h.
 layout(constant_id = 9) const uint kSceneHasExtensionTextures = 1u;
 #define VKPT_EXTENSION_TEXTURES (kSceneHasExtensionTextures != 0u)
+// 1 when the texel store needs two texel buffers: see scene_fetch.glsl.
+layout(constant_id = 10) const uint kSceneHasTwoTexelBuffers = 0u;
+#define VKPT_TWO_TEXEL_BUFFERS (kSceneHasTwoTexelBuffers != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -95,6 +98,7 @@ layout(constant_id = 9) const uint kSceneHasExtensionTextures = 1u;
 void main() {
   gNodeCount = params.nodeCount;
   gNodeCopies = params.nodeCopies;
+  gTexelSplit = params.texelSplit;
   // lavapipe hands each thread one contiguous range of workgroups (the top and bottom
   // half of the image with two threads), so costly regions would leave a thread idle:
   // rows of tiles are dealt out with a stride coprime to their count (host: TileRowStride).

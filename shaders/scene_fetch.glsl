@@ -26,6 +26,7 @@ layout(binding = kBindingTangents) uniform usamplerBuffer tangentTexels;
 layout(binding = kBindingMaterialTextures) uniform usamplerBuffer textureRefTexels;
 layout(binding = kBindingTextures) uniform usamplerBuffer textureTexels;
 layout(binding = kBindingTexels) uniform usamplerBuffer texelWords;
+layout(binding = kBindingTexelsHigh) uniform usamplerBuffer texelWordsHigh;
 layout(binding = kBindingTexelDecode) uniform usamplerBuffer texelDecodeTexels;
 layout(binding = kBindingEnvRadiance) uniform usamplerBuffer envRadianceTexels;
 layout(binding = kBindingEnvDistribution) uniform usamplerBuffer envDistributionTexels;
@@ -189,7 +190,19 @@ Texture FetchTexture(uint i) {
 }
 
 // Word i of the texture store (four per texel).
-uint FetchTexelWord(uint i) { return texelFetch(texelWords, int(i >> 2u))[i & 3u]; }
+// The texel store in two buffers (VKPT_TWO_TEXEL_BUFFERS, a specialization constant of the
+// including shader): texels from gTexelSplit on (FrameParams::texelSplit, set by main())
+// are in the second. With one, the second branch compiles away.
+#ifndef VKPT_TWO_TEXEL_BUFFERS
+#define VKPT_TWO_TEXEL_BUFFERS false
+#endif
+uint gTexelSplit = 0xFFFFFFFFu;
+
+uint FetchTexelWord(uint i) {
+  uint t = i >> 2u;
+  if (VKPT_TWO_TEXEL_BUFFERS && t >= gTexelSplit) return texelFetch(texelWordsHigh, int(t - gTexelSplit))[i & 3u];
+  return texelFetch(texelWords, int(t))[i & 3u];
+}
 
 float FetchTexelDecode(uint i) { return uintBitsToFloat(texelFetch(texelDecodeTexels, int(i >> 2u))[i & 3u]); }
 

@@ -113,6 +113,21 @@ TexelBuffer UploadTexelBuffer(const Context& ctx, const void* data, size_t bytes
   return t;
 }
 
+SplitTexelBuffer UploadSplitTexelBuffer(const Context& ctx, std::span<const uint32_t> words, const std::string& what,
+                                        uint32_t maxTexelsPerBuffer) {
+  const uint32_t limit = ctx.Properties().limits.maxTexelBufferElements;
+  const uint64_t perBuffer = maxTexelsPerBuffer ? std::min(maxTexelsPerBuffer, limit) : limit;
+  const uint64_t texels = (words.size() + 3) / 4;
+  SplitTexelBuffer s;
+  s.twoBuffers = texels > perBuffer;
+  s.split = uint32_t(std::min(texels, perBuffer));
+  const size_t lowWords = std::min<size_t>(words.size(), size_t(s.split) * 4);
+  s.low = UploadTexelBuffer(ctx, words.data(), lowWords * 4, what);
+  // Past two buffers UploadTexelBuffer refuses the second, naming the limit.
+  s.high = UploadTexelBuffer(ctx, words.data() + lowWords, (words.size() - lowWords) * 4, what + " (second buffer)");
+  return s;
+}
+
 TexelView::TexelView(const Context& ctx, const Buffer& buffer, const std::string& what) : ctx_(&ctx) {
   constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_UINT;
   VkFormatProperties fp;

@@ -5,6 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
+#include <span>
 #include <string>
 
 #include "vk/context.h"
@@ -67,5 +68,17 @@ struct TexelBuffer {
   TexelView view;
 };
 TexelBuffer UploadTexelBuffer(const Context& ctx, const void* data, size_t bytes, const std::string& what);
+
+// 32-bit words in one texel buffer, or in two when one cannot hold them: the first
+// `split` RGBA32UI texels in `low`, the rest in `high` (a 1-texel dummy when one
+// suffices). Texels per buffer: at most maxTexelsPerBuffer, 0 meaning the device's
+// maxTexelBufferElements (tests pass fewer, to split small stores).
+struct SplitTexelBuffer {
+  TexelBuffer low, high;
+  uint32_t split = 0;
+  bool twoBuffers = false;
+};
+SplitTexelBuffer UploadSplitTexelBuffer(const Context& ctx, std::span<const uint32_t> words, const std::string& what,
+                                        uint32_t maxTexelsPerBuffer = 0);
 
 }  // namespace vkpt::vk

@@ -94,7 +94,8 @@ uint32_t BatchSize(const GpuRenderOptions& options, const shader::FrameParams& f
 // Adds every sample of `frame` into b.accum and b.counters: submissions of `BatchSize`
 // samples per pixel, each a series of dispatches of `run` samples per invocation.
 void DispatchSamples(const Context& ctx, const ComputePipeline& pipeline, const FrameBuffers& b,
-                     const shader::FrameParams& frame, const GpuRenderOptions& options, RenderResult& result) {
+                     const shader::FrameParams& frame, uint32_t texelSplit, const GpuRenderOptions& options,
+                     RenderResult& result) {
   const uint32_t batch = BatchSize(options, frame);
   // Until a dispatch has measured the scene's loop passes, one sample per invocation,
   // and the first submission holds just that one dispatch.
@@ -106,6 +107,7 @@ void DispatchSamples(const Context& ctx, const ComputePipeline& pipeline, const 
   for (uint32_t done = 0; done < frame.sampleCount;) {
     shader::FrameParams p = frame;
     p.tileRowStride = tileRowStride;
+    p.texelSplit = texelSplit;
     p.sampleBegin = frame.sampleBegin + done;
     p.sampleCount = measured ? std::min(batch, frame.sampleCount - done) : 1u;
     std::memcpy(b.params.Mapped(), &p, sizeof p);            // the previous batch has finished: safe to overwrite
@@ -147,7 +149,8 @@ void ResolveSums(const Buffer& accumHost, const Buffer& countersHost, const shad
 
 }  // namespace
 
-GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv, size_t spirvBytes)
+GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv, size_t spirvBytes,
+                         uint32_t texelsPerBuffer)
     : ctx_(ctx),
       spirv_(spirv ? spirv : kPathTraceSpirv),
       spirvBytes_(spirv ? spirvBytes : sizeof(kPathTraceSpirv)),
@@ -162,7 +165,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       tangents_(UploadArray<shader::TriangleTangents>(ctx, scene.tangents, "tangents")),
       textureRefs_(UploadArray<shader::TextureRef>(ctx, scene.textureRefs, "material textures")),
       textures_(UploadArray<shader::Texture>(ctx, scene.textures, "texture table")),
-      texels_(UploadArray<uint32_t>(ctx, scene.texels, "texture texels")),
+      texels_(UploadSplitTexelBuffer(ctx, scene.texels, "texture texels", texelsPerBuffer)),
       texelDecode_(UploadArray<float>(ctx, scene.texelDecode, "texel decode tables")),
       envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
       envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
@@ -199,7 +202,8 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
        TexelBinding(shader::kBindingTangents, tangents_),
        TexelBinding(shader::kBindingMaterialTextures, textureRefs_),
        TexelBinding(shader::kBindingTextures, textures_),
-       TexelBinding(shader::kBindingTexels, texels_),
+       TexelBinding(shader::kBindingTexels, texels_.low),
+       TexelBinding(shader::kBindingTexelsHigh, texels_.high),
        TexelBinding(shader::kBindingTexelDecode, texelDecode_),
        TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
        TexelBinding(shader::kBindingEnvDistribution, envDistribution_),
@@ -209,7 +213,7 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
       "pathtrace", 2 * sizeof(uint32_t),
       {frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
        frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u, hasVolumes_ ? 1u : 0u, hasTextures_ ? 1u : 0u,
-       hasNormalMaps_ ? 1u : 0u, hasAlpha_ ? 1u : 0u, hasExtensionTextures_ ? 1u : 0u});
+       hasNormalMaps_ ? 1u : 0u, hasAlpha_ ? 1u : 0u, hasExtensionTextures_ ? 1u : 0u, texels_.twoBuffers ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);
@@ -217,7 +221,7 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
 
   RenderResult result;
   auto t0 = std::chrono::steady_clock::now();
-  DispatchSamples(ctx_, pipeline, b, frame, options, result);
+  DispatchSamples(ctx_, pipeline, b, frame, texels_.split, options, result);
   Buffer accumHost = Readback(ctx_, b.accum.Size(), "accumulation readback");
   Buffer countersHost = Readback(ctx_, b.counters.Size(), "counter readback");
   ctx_.Submit([&](VkCommandBuffer cb) { CopyToHost(cb, {{&b.accum, &accumHost}, {&b.counters, &countersHost}}); });

@@ -32,7 +32,9 @@ class GpuRenderer {
  public:
   // Uploads the scene. `spirv` defaults to the embedded pathtrace.comp; tests pass
   // deliberately wrong variants.
-  GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv = nullptr, size_t spirvBytes = 0);
+  // `texelsPerBuffer` caps the texel store's buffers below the device's limit (tests).
+  GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv = nullptr, size_t spirvBytes = 0,
+              uint32_t texelsPerBuffer = 0);
   RenderResult Render(const shader::FrameParams& params, const GpuRenderOptions& options = {});
 
   // Closest hits of a batch of rays with the shader's traversal (trace.comp, or a test
@@ -50,11 +52,13 @@ class GpuRenderer {
   // The vertex colours; without any, one zero texel that the shader never reads.
   TexelBuffer vertexColors_;
   // Texture coordinates and textures (shared/texture.h); one zero texel each without.
-  TexelBuffer uvs_, tangents_, textureRefs_, textures_, texels_, texelDecode_;
+  TexelBuffer uvs_, tangents_, textureRefs_, textures_;
+  SplitTexelBuffer texels_;  // the texel store, in two buffers if one cannot hold it
+  TexelBuffer texelDecode_;
   // The environment map's texels and CDFs; without a map one zero texel each, so that the
   // descriptor set is complete all the same.
   TexelBuffer envRadiance_, envDistribution_;
-  // What the scene has, for pathtrace.comp's specialization constants 0-9 (the frame
+  // What the scene has, for pathtrace.comp's specialization constants 0-10 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
   uint32_t lightTypes_ = 0;          // bit 1 << type for each type in the light table
   bool hasGlossy_;                   // some triangle's material is not Lambertian

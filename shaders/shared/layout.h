@@ -34,6 +34,9 @@ const uint kBindingTexelDecode = 17u;       // kTexelDecodeSize floats, four per
 const uint kBindingMaterialTextures = 18u;  // texel buffer of TextureRef, kTextureSlots per material
 const uint kBindingVertexUVs = 19u;         // texel buffer of TriangleUVs, indexed by Triangle.sourceIndex
 const uint kBindingTangents = 20u;          // texel buffer of TriangleTangents, indexed by Triangle.sourceIndex
+// The texels past the first FrameParams::texelSplit, when one texel buffer cannot hold the
+// store (its device's maxTexelBufferElements); else a 1-texel dummy.
+const uint kBindingTexelsHigh = 22u;
 
 // The environment map (shared/environment.h), both as RGBA32UI texel buffers; a 1-texel
 // dummy of each when there is none (FrameParams::envWidth == 0).
@@ -295,8 +298,8 @@ struct FrameParams {
   float envIntensity;    // radiance scale (--env-intensity)
   float envRotationCos;  // the map turned by α about +Y (--env-rotation): cos α, sin α
   float envRotationSin;
-  uint pad3;  // std140 rounds the struct up to a multiple of 16 bytes
-  uint pad4;
+  uint texelSplit;  // RGBA32UI texels of the store in kBindingTexels; the rest are in kBindingTexelsHigh
+  uint pad4;        // std140 rounds the struct up to a multiple of 16 bytes
   uint pad5;
 };
 

@@ -6,6 +6,10 @@
 #include "shared/layout.h"
 
 layout(local_size_x = 64) in;
+// Whether the texels are split over two buffers at texelSplit (scene_fetch.glsl).
+layout(constant_id = 0) const uint kTwoTexelBuffers = 0u;
+#define VKPT_TWO_TEXEL_BUFFERS (kTwoTexelBuffers != 0u)
+layout(push_constant) uniform Push { uint texelSplit; };
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -20,10 +24,11 @@ struct TextureLookup {
   float lod;
   uint texture;
 };
-layout(std430, binding = 20) readonly buffer In { TextureLookup lookups[]; };
-layout(std430, binding = 21) writeonly buffer Out { vec4 results[]; };
+layout(std430, binding = 30) readonly buffer In { TextureLookup lookups[]; };
+layout(std430, binding = 31) writeonly buffer Out { vec4 results[]; };
 
 void main() {
+  gTexelSplit = texelSplit;
   uint i = gl_GlobalInvocationID.x;
   if (i >= uint(lookups.length())) return;
   TextureLookup l = lookups[i];
