@@ -111,6 +111,20 @@ TEST(TangentSpace, SharedSeamVertexTakesOneSide) {
   for (uint32_t v : {2u, 3u}) EXPECT_EQ(t[v], glm::vec4(t[v].w, 0, 0, t[v].w)) << "vertex " << v;
 }
 
+// Per corner, as the loader generates them, each half keeps its own frame at the shared
+// seam vertices too: the corners of the right half's triangles (x ≥ 0) all get +x.
+TEST(TangentSpace, SharedSeamCornersKeepTheirHalfsFrame) {
+  const Mesh m = MirroredHalves(true);
+  const std::vector<glm::vec4> t = GenerateCornerTangents(m.positions, m.normals, m.uvs, m.indices);
+  ASSERT_EQ(t.size(), m.indices.size());
+  for (size_t k = 0; k < m.indices.size(); k += 3) {
+    bool right = true;
+    for (size_t c = 0; c < 3; ++c) right &= m.positions[m.indices[k + c]].x >= 0.0f;
+    for (size_t c = 0; c < 3; ++c)
+      EXPECT_EQ(t[k + c], right ? glm::vec4(1, 0, 0, 1) : glm::vec4(-1, 0, 0, -1)) << "triangle " << k / 3;
+  }
+}
+
 // A patch of the unit sphere, u along the longitude, v down the latitude, `rows` × `cols`
 // quads, indexed (shared vertices).
 Mesh SpherePatch(int rows, int cols) {
@@ -237,8 +251,8 @@ struct Agreement {
 };
 
 // The scene's normal-mapped triangles as loaded (world space, TANGENT as the file has it)
-// become a triangle soup, three corners each, which GenerateTangents welds back into the
-// file's vertices; generated and supplied tangents are compared corner by corner.
+// become a triangle soup, three corners each, which GenerateCornerTangents welds back into
+// the file's vertices; generated and supplied tangents are compared corner by corner.
 Agreement CompareWithFile(const std::string& path) {
   const Scene scene = LoadGltf(path);
   std::vector<glm::vec3> positions, normals;
@@ -257,7 +271,7 @@ Agreement CompareWithFile(const std::string& path) {
   }
   std::vector<uint32_t> indices(positions.size());
   for (uint32_t k = 0; k < indices.size(); ++k) indices[k] = k;
-  const std::vector<glm::vec4> t = GenerateTangents(positions, normals, uvs, indices);
+  const std::vector<glm::vec4> t = GenerateCornerTangents(positions, normals, uvs, indices);
   Agreement a;
   for (size_t k = 0; k < t.size(); ++k) {
     const glm::vec3 s(supplied[k]);

@@ -129,13 +129,15 @@ class Instancer {
         std::vector<glm::vec3> nw(prim.normals.size());
         for (size_t v = 0; v < nw.size(); ++v) nw[v] = WorldNormal(normalMatrix, prim.normals[v]);
         // Tangents lie in the surface: they transform as directions, and a mirroring
-        // transform flips the bitangent (w).
-        std::vector<glm::vec4> tw(prim.tangents.size());
+        // transform flips the bitangent (w). Per vertex (TANGENT) or per corner (generated).
+        const bool perCorner = !prim.cornerTangents.empty();
+        const std::vector<glm::vec4>& tangents = perCorner ? prim.cornerTangents : prim.tangents;
+        std::vector<glm::vec4> tw(tangents.size());
         for (size_t v = 0; v < tw.size(); ++v) {
-          const glm::dvec3 t = glm::dmat3(world) * glm::dvec3(prim.tangents[v]);
+          const glm::dvec3 t = glm::dmat3(world) * glm::dvec3(tangents[v]);
           const double len = glm::length(t);
           if (len > 0.0 && std::isfinite(len))
-            tw[v] = glm::vec4(glm::vec3(t / len), prim.tangents[v].w * (mirrored ? -1.0f : 1.0f));
+            tw[v] = glm::vec4(glm::vec3(t / len), tangents[v].w * (mirrored ? -1.0f : 1.0f));
         }
         for (size_t k = 0; k < prim.indices.size(); k += 3) {
           const uint32_t i0 = prim.indices[k], i1 = prim.indices[k + 1], i2 = prim.indices[k + 2];
@@ -152,7 +154,8 @@ class Instancer {
             if (!uv.empty()) out[0] = uv[i0], out[1] = uv[i1], out[2] = uv[i2];
           }
           VertexTangents vt;
-          if (!tw.empty()) vt = {{tw[i0], tw[i1], tw[i2]}};
+          if (perCorner) vt = {{tw[k], tw[k + 1], tw[k + 2]}};
+          else if (!tw.empty()) vt = {{tw[i0], tw[i1], tw[i2]}};
           if (mirrored) {
             std::swap(t.v1, t.v2);
             std::swap(vt.t[1], vt.t[2]);

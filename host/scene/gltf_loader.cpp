@@ -47,8 +47,9 @@ constexpr uint64_t kBytesPerColoredTriangle = 144;
 // (48) and their staging and device copies (48 each).
 constexpr uint64_t kBytesPerTexturedTriangle = 192;
 // And per triangle with normal maps: the Scene's VertexTangents (48 bytes), the packed
-// TriangleTangents (16) and their staging and device copies (16 each).
-constexpr uint64_t kBytesPerTangentTriangle = 96;
+// TriangleTangents (16) and their staging and device copies (16 each), and generated
+// tangents' corners (48, and 48 more while an instance transforms them).
+constexpr uint64_t kBytesPerTangentTriangle = 192;
 // Decoding an accessor holds each component as a double, then as a float.
 constexpr uint64_t kBytesPerDecodedComponent = 12;
 

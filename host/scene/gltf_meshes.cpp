@@ -163,7 +163,7 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
 }
 
 bool GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet) {
-  if (!prim.tangents.empty() || uvSet > 1 || prim.uvs[uvSet].empty()) return false;
+  if (!prim.tangents.empty() || !prim.cornerTangents.empty() || uvSet > 1 || prim.uvs[uvSet].empty()) return false;
   std::vector<glm::vec3> normals = prim.normals;
   if (normals.empty()) {
     normals.assign(prim.positions.size(), glm::vec3(0.0f));
@@ -176,7 +176,7 @@ bool GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet) {
     for (glm::vec3& n : normals)
       if (glm::dot(n, n) > 0.0f) n = glm::normalize(n);
   }
-  prim.tangents = GenerateTangents(prim.positions, normals, prim.uvs[uvSet], prim.indices);
+  prim.cornerTangents = GenerateCornerTangents(prim.positions, normals, prim.uvs[uvSet], prim.indices);
   return true;
 }
 

@@ -14,12 +14,13 @@
 namespace vkpt {
 
 struct DecodedPrimitive {
-  std::vector<glm::vec3> positions;  // object space
-  std::vector<glm::vec3> normals;    // object space, one per position; empty without NORMAL
-  std::vector<glm::vec4> colors;     // COLOR_0, linear RGBA in [0, 1], one per position; empty without it
-  std::vector<glm::vec2> uvs[2];     // TEXCOORD_0 and TEXCOORD_1, one per position; empty without them
-  std::vector<glm::vec4> tangents;   // TANGENT (w = ±1), one per position; empty without it
-  std::vector<uint32_t> indices;     // triangle list, 3 per triangle
+  std::vector<glm::vec3> positions;       // object space
+  std::vector<glm::vec3> normals;         // object space, one per position; empty without NORMAL
+  std::vector<glm::vec4> colors;          // COLOR_0, linear RGBA in [0, 1], one per position; empty without it
+  std::vector<glm::vec2> uvs[2];          // TEXCOORD_0 and TEXCOORD_1, one per position; empty without them
+  std::vector<glm::vec4> tangents;        // TANGENT (w = ±1), one per position; empty without it
+  std::vector<glm::vec4> cornerTangents;  // or generated (MikkTSpace), one per index
+  std::vector<uint32_t> indices;          // triangle list, 3 per triangle
   uint32_t material;
 };
 
@@ -31,9 +32,9 @@ struct DecodedPrimitive {
 std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial, bool withUVs,
                                          bool withTangents, std::vector<std::string>& warnings);
 
-// MikkTSpace tangents (scene/tangent_space.h) for a primitive that supplies no TANGENT,
-// from its normals — for a flat primitive, the area-weighted face normals around each
-// vertex — and texture coordinate set `uvSet`; it keeps none without those coordinates.
+// MikkTSpace tangents per corner (scene/tangent_space.h) for a primitive that supplies no
+// TANGENT, from its normals — for a flat primitive, the area-weighted face normals around
+// each vertex — and texture coordinate set `uvSet`; it keeps none without those coordinates.
 // Returns whether it generated them.
 bool GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet);
 

@@ -18,12 +18,12 @@
 //     exactly opposite tangents.
 //   - Triangles whose uv area or derivatives vanish (the reference's GROUP_WITH_ANY) add
 //     nothing, as in the reference; they simply take their vertices' frames.
-//   - The output is per vertex, not per triangle corner: a vertex whose own triangles
-//     have both orientations takes the group with the larger total angle there. Exporters
-//     split such vertices; glTF files rarely have any.
+//   - Besides per corner, as the reference (GenerateCornerTangents, which the loader
+//     uses), the output can be per vertex (GenerateTangents): a vertex whose own triangles
+//     have both orientations then takes the group with the larger total angle there.
 //   - Arithmetic is in double, so huge or tiny coordinates neither overflow nor lose the
 //     orientation; the reference's "not zero" threshold (FLT_MIN) is kept.
-// Measured effect: per corner against mikktspace.c itself (a scratch harness, not kept) on
+// Measured effect of the per-vertex output, per corner against mikktspace.c itself (a scratch harness, not kept) on
 // the files tests/test_tangent_space.cpp compares with, the 99th percentile of the angle is
 // ≤ 0.02° and signs agree on ≥ 99.9 %; 17 of LightsPunctualLamp's 18 000 corners (max 14.7°)
 // and 2 of Avocado's 2 046 (max 18.3°, vertices the reference gives two frames) differ by
@@ -142,17 +142,26 @@ glm::dvec3 AnyTangent(const glm::dvec3& n) {
 // Equivalent to running the reference on (u, 1 − v), as glTF exporters do.
 constexpr float kGltfSign = -1.0f;
 
-}  // namespace
+// The groups of a primitive (steps 1 to 3): group g = 2 · welded vertex + orientation
+// (1: preserving). `own` weighs each vertex's own corners per orientation, to pick its
+// group; `seen` marks which it has; `orientation` is each triangle's, or −1 where it
+// contributes nothing.
+struct Groups {
+  std::vector<uint32_t> rep;
+  std::vector<GroupSum> sums;
+  std::vector<std::array<float, 2>> own;
+  std::vector<uint8_t> seen;
+  std::vector<int8_t> orientation;
+};
 
-std::vector<glm::vec4> GenerateTangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                                        std::span<const glm::vec2> uvs, std::span<const uint32_t> indices) {
-  const size_t count = std::min({positions.size(), normals.size(), uvs.size()});
-  const std::vector<uint32_t> rep = WeldVertices(positions, normals, uvs, count);
-  // Group g = 2 · welded vertex + orientation (1: preserving). `own` weighs each vertex's
-  // own corners per orientation, to pick its group; `seen` marks which it has.
-  std::vector<GroupSum> groups(2 * count);
-  std::vector<std::array<float, 2>> own(count, {0.0f, 0.0f});
-  std::vector<uint8_t> seen(count, 0);
+Groups BuildGroups(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                   std::span<const glm::vec2> uvs, std::span<const uint32_t> indices, size_t count) {
+  Groups g;
+  g.rep = WeldVertices(positions, normals, uvs, count);
+  g.sums.resize(2 * count);
+  g.own.assign(count, {0.0f, 0.0f});
+  g.seen.assign(count, 0);
+  g.orientation.assign(indices.size() / 3, -1);
   for (size_t tri = 0; tri + 2 < indices.size(); tri += 3) {
     const uint32_t v[3] = {indices[tri], indices[tri + 1], indices[tri + 2]};
     if (v[0] >= count || v[1] >= count || v[2] >= count) continue;
@@ -161,36 +170,71 @@ std::vector<glm::vec4> GenerateTangents(std::span<const glm::vec3> positions, st
     const TriangleFrame f = EvalTriangle(p, {glm::dvec2(uvs[v[0]]), glm::dvec2(uvs[v[1]]), glm::dvec2(uvs[v[2]])});
     if (!f.contributes) continue;
     const int o = f.preserving ? 1 : 0;
+    g.orientation[tri / 3] = int8_t(o);
     for (int c = 0; c < 3; ++c) {
       const glm::dvec3 n = UnitOrZero(normals[v[c]]);
       const double angle = CornerAngle(p[(c + 2) % 3], p[c], p[(c + 1) % 3], n);
-      GroupSum& g = groups[2 * size_t(rep[v[c]]) + o];
-      g.os += glm::vec3(angle * ProjectNormalized(f.os, n));
-      g.angle += float(angle);
-      own[v[c]][o] += float(angle);
-      seen[v[c]] |= uint8_t(1 << o);
+      GroupSum& s = g.sums[2 * size_t(g.rep[v[c]]) + o];
+      s.os += glm::vec3(angle * ProjectNormalized(f.os, n));
+      s.angle += float(angle);
+      g.own[v[c]][o] += float(angle);
+      g.seen[v[c]] |= uint8_t(1 << o);
     }
   }
+  return g;
+}
+
+// The orientation a vertex takes on its own: that of its own corners, the larger total
+// angle where it has both; failing those (only degenerate triangles use it), its welded
+// twins'.
+int VertexOrientation(const Groups& g, size_t v) {
+  const uint8_t seen = g.seen[v];
+  if (seen) return seen == 3 ? (g.own[v][1] >= g.own[v][0] ? 1 : 0) : seen >> 1;
+  const size_t r = g.rep[v];
+  return g.sums[2 * r + 1].angle >= g.sums[2 * r].angle ? 1 : 0;
+}
+
+// Step 4: the tangent of vertex v in the group of orientation o; vertices past the
+// arrays some attribute lacks get AnyTangent.
+glm::vec4 GroupTangent(const Groups& g, size_t v, int o, const glm::dvec3& n) {
+  glm::dvec3 t =
+      v < g.rep.size() ? ProjectNormalized(glm::dvec3(g.sums[2 * size_t(g.rep[v]) + o].os), n) : glm::dvec3(0.0);
+  float w = o ? kGltfSign : -kGltfSign;
+  if (!NotZero(t) || !Finite(t)) {
+    t = AnyTangent(n);
+    w = 1.0f;
+  }
+  return glm::vec4(glm::vec3(t), w);
+}
+
+glm::dvec3 NormalOf(std::span<const glm::vec3> normals, size_t v) {
+  return v < normals.size() ? UnitOrZero(normals[v]) : glm::dvec3(0.0);
+}
+
+}  // namespace
+
+std::vector<glm::vec4> GenerateTangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                                        std::span<const glm::vec2> uvs, std::span<const uint32_t> indices) {
+  const size_t count = std::min({positions.size(), normals.size(), uvs.size()});
+  const Groups g = BuildGroups(positions, normals, uvs, indices, count);
   std::vector<glm::vec4> out(positions.size());
-  for (size_t v = 0; v < positions.size(); ++v) {
-    const glm::dvec3 n = v < normals.size() ? UnitOrZero(normals[v]) : glm::dvec3(0.0);
-    glm::dvec3 t(0.0);
-    int o = 1;  // orientation of the chosen group
-    if (v < count) {
-      const size_t r = rep[v];
-      // The vertex's own corners decide; failing those (only degenerate triangles use it),
-      // its welded twins'.
-      if (seen[v]) o = seen[v] == 3 ? (own[v][1] >= own[v][0] ? 1 : 0) : seen[v] >> 1;
-      else o = groups[2 * r + 1].angle >= groups[2 * r].angle ? 1 : 0;
-      t = ProjectNormalized(glm::dvec3(groups[2 * r + o].os), n);
+  for (size_t v = 0; v < positions.size(); ++v)
+    out[v] = GroupTangent(g, v, v < count ? VertexOrientation(g, v) : 1, NormalOf(normals, v));
+  return out;
+}
+
+std::vector<glm::vec4> GenerateCornerTangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                                              std::span<const glm::vec2> uvs, std::span<const uint32_t> indices) {
+  const size_t count = std::min({positions.size(), normals.size(), uvs.size()});
+  const Groups g = BuildGroups(positions, normals, uvs, indices, count);
+  std::vector<glm::vec4> out(indices.size());
+  for (size_t k = 0; k + 2 < indices.size(); k += 3)
+    for (size_t c = 0; c < 3; ++c) {
+      const uint32_t v = indices[k + c];
+      // A corner takes its triangle's group; a triangle that defines no frame, its vertex's.
+      const int o = g.orientation[k / 3] >= 0 ? g.orientation[k / 3] : v < count ? VertexOrientation(g, v) : 1;
+      out[k + c] = GroupTangent(g, v, o, NormalOf(normals, v));
     }
-    float w = o ? kGltfSign : -kGltfSign;
-    if (!NotZero(t) || !Finite(t)) {
-      t = AnyTangent(n);
-      w = 1.0f;
-    }
-    out[v] = glm::vec4(glm::vec3(t), w);
-  }
   return out;
 }
 

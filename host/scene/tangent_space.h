@@ -24,4 +24,11 @@ namespace vkpt {
 std::vector<glm::vec4> GenerateTangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                                         std::span<const glm::vec2> uvs, std::span<const uint32_t> indices);
 
+// The same per triangle corner (one per index), as the reference outputs them: a corner
+// takes the frame of its own triangle's orientation, so where mirrored and unmirrored
+// texture coordinates meet at a vertex each side keeps its own frame (GenerateTangents
+// gives such a vertex one). Corners of triangles that define no frame take their vertex's.
+std::vector<glm::vec4> GenerateCornerTangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                                              std::span<const glm::vec2> uvs, std::span<const uint32_t> indices);
+
 }  // namespace vkpt
