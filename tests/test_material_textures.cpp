@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cpu/cpu_path.h"
 #include "cpu/path_tracer.h"
 #include "gltf_builder.h"
 #include "png_writer.h"
@@ -281,6 +282,47 @@ TEST(MaterialTextures, UntexturedScenesHaveNoCoordinates) {
 // Bit for bit, every pixel its texel (the footprint of each lies inside one texel).
 // Vertices paired with the wrong coordinates (b1 and b2 swapped in InterpolatedUV) put
 // 3107 of 4096 pixels off, here and on the GPU (checked).
+// TextureCoordinateTest (../shared/gltf-corpus): four squares facing −Z, each showing a
+// corner region of one image. Seen from −Z (+x to the left), the texture's (0, 0) must be
+// at the top left of the top-left square and v must grow downwards: probes on a 25 × 25 grid
+// in each square, by rays along +Z, must find the base colour factor times the image at the
+// coordinates this hand-made map gives (level 0), where a v or u flipped the wrong way
+// would read the image's other corner, its text and checkers elsewhere.
+TEST(MaterialTextures, TextureCoordinateTestShowsEachCornerUpright) {
+  const std::string path = CorpusPath("valid/TextureCoordinateTest/glTF/TextureCoordinateTest.gltf");
+  ASSERT_TRUE(std::filesystem::exists(path)) << path;
+  const RenderScene rs = PrepareRenderScene(LoadGltf(path));
+  ASSERT_EQ(rs.textures.size(), 1u);
+  struct Square {
+    float left, top;  // the screen's left edge is its largest x
+    glm::vec2 uv;     // at that corner
+  };
+  const Square squares[] = {{1.2f, 1.2f, {0.0f, 0.0f}},     // top left
+                            {-0.2f, 1.2f, {0.6f, 0.0f}},    // top right
+                            {1.2f, -0.2f, {0.0f, 0.6f}},    // bottom left
+                            {-0.2f, -0.2f, {0.6f, 0.6f}}};  // bottom right
+  int probes = 0, off = 0, dark = 0;
+  for (const Square& sq : squares)
+    for (int i = 0; i < 25; ++i)
+      for (int j = 0; j < 25; ++j) {
+        const float dx = 0.02f + 0.96f * float(i) / 24.0f, dy = 0.02f + 0.96f * float(j) / 24.0f;
+        const shader::Ray ray{glm::vec3(sq.left - dx, sq.top - dy, -5.0f), glm::vec3(0, 0, 1)};
+        const Hit hit = IntersectClosest(rs, ray.origin, ray.dir, shader::kInfinity);
+        ASSERT_GE(hit.t, 0.0f);
+        const shader::SurfaceHit sh = shader::MakeSurfaceHit(rs, ray, hit, 0.0f);
+        const glm::vec2 uv = sq.uv + 0.4f * glm::vec2(dx, dy);  // the squares are 1 wide, their regions 0.4
+        const glm::vec3 factor = rs.materials[rs.triangles[hit.triangle].material].baseColor;
+        const glm::vec3 expected = factor * glm::vec3(shader::SampleTexture(rs, rs.textures[0], uv, 0.0f));
+        off += glm::any(glm::greaterThan(glm::abs(sh.material.baseColor - expected), glm::vec3(2e-3f)));
+        dark += shader::MaxComponent(expected) < 0.5f * shader::MaxComponent(factor);
+        ++probes;
+      }
+  std::printf("TextureCoordinateTest: %d of %d probes off the hand-mapped texel (%d of them dark)\n", off, probes,
+              dark);
+  EXPECT_EQ(off, 0);
+  EXPECT_GT(dark, 80);  // the probes see the checkers, crosses and text, not only the white
+}
+
 TEST(MaterialTextures, TexturedQuadShowsItsTexels) {
   Scene s = TexturedQuadScene();
   RenderScene rs = PrepareRenderScene(s);
