@@ -8,7 +8,8 @@
 //   λ = log2(width / |cos θ|) + ½ log2(texel area / world area of the triangle),
 // the texel area counting the texture's size, the TEXCOORD set and KHR_texture_transform.
 // Scattering widens the cone by the surface's curvature (twice the normal's turn over the
-// cone's width, as a curved mirror does) and by the BSDF: a diffuse bounce adds a fixed
+// cone's width, as a curved mirror does; refraction is given the same, a simplification)
+// and by the BSDF: a diffuse bounce adds a fixed
 // kDiffuseSpread, a glossy one less where its value is higher (the OptiX Toolkit's
 // heuristic: NVIDIA, "Ray Cones", optix-toolkit/ShaderUtil).
 //
