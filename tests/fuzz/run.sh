@@ -2,9 +2,10 @@
 # Runs the loader fuzzer for a fixed time; CI's fuzz smoke run (.ci/run) and longer
 # local runs use it alike.
 #   usage: tests/fuzz/run.sh [SECONDS=90] [BUILD_DIR=build-fuzz]
-# Seeds: every .gltf/.glb of the shared corpus (../shared/gltf-corpus, read in place)
-# and scenes/*.gltf; the corpus the run grows goes to a scratch directory outside the
-# repository. Any finding (crash, sanitizer report, exception other than vkpt::Error,
+# Seeds: every .gltf/.glb of the shared corpus (../shared/gltf-corpus, read in place),
+# the PBR feature models under 4 MB (../shared/gltf-pbr: textures, alpha, material
+# extensions) and scenes/*.gltf; the corpus the run grows goes to a scratch directory
+# outside the repository. Any finding (crash, sanitizer report, exception other than vkpt::Error,
 # an input slower than 5 s, over 1 GiB in one allocation or 2 GiB resident) fails the
 # run: the input is kept in the scratch directory, to be added to
 # tests/fuzz/regressions/ (see the README there). Prints executions and coverage.
@@ -13,6 +14,7 @@ cd "$(dirname "$0")/../.."
 seconds=${1:-90}
 build=${2:-build-fuzz}
 corpus=${VKPT_CORPUS_DIR:-../shared/gltf-corpus}
+pbr=$corpus/../gltf-pbr
 fuzzer="$build/fuzz_loader"
 [ -x "$fuzzer" ] || { echo "fuzz: $fuzzer not built (README: Sanitizers and fuzzing)" >&2; exit 1; }
 [ -d "$corpus/valid" ] && [ -d "$corpus/invalid" ] || { echo "fuzz: no glTF corpus at $corpus" >&2; exit 1; }
@@ -20,7 +22,10 @@ fuzzer="$build/fuzz_loader"
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/vkpt-fuzz-run-XXXXXX")
 mkdir "$scratch/corpus" "$scratch/findings"
 # libFuzzer takes single seed files as a comma-separated list.
-find "$corpus/valid" "$corpus/invalid" scenes -type f \( -name '*.gltf' -o -name '*.glb' \) | sort > "$scratch/seeds"
+{
+  find "$corpus/valid" "$corpus/invalid" scenes -type f \( -name '*.gltf' -o -name '*.glb' \)
+  if [ -d "$pbr" ]; then find "$pbr" -type f \( -name '*.gltf' -o -name '*.glb' \) -size -4M; fi
+} | sort > "$scratch/seeds"
 if grep -q , "$scratch/seeds"; then echo "fuzz: a seed path contains a comma" >&2; exit 1; fi
 echo "fuzz: $(wc -l < "$scratch/seeds") seed files, ${seconds} s, scratch $scratch"
 paste -sd, "$scratch/seeds" > "$scratch/seeds.csv"
