@@ -118,12 +118,6 @@ bool IsRenderedExtension(const std::string& ext) {
   return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
 }
 
-// Textures of material extensions that vkpt applies (host/scene/gltf_textures.cpp).
-bool IsAppliedExtensionTexture(const std::string& extension, const std::string& field) {
-  return (extension == "KHR_materials_transmission" && field == "transmissionTexture") ||
-         (extension == "KHR_materials_specular" && (field == "specularTexture" || field == "specularColorTexture"));
-}
-
 // What the file uses that vkpt does not render yet (printed by -v).
 void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   auto& ig = scene.ignoredFeatures;

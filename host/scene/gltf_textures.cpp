@@ -28,9 +28,23 @@ const Slot kBaseColor{shader::kSlotBaseColor, "pbrMetallicRoughness.baseColorTex
 const Slot kMetallicRoughness{shader::kSlotMetallicRoughness, "pbrMetallicRoughness.metallicRoughnessTexture", false};
 const Slot kEmissive{shader::kSlotEmissive, "emissiveTexture", true};
 const Slot kNormal{shader::kSlotNormal, "normalTexture", false};
-const Slot kTransmission{shader::kSlotTransmission, "extensions.KHR_materials_transmission.transmissionTexture", false};
-const Slot kSpecular{shader::kSlotSpecular, "extensions.KHR_materials_specular.specularTexture", false};
-const Slot kSpecularColor{shader::kSlotSpecularColor, "extensions.KHR_materials_specular.specularColorTexture", true};
+// The material extensions' textures vkpt applies, and where each is read from.
+struct ExtensionSlot {
+  Slot slot;
+  const char* extension;
+  const char* field;
+};
+const ExtensionSlot kExtensionSlots[] = {
+    {{shader::kSlotTransmission, "extensions.KHR_materials_transmission.transmissionTexture", false},
+     "KHR_materials_transmission",
+     "transmissionTexture"},
+    {{shader::kSlotSpecular, "extensions.KHR_materials_specular.specularTexture", false},
+     "KHR_materials_specular",
+     "specularTexture"},
+    {{shader::kSlotSpecularColor, "extensions.KHR_materials_specular.specularColorTexture", true},
+     "KHR_materials_specular",
+     "specularColorTexture"},
+};
 
 uint32_t WrapMode(int gl, const std::string& what, const GltfSource& src) {
   switch (gl) {
@@ -214,6 +228,12 @@ std::string ImageName(const GltfSource& src, int image) {
 
 }  // namespace
 
+bool IsAppliedExtensionTexture(const std::string& extension, const std::string& field) {
+  for (const ExtensionSlot& e : kExtensionSlots)
+    if (extension == e.extension && field == e.field) return true;
+  return false;
+}
+
 bool UsesNormalMaps(const Scene& scene) {
   for (size_t i = shader::kSlotNormal; i < scene.textureRefs.size(); i += shader::kTextureSlots)
     if (scene.textureRefs[i].texture != shader::kInvalidIndex) return true;
@@ -236,9 +256,8 @@ void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget&
     if (!std::isfinite(scale) || std::abs(scale) > 1e6)
       src.Fail("materials[" + std::to_string(m) + "].normalTexture.scale is not a finite number of at most 1e6");
     scene.materials[m].normalScale = float(scale);
-    reader.Read(m, kTransmission, reader.ExtensionTexture(m, "KHR_materials_transmission", "transmissionTexture"));
-    reader.Read(m, kSpecular, reader.ExtensionTexture(m, "KHR_materials_specular", "specularTexture"));
-    reader.Read(m, kSpecularColor, reader.ExtensionTexture(m, "KHR_materials_specular", "specularColorTexture"));
+    for (const ExtensionSlot& e : kExtensionSlots)
+      reader.Read(m, e.slot, reader.ExtensionTexture(m, e.extension, e.field));
   }
   if (scene.textures.empty()) return;
 

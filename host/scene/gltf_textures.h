@@ -22,4 +22,8 @@ void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget&
 // need tangents).
 bool UsesNormalMaps(const Scene& scene);
 
+// Whether vkpt applies the texture `field` of material extension `extension` (the others
+// are listed by -v as ignored).
+bool IsAppliedExtensionTexture(const std::string& extension, const std::string& field);
+
 }  // namespace vkpt
