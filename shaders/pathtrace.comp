@@ -25,8 +25,11 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std140, binding = kBindingParams) uniform Params { FrameParams params; };
 // Per pixel: [2i] = (Σ L, unused), [2i + 1] = (Σ L², unused), over all samples so far.
 layout(std430, binding = kBindingAccum) buffer Accum { vec4 accum[]; };
-// Per pixel: (rays traced, non-finite samples discarded, samples possibly cut short, 0).
+// Per pixel: (rays traced, non-finite samples discarded, samples possibly cut short,
+// samples taken).
 layout(std430, binding = kBindingCounters) buffer Counters { uvec4 counters[]; };
+// Adaptive sampling (params.adaptive == 1): the pixels that take this dispatch's samples.
+layout(std430, binding = kBindingActive) readonly buffer Active { uint activePixels[]; };
 // The most loop passes any SIMD group has needed per sample (rounded up), for the host's
 // choice of samplesPerInvocation.
 layout(std430, binding = kBindingLoopStats) buffer LoopStats { uint maxPassesPerSample; };
@@ -105,8 +108,9 @@ void main() {
   uint tileRows = (params.height + 7u) / 8u;
   uint tileRow = gl_WorkGroupID.y * params.tileRowStride % tileRows;
   uvec2 pixel = uvec2(gl_GlobalInvocationID.x, tileRow * 8u + gl_LocalInvocationID.y);
-  bool inside = pixel.x < params.width && pixel.y < params.height;
   uint index = pixel.y * params.width + pixel.x;
+  bool inside = pixel.x < params.width && pixel.y < params.height;
+  if (inside && params.adaptive != 0u) inside = activePixels[index] != 0u;
   // The sums are carried in registers and added to in sample order, as if each sample
   // were its own dispatch: the image does not depend on how samples are grouped.
   vec4 sum = vec4(0.0f);
@@ -122,7 +126,8 @@ void main() {
   uint rays = 0u;
   PathState path = StartPath(params, pixel.x, pixel.y, first);
   bool more = true;  // the path has a closest-hit ray to trace
-  // Out-of-image lanes still take part in the subgroup operations (no early return).
+  // Out-of-image and inactive lanes still take part in the subgroup operations (no
+  // early return).
   bool tracing = inside;
   while (tracing) {
     // One ray per pass, of either kind: lanes tracing shadow rays and lanes tracing
@@ -158,6 +163,7 @@ void main() {
   if (subgroupElect()) atomicMax(maxPassesPerSample, (groupPasses + samples - 1u) / samples);
   if (!inside) return;
   count.x += rays;
+  count.w += samples;
   if (groupPasses >= kLoopBudget) count.z += samples;
   accum[2u * index] = sum;
   accum[2u * index + 1u] = sumSq;

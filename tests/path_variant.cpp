@@ -42,12 +42,13 @@
 namespace vkpt::test {
 
 RenderResult VKPT_PATH_VARIANT(const RenderScene& scene, const shader::FrameParams& params) {
-  Film film(params.width, params.height, params.sampleCount);
+  Film film(params.width, params.height);
   std::atomic<uint64_t> rays{0}, nonFinite{0};
   ParallelFor(params.height, ThreadCount(0), [&](size_t y) {
     uint64_t rowRays = 0, rowNonFinite = 0;
     for (uint32_t x = 0; x < params.width; ++x) {
       PixelSums sums;
+      sums.samples = params.sampleCount;
       for (uint32_t s = 0; s < params.sampleCount; ++s) {
         shader::VKPT_PATH_VARIANT::PathSample p =
             shader::VKPT_PATH_VARIANT::TracePath(scene, params, x, uint32_t(y), params.sampleBegin + s);

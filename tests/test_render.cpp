@@ -31,11 +31,12 @@ using test::MeanAndError;
 // The film both renderers resolve their sums through: samples 1, 2, 6 give the mean 3
 // and the sample variance ((−2)² + (−1)² + 3²) / 2 = 7, so the mean's variance is 7/3.
 TEST(Render, FilmGivesMeanAndVarianceOfTheMean) {
-  Film film(2, 1, 3);
-  film.SetPixel(0, {glm::dvec3(1 + 2 + 6, 0, 3), glm::dvec3(1 + 4 + 36, 0, 3)});  // G: 0, 0, 0; B: 1, 1, 1
-  film.SetPixel(1, {glm::dvec3(3), glm::dvec3(3)});                               // 1, 1, 1: no spread
+  Film film(3, 1);
+  film.SetPixel(0, {glm::dvec3(1 + 2 + 6, 0, 3), glm::dvec3(1 + 4 + 36, 0, 3), 3});  // G: 0, 0, 0; B: 1, 1, 1
+  film.SetPixel(1, {glm::dvec3(3), glm::dvec3(3), 3});                               // 1, 1, 1: no spread
+  film.SetPixel(2, {glm::dvec3(8), glm::dvec3(32), 2});                              // two samples of 4: no spread
   Image image = film.TakeImage();
-  ASSERT_EQ(image.variance.size(), 2u);
+  ASSERT_EQ(image.variance.size(), 3u);
   EXPECT_FLOAT_EQ(image.pixels[0].x, 3.0f);
   EXPECT_FLOAT_EQ(image.variance[0].x, 7.0f / 3.0f);
   EXPECT_EQ(image.pixels[0].y, 0.0f);
@@ -44,12 +45,16 @@ TEST(Render, FilmGivesMeanAndVarianceOfTheMean) {
   EXPECT_EQ(image.variance[0].z, 0.0f);  // samples 1, 1, 1
   EXPECT_EQ(image.pixels[1], glm::vec3(1.0f));
   EXPECT_EQ(image.variance[1], glm::vec3(0.0f));
+  EXPECT_EQ(image.pixels[2], glm::vec3(4.0f));  // each pixel by its own count (adaptive sampling)
+  EXPECT_EQ(image.variance[2], glm::vec3(0.0f));
 
-  Film single(1, 1, 1);  // one sample: no variance estimate, 0
-  single.SetPixel(0, {glm::dvec3(5.0), glm::dvec3(25.0)});
+  Film single(2, 1);  // one sample: no variance estimate, 0; none: black
+  single.SetPixel(0, {glm::dvec3(5.0), glm::dvec3(25.0), 1});
+  single.SetPixel(1, {glm::dvec3(5.0), glm::dvec3(25.0), 0});
   Image one = single.TakeImage();
   EXPECT_EQ(one.pixels[0], glm::vec3(5.0f));
   EXPECT_EQ(one.variance[0], glm::vec3(0.0f));
+  EXPECT_EQ(one.pixels[1], glm::vec3(0.0f));
 }
 
 TEST(Render, FurnaceMatchesClosedForm) {

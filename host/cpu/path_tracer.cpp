@@ -2,9 +2,11 @@
 // all pixels, a row at a time on util/parallel.h's threads.
 #include "cpu/path_tracer.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "cpu/cpu_path.h"
 #include "util/error.h"
@@ -23,14 +25,15 @@ glm::vec3 SampleRadiance(const RenderScene& scene, const FrameParams& params, ui
 
 namespace {
 
-// Pixel (x, y)'s samples, summed in sample order (so the sums are the same for any
-// thread count); non-finite samples are counted and left out.
+// Pixel (x, y)'s samples [begin, begin + count), added to `sums` in sample order (so the
+// sums are the same for any thread count); non-finite samples are counted and left out.
 template <bool kSimple>
-PixelSums SamplePixel(const RenderScene& scene, const FrameParams& params, uint32_t x, uint32_t y, SampleStats& stats) {
-  PixelSums sums;
-  for (uint32_t s = 0; s < params.sampleCount; ++s) {
-    glm::vec3 L = kSimple ? SampleRadianceSimple(scene, params, x, y, params.sampleBegin + s, stats)
-                          : SampleRadiance(scene, params, x, y, params.sampleBegin + s, stats);
+void SamplePixel(const RenderScene& scene, const FrameParams& params, uint32_t x, uint32_t y, uint32_t begin,
+                 uint32_t count, PixelSums& sums, SampleStats& stats) {
+  for (uint32_t s = 0; s < count; ++s) {
+    glm::vec3 L = kSimple ? SampleRadianceSimple(scene, params, x, y, begin + s, stats)
+                          : SampleRadiance(scene, params, x, y, begin + s, stats);
+    ++sums.samples;
     if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z)) {
       ++stats.nonFinite;
       continue;
@@ -38,40 +41,74 @@ PixelSums SamplePixel(const RenderScene& scene, const FrameParams& params, uint3
     sums.sum += glm::dvec3(L);
     sums.sumOfSquares += glm::dvec3(L) * glm::dvec3(L);
   }
-  return sums;
 }
+
+class CpuFrame final : public FrameRenderer {
+ public:
+  CpuFrame(const RenderScene& scene, const FrameParams& params, unsigned threads)
+      : scene_(scene),
+        params_(params),
+        threads_(std::min<unsigned>(ThreadCount(threads), params.height)),
+        simple_(IsSimpleScene(scene, params)) {
+    if (scene.pairLayout.pairs.empty() && scene.pairLayout.packets.empty())
+      throw Error("the CPU renderer needs a RenderScene prepared with forCpu = true");
+    sums_.width = params.width;
+    sums_.height = params.height;
+    sums_.pixels.resize(size_t(params.width) * params.height);
+  }
+
+  void AddSamples(uint32_t begin, uint32_t count, std::span<const uint8_t> active,
+                  const std::function<void(double)>& progress) override {
+    // Counted per row and added up once per row: per sample, the shared counters would
+    // bounce their cache line between cores.
+    std::atomic<uint64_t> rays{0}, nonFinite{0};
+    auto renderRow = [&](size_t y) {
+      SampleStats st;
+      for (uint32_t x = 0; x < params_.width; ++x) {
+        const size_t i = y * params_.width + x;
+        if (!active.empty() && !active[i]) continue;
+        if (simple_) SamplePixel<true>(scene_, params_, x, uint32_t(y), begin, count, sums_.pixels[i], st);
+        else SamplePixel<false>(scene_, params_, x, uint32_t(y), begin, count, sums_.pixels[i], st);
+      }
+      rays.fetch_add(st.rays);
+      nonFinite.fetch_add(st.nonFinite);
+    };
+    if (progress) ParallelForWithProgress(params_.height, threads_, renderRow, progress);
+    else ParallelFor(params_.height, threads_, renderRow);
+    sums_.rays += rays.load();
+    sums_.nonFinite += nonFinite.load();
+  }
+
+  FrameSums Sums() override { return sums_; }
+  std::string Engine() const override { return "cpu (" + std::to_string(threads_) + " threads)"; }
+  unsigned Threads() const { return threads_; }
+
+ private:
+  const RenderScene& scene_;
+  const FrameParams params_;
+  const unsigned threads_;
+  const bool simple_;
+  FrameSums sums_;
+};
 
 }  // namespace
 
+std::unique_ptr<FrameRenderer> BeginCpuFrame(const RenderScene& scene, const FrameParams& params, unsigned threads) {
+  return std::make_unique<CpuFrame>(scene, params, threads);
+}
+
 RenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, const CpuRenderOptions& options) {
-  if (scene.pairLayout.pairs.empty() && scene.pairLayout.packets.empty())
-    throw Error("the CPU renderer needs a RenderScene prepared with forCpu = true");
-  Film film(params.width, params.height, params.sampleCount);
-  const unsigned threads = std::min<unsigned>(ThreadCount(options.threads), params.height);
-
-  // Counted per row and added up once per row: per sample, the shared counters would
-  // bounce their cache line between cores.
-  std::atomic<uint64_t> rays{0}, nonFinite{0};
-  const bool simple = IsSimpleScene(scene, params);
-  auto renderRow = [&](size_t y) {
-    SampleStats st;
-    for (uint32_t x = 0; x < params.width; ++x)
-      film.SetPixel(y * params.width + x, simple ? SamplePixel<true>(scene, params, x, uint32_t(y), st)
-                                                 : SamplePixel<false>(scene, params, x, uint32_t(y), st));
-    rays.fetch_add(st.rays);
-    nonFinite.fetch_add(st.nonFinite);
-  };
-
+  CpuFrame frame(scene, params, options.threads);
   auto t0 = std::chrono::steady_clock::now();
-  if (options.progress) ParallelForWithProgress(params.height, threads, renderRow, options.progress);
-  else ParallelFor(params.height, threads, renderRow);
+  frame.AddSamples(params.sampleBegin, params.sampleCount, {}, options.progress);
   RenderResult result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  result.image = film.TakeImage();
-  result.rays = rays.load();
-  result.nonFinite = nonFinite.load();
-  result.threads = threads;
-  result.engine = "cpu (" + std::to_string(threads) + " threads)";
+  const FrameSums sums = frame.Sums();
+  result.image = ResolveFilm(sums);
+  result.rays = sums.rays;
+  result.nonFinite = sums.nonFinite;
+  result.threads = frame.Threads();
+  result.engine = frame.Engine();
   return result;
 }
 

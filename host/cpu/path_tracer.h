@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 
 #include "image/film.h"
 #include "render/render_scene.h"
@@ -32,9 +33,15 @@ struct CpuRenderOptions {
   std::function<void(double)> progress;
 };
 
+// A render in progress on the CPU (params.sampleBegin and sampleCount are ignored: each
+// pass names its samples). Each pixel's samples are summed in sample order, so the image
+// is bit-identical for any thread count and any division into passes. `scene` must
+// outlive it.
+std::unique_ptr<FrameRenderer> BeginCpuFrame(const RenderScene& scene, const shader::FrameParams& params,
+                                             unsigned threads = 0);
+
 // Renders samples [params.sampleBegin, params.sampleBegin + params.sampleCount) of every
-// pixel. Each pixel's samples are summed in a fixed order, so the image is bit-identical
-// for any thread count.
+// pixel in one pass of a BeginCpuFrame render.
 RenderResult RenderCpu(const RenderScene& scene, const shader::FrameParams& params,
                        const CpuRenderOptions& options = {});
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <memory>
 #include <numeric>
 #include <string>
 
@@ -66,52 +67,63 @@ uint32_t TileRowStride(uint32_t n) {
   return stride;
 }
 
-// pathtrace.comp's per-render buffers: per pixel Σf and Σf² (two vec4) and the counters
-// (rays, non-finite samples, samples cut short); the frame constants; the loop passes
-// per sample of the last submission's worst SIMD group.
+// pathtrace.comp's per-render buffers: per pixel Σf and Σf² (two vec4), the counters
+// (rays, non-finite samples, samples cut short, samples) and the adaptive sampling mask;
+// the frame constants; the loop passes per sample of the last submission's worst SIMD
+// group; host copies of the sums and counters.
 struct FrameBuffers {
-  Buffer accum, counters, params, loopStats;
+  Buffer accum, counters, active, params, loopStats, accumHost, countersHost;
 };
+
+Buffer HostVisible(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, const char* what) {
+  return Buffer(ctx, size, usage, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what);
+}
 
 FrameBuffers MakeFrameBuffers(const Context& ctx, uint64_t pixels) {
   FrameBuffers b;
   b.accum = Storage(ctx, pixels * 2 * sizeof(glm::vec4), "accumulation");
   b.counters = Storage(ctx, pixels * sizeof(glm::uvec4), "counter");
-  b.params = Buffer(ctx, sizeof(shader::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                    VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "frame params");
-  b.loopStats = Buffer(ctx, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "loop statistics");
+  b.active = HostVisible(ctx, pixels * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "active pixels");
+  b.params = HostVisible(ctx, sizeof(shader::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "frame params");
+  b.loopStats = HostVisible(ctx, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "loop statistics");
+  b.accumHost = Readback(ctx, b.accum.Size(), "accumulation readback");
+  b.countersHost = Readback(ctx, b.counters.Size(), "counter readback");
   return b;
 }
 
 // Samples per pixel per submission: options.batch, or about 2^20 paths.
-uint32_t BatchSize(const GpuRenderOptions& options, const shader::FrameParams& frame) {
-  const uint64_t pixels = uint64_t(frame.width) * frame.height;
-  if (options.batch) return std::min(options.batch, frame.sampleCount);
-  return uint32_t(std::clamp<uint64_t>((1u << 20) / std::max<uint64_t>(pixels, 1), 1, std::max(frame.sampleCount, 1u)));
+uint32_t BatchSize(const GpuRenderOptions& options, uint64_t pixels, uint32_t count) {
+  if (options.batch) return std::min(options.batch, count);
+  return uint32_t(std::clamp<uint64_t>((1u << 20) / std::max<uint64_t>(pixels, 1), 1, std::max(count, 1u)));
 }
 
-// Adds every sample of `frame` into b.accum and b.counters: submissions of `BatchSize`
-// samples per pixel, each a series of dispatches of `run` samples per invocation.
+// How a frame's dispatches have gone so far: the run of samples per invocation, and
+// whether a dispatch has measured the scene's loop passes yet.
+struct RunState {
+  uint32_t run = 1;
+  bool measured = false;
+  uint32_t batches = 0;               // submissions
+  uint32_t samplesPerInvocation = 0;  // the longest run used
+};
+
+// Adds samples [begin, begin + count) of `frame` into b.accum and b.counters: submissions
+// of `BatchSize` samples per pixel, each a series of dispatches of `run` samples per
+// invocation.
 void DispatchSamples(const Context& ctx, const ComputePipeline& pipeline, const FrameBuffers& b,
-                     const shader::FrameParams& frame, uint32_t texelSplit, const GpuRenderOptions& options,
-                     RenderResult& result) {
-  const uint32_t batch = BatchSize(options, frame);
-  // Until a dispatch has measured the scene's loop passes, one sample per invocation,
-  // and the first submission holds just that one dispatch.
-  uint32_t run = options.samplesPerInvocation ? options.samplesPerInvocation : 1u;
-  bool measured = options.samplesPerInvocation != 0;
+                     const shader::FrameParams& frame, uint32_t begin, uint32_t count, const GpuRenderOptions& options,
+                     RunState& state, const std::function<void(double)>& progress) {
+  const uint32_t batch = BatchSize(options, uint64_t(frame.width) * frame.height, count);
   const uint32_t groupsX = (frame.width + kWorkgroup - 1) / kWorkgroup;
   const uint32_t groupsY = (frame.height + kWorkgroup - 1) / kWorkgroup;
-  const uint32_t tileRowStride = TileRowStride(groupsY);
-  for (uint32_t done = 0; done < frame.sampleCount;) {
+  for (uint32_t done = 0; done < count;) {
     shader::FrameParams p = frame;
-    p.tileRowStride = tileRowStride;
-    p.texelSplit = texelSplit;
-    p.sampleBegin = frame.sampleBegin + done;
-    p.sampleCount = measured ? std::min(batch, frame.sampleCount - done) : 1u;
+    p.sampleBegin = begin + done;
+    // Until a dispatch has measured the scene's loop passes, one sample per invocation,
+    // and the first submission holds just that one dispatch.
+    p.sampleCount = state.measured ? std::min(batch, count - done) : 1u;
     std::memcpy(b.params.Mapped(), &p, sizeof p);            // the previous batch has finished: safe to overwrite
     std::memset(b.loopStats.Mapped(), 0, sizeof(uint32_t));  // measure this submission's runs alone
+    const uint32_t run = state.run;
     ctx.Submit([&](VkCommandBuffer cb) {
       for (uint32_t s = 0; s < p.sampleCount; s += run) {
         ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
@@ -120,31 +132,13 @@ void DispatchSamples(const Context& ctx, const ComputePipeline& pipeline, const 
       }
       HostReadBarrier(cb);  // for loopStats
     });
-    result.samplesPerInvocation = std::max(result.samplesPerInvocation, std::min(run, p.sampleCount));
-    if (!options.samplesPerInvocation) {
-      run = RunLength(*static_cast<const uint32_t*>(b.loopStats.Mapped()));
-      measured = true;
-    }
+    state.samplesPerInvocation = std::max(state.samplesPerInvocation, std::min(run, p.sampleCount));
+    if (!options.samplesPerInvocation) state.run = RunLength(*static_cast<const uint32_t*>(b.loopStats.Mapped()));
+    state.measured = true;
     done += p.sampleCount;
-    ++result.batches;
-    if (options.progress) options.progress(double(done) / frame.sampleCount);
+    ++state.batches;
+    if (progress) progress(double(done) / count);
   }
-}
-
-// The read-back sums through a Film into result.image; the counters into result's.
-void ResolveSums(const Buffer& accumHost, const Buffer& countersHost, const shader::FrameParams& frame,
-                 RenderResult& result) {
-  const auto* sums = static_cast<const glm::vec4*>(accumHost.Mapped());
-  const auto* count = static_cast<const glm::uvec4*>(countersHost.Mapped());
-  const uint64_t pixels = uint64_t(frame.width) * frame.height;
-  Film film(frame.width, frame.height, frame.sampleCount);
-  for (uint64_t i = 0; i < pixels; ++i) {
-    film.SetPixel(i, {glm::dvec3(glm::vec3(sums[2 * i])), glm::dvec3(glm::vec3(sums[2 * i + 1]))});
-    result.rays += count[i].x;
-    result.nonFinite += count[i].y;
-    result.cutShort += count[i].z;
-  }
-  result.image = film.TakeImage();
 }
 
 }  // namespace
@@ -186,50 +180,123 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
   for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
 }
 
-RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {
+namespace {
+
+// A render in progress on the device: the frame's buffers and pipeline, kept from pass
+// to pass, so the sums persist in device memory exactly as within one pass.
+class GpuFrame final : public FrameRenderer {
+ public:
+  GpuFrame(const Context& ctx, FrameBuffers b, std::unique_ptr<ComputePipeline> pipeline,
+           const shader::FrameParams& frame, const GpuRenderOptions& options)
+      : ctx_(ctx), b_(std::move(b)), pipeline_(std::move(pipeline)), frame_(frame), options_(options) {
+    frame_.tileRowStride = TileRowStride((frame.height + kWorkgroup - 1) / kWorkgroup);
+    if (options.samplesPerInvocation) {
+      state_.run = options.samplesPerInvocation;
+      state_.measured = true;
+    }
+  }
+
+  void AddSamples(uint32_t begin, uint32_t count, std::span<const uint8_t> active,
+                  const std::function<void(double)>& progress) override {
+    frame_.adaptive = active.empty() ? 0u : 1u;
+    if (!active.empty()) {
+      auto* mask = static_cast<uint32_t*>(b_.active.Mapped());
+      for (size_t i = 0; i < active.size(); ++i) mask[i] = active[i];
+    }
+    DispatchSamples(ctx_, *pipeline_, b_, frame_, begin, count, options_, state_, progress);
+  }
+
+  FrameSums Sums() override {
+    ctx_.Submit([&](VkCommandBuffer cb) {
+      CopyToHost(cb, {{&b_.accum, &b_.accumHost}, {&b_.counters, &b_.countersHost}});
+    });
+    const auto* sums = static_cast<const glm::vec4*>(b_.accumHost.Mapped());
+    const auto* count = static_cast<const glm::uvec4*>(b_.countersHost.Mapped());
+    FrameSums f;
+    f.width = frame_.width;
+    f.height = frame_.height;
+    f.pixels.resize(size_t(f.width) * f.height);
+    for (size_t i = 0; i < f.pixels.size(); ++i) {
+      f.pixels[i] = {glm::dvec3(glm::vec3(sums[2 * i])), glm::dvec3(glm::vec3(sums[2 * i + 1])), count[i].w};
+      f.rays += count[i].x;
+      f.nonFinite += count[i].y;
+      f.cutShort += count[i].z;
+    }
+    return f;
+  }
+
+  std::string Engine() const override {
+    return "vulkan: " + ctx_.DeviceName() + " (up to " + std::to_string(state_.samplesPerInvocation) +
+           " samples per invocation)";
+  }
+  const RunState& State() const { return state_; }
+
+ private:
+  const Context& ctx_;
+  FrameBuffers b_;
+  std::unique_ptr<ComputePipeline> pipeline_;
+  shader::FrameParams frame_;
+  const GpuRenderOptions options_;
+  RunState state_;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams& frame,
+                                                       const GpuRenderOptions& options) {
   FrameBuffers b = MakeFrameBuffers(ctx_, uint64_t(frame.width) * frame.height);
-  ComputePipeline pipeline(
+  shader::FrameParams p = frame;
+  p.texelSplit = texels_.split;
+  auto pipeline = std::make_unique<ComputePipeline>(
       ctx_, spirv_, spirvBytes_,
-      {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.Handle()},
-       TexelBinding(shader::kBindingTriangles, triangles_),
-       TexelBinding(shader::kBindingNodes, nodes_),
-       TexelBinding(shader::kBindingMaterials, materials_),
-       TexelBinding(shader::kBindingLights, lights_),
-       TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
-       TexelBinding(shader::kBindingShading, shading_),
-       TexelBinding(shader::kBindingVertexColors, vertexColors_),
-       TexelBinding(shader::kBindingVertexUVs, uvs_),
-       TexelBinding(shader::kBindingTangents, tangents_),
-       TexelBinding(shader::kBindingMaterialTextures, textureRefs_),
-       TexelBinding(shader::kBindingTextures, textures_),
-       TexelBinding(shader::kBindingTexels, texels_.low),
-       TexelBinding(shader::kBindingTexelsHigh, texels_.high),
-       TexelBinding(shader::kBindingTexelDecode, texelDecode_),
-       TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
-       TexelBinding(shader::kBindingEnvDistribution, envDistribution_),
-       {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
-       {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
-       {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
+      std::vector<BufferBinding>{{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.Handle()},
+                                 TexelBinding(shader::kBindingTriangles, triangles_),
+                                 TexelBinding(shader::kBindingNodes, nodes_),
+                                 TexelBinding(shader::kBindingMaterials, materials_),
+                                 TexelBinding(shader::kBindingLights, lights_),
+                                 TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
+                                 TexelBinding(shader::kBindingShading, shading_),
+                                 TexelBinding(shader::kBindingVertexColors, vertexColors_),
+                                 TexelBinding(shader::kBindingVertexUVs, uvs_),
+                                 TexelBinding(shader::kBindingTangents, tangents_),
+                                 TexelBinding(shader::kBindingMaterialTextures, textureRefs_),
+                                 TexelBinding(shader::kBindingTextures, textures_),
+                                 TexelBinding(shader::kBindingTexels, texels_.low),
+                                 TexelBinding(shader::kBindingTexelsHigh, texels_.high),
+                                 TexelBinding(shader::kBindingTexelDecode, texelDecode_),
+                                 TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
+                                 TexelBinding(shader::kBindingEnvDistribution, envDistribution_),
+                                 {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
+                                 {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
+                                 {shader::kBindingActive, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.active.Handle()},
+                                 {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
       "pathtrace", 2 * sizeof(uint32_t),
-      {frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
-       frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u, hasVolumes_ ? 1u : 0u, hasTextures_ ? 1u : 0u,
-       hasNormalMaps_ ? 1u : 0u, hasAlpha_ ? 1u : 0u, hasExtensionTextures_ ? 1u : 0u, texels_.twoBuffers ? 1u : 0u});
+      std::vector<uint32_t>{frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
+                            frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u, hasVolumes_ ? 1u : 0u,
+                            hasTextures_ ? 1u : 0u, hasNormalMaps_ ? 1u : 0u, hasAlpha_ ? 1u : 0u,
+                            hasExtensionTextures_ ? 1u : 0u, texels_.twoBuffers ? 1u : 0u});
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);
   });
+  return std::make_unique<GpuFrame>(ctx_, std::move(b), std::move(pipeline), p, options);
+}
 
-  RenderResult result;
+RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {
+  std::unique_ptr<FrameRenderer> f = BeginFrame(frame, options);
   auto t0 = std::chrono::steady_clock::now();
-  DispatchSamples(ctx_, pipeline, b, frame, texels_.split, options, result);
-  Buffer accumHost = Readback(ctx_, b.accum.Size(), "accumulation readback");
-  Buffer countersHost = Readback(ctx_, b.counters.Size(), "counter readback");
-  ctx_.Submit([&](VkCommandBuffer cb) { CopyToHost(cb, {{&b.accum, &accumHost}, {&b.counters, &countersHost}}); });
+  f->AddSamples(frame.sampleBegin, frame.sampleCount, {}, options.progress);
+  const FrameSums sums = f->Sums();
+  RenderResult result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-  ResolveSums(accumHost, countersHost, frame, result);
-  result.engine = "vulkan: " + ctx_.DeviceName() + " (up to " + std::to_string(result.samplesPerInvocation) +
-                  " samples per invocation)";
+  result.image = ResolveFilm(sums);
+  result.rays = sums.rays;
+  result.nonFinite = sums.nonFinite;
+  result.cutShort = sums.cutShort;
+  const RunState& state = static_cast<const GpuFrame&>(*f).State();
+  result.batches = state.batches;
+  result.samplesPerInvocation = state.samplesPerInvocation;
+  result.engine = f->Engine();
   return result;
 }
 

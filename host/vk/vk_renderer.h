@@ -35,6 +35,12 @@ class GpuRenderer {
   // `texelsPerBuffer` caps the texel store's buffers below the device's limit (tests).
   GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv = nullptr, size_t spirvBytes = 0,
               uint32_t texelsPerBuffer = 0);
+  // A render in progress (params.sampleBegin and sampleCount are ignored: each pass
+  // names its samples); it must not outlive this renderer. options.progress is unused:
+  // each pass takes its own.
+  std::unique_ptr<FrameRenderer> BeginFrame(const shader::FrameParams& params, const GpuRenderOptions& options = {});
+  // Samples [params.sampleBegin, params.sampleBegin + params.sampleCount) of every pixel
+  // in one pass of a BeginFrame render.
   RenderResult Render(const shader::FrameParams& params, const GpuRenderOptions& options = {});
 
   // Closest hits of a batch of rays with the shader's traversal (trace.comp, or a test

@@ -18,7 +18,7 @@ const uint kBindingNodes = 2u;      // texel buffer of BvhNode
 const uint kBindingMaterials = 3u;  // texel buffer of Material
 const uint kBindingLights = 4u;     // texel buffer of Light
 const uint kBindingAccum = 5u;      // buffer vec4[2 per pixel]: Σ L, Σ L²
-const uint kBindingCounters = 6u;   // buffer uvec4[] per pixel: rays, non-finite, cut short, 0
+const uint kBindingCounters = 6u;   // buffer uvec4[] per pixel: rays, non-finite, cut short, samples
 // The trace-only kernel (trace.comp) reuses kBindingTriangles and kBindingNodes, plus:
 const uint kBindingRays = 7u;       // readonly buffer RayQuery[]
 const uint kBindingHits = 8u;       // buffer HitRecord[]
@@ -37,6 +37,9 @@ const uint kBindingTangents = 20u;          // texel buffer of TriangleTangents,
 // The texels past the first FrameParams::texelSplit, when one texel buffer cannot hold the
 // store (its device's maxTexelBufferElements); else a 1-texel dummy.
 const uint kBindingTexelsHigh = 22u;
+// Adaptive sampling: per pixel 1 if it takes this pass's samples, else 0 (read when
+// FrameParams::adaptive is 1).
+const uint kBindingActive = 23u;
 
 // The environment map (shared/environment.h), both as RGBA32UI texel buffers; a 1-texel
 // dummy of each when there is none (FrameParams::envWidth == 0).
@@ -299,8 +302,8 @@ struct FrameParams {
   float envRotationCos;  // the map turned by α about +Y (--env-rotation): cos α, sin α
   float envRotationSin;
   uint texelSplit;  // RGBA32UI texels of the store in kBindingTexels; the rest are in kBindingTexelsHigh
-  uint pad4;        // std140 rounds the struct up to a multiple of 16 bytes
-  uint pad5;
+  uint adaptive;    // 1: only the pixels kBindingActive marks take samples
+  uint pad5;        // std140 rounds the struct up to a multiple of 16 bytes
 };
 
 VKPT_END_NAMESPACE
