@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "util/error.h"
+#include "util/graceful_stop.h"
 
 namespace vkpt {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 // What the handler removes. A fixed buffer: a signal handler may not allocate, and the
 // guard's own std::string is out of its reach.
 char gPath[PATH_MAX];
-bool gActive = false;
+volatile sig_atomic_t gActive = 0;
 
 // Async-signal-safe: unlink(2) and raise(3) only. SA_RESETHAND has already restored the
 // default action, so the re-raised signal (pending until the handler returns) ends the
@@ -29,7 +30,7 @@ extern "C" void UnlinkAndReraise(int sig) {
 // interrupt the write, and must stay ignored: no handler for it.
 void Install(int sig, struct sigaction* old) {
   ::sigaction(sig, nullptr, old);
-  if (old->sa_handler == SIG_IGN) return;
+  if (old->sa_handler == SIG_IGN || GracefulStop::Active()) return;
   struct sigaction sa{};
   sa.sa_handler = UnlinkAndReraise;
   sa.sa_flags = SA_RESETHAND;
@@ -47,7 +48,7 @@ TempFileGuard::TempFileGuard(const std::string& path) : path_(path) {
   // open(2) would refuse such a name too; refuse it before the handler could see half.
   if (path.size() >= sizeof gPath) throw Error(path + ": " + std::strerror(ENAMETOOLONG));
   std::memcpy(gPath, path.c_str(), path.size() + 1);
-  gActive = true;
+  gActive = 1;
   Install(SIGINT, &oldInt_);
   Install(SIGTERM, &oldTerm_);
 }
@@ -58,7 +59,11 @@ TempFileGuard::~TempFileGuard() {
   if (!dismissed_) ::unlink(path_.c_str());
   ::sigaction(SIGTERM, &oldTerm_, nullptr);
   ::sigaction(SIGINT, &oldInt_, nullptr);
-  gActive = false;
+  gActive = 0;
+}
+
+void RemoveGuardedFileForSignal() {
+  if (gActive) ::unlink(gPath);
 }
 
 }  // namespace vkpt

@@ -1,6 +1,8 @@
 // Removes a temporary file unless it was dismissed: when the guard is destroyed (an
 // error unwinding the stack) and when SIGINT or SIGTERM arrives while it is alive, so
-// neither a failure nor an interrupted write leaves a partial file behind.
+// neither a failure nor an interrupted write leaves a partial file behind. While a
+// GracefulStop is alive the signals are its own: the first lets the write finish, a
+// second removes the file (RemoveGuardedFileForSignal) and ends the process.
 #pragma once
 
 #include <signal.h>
@@ -26,5 +28,8 @@ class TempFileGuard {
   bool dismissed_ = false;
   struct sigaction oldInt_{}, oldTerm_{};
 };
+
+// From a signal handler: unlinks the file of the live guard, if any (async-signal-safe).
+void RemoveGuardedFileForSignal();
 
 }  // namespace vkpt
