@@ -54,11 +54,13 @@ TEST(Cli, HelpListsEveryOption) {
     ASSERT_TRUE(r.ExitedWith(0)) << flag << ": " << r.Describe();
     EXPECT_TRUE(r.err.empty()) << r.err;
     EXPECT_NE(r.out.find("usage:"), std::string::npos) << r.out;
-    for (const char* opt :
-         {"--scene",    "--out",     "--width",   "--height",       "--spp",        "--seed",       "--max-depth",
-          "--rr-depth", "--backend", "--device",  "--list-devices", "--validation", "--batch",      "--threads",
-          "--compare",  "--diff",    "--camera",  "--background",   "--exposure",   "--leaf-size",  "--splits",
-          "--stats",    "-v",        "--verbose", "--help",         "--version",    "--texture-lod"})
+    for (const char* opt : {"--scene",        "--out",         "--width",      "--height",       "--spp",
+                            "--seed",         "--max-depth",   "--rr-depth",   "--backend",      "--device",
+                            "--list-devices", "--validation",  "--batch",      "--threads",      "--compare",
+                            "--diff",         "--camera",      "--background", "--exposure",     "--leaf-size",
+                            "--splits",       "--stats",       "-v",           "--verbose",      "--help",
+                            "--version",      "--texture-lod", "--time",       "--noise-target", "--adaptive",
+                            "--no-adaptive",  "--checkpoint"})
       EXPECT_NE(r.out.find(opt), std::string::npos) << flag << " output does not mention " << opt;
     EXPECT_NE(r.out.find(".png"), std::string::npos);
     EXPECT_NE(r.out.find(".pfm"), std::string::npos);

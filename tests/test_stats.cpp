@@ -100,8 +100,11 @@ TEST(Stats, KeysAreTheReadmeSchemaAndValuesDescribeTheRun) {
   EXPECT_TRUE(j["options"]["camera"].is_null());
   EXPECT_EQ(j["width"], 24);
   EXPECT_EQ(j["spp"], 2);
-  EXPECT_EQ(j["spp_per_pass"], json::array({2}));
+  EXPECT_EQ(j["spp_per_pass"], json::array({1, 1}));  // the first pass measures the rate
+  EXPECT_EQ(j["samples"], 2 * 24 * 24);
   EXPECT_EQ(j["stopped_by"], "spp");
+  EXPECT_EQ(j["active_pixels"], 24 * 24);
+  EXPECT_EQ(j["checkpoints"], 0);
   EXPECT_EQ(j["exit_status"], 0);
   EXPECT_EQ(j["scene"]["triangles"], 32);
   EXPECT_EQ(j["bvh"]["references"], 32);

@@ -16,10 +16,12 @@
 
 #include "app/environment_option.h"
 #include "app/options.h"
+#include "app/render_loop.h"
 #include "app/run_stats.h"
 #include "cpu/path_tracer.h"
 #include "image/image.h"
 #include "image/image_compare.h"
+#include "image/noise_estimate.h"
 #include "render/light_table.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
@@ -27,6 +29,7 @@
 #include "util/atomic_write.h"
 #include "util/byte_size.h"
 #include "util/error.h"
+#include "util/graceful_stop.h"
 #include "vk/context.h"
 #include "vk/vk_renderer.h"
 
@@ -105,17 +108,62 @@ double SecondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// `uploadSeconds` receives the time the scene took to reach device memory.
-RenderResult RenderOnVulkan(vk::Context& ctx, const RenderScene& rs, const shader::FrameParams& params,
-                            const Options& o, double* uploadSeconds) {
+// The budgets of the options.
+RenderBudget BudgetFromOptions(const Options& o) {
+  RenderBudget b;
+  b.maxSpp = o.spp;
+  b.seconds = o.time;
+  b.noiseTarget = o.noiseTarget;
+  b.adaptive = o.Adaptive();
+  if (o.noiseTarget) b.adaptiveThreshold = *o.noiseTarget;
+  b.checkpointSeconds = o.checkpoint;
+  return b;
+}
+
+// The render under the options' budgets, on the Vulkan device if there is one, else on
+// the CPU. `uploadSeconds` receives the time the scene took to reach device memory and
+// the pipeline to be compiled; the image is written at every checkpoint.
+ProgressiveRender RenderFrame(vk::Context* ctx, const RenderScene& rs, const shader::FrameParams& params,
+                              const Options& o, double* uploadSeconds) {
   const auto t0 = std::chrono::steady_clock::now();
-  vk::GpuRenderer renderer(ctx, rs);
-  *uploadSeconds = SecondsSince(t0);
-  vk::GpuRenderOptions gpu;
-  gpu.batch = o.batch;
-  gpu.progress = ProgressLine();
-  RenderResult r = renderer.Render(params, gpu);
+  std::unique_ptr<vk::GpuRenderer> gpu;
+  std::unique_ptr<FrameRenderer> frame;
+  if (ctx) {
+    gpu = std::make_unique<vk::GpuRenderer>(*ctx, rs);
+    vk::GpuRenderOptions options;
+    options.batch = o.batch;
+    frame = gpu->BeginFrame(params, options);
+  } else {
+    frame = BeginCpuFrame(rs, params, o.threads);
+  }
+  *uploadSeconds = ctx ? SecondsSince(t0) : 0.0;
+  RenderLoopHooks hooks;
+  hooks.progress = ProgressLine();
+  hooks.checkpoint = [&o](const FrameSums& sums, uint32_t spp) {
+    WriteImage(ResolveFilm(sums), o.out, o.exposure);
+    if (o.verbose) std::printf("  checkpoint: %s at %u spp\n", o.out.c_str(), spp);
+    std::fflush(stdout);
+  };
+  // Flushed line by line: a script reading a pipe sees each pass as it ends.
+  if (o.verbose)
+    hooks.passReport = [](const std::string& line) {
+      std::printf("  %s\n", line.c_str());
+      std::fflush(stdout);
+    };
+  ProgressiveRender r = RenderProgressively(*frame, BudgetFromOptions(o), hooks);
   EndProgressLine();
+  return r;
+}
+
+// A finished render as the reports read it.
+RenderResult ResultOf(const ProgressiveRender& p) {
+  RenderResult r;
+  r.image = ResolveFilm(p.sums);
+  r.rays = p.sums.rays;
+  r.nonFinite = p.sums.nonFinite;
+  r.cutShort = p.sums.cutShort;
+  r.seconds = p.seconds;
+  r.engine = p.engine;
   return r;
 }
 
@@ -244,16 +292,37 @@ int CompareBackends(const RenderResult& reference, const RenderResult& r, const 
   return 4;
 }
 
-// The summary after a render: rates, the image's mean, the scene and its BVH, warnings.
-void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderResult& r, const Options& o) {
+// The samples of every pixel added up.
+double TotalSamples(const FrameSums& sums) {
+  double n = 0.0;
+  for (const PixelSums& p : sums.pixels) n += p.samples;
+  return n;
+}
+
+// The summary after a render: samples and why they stopped, rates, the image's mean, the
+// scene and its BVH, warnings.
+void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderResult& r, const ProgressiveRender& p,
+                       const Options& o) {
   const uint32_t width = r.image.width, height = r.image.height;
-  const double samples = double(width) * height * o.spp;
+  const double samples = TotalSamples(p.sums);
   glm::dvec3 mean(0.0);
-  for (const glm::vec3& p : r.image.pixels) mean += glm::dvec3(p);
+  for (const glm::vec3& px : r.image.pixels) mean += glm::dvec3(px);
   mean /= double(r.image.pixels.size());
-  std::printf("vkpt: %s -> %s: %ux%u, %u spp, %s\n", o.scene.c_str(), o.out.c_str(), width, height, o.spp,
+  std::printf("vkpt: %s -> %s: %ux%u, %u spp, %s\n", o.scene.c_str(), o.out.c_str(), width, height, p.spp,
               r.engine.c_str());
-  std::printf("  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", r.seconds,
+  char why[96];
+  switch (p.stoppedBy) {
+    case StopReason::kTime: std::snprintf(why, sizeof why, "--time %g s", *o.time); break;
+    case StopReason::kNoiseTarget: std::snprintf(why, sizeof why, "--noise-target %g", *o.noiseTarget); break;
+    case StopReason::kConverged: std::snprintf(why, sizeof why, "every pixel converged (--adaptive)"); break;
+    case StopReason::kSignal: std::snprintf(why, sizeof why, "%s", p.signal == SIGTERM ? "SIGTERM" : "SIGINT"); break;
+    default: std::snprintf(why, sizeof why, "--spp %u", o.spp); break;
+  }
+  std::printf("  stopped by %s after %zu pass(es); estimated relMSE %.4g", why, p.sppPerPass.size(), p.estimatedRelMse);
+  if (o.Adaptive())
+    std::printf("; adaptive: %.2f spp per pixel on average, %llu pixels still active", samples / r.image.pixels.size(),
+                (unsigned long long)p.activePixels);
+  std::printf("\n  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", r.seconds,
               samples / r.seconds * 1e-6, double(r.rays) / r.seconds * 1e-6, mean.x, mean.y, mean.z);
   const BvhStats& bvh = rs.bvhStats;
   const char* kind = bvh.spatialSplits ? "spatial" : "object";
@@ -309,7 +378,11 @@ int Run(const Options& o) {
 
   std::optional<RenderResult> reference;
   if (o.compare) reference = RenderOnCpu(rs, params, o);
-  RenderResult r = ctx ? RenderOnVulkan(*ctx, rs, params, o, &times.upload) : RenderOnCpu(rs, params, o);
+  // From here the first SIGINT/SIGTERM stops the render after its pass, and the image of
+  // the samples taken is still written.
+  GracefulStop stop;
+  const ProgressiveRender progressive = RenderFrame(ctx.get(), rs, params, o, &times.upload);
+  const RenderResult r = ResultOf(progressive);
   times.render = r.seconds;
   const uint32_t validationMessages = ctx ? ctx->ValidationMessages() : 0;
 
@@ -317,15 +390,21 @@ int Run(const Options& o) {
   WriteImage(r.image, o.out, o.exposure);
   lap(times.write);
   int status = reference ? CompareBackends(*reference, r, o) : 0;
-  PrintRenderReport(scene, rs, r, o);
+  PrintRenderReport(scene, rs, r, progressive, o);
   if (validationMessages) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
     status = 3;
   }
+  if (const int sig = GracefulStop::Signal()) {
+    std::fprintf(stderr, "vkpt: interrupted by %s: %s holds the %u spp rendered (%s)\n",
+                 sig == SIGTERM ? "SIGTERM" : "SIGINT", o.out.c_str(), progressive.spp,
+                 progressive.stoppedBy == StopReason::kSignal ? "stopped early" : "the render had finished");
+    status = 128 + sig;
+  }
   if (!o.stats.empty()) {
     times.total = SecondsSince(start);
     const std::string json =
-        StatsJson(o, {scene, rs, r, reference ? &*reference : nullptr, times, validationMessages, status});
+        StatsJson(o, {scene, rs, r, progressive, reference ? &*reference : nullptr, times, validationMessages, status});
     WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
   }
   return status;

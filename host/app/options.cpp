@@ -37,7 +37,19 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      [default: <scene name>.png]
   --width N          image width in pixels   [default: 512]
   --height N         image height in pixels  [default: from the camera's aspect ratio, else 512]
-  --spp N            samples per pixel [default: 64]
+  --spp N            samples per pixel; with --time or --noise-target the most any pixel
+                     takes [default: 64; 65536 with --time or --noise-target]
+  --time SECONDS     render passes until SECONDS of rendering are spent (after loading,
+                     BVH build and upload); every pixel gets the same samples
+  --noise-target X   stop once the image's estimated relMSE (from each pixel's variance,
+                     as vkpt-bench measures against a reference) is at most X, checked
+                     at 16, 24, 32, 40, 50... spp; turns on --adaptive
+  --adaptive         adaptive sampling: at those same counts, pixels whose estimated
+                     error (and their neighbours') is below --noise-target, else 1e-3,
+                     stop taking samples [default: on with --noise-target]
+  --no-adaptive      every pixel takes samples until the render stops
+  --checkpoint SECONDS
+                     rewrite --out every SECONDS during the render, with the samples so far
   --seed N           random seed; same seed and device give a bit-identical image [default: 0]
   --max-depth N      maximum number of bounces [default: 32]
   --rr-depth N       bounces before Russian roulette starts [default: 3]
@@ -93,12 +105,17 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --stats FILE       write the run as one JSON object (version, scene hash, device,
                      options, times, rays, rates, mean radiance, BVH, warnings; schema
                      in the README), after the image
-  -v, --verbose      print what was loaded and which glTF features were ignored
+  -v, --verbose      print what was loaded, which glTF features were ignored, and a line
+                     per rendering pass
   -h, --help         print this help and exit
   --version          print the version and exit
 
+SIGINT or SIGTERM during the render stops it after the current pass (about a second)
+and writes the image of the samples taken; a second one exits at once.
+
 Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error,
-3 Vulkan validation messages were reported, 4 --compare/--diff found a disagreement.
+3 Vulkan validation messages were reported, 4 --compare/--diff found a disagreement,
+130/143 stopped by SIGINT/SIGTERM (the image of the samples taken was written).
 )";
 }
 
@@ -123,7 +140,16 @@ Options ParseOptions(int argc, const char* const* argv) {
       {"--out", [&](const std::string&, const std::string& v) { o.out = o.outGiven = v; }},
       {"--width", optU32(o.width, 1, 16384)},
       {"--height", optU32(o.height, 1, 16384)},
-      {"--spp", u32(o.spp, 1, 1u << 30)},
+      {"--spp",
+       [&](const std::string& opt, const std::string& v) {
+         o.spp = ParseNumber(opt, v, 1u, 1u << 30);
+         o.sppGiven = true;
+       }},
+      {"--time", [&](const std::string& opt, const std::string& v) { o.time = ParseNumber(opt, v, 1e-3, 1e7); }},
+      {"--noise-target",
+       [&](const std::string& opt, const std::string& v) { o.noiseTarget = ParseNumber(opt, v, 1e-9, 1.0); }},
+      {"--checkpoint",
+       [&](const std::string& opt, const std::string& v) { o.checkpoint = ParseNumber(opt, v, 1e-3, 1e7); }},
       {"--seed", u32(o.seed, 0, 0xFFFFFFFFu)},
       {"--max-depth", u32(o.maxDepth, 0, 1024)},
       {"--rr-depth", u32(o.rrDepth, 0, 1024)},
@@ -203,6 +229,14 @@ Options ParseOptions(int argc, const char* const* argv) {
     if (arg == "--list-devices") { o.listDevices = true; continue; }
     if (arg == "--validation") { o.validation = true; continue; }
     if (arg == "--compare") { o.compare = true; continue; }
+    if (arg == "--adaptive") {
+      o.adaptive = true;
+      continue;
+    }
+    if (arg == "--no-adaptive") {
+      o.adaptive = false;
+      continue;
+    }
     if (arg == "--allow-external-uris") { o.load.allowExternalUris = true; continue; }
     if (arg == "--diff") {
       if (inlineValue || i + 2 >= argc) throw UsageError("--diff needs two image files: --diff A.pfm B.pfm");
@@ -226,6 +260,10 @@ Options ParseOptions(int argc, const char* const* argv) {
     return o;
   }
   if (o.compare && o.backend != Backend::Auto) throw UsageError("--compare uses both backends; drop --backend");
+  if (o.compare && (o.time || o.noiseTarget || o.Adaptive()))
+    throw UsageError(
+        "--compare renders both backends with the same samples; it takes no --time, --noise-target or --adaptive");
+  if (!o.sppGiven && (o.time || o.noiseTarget)) o.spp = kBudgetMaxSpp;
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
   if (!o.env.empty() && o.background) throw UsageError("--env and --background both set the environment; give one");
   if (o.env.empty() && (o.envRotation != 0.0f || o.envIntensity != 1.0f))

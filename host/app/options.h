@@ -20,7 +20,12 @@ struct Options {
   std::string out;  // default: <scene name>.png in the current directory
   std::string outGiven;  // --out exactly as given ("" when absent)
   std::optional<uint32_t> width, height;
-  uint32_t spp = 64;
+  uint32_t spp = 64;                  // the upper bound of samples per pixel
+  bool sppGiven = false;              // --spp was given (else a budget below may raise the bound)
+  std::optional<double> time;         // --time: seconds of rendering
+  std::optional<double> noiseTarget;  // --noise-target: estimated relMSE that ends the render
+  std::optional<bool> adaptive;       // --adaptive / --no-adaptive; absent: on with --noise-target
+  double checkpoint = 0.0;            // --checkpoint: seconds between rewrites of --out (0: none)
   uint32_t seed = 0;
   uint32_t maxDepth = 32;
   uint32_t rrDepth = 3;
@@ -48,7 +53,12 @@ struct Options {
   bool verbose = false;
   bool help = false;
   bool version = false;
+
+  bool Adaptive() const { return adaptive.value_or(noiseTarget.has_value()); }
 };
+
+// The --spp bound when --time or --noise-target is given without --spp.
+constexpr uint32_t kBudgetMaxSpp = 65536;
 
 // Throws UsageError for anything malformed; the message says which option and why.
 class UsageError : public std::runtime_error {

@@ -37,7 +37,10 @@ JsonObject OptionsJson(const Options& o) {
   auto optional = [](const std::optional<uint32_t>& v) { return v ? std::to_string(*v) : std::string("null"); };
   JsonObject j;
   j.Str("scene", o.scene).Str("out", o.out).Raw("width", optional(o.width)).Raw("height", optional(o.height));
-  j.Int("spp", o.spp).Int("seed", o.seed).Int("max_depth", o.maxDepth).Int("rr_depth", o.rrDepth);
+  auto optionalNumber = [](const std::optional<double>& v) { return v ? JsonNumber(*v) : std::string("null"); };
+  j.Int("spp", o.spp).Raw("time", optionalNumber(o.time)).Raw("noise_target", optionalNumber(o.noiseTarget));
+  j.Bool("adaptive", o.Adaptive()).Raw("checkpoint", o.checkpoint > 0.0 ? JsonNumber(o.checkpoint) : "null");
+  j.Int("seed", o.seed).Int("max_depth", o.maxDepth).Int("rr_depth", o.rrDepth);
   j.Str("backend", BackendName(o.backend)).Str("device", o.device).Int("threads", o.threads).Int("batch", o.batch);
   j.Bool("compare", o.compare).Bool("validation", o.validation).Raw("camera", optional(o.camera));
   j.Num("exposure", o.exposure)
@@ -56,8 +59,12 @@ JsonObject OptionsJson(const Options& o) {
 
 std::string StatsJson(const Options& o, const RunOutcome& run) {
   const RenderResult& r = run.result;
+  const ProgressiveRender& p = run.progressive;
   const uint64_t pixels = uint64_t(r.image.width) * r.image.height;
-  const double samples = double(pixels) * o.spp;
+  uint64_t samples = 0;
+  for (const PixelSums& s : p.sums.pixels) samples += s.samples;
+  std::vector<std::string> passes;
+  for (uint32_t n : p.sppPerPass) passes.push_back(std::to_string(n));
   glm::dvec3 mean(0.0);
   for (const glm::vec3& p : r.image.pixels) mean += glm::dvec3(p);
   mean /= double(pixels);
@@ -83,9 +90,10 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   JsonObject j;
   j.Str("vkpt_version", VKPT_VERSION).Obj("scene", scene).Str("device", r.engine).Obj("options", OptionsJson(o));
   j.Int("seed", o.seed).Int("width", r.image.width).Int("height", r.image.height);
-  // One pass of o.spp samples: the only budget vkpt has is --spp.
-  j.Int("spp", o.spp).Raw("spp_per_pass", JsonArray({std::to_string(o.spp)})).Str("stopped_by", "spp");
-  j.Obj("times_s", times).Int("rays", r.rays).Num("samples_per_s", samples / r.seconds);
+  j.Int("spp", p.spp).Raw("spp_per_pass", JsonArray(passes)).Int("samples", samples);
+  j.Str("stopped_by", StopReasonName(p.stoppedBy)).Num("estimated_rel_mse", p.estimatedRelMse);
+  j.Int("active_pixels", p.activePixels).Int("checkpoints", p.checkpoints);
+  j.Obj("times_s", times).Int("rays", r.rays).Num("samples_per_s", double(samples) / r.seconds);
   j.Num("rays_per_s", double(r.rays) / r.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));
   j.Int("non_finite_samples", r.nonFinite).Int("cut_short_samples", r.cutShort).Obj("bvh", bvh);
   if (run.reference) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/options.h"
+#include "app/render_loop.h"
 #include "image/film.h"
 #include "render/render_scene.h"
 #include "scene/scene.h"
@@ -28,6 +29,7 @@ struct RunOutcome {
   const Scene& scene;
   const RenderScene& rs;
   const RenderResult& result;
+  const ProgressiveRender& progressive;
   const RenderResult* reference;  // --compare: the CPU render; else null
   RunTimes times;
   uint32_t validationMessages = 0;

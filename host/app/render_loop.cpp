@@ -1,0 +1,142 @@
+#include "app/render_loop.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "image/noise_estimate.h"
+#include "util/graceful_stop.h"
+
+namespace vkpt {
+namespace {
+
+constexpr uint32_t kFirstDecision = 16;  // samples before a pixel's variance is trusted
+
+double Since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+const char* StopReasonName(StopReason r) {
+  switch (r) {
+    case StopReason::kTime: return "time";
+    case StopReason::kNoiseTarget: return "noise_target";
+    case StopReason::kConverged: return "converged";
+    case StopReason::kSignal: return "signal";
+    default: return "spp";
+  }
+}
+
+uint32_t NextDecisionPoint(uint32_t spp) {
+  uint32_t point = kFirstDecision;
+  while (point <= spp) point += std::max(8u, point / 4);
+  return point;
+}
+
+uint32_t NextPassSpp(const RenderBudget& budget, const PassPlan& plan, double passSeconds) {
+  if (plan.done >= budget.maxSpp) return 0;
+  uint32_t n = 1;
+  if (plan.lastPass > 0) {
+    const double fit = plan.secondsPerSpp > 0.0 ? passSeconds / plan.secondsPerSpp : 1e9;
+    n = uint32_t(std::clamp(std::floor(fit), 1.0, 2.0 * plan.lastPass));
+    if (budget.seconds) {
+      const double left = (*budget.seconds - plan.elapsed) / std::max(plan.secondsPerSpp, 1e-9);
+      if (left < 1.0) return 0;
+      n = std::min(n, uint32_t(std::min(left, 1e9)));
+    }
+  }
+  n = std::min(n, budget.maxSpp - plan.done);
+  if (plan.decisions) n = std::min(n, NextDecisionPoint(plan.done) - plan.done);
+  return n;
+}
+
+ProgressiveRender RenderProgressively(FrameRenderer& renderer, const RenderBudget& budget,
+                                      const RenderLoopHooks& hooks) {
+  ProgressiveRender out;
+  const bool decisions = budget.adaptive || budget.noiseTarget.has_value();
+  std::vector<uint8_t> active;  // empty: every pixel
+  FrameSums sums;
+  bool fresh = false;  // `sums` holds every sample taken
+  PassPlan plan;
+  plan.decisions = decisions;
+  double noise = INFINITY;
+  const auto t0 = std::chrono::steady_clock::now();
+  double lastCheckpoint = 0.0;
+  // The finished fraction of the render: of the spp bound, the time, or (as relMSE falls
+  // as 1/n) the noise target, whichever is nearest.
+  auto fraction = [&](double passDone) {
+    double f = passDone / budget.maxSpp;
+    if (budget.seconds) f = std::max(f, Since(t0) / *budget.seconds);
+    if (budget.noiseTarget && std::isfinite(noise)) f = std::max(f, *budget.noiseTarget / noise);
+    return std::min(f, 1.0);
+  };
+  for (;;) {
+    if (GracefulStop::Signal()) {
+      out.stoppedBy = StopReason::kSignal;
+      out.signal = GracefulStop::Signal();
+      break;
+    }
+    plan.elapsed = Since(t0);
+    const uint32_t n = NextPassSpp(budget, plan);
+    if (n == 0) {
+      out.stoppedBy = plan.done >= budget.maxSpp ? StopReason::kSpp : StopReason::kTime;
+      break;
+    }
+    const auto passStart = std::chrono::steady_clock::now();
+    std::function<void(double)> progress;
+    if (hooks.progress) progress = [&](double f) { hooks.progress(fraction(plan.done + f * n)); };
+    renderer.AddSamples(plan.done, n, active, progress);
+    fresh = false;
+    const double passSeconds = Since(passStart);
+    plan.done += n;
+    plan.lastPass = n;
+    plan.secondsPerSpp = passSeconds / n;
+    out.sppPerPass.push_back(n);
+
+    char report[160];
+    std::snprintf(report, sizeof report, "pass %zu: samples %u..%u in %.3f s", out.sppPerPass.size(), plan.done - n,
+                  plan.done - 1, passSeconds);
+    std::string line = report;
+    std::optional<StopReason> stop;
+    if (decisions && plan.done == NextDecisionPoint(plan.done - 1)) {
+      sums = renderer.Sums();
+      fresh = true;
+      noise = EstimatedRelMse(sums);
+      std::snprintf(report, sizeof report, ", estimated relMSE %.4g", noise);
+      line += report;
+      if (budget.adaptive) {
+        const uint64_t left = UpdateActivePixels(sums, budget.adaptiveThreshold, active);
+        std::snprintf(report, sizeof report, ", %llu of %zu pixels active", (unsigned long long)left, active.size());
+        line += report;
+        if (left == 0) stop = StopReason::kConverged;
+      }
+      if (budget.noiseTarget && noise <= *budget.noiseTarget) stop = StopReason::kNoiseTarget;
+    }
+    if (hooks.passReport) hooks.passReport(line);
+    if (stop) {
+      out.stoppedBy = *stop;
+      break;
+    }
+    if (budget.checkpointSeconds > 0.0 && hooks.checkpoint && Since(t0) - lastCheckpoint >= budget.checkpointSeconds &&
+        plan.done < budget.maxSpp) {
+      if (!fresh) sums = renderer.Sums();
+      fresh = true;
+      hooks.checkpoint(sums, plan.done);
+      ++out.checkpoints;
+      lastCheckpoint = Since(t0);
+    }
+  }
+  out.sums = fresh ? std::move(sums) : renderer.Sums();
+  out.spp = plan.done;
+  out.engine = renderer.Engine();
+  out.seconds = Since(t0);
+  out.estimatedRelMse = EstimatedRelMse(out.sums);
+  out.activePixels =
+      active.empty() ? out.sums.pixels.size() : uint64_t(std::count(active.begin(), active.end(), uint8_t(1)));
+  return out;
+}
+
+}  // namespace vkpt
