@@ -56,7 +56,7 @@ std::string ProcessResult::Describe() const {
 }
 
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds, const std::string& cwd,
-                      const std::vector<std::string>& env, const ChildLimits& limits) {
+                      const std::vector<std::string>& env, const ChildLimits& limits, const ChildSignals& signals) {
   ProcessResult r;
   int outPipe[2], errPipe[2];
   if (pipe(outPipe) != 0 || pipe(errPipe) != 0) {
@@ -93,14 +93,26 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
   pollfd fds[2] = {{outPipe[0], POLLIN, 0}, {errPipe[0], POLLIN, 0}};
   std::string* sinks[2] = {&r.out, &r.err};
   int open = 2;
+  size_t signalsSent = 0;
+  std::chrono::steady_clock::time_point lastSignal;
+  auto sendSignals = [&] {
+    if (signalsSent == signals.signals.size() || r.out.find(signals.after) == std::string::npos) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (signalsSent > 0 && std::chrono::duration<double>(now - lastSignal).count() < signals.gapSeconds) return;
+    kill(pid, signals.signals[signalsSent++]);
+    lastSignal = now;
+    r.sentAt = std::chrono::duration<double>(now - start).count();
+  };
   while (open > 0) {
+    sendSignals();
     auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
       kill(pid, SIGKILL);
       r.timedOut = true;
       break;
     }
-    if (poll(fds, 2, int(std::min<long long>(left.count(), 1000))) < 0) break;
+    if (poll(fds, 2, int(std::min<long long>(left.count(), signalsSent < signals.signals.size() ? 10 : 1000))) < 0)
+      break;
     for (int i = 0; i < 2; ++i) {
       if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP))) continue;
       char buf[4096];

@@ -39,6 +39,7 @@ struct ProcessResult {
   int signal = 0;        // the terminating signal, if any
   bool timedOut = false;
   double seconds = 0.0;  // wall time from start to exit
+  double sentAt = -1.0;  // ChildSignals: seconds from start to the last signal sent (-1: none)
   long peakRssKiB = 0;   // the child's peak resident memory
   std::string out, err;
   bool ExitedWith(int code) const { return !timedOut && signal == 0 && exitCode == code; }
@@ -53,12 +54,20 @@ struct ChildLimits {
   std::optional<uint64_t> addressSpace{};
 };
 
+// Signals for the child: once its stdout contains `after`, each of `signals` is sent in
+// turn, `gapSeconds` apart; `sentAt` in the result is when the last one went.
+struct ChildSignals {
+  std::string after;
+  std::vector<int> signals;
+  double gapSeconds = 0.0;
+};
+
 // Runs `build/vkpt args...`, killing it after timeoutSeconds × kTimeScale. A non-empty
 // `cwd` is the child's working directory (for relative paths and the default output
 // name); `env` entries ("NAME=value") are set in the child's environment.
-ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds = 120.0,
-                      const std::string& cwd = "", const std::vector<std::string>& env = {},
-                      const ChildLimits& limits = {});
+ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds = 120.0, const std::string& cwd = "",
+                      const std::vector<std::string>& env = {}, const ChildLimits& limits = {},
+                      const ChildSignals& signals = {});
 
 // Statistics.
 double ChiSquareSurvival(double statistic, double dof);  // P(X >= statistic), X ~ χ²(dof)
