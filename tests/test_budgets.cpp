@@ -122,9 +122,10 @@ TEST(Signals, SigtermStopsAfterThePassWritesTheImageAndExits143) { ExpectStopped
 // temporary file.
 TEST(Signals, SecondSigintExitsAtOnce) {
   const Folder dir("budget-second-signal");
-  // By pass 10 the passes take about a second each, so both signals fall in one pass.
+  // By pass 10 the passes take about a second each: both signals fall inside pass 11
+  // (the first one, sent as pass 10 ends, would stop the render before pass 11 began).
   ProcessResult r = RunVkpt(LongRender(dir), 120.0, "", {}, {},
-                            {.after = "pass 10:", .signals = {SIGINT, SIGINT}, .gapSeconds = 0.1});
+                            {.after = "pass 10:", .signals = {SIGINT, SIGINT}, .gapSeconds = 0.1, .delaySeconds = 0.3});
   EXPECT_EQ(r.signal, SIGINT) << r.Describe();
   EXPECT_LT(r.seconds - r.sentAt, 1.0);
   EXPECT_TRUE(dir.Listing().empty()) << "left behind: " << dir.Listing().front();

@@ -94,10 +94,14 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
   std::string* sinks[2] = {&r.out, &r.err};
   int open = 2;
   size_t signalsSent = 0;
-  std::chrono::steady_clock::time_point lastSignal;
+  std::chrono::steady_clock::time_point lastSignal, seen;
+  bool triggered = false;
   auto sendSignals = [&] {
     if (signalsSent == signals.signals.size() || r.out.find(signals.after) == std::string::npos) return;
     const auto now = std::chrono::steady_clock::now();
+    if (!triggered) seen = now;
+    triggered = true;
+    if (std::chrono::duration<double>(now - seen).count() < signals.delaySeconds) return;
     if (signalsSent > 0 && std::chrono::duration<double>(now - lastSignal).count() < signals.gapSeconds) return;
     kill(pid, signals.signals[signalsSent++]);
     lastSignal = now;

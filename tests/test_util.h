@@ -54,12 +54,14 @@ struct ChildLimits {
   std::optional<uint64_t> addressSpace{};
 };
 
-// Signals for the child: once its stdout contains `after`, each of `signals` is sent in
-// turn, `gapSeconds` apart; `sentAt` in the result is when the last one went.
+// Signals for the child: `delaySeconds` after its stdout first contains `after`, each of
+// `signals` is sent in turn, `gapSeconds` apart; `sentAt` in the result is when the last
+// one went.
 struct ChildSignals {
   std::string after;
   std::vector<int> signals;
   double gapSeconds = 0.0;
+  double delaySeconds = 0.0;
 };
 
 // Runs `build/vkpt args...`, killing it after timeoutSeconds × kTimeScale. A non-empty
