@@ -45,6 +45,10 @@ void CountPasses(uint passes) {
   if (subgroupElect()) gLoopIterations += passes;
 }
 
+// Boxes this lane has tested, for the heat map AOV (aov.comp), in shaders that define
+// VKPT_COUNT_BOX_TESTS: one per node visited.
+uint gBoxTests = 0u;
+
 // One pass of the outer do-while loop holding two inner ones, in which this lane ran
 // its inner loops' bodies nodeSteps and triangleSteps times.
 void CountNestedPass(uint nodeSteps, uint triangleSteps) {
@@ -114,6 +118,9 @@ HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, uint alphaKey
   // 2009, "Understanding the Efficiency of Ray Traversal on GPUs").
   do {
     uint nodeSteps = WalkToLeaf(origin, invDir, tMax, i, k, end);
+#ifdef VKPT_COUNT_BOX_TESTS
+    gBoxTests += nodeSteps;
+#endif
     uint triangleSteps = 0u;
     bool testing = k < end;
     do {

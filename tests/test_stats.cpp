@@ -44,7 +44,7 @@ json ReadJson(const std::string& path) { return json::parse(test::ReadFile(path)
 // `optional` receives those of rows marked "only".
 std::set<std::string> DocumentedKeys(std::set<std::string>* optional) {
   const std::string readme = test::ReadFile(SourcePath("README.md"));
-  const size_t start = readme.find("**Stats as JSON**");
+  const size_t start = readme.find("### Stats as JSON");
   EXPECT_NE(start, std::string::npos) << "README.md has no \"Stats as JSON\" section";
   const size_t table = readme.find("| key |", start);
   const size_t end = readme.find("\n\n", table);

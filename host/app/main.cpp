@@ -19,9 +19,9 @@
 #include "app/render_loop.h"
 #include "app/run_stats.h"
 #include "cpu/path_tracer.h"
+#include "image/aov.h"
 #include "image/image.h"
 #include "image/image_compare.h"
-#include "image/noise_estimate.h"
 #include "render/light_table.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
@@ -120,12 +120,20 @@ RenderBudget BudgetFromOptions(const Options& o) {
   return b;
 }
 
+// A render and what came with it.
+struct FrameOutcome {
+  ProgressiveRender render;
+  AovSums aovs;                // --aov: the AOV pass's sums (empty without one)
+  double uploadSeconds = 0.0;  // the scene into device memory and the pipeline compiled
+  double aovSeconds = 0.0;
+};
+
 // The render under the options' budgets, on the Vulkan device if there is one, else on
-// the CPU. `uploadSeconds` receives the time the scene took to reach device memory and
-// the pipeline to be compiled; the image is written at every checkpoint.
-ProgressiveRender RenderFrame(vk::Context* ctx, const RenderScene& rs, const shader::FrameParams& params,
-                              const Options& o, double* uploadSeconds) {
-  const auto t0 = std::chrono::steady_clock::now();
+// the CPU, then the AOV pass if some --aov needs it. The image is written at every
+// checkpoint.
+FrameOutcome RenderFrame(vk::Context* ctx, const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
+  FrameOutcome out;
+  auto t0 = std::chrono::steady_clock::now();
   std::unique_ptr<vk::GpuRenderer> gpu;
   std::unique_ptr<FrameRenderer> frame;
   if (ctx) {
@@ -136,7 +144,7 @@ ProgressiveRender RenderFrame(vk::Context* ctx, const RenderScene& rs, const sha
   } else {
     frame = BeginCpuFrame(rs, params, o.threads);
   }
-  *uploadSeconds = ctx ? SecondsSince(t0) : 0.0;
+  out.uploadSeconds = ctx ? SecondsSince(t0) : 0.0;
   RenderLoopHooks hooks;
   hooks.progress = ProgressLine();
   hooks.checkpoint = [&o](const FrameSums& sums, uint32_t spp) {
@@ -150,9 +158,14 @@ ProgressiveRender RenderFrame(vk::Context* ctx, const RenderScene& rs, const sha
       std::printf("  %s\n", line.c_str());
       std::fflush(stdout);
     };
-  ProgressiveRender r = RenderProgressively(*frame, BudgetFromOptions(o), hooks);
+  out.render = RenderProgressively(*frame, BudgetFromOptions(o), hooks);
   EndProgressLine();
-  return r;
+  if (std::any_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass)) {
+    t0 = std::chrono::steady_clock::now();
+    out.aovs = frame->RenderAovs(std::min(kAovSamples, out.render.spp));
+    out.aovSeconds = SecondsSince(t0);
+  }
+  return out;
 }
 
 // A finished render as the reports read it.
@@ -292,19 +305,12 @@ int CompareBackends(const RenderResult& reference, const RenderResult& r, const 
   return 4;
 }
 
-// The samples of every pixel added up.
-double TotalSamples(const FrameSums& sums) {
-  double n = 0.0;
-  for (const PixelSums& p : sums.pixels) n += p.samples;
-  return n;
-}
-
 // The summary after a render: samples and why they stopped, rates, the image's mean, the
 // scene and its BVH, warnings.
 void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderResult& r, const ProgressiveRender& p,
                        const Options& o) {
   const uint32_t width = r.image.width, height = r.image.height;
-  const double samples = TotalSamples(p.sums);
+  const double samples = double(p.samples);
   glm::dvec3 mean(0.0);
   for (const glm::vec3& px : r.image.pixels) mean += glm::dvec3(px);
   mean /= double(r.image.pixels.size());
@@ -381,16 +387,28 @@ int Run(const Options& o) {
   // From here the first SIGINT/SIGTERM stops the render after its pass, and the image of
   // the samples taken is still written.
   GracefulStop stop;
-  const ProgressiveRender progressive = RenderFrame(ctx.get(), rs, params, o, &times.upload);
+  const FrameOutcome frame = RenderFrame(ctx.get(), rs, params, o);
+  const ProgressiveRender& progressive = frame.render;
   const RenderResult r = ResultOf(progressive);
+  times.upload = frame.uploadSeconds;
   times.render = r.seconds;
+  times.aov = frame.aovSeconds;
   const uint32_t validationMessages = ctx ? ctx->ValidationMessages() : 0;
 
   phase = std::chrono::steady_clock::now();
-  WriteImage(r.image, o.out, o.exposure);
+  const std::vector<std::string> files =
+      WriteImageWithAovs(r.image, ResolveAovs(o.aovs, frame.aovs, progressive.sums, r.image), o.out, o.exposure);
   lap(times.write);
   int status = reference ? CompareBackends(*reference, r, o) : 0;
   PrintRenderReport(scene, rs, r, progressive, o);
+  if (!o.aovs.empty()) {
+    std::string names, written;
+    for (Aov aov : o.aovs) names += std::string(names.empty() ? "" : ", ") + AovName(aov);
+    for (size_t k = o.out == files.front() && files.size() > 1 ? 1 : 0; k < files.size(); ++k)
+      written += std::string(written.empty() ? "" : ", ") + files[k];
+    std::printf("  AOVs: %s (%u samples per pixel, %.3f s) in %s\n", names.c_str(), frame.aovs.samples, times.aov,
+                written.c_str());
+  }
   if (validationMessages) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
     status = 3;
@@ -403,8 +421,8 @@ int Run(const Options& o) {
   }
   if (!o.stats.empty()) {
     times.total = SecondsSince(start);
-    const std::string json =
-        StatsJson(o, {scene, rs, r, progressive, reference ? &*reference : nullptr, times, validationMessages, status});
+    const std::string json = StatsJson(o, {scene, rs, r, progressive, reference ? &*reference : nullptr, times,
+                                           validationMessages, status, frame.aovs.samples, files});
     WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
   }
   return status;

@@ -48,6 +48,10 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      error (and their neighbours') is below --noise-target, else 1e-3,
                      stop taking samples [default: on with --noise-target]
   --no-adaptive      every pixel takes samples until the render stops
+  --aov LIST         also write these AOVs, comma-separated: albedo, normal, depth,
+                     position, variance, spp, heatmap (BVH boxes tested per camera ray),
+                     or all; layers of the same file for an .exr --out, else
+                     <out name>.<aov>.<ext> beside it (README, "AOVs")
   --checkpoint SECONDS
                      rewrite --out every SECONDS during the render, with the samples so far
   --seed N           random seed; same seed and device give a bit-identical image [default: 0]
@@ -176,6 +180,24 @@ Options ParseOptions(int argc, const char* const* argv) {
          o.background = c;
        }},
       {"--env", text(o.env, "an .hdr or .exr file")},
+      {"--aov",
+       [&](const std::string& opt, const std::string& v) {
+         o.aovs.clear();
+         for (size_t start = 0;;) {
+           const size_t comma = v.find(',', start);
+           const std::string name = v.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+           if (name == "all") {
+             for (int k = 0; k < kAovCount; ++k) o.aovs.push_back(Aov(k));
+           } else if (std::optional<Aov> aov = AovFromName(name)) {
+             if (std::find(o.aovs.begin(), o.aovs.end(), *aov) == o.aovs.end()) o.aovs.push_back(*aov);
+           } else {
+             throw UsageError(opt + ": unknown AOV \"" + name +
+                              "\" (albedo, normal, depth, position, variance, spp, heatmap or all)");
+           }
+           if (comma == std::string::npos) break;
+           start = comma + 1;
+         }
+       }},
       {"--stats", text(o.stats, "a file name")},
       {"--env-rotation",
        [&](const std::string& opt, const std::string& v) { o.envRotation = ParseNumber(opt, v, -3600.0f, 3600.0f); }},
@@ -263,6 +285,8 @@ Options ParseOptions(int argc, const char* const* argv) {
   if (o.compare && (o.time || o.noiseTarget || o.Adaptive()))
     throw UsageError(
         "--compare renders both backends with the same samples; it takes no --time, --noise-target or --adaptive");
+  if (o.compare && !o.aovs.empty())
+    throw UsageError("--compare checks the backends against each other; it takes no --aov");
   if (!o.sppGiven && (o.time || o.noiseTarget)) o.spp = kBudgetMaxSpp;
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
   if (!o.env.empty() && o.background) throw UsageError("--env and --background both set the environment; give one");

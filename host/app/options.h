@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bvh/bvh.h"
+#include "image/aov.h"
 #include "scene/load_limits.h"
 
 namespace vkpt {
@@ -50,12 +51,16 @@ struct Options {
   bool textureLod = true;               // --texture-lod cones (true) or none
   LoadLimits load;                      // --max-memory, --allow-external-uris
   std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)
+  std::vector<Aov> aovs;                // --aov: written with the image (image/aov.h), in the order given
   bool verbose = false;
   bool help = false;
   bool version = false;
 
   bool Adaptive() const { return adaptive.value_or(noiseTarget.has_value()); }
 };
+
+// AOV samples per pixel: the first kAovSamples of the render's (fewer if it took fewer).
+constexpr uint32_t kAovSamples = 16;
 
 // The --spp bound when --time or --noise-target is given without --spp.
 constexpr uint32_t kBudgetMaxSpp = 65536;

@@ -48,7 +48,8 @@ uint32_t NextPassSpp(const RenderBudget& budget, const PassPlan& plan, double pa
 struct ProgressiveRender {
   FrameSums sums;
   std::vector<uint32_t> sppPerPass;
-  uint32_t spp = 0;  // samples per pixel of the passes (adaptive: the most any pixel has)
+  uint32_t spp = 0;      // samples per pixel of the passes (adaptive: the most any pixel has)
+  uint64_t samples = 0;  // every pixel's samples added up
   StopReason stoppedBy = StopReason::kSpp;
   int signal = 0;                // kSignal: which one
   double seconds = 0.0;          // the loop, checkpoints included

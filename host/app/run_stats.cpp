@@ -51,7 +51,9 @@ JsonObject OptionsJson(const Options& o) {
   j.Int("max_memory", o.load.maxMemory)
       .Int("max_texels", o.load.maxTextureTexels)
       .Bool("allow_external_uris", o.load.allowExternalUris);
-  j.Str("stats", o.stats).Bool("verbose", o.verbose);
+  std::vector<std::string> aovs;
+  for (Aov aov : o.aovs) aovs.push_back(AovName(aov));
+  j.Raw("aov", Strings(aovs)).Str("stats", o.stats).Bool("verbose", o.verbose);
   return j;
 }
 
@@ -61,8 +63,7 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   const RenderResult& r = run.result;
   const ProgressiveRender& p = run.progressive;
   const uint64_t pixels = uint64_t(r.image.width) * r.image.height;
-  uint64_t samples = 0;
-  for (const PixelSums& s : p.sums.pixels) samples += s.samples;
+  const uint64_t samples = p.samples;
   std::vector<std::string> passes;
   for (uint32_t n : p.sppPerPass) passes.push_back(std::to_string(n));
   glm::dvec3 mean(0.0);
@@ -85,7 +86,7 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   const RunTimes& t = run.times;
   JsonObject times;
   times.Num("load", t.load).Num("environment", t.environment).Num("prepare", t.prepare).Num("upload", t.upload);
-  times.Num("render", t.render).Num("write", t.write).Num("total", t.total);
+  times.Num("render", t.render).Num("aov", t.aov).Num("write", t.write).Num("total", t.total);
 
   JsonObject j;
   j.Str("vkpt_version", VKPT_VERSION).Obj("scene", scene).Str("device", r.engine).Obj("options", OptionsJson(o));
@@ -96,6 +97,7 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   j.Obj("times_s", times).Int("rays", r.rays).Num("samples_per_s", double(samples) / r.seconds);
   j.Num("rays_per_s", double(r.rays) / r.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));
   j.Int("non_finite_samples", r.nonFinite).Int("cut_short_samples", r.cutShort).Obj("bvh", bvh);
+  j.Int("aov_samples", run.aovSamples).Raw("files", Strings(run.files));
   if (run.reference) {
     JsonObject ref;
     ref.Str("device", run.reference->engine).Num("render_s", run.reference->seconds);

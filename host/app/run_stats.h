@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/options.h"
 #include "app/render_loop.h"
@@ -21,6 +22,7 @@ struct RunTimes {
   double prepare = 0.0;      // BVH build and the renderers' arrays (includes bvh.build_ms)
   double upload = 0.0;       // Vulkan: the scene into device memory (0 on the CPU)
   double render = 0.0;       // the render itself (--compare: the Vulkan one)
+  double aov = 0.0;          // the AOV pass (0 without --aov)
   double write = 0.0;        // encoding and writing --out
   double total = 0.0;        // from start to the stats being written
 };
@@ -34,6 +36,8 @@ struct RunOutcome {
   RunTimes times;
   uint32_t validationMessages = 0;
   int exitStatus = 0;
+  uint32_t aovSamples = 0;         // --aov: samples per pixel of the AOV pass
+  std::vector<std::string> files;  // the image files written, --out first
 };
 
 std::string StatsJson(const Options& o, const RunOutcome& run);

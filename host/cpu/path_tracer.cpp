@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 
+#include "cpu/aov_tracer.h"
 #include "cpu/cpu_path.h"
 #include "util/error.h"
 #include "util/parallel.h"
@@ -80,6 +81,7 @@ class CpuFrame final : public FrameRenderer {
   }
 
   FrameSums Sums() override { return sums_; }
+  AovSums RenderAovs(uint32_t samples) override { return RenderAovsCpu(scene_, params_, samples, threads_); }
   std::string Engine() const override { return "cpu (" + std::to_string(threads_) + " threads)"; }
   unsigned Threads() const { return threads_; }
 

@@ -4,6 +4,7 @@
 
 #include "render/scene_access.h"
 #include "shared/alpha.h"
+#include "shared/estimator.h"
 #include "shared/intersect.h"
 #include "util/float4.h"
 
@@ -120,11 +121,13 @@ class DeferredStack {
   int top_ = 0;
 };
 
-// The query: closest or any hit, and whether alpha is tested (with the ray's key).
-template <bool kAnyHit, bool kAlpha>
+// The query: closest or any hit, whether alpha is tested (with the ray's key), and
+// whether the walk counts its box tests (into *boxTests).
+template <bool kAnyHit, bool kAlpha, bool kCount = false>
 struct Query {
   const RenderScene& scene;
   uint32_t alphaKey;
+  uint32_t* boxTests = nullptr;
 
   // Whether the ray passes through the hit (b1, b2) of leaf-order triangle i.
   bool Rejects(uint32_t i, float b1, float b2) const {
@@ -136,8 +139,8 @@ struct Query {
 
 // Tests the triangles of leaf `code`, lanes in order, each against the closest hit so far
 // (the scalar loop's result), narrowing tMax. True when an any-hit query has its hit.
-template <bool kAnyHit, bool kAlpha>
-bool TestLeaf(const Query<kAnyHit, kAlpha>& q, uint32_t code, const RaySlabs& slabs, float& tMax, Hit& hit) {
+template <bool kAnyHit, bool kAlpha, bool kCount>
+bool TestLeaf(const Query<kAnyHit, kAlpha, kCount>& q, uint32_t code, const RaySlabs& slabs, float& tMax, Hit& hit) {
   const std::vector<TrianglePacket>& packets = q.scene.pairLayout.packets;
   for (uint32_t k = code >> 4, e = k + ((code & 15u) + 3) / 4; k < e; ++k) {
     Float4 t, b1, b2;
@@ -155,8 +158,8 @@ bool TestLeaf(const Query<kAnyHit, kAlpha>& q, uint32_t code, const RaySlabs& sl
 
 // The ordered walk over the child pairs: both children's boxes at once, the nearer
 // entered first, the farther deferred.
-template <bool kAnyHit, bool kAlpha>
-Hit Traverse(const Query<kAnyHit, kAlpha>& q, glm::vec3 origin, glm::vec3 dir, float tMax) {
+template <bool kAnyHit, bool kAlpha, bool kCount>
+Hit Traverse(const Query<kAnyHit, kAlpha, kCount>& q, glm::vec3 origin, glm::vec3 dir, float tMax) {
   const RenderScene& scene = q.scene;
   Hit hit{-1.0f, 0.0f, 0.0f, shader::kInvalidIndex};
   const std::vector<BvhPairNode>& pairs = scene.pairLayout.pairs;
@@ -170,6 +173,7 @@ Hit Traverse(const Query<kAnyHit, kAlpha>& q, glm::vec3 origin, glm::vec3 dir, f
       if (TestLeaf(q, code, slabs, tMax, hit)) return hit;
     } else {
       const BvhPairNode& p = pairs[code >> 4];
+      if constexpr (kCount) *q.boxTests += 2;
       float t[2];
       switch (IntersectPair(p, slabs, tMax, t)) {
         case 1: code = p.child[0]; continue;
@@ -208,6 +212,13 @@ Hit IntersectClosestAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 
 
 bool OccludedAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax, uint32_t alphaKey) {
   return Traverse(Query<true, true>{scene, alphaKey}, origin, dir, tMax).t >= 0.0f;
+}
+
+Hit IntersectClosestCounted(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, uint32_t alphaKey,
+                            uint32_t& boxTests) {
+  const float tMax = shader::kInfinity;
+  return scene.alphaTested ? Traverse(Query<false, true, true>{scene, alphaKey, &boxTests}, origin, dir, tMax)
+                           : Traverse(Query<false, false, true>{scene, 0u, &boxTests}, origin, dir, tMax);
 }
 
 }  // namespace vkpt

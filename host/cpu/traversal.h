@@ -23,4 +23,10 @@ bool Occluded(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float t
 Hit IntersectClosestAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax, uint32_t alphaKey);
 bool OccludedAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax, uint32_t alphaKey);
 
+// The closest hit with an open tMax, alpha tested where the scene has MASK or BLEND
+// materials, adding the boxes the walk tested (two per child pair) to `boxTests`: the
+// heat map AOV (shaders/shared/aov.h).
+Hit IntersectClosestCounted(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, uint32_t alphaKey,
+                            uint32_t& boxTests);
+
 }  // namespace vkpt

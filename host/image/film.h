@@ -66,6 +66,25 @@ struct FrameSums {
 // The image of the sums: every pixel through a Film.
 Image ResolveFilm(const FrameSums& sums);
 
+// Sums over one pixel's AOV samples (shaders/shared/aov.h), in double like PixelSums:
+// albedo, normal and box tests over all samples, depth and position over those that hit.
+struct AovPixelSums {
+  glm::dvec3 albedo{0.0};
+  glm::dvec3 normal{0.0};
+  glm::dvec3 position{0.0};
+  double depth = 0.0;
+  double boxTests = 0.0;
+  uint32_t hits = 0;
+};
+
+// The AOV sums of a frame: samples [0, samples) of every pixel.
+struct AovSums {
+  uint32_t width = 0, height = 0;
+  uint32_t samples = 0;
+  std::vector<AovPixelSums> pixels;  // row-major
+  uint64_t nonFinite = 0;            // CPU: AOV samples left out for a NaN or Inf (a bug if > 0)
+};
+
 // A render in progress on either backend. Samples are added in passes to sums that persist
 // between them, each pixel's in sample order, so a render of n samples made in any number
 // of passes is bit-identical to one pass of n.
@@ -77,7 +96,10 @@ class FrameRenderer {
   // fraction of the pass now and then, on the calling thread.
   virtual void AddSamples(uint32_t begin, uint32_t count, std::span<const uint8_t> active,
                           const std::function<void(double)>& progress) = 0;
-  virtual FrameSums Sums() = 0;            // the sums so far (Vulkan: read back)
+  virtual FrameSums Sums() = 0;  // the sums so far (Vulkan: read back)
+  // The AOVs of samples [0, samples) of every pixel, the camera rays of the render's
+  // first `samples` samples (shaders/shared/aov.h); independent of the passes so far.
+  virtual AovSums RenderAovs(uint32_t samples) = 0;
   virtual std::string Engine() const = 0;  // for reports: "cpu (2 threads)", "vulkan: <device> (…)"
 };
 

@@ -1,7 +1,9 @@
 #include "image/image_encode.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
@@ -24,6 +26,10 @@ std::vector<uint8_t> EncodePng(const Image& img, float exposure) {
   std::vector<uint8_t> rgb(size_t(img.width) * img.height * 3);
   for (size_t i = 0; i < img.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = LinearToSrgb8(img.pixels[i][c] * scale);
+  return EncodePngRgb8(img.width, img.height, rgb);
+}
+
+std::vector<uint8_t> EncodePngRgb8(uint32_t width, uint32_t height, const std::vector<uint8_t>& rgb) {
   std::vector<uint8_t> bytes;
   auto append = [](void* context, void* data, int size) {
     auto* out = static_cast<std::vector<uint8_t>*>(context);
@@ -31,7 +37,7 @@ std::vector<uint8_t> EncodePng(const Image& img, float exposure) {
     out->insert(out->end(), p, p + size);
   };
   // stb fails only when its own malloc does.
-  if (!stbi_write_png_to_func(append, &bytes, int(img.width), int(img.height), 3, rgb.data(), int(img.width * 3)))
+  if (!stbi_write_png_to_func(append, &bytes, int(width), int(height), 3, rgb.data(), int(width * 3)))
     throw std::bad_alloc();
   return bytes;
 }
@@ -50,32 +56,46 @@ std::vector<uint8_t> EncodePfm(const Image& img) {
 }
 
 std::vector<uint8_t> EncodeExr(const Image& img, const std::string& path) {
-  // EXR stores one plane per channel, by convention in B, G, R order (what viewers expect).
-  const size_t n = img.pixels.size();
-  std::vector<float> planes[3];
-  float* planePointers[3];
-  EXRChannelInfo channels[3] = {};
-  int pixelTypes[3];
+  return EncodeExrChannels(img.width, img.height, RgbChannels(img), path);
+}
+
+std::vector<ExrChannel> RgbChannels(const Image& img) {
+  std::vector<ExrChannel> channels(3);
   for (int c = 0; c < 3; ++c) {
-    planes[c].resize(n);
-    for (size_t i = 0; i < n; ++i) planes[c][i] = img.pixels[i][2 - c];
-    planePointers[c] = planes[c].data();
-    channels[c].name[0] = "BGR"[c];
-    pixelTypes[c] = TINYEXR_PIXELTYPE_FLOAT;
+    channels[c].name = std::string(1, "RGB"[c]);
+    channels[c].values.resize(img.pixels.size());
+    for (size_t i = 0; i < img.pixels.size(); ++i) channels[c].values[i] = img.pixels[i][c];
+  }
+  return channels;
+}
+
+std::vector<uint8_t> EncodeExrChannels(uint32_t width, uint32_t height, std::vector<ExrChannel> channels,
+                                       const std::string& path) {
+  // The EXR format lists channels sorted by name (B, G, R; albedo.B, …), as readers expect.
+  std::sort(channels.begin(), channels.end(), [](const ExrChannel& a, const ExrChannel& b) { return a.name < b.name; });
+  const int n = int(channels.size());
+  std::vector<float*> planePointers(n);
+  std::vector<EXRChannelInfo> info(n);
+  std::vector<int> pixelTypes(n, TINYEXR_PIXELTYPE_FLOAT);
+  for (int c = 0; c < n; ++c) {
+    if (channels[c].name.size() >= sizeof info[c].name || channels[c].values.size() != size_t(width) * height)
+      throw Error(path + ": EXR channel \"" + channels[c].name + "\" is malformed");
+    std::memcpy(info[c].name, channels[c].name.c_str(), channels[c].name.size() + 1);
+    planePointers[c] = channels[c].values.data();
   }
   EXRHeader header;
   InitEXRHeader(&header);
-  header.num_channels = 3;
-  header.channels = channels;
-  header.pixel_types = pixelTypes;            // what we hand over
-  header.requested_pixel_types = pixelTypes;  // what the file stores: no precision lost
+  header.num_channels = n;
+  header.channels = info.data();
+  header.pixel_types = pixelTypes.data();            // what we hand over
+  header.requested_pixel_types = pixelTypes.data();  // what the file stores: no precision lost
   header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
   EXRImage exr;
   InitEXRImage(&exr);
-  exr.num_channels = 3;
-  exr.width = int(img.width);
-  exr.height = int(img.height);
-  exr.images = reinterpret_cast<unsigned char**>(planePointers);
+  exr.num_channels = n;
+  exr.width = int(width);
+  exr.height = int(height);
+  exr.images = reinterpret_cast<unsigned char**>(planePointers.data());
 
   unsigned char* memory = nullptr;
   const char* err = nullptr;

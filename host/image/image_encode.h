@@ -13,11 +13,29 @@ namespace vkpt {
 // 8-bit sRGB, pixels scaled by 2^exposure before the transfer curve.
 std::vector<uint8_t> EncodePng(const Image& image, float exposure);
 
+// 8-bit RGB bytes (row-major from the top row, three per pixel) as they are.
+std::vector<uint8_t> EncodePngRgb8(uint32_t width, uint32_t height, const std::vector<uint8_t>& rgb);
+
 // Linear 32-bit float, little-endian, rows bottom to top as PFM stores them.
 std::vector<uint8_t> EncodePfm(const Image& image);
 
 // Linear 32-bit float, ZIP-compressed (lossless). Throws vkpt::Error naming `path` if
 // tinyexr refuses the image.
 std::vector<uint8_t> EncodeExr(const Image& image, const std::string& path);
+
+// One channel of an EXR image: its name ("R", "albedo.G", "depth.Z") and width × height
+// values, row-major from the top row.
+struct ExrChannel {
+  std::string name;
+  std::vector<float> values;
+};
+
+// The image's R, G and B channels.
+std::vector<ExrChannel> RgbChannels(const Image& image);
+
+// Any channels as 32-bit float, ZIP-compressed, listed in name order as the format wants.
+// Throws vkpt::Error naming `path` if a channel is malformed or tinyexr refuses.
+std::vector<uint8_t> EncodeExrChannels(uint32_t width, uint32_t height, std::vector<ExrChannel> channels,
+                                       const std::string& path);
 
 }  // namespace vkpt

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <string>
 
+#include "kAovSpirv.h"
 #include "kPathTraceSpirv.h"
 #include "kTraceSpirv.h"
 #include "shared/bsdf.h"
@@ -180,15 +181,58 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
   for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
 }
 
+std::vector<BufferBinding> GpuRenderer::SceneBindings() const {
+  return {TexelBinding(shader::kBindingTriangles, triangles_),
+          TexelBinding(shader::kBindingNodes, nodes_),
+          TexelBinding(shader::kBindingMaterials, materials_),
+          TexelBinding(shader::kBindingLights, lights_),
+          TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
+          TexelBinding(shader::kBindingShading, shading_),
+          TexelBinding(shader::kBindingVertexColors, vertexColors_),
+          TexelBinding(shader::kBindingVertexUVs, uvs_),
+          TexelBinding(shader::kBindingTangents, tangents_),
+          TexelBinding(shader::kBindingMaterialTextures, textureRefs_),
+          TexelBinding(shader::kBindingTextures, textures_),
+          TexelBinding(shader::kBindingTexels, texels_.low),
+          TexelBinding(shader::kBindingTexelsHigh, texels_.high),
+          TexelBinding(shader::kBindingTexelDecode, texelDecode_),
+          TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
+          TexelBinding(shader::kBindingEnvDistribution, envDistribution_)};
+}
+
+std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& frame) const {
+  return {frame.lightCount > 0 ? lightTypes_ : 0u,
+          hasGlossy_ ? 1u : 0u,
+          hasSmoothNormals_ ? 1u : 0u,
+          frame.envWidth > 0 ? 1u : 0u,
+          hasVertexColors_ ? 1u : 0u,
+          hasVolumes_ ? 1u : 0u,
+          hasTextures_ ? 1u : 0u,
+          hasNormalMaps_ ? 1u : 0u,
+          hasAlpha_ ? 1u : 0u,
+          hasExtensionTextures_ ? 1u : 0u,
+          texels_.twoBuffers ? 1u : 0u};
+}
+
 namespace {
+
+// A kernel over the scene (scene_constants.glsl) with the given per-frame bindings.
+using KernelFactory = std::function<std::unique_ptr<ComputePipeline>(const uint32_t* spirv, size_t spirvBytes,
+                                                                     std::vector<BufferBinding> frameBindings,
+                                                                     const char* name, uint32_t pushConstantBytes)>;
 
 // A render in progress on the device: the frame's buffers and pipeline, kept from pass
 // to pass, so the sums persist in device memory exactly as within one pass.
 class GpuFrame final : public FrameRenderer {
  public:
-  GpuFrame(const Context& ctx, FrameBuffers b, std::unique_ptr<ComputePipeline> pipeline,
+  GpuFrame(const Context& ctx, FrameBuffers b, std::unique_ptr<ComputePipeline> pipeline, KernelFactory kernels,
            const shader::FrameParams& frame, const GpuRenderOptions& options)
-      : ctx_(ctx), b_(std::move(b)), pipeline_(std::move(pipeline)), frame_(frame), options_(options) {
+      : ctx_(ctx),
+        b_(std::move(b)),
+        pipeline_(std::move(pipeline)),
+        kernels_(std::move(kernels)),
+        frame_(frame),
+        options_(options) {
     frame_.tileRowStride = TileRowStride((frame.height + kWorkgroup - 1) / kWorkgroup);
     if (options.samplesPerInvocation) {
       state_.run = options.samplesPerInvocation;
@@ -225,6 +269,43 @@ class GpuFrame final : public FrameRenderer {
     return f;
   }
 
+  AovSums RenderAovs(uint32_t samples) override {
+    const uint64_t pixels = uint64_t(frame_.width) * frame_.height;
+    Buffer sums = Storage(ctx_, pixels * shader::kAovSumsPerPixel * sizeof(glm::vec4), "AOV sum");
+    Buffer sumsHost = Readback(ctx_, sums.Size(), "AOV readback");
+    std::unique_ptr<ComputePipeline> aov =
+        kernels_(kAovSpirv, sizeof(kAovSpirv),
+                 {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b_.params.Handle()},
+                  {shader::kBindingAovSums, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sums.Handle()}},
+                 "aov", sizeof(uint32_t));
+    std::memcpy(b_.params.Mapped(), &frame_, sizeof frame_);  // every earlier submission has finished
+    ctx_.Submit([&](VkCommandBuffer cb) {
+      vkCmdFillBuffer(cb, sums.Handle(), 0, VK_WHOLE_SIZE, 0);
+      for (uint32_t s = 0; s < samples; ++s) {
+        ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
+        aov->Dispatch(cb, (frame_.width + kWorkgroup - 1) / kWorkgroup, (frame_.height + kWorkgroup - 1) / kWorkgroup,
+                      1, &s);
+      }
+      CopyToHost(cb, {{&sums, &sumsHost}});
+    });
+    const auto* v = static_cast<const glm::vec4*>(sumsHost.Mapped());
+    AovSums a;
+    a.width = frame_.width;
+    a.height = frame_.height;
+    a.samples = samples;
+    a.pixels.resize(pixels);
+    for (size_t i = 0; i < pixels; ++i) {
+      const glm::vec4* p = v + shader::kAovSumsPerPixel * i;
+      a.pixels[i] = {glm::dvec3(glm::vec3(p[0])),
+                     glm::dvec3(glm::vec3(p[1])),
+                     glm::dvec3(glm::vec3(p[2])),
+                     double(p[0].w),
+                     double(p[2].w),
+                     uint32_t(p[1].w)};
+    }
+    return a;
+  }
+
   std::string Engine() const override {
     return "vulkan: " + ctx_.DeviceName() + " (up to " + std::to_string(state_.samplesPerInvocation) +
            " samples per invocation)";
@@ -235,6 +316,7 @@ class GpuFrame final : public FrameRenderer {
   const Context& ctx_;
   FrameBuffers b_;
   std::unique_ptr<ComputePipeline> pipeline_;
+  KernelFactory kernels_;
   shader::FrameParams frame_;
   const GpuRenderOptions options_;
   RunState state_;
@@ -247,39 +329,25 @@ std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams
   FrameBuffers b = MakeFrameBuffers(ctx_, uint64_t(frame.width) * frame.height);
   shader::FrameParams p = frame;
   p.texelSplit = texels_.split;
-  auto pipeline = std::make_unique<ComputePipeline>(
-      ctx_, spirv_, spirvBytes_,
-      std::vector<BufferBinding>{{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.Handle()},
-                                 TexelBinding(shader::kBindingTriangles, triangles_),
-                                 TexelBinding(shader::kBindingNodes, nodes_),
-                                 TexelBinding(shader::kBindingMaterials, materials_),
-                                 TexelBinding(shader::kBindingLights, lights_),
-                                 TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
-                                 TexelBinding(shader::kBindingShading, shading_),
-                                 TexelBinding(shader::kBindingVertexColors, vertexColors_),
-                                 TexelBinding(shader::kBindingVertexUVs, uvs_),
-                                 TexelBinding(shader::kBindingTangents, tangents_),
-                                 TexelBinding(shader::kBindingMaterialTextures, textureRefs_),
-                                 TexelBinding(shader::kBindingTextures, textures_),
-                                 TexelBinding(shader::kBindingTexels, texels_.low),
-                                 TexelBinding(shader::kBindingTexelsHigh, texels_.high),
-                                 TexelBinding(shader::kBindingTexelDecode, texelDecode_),
-                                 TexelBinding(shader::kBindingEnvRadiance, envRadiance_),
-                                 TexelBinding(shader::kBindingEnvDistribution, envDistribution_),
-                                 {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
-                                 {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
-                                 {shader::kBindingActive, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.active.Handle()},
-                                 {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
-      "pathtrace", 2 * sizeof(uint32_t),
-      std::vector<uint32_t>{frame.lightCount > 0 ? lightTypes_ : 0u, hasGlossy_ ? 1u : 0u, hasSmoothNormals_ ? 1u : 0u,
-                            frame.envWidth > 0 ? 1u : 0u, hasVertexColors_ ? 1u : 0u, hasVolumes_ ? 1u : 0u,
-                            hasTextures_ ? 1u : 0u, hasNormalMaps_ ? 1u : 0u, hasAlpha_ ? 1u : 0u,
-                            hasExtensionTextures_ ? 1u : 0u, texels_.twoBuffers ? 1u : 0u});
+  KernelFactory kernels = [this, p](const uint32_t* spirv, size_t spirvBytes, std::vector<BufferBinding> bindings,
+                                    const char* name, uint32_t pushConstantBytes) {
+    std::vector<BufferBinding> scene = SceneBindings();
+    bindings.insert(bindings.end(), scene.begin(), scene.end());
+    return std::make_unique<ComputePipeline>(ctx_, spirv, spirvBytes, bindings, name, pushConstantBytes,
+                                             Specialization(p));
+  };
+  auto pipeline = kernels(spirv_, spirvBytes_,
+                          {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.Handle()},
+                           {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
+                           {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
+                           {shader::kBindingActive, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.active.Handle()},
+                           {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
+                          "pathtrace", 2 * sizeof(uint32_t));
   ctx_.Submit([&](VkCommandBuffer cb) {
     vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);
   });
-  return std::make_unique<GpuFrame>(ctx_, std::move(b), std::move(pipeline), p, options);
+  return std::make_unique<GpuFrame>(ctx_, std::move(b), std::move(pipeline), std::move(kernels), p, options);
 }
 
 RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRenderOptions& options) {

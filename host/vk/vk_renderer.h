@@ -12,6 +12,7 @@
 #include "image/film.h"
 #include "render/render_scene.h"
 #include "vk/buffer.h"
+#include "vk/compute_pipeline.h"
 #include "vk/context.h"
 
 namespace vkpt::vk {
@@ -50,6 +51,11 @@ class GpuRenderer {
                                        const uint32_t* spirv = nullptr, size_t spirvBytes = 0);
 
  private:
+  // The scene's texel buffers as bound by every kernel that reads the scene, and the
+  // specialization constants of scene_constants.glsl for `frame`.
+  std::vector<BufferBinding> SceneBindings() const;
+  std::vector<uint32_t> Specialization(const shader::FrameParams& frame) const;
+
   const Context& ctx_;
   const uint32_t* spirv_;
   size_t spirvBytes_;

@@ -40,6 +40,10 @@ const uint kBindingTexelsHigh = 22u;
 // Adaptive sampling: per pixel 1 if it takes this pass's samples, else 0 (read when
 // FrameParams::adaptive is 1).
 const uint kBindingActive = 23u;
+// aov.comp (shared/aov.h): per pixel kAovSumsPerPixel vec4 of AOV sums, read back by the
+// host; it reuses the scene bindings above and kBindingParams.
+const uint kBindingAovSums = 24u;
+const uint kAovSumsPerPixel = 3u;
 
 // The environment map (shared/environment.h), both as RGBA32UI texel buffers; a 1-texel
 // dummy of each when there is none (FrameParams::envWidth == 0).

@@ -1,0 +1,58 @@
+// AOVs (arbitrary output variables, shaders/shared/aov.h): which ones there are, their
+// values per pixel from a render's sums, and how they are written beside the image.
+//
+// Conventions (README, "AOVs"): linear values, NaN-free, row 0 at the top.
+//   albedo    RGB   linear base colour of the first non-specular hit (see aov.h)
+//   normal    XYZ   its world-space shading normal facing the camera, averaged (0: none)
+//   depth     Z     distance along the camera ray to the first hit (0: nothing hit)
+//   position  XYZ   the first hit's world position (0: nothing hit)
+//   variance  RGB   variance of the pixel's mean radiance (the image's noise)
+//   spp       Y     samples the pixel took (adaptive sampling varies it)
+//   heatmap   Y     BVH boxes tested per camera ray (the backend's own walk)
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "image/film.h"
+#include "image/image.h"
+
+namespace vkpt {
+
+enum class Aov : uint8_t { kAlbedo, kNormal, kDepth, kPosition, kVariance, kSpp, kHeatmap };
+constexpr int kAovCount = 7;
+
+const char* AovName(Aov aov);  // "albedo", …
+std::optional<Aov> AovFromName(std::string_view name);
+
+// Whether the AOV comes from the AOV pass (FrameRenderer::RenderAovs); variance and spp
+// come from the render's own sums.
+bool NeedsAovPass(Aov aov);
+
+// One AOV of the image: `channels` values per pixel, interleaved, named in EXR as
+// "<name>.<channel suffix>".
+struct AovLayer {
+  Aov aov;
+  std::vector<std::string> suffixes;  // {"R", "G", "B"}, {"X", "Y", "Z"}, {"Z"} or {"Y"}
+  std::vector<float> values;          // width · height · suffixes.size()
+};
+
+// The requested AOVs of a render: `aovSums` (read only if some AOV needs the pass),
+// the render's sums and its image (for the variance).
+std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums& aovSums, const FrameSums& sums,
+                                  const Image& image);
+
+// Where AOV `aov` of the image `out` goes when `out` is not an EXR: NAME.albedo.EXT beside it.
+std::string AovPath(const std::string& out, Aov aov);
+
+// Writes the image to `out` and the AOVs with it: as layers of the same EXR when `out`
+// is .exr, else each to AovPath (PNG: a picture of the values, see aov.cpp; PFM: the
+// values, a single channel repeated in R, G and B). Each file is written atomically.
+// Returns the files written, `out` first.
+std::vector<std::string> WriteImageWithAovs(const Image& image, const std::vector<AovLayer>& layers,
+                                            const std::string& out, float exposure);
+
+}  // namespace vkpt
