@@ -232,16 +232,6 @@ Image ReferenceAt128() {
   return half;
 }
 
-double RelMseAgainst(const Image& a, const Image& ref) {
-  double total = 0.0;
-  for (size_t i = 0; i < ref.pixels.size(); ++i)
-    for (int ch = 0; ch < 3; ++ch) {
-      const double d = a.pixels[i][ch] - ref.pixels[i][ch], r = ref.pixels[i][ch];
-      total += d * d / (r * r + 0.01);
-    }
-  return total / (3.0 * ref.pixels.size());
-}
-
 // --noise-target stops at the target, and the image's true relMSE (against the
 // reference) is at most a quarter above it, with adaptive sampling and without. (The
 // estimate runs high: 0.98e-2 estimated against 0.59e-2 true, uniform, seed 11.)
@@ -256,7 +246,7 @@ TEST(Progressive, NoiseTargetIsReachedAgainstTheReference) {
     b.adaptive = adaptive;
     b.adaptiveThreshold = 1e-2;
     const ProgressiveRender r = RenderProgressively(*frame, b);
-    const double actual = RelMseAgainst(ResolveFilm(r.sums), ref);
+    const double actual = RelativeMse(ResolveFilm(r.sums), ref);
     std::printf("%s: stopped at %u spp, estimated relMSE %.4g, against the reference %.4g\n",
                 adaptive ? "adaptive" : "uniform", r.spp, r.estimatedRelMse, actual);
     EXPECT_EQ(r.stoppedBy, StopReason::kNoiseTarget);

@@ -20,6 +20,7 @@
 #include "app/run_stats.h"
 #include "cpu/path_tracer.h"
 #include "image/aov.h"
+#include "image/denoise.h"
 #include "image/image.h"
 #include "image/image_compare.h"
 #include "render/light_table.h"
@@ -31,6 +32,7 @@
 #include "util/error.h"
 #include "util/graceful_stop.h"
 #include "vk/context.h"
+#include "vk/vk_denoise.h"
 #include "vk/vk_renderer.h"
 
 namespace vkpt {
@@ -160,7 +162,7 @@ FrameOutcome RenderFrame(vk::Context* ctx, const RenderScene& rs, const shader::
     };
   out.render = RenderProgressively(*frame, BudgetFromOptions(o), hooks);
   EndProgressLine();
-  if (std::any_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass)) {
+  if (o.denoise || std::any_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass)) {
     t0 = std::chrono::steady_clock::now();
     out.aovs = frame->RenderAovs(std::min(kAovSamples, out.render.spp));
     out.aovSeconds = SecondsSince(t0);
@@ -396,19 +398,32 @@ int Run(const Options& o) {
   const uint32_t validationMessages = ctx ? ctx->ValidationMessages() : 0;
 
   phase = std::chrono::steady_clock::now();
-  const std::vector<std::string> files =
-      WriteImageWithAovs(r.image, ResolveAovs(o.aovs, frame.aovs, progressive.sums, r.image), o.out, o.exposure);
+  std::optional<Image> denoised;
+  if (o.denoise) {
+    const DenoiseInput input = PrepareDenoise(r.image, frame.aovs);
+    denoised = FinishDenoise(input, ctx ? vk::AtrousGpu(*ctx, input) : AtrousCpu(input, o.threads));
+    lap(times.denoise);
+  }
+  std::vector<std::string> files = WriteImageWithAovs(
+      denoised ? *denoised : r.image, ResolveAovs(o.aovs, frame.aovs, progressive.sums, r.image), o.out, o.exposure);
+  if (denoised) {
+    files.push_back(SiblingPath(o.out, "raw"));
+    WriteImage(r.image, files.back(), o.exposure);
+  }
   lap(times.write);
   int status = reference ? CompareBackends(*reference, r, o) : 0;
   PrintRenderReport(scene, rs, r, progressive, o);
   if (!o.aovs.empty()) {
     std::string names, written;
     for (Aov aov : o.aovs) names += std::string(names.empty() ? "" : ", ") + AovName(aov);
-    for (size_t k = o.out == files.front() && files.size() > 1 ? 1 : 0; k < files.size(); ++k)
-      written += std::string(written.empty() ? "" : ", ") + files[k];
+    for (size_t k = 1; k < files.size(); ++k) written += std::string(written.empty() ? "" : ", ") + files[k];
+    if (written.empty()) written = o.out;
     std::printf("  AOVs: %s (%u samples per pixel, %.3f s) in %s\n", names.c_str(), frame.aovs.samples, times.aov,
                 written.c_str());
   }
+  if (denoised)
+    std::printf("  denoised (à-trous, %s) in %.3f s; the raw image is %s\n", ctx ? "vulkan" : "cpu", times.denoise,
+                SiblingPath(o.out, "raw").c_str());
   if (validationMessages) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
     status = 3;

@@ -52,6 +52,9 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      position, variance, spp, heatmap (BVH boxes tested per camera ray),
                      or all; layers of the same file for an .exr --out, else
                      <out name>.<aov>.<ext> beside it (README, "AOVs")
+  --denoise          write --out denoised by vkpt's edge-avoiding a-trous filter (guided
+                     by the albedo, normal and depth AOVs and the pixels' variance) and
+                     the raw image beside it as <out name>.raw.<ext>
   --checkpoint SECONDS
                      rewrite --out every SECONDS during the render, with the samples so far
   --seed N           random seed; same seed and device give a bit-identical image [default: 0]
@@ -251,6 +254,10 @@ Options ParseOptions(int argc, const char* const* argv) {
     if (arg == "--list-devices") { o.listDevices = true; continue; }
     if (arg == "--validation") { o.validation = true; continue; }
     if (arg == "--compare") { o.compare = true; continue; }
+    if (arg == "--denoise") {
+      o.denoise = true;
+      continue;
+    }
     if (arg == "--adaptive") {
       o.adaptive = true;
       continue;
@@ -285,8 +292,8 @@ Options ParseOptions(int argc, const char* const* argv) {
   if (o.compare && (o.time || o.noiseTarget || o.Adaptive()))
     throw UsageError(
         "--compare renders both backends with the same samples; it takes no --time, --noise-target or --adaptive");
-  if (o.compare && !o.aovs.empty())
-    throw UsageError("--compare checks the backends against each other; it takes no --aov");
+  if (o.compare && (!o.aovs.empty() || o.denoise))
+    throw UsageError("--compare checks the backends against each other; it takes no --aov or --denoise");
   if (!o.sppGiven && (o.time || o.noiseTarget)) o.spp = kBudgetMaxSpp;
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
   if (!o.env.empty() && o.background) throw UsageError("--env and --background both set the environment; give one");

@@ -52,6 +52,7 @@ struct Options {
   LoadLimits load;                      // --max-memory, --allow-external-uris
   std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)
   std::vector<Aov> aovs;                // --aov: written with the image (image/aov.h), in the order given
+  bool denoise = false;                 // --denoise: --out denoised (image/denoise.h), the raw image beside it
   bool verbose = false;
   bool help = false;
   bool version = false;

@@ -53,7 +53,7 @@ JsonObject OptionsJson(const Options& o) {
       .Bool("allow_external_uris", o.load.allowExternalUris);
   std::vector<std::string> aovs;
   for (Aov aov : o.aovs) aovs.push_back(AovName(aov));
-  j.Raw("aov", Strings(aovs)).Str("stats", o.stats).Bool("verbose", o.verbose);
+  j.Raw("aov", Strings(aovs)).Bool("denoise", o.denoise).Str("stats", o.stats).Bool("verbose", o.verbose);
   return j;
 }
 
@@ -86,7 +86,7 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   const RunTimes& t = run.times;
   JsonObject times;
   times.Num("load", t.load).Num("environment", t.environment).Num("prepare", t.prepare).Num("upload", t.upload);
-  times.Num("render", t.render).Num("aov", t.aov).Num("write", t.write).Num("total", t.total);
+  times.Num("render", t.render).Num("aov", t.aov).Num("denoise", t.denoise).Num("write", t.write).Num("total", t.total);
 
   JsonObject j;
   j.Str("vkpt_version", VKPT_VERSION).Obj("scene", scene).Str("device", r.engine).Obj("options", OptionsJson(o));

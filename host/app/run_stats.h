@@ -23,6 +23,7 @@ struct RunTimes {
   double upload = 0.0;       // Vulkan: the scene into device memory (0 on the CPU)
   double render = 0.0;       // the render itself (--compare: the Vulkan one)
   double aov = 0.0;          // the AOV pass (0 without --aov)
+  double denoise = 0.0;      // --denoise: the filter (0 without)
   double write = 0.0;        // encoding and writing --out
   double total = 0.0;        // from start to the stats being written
 };

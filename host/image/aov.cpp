@@ -135,13 +135,15 @@ std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums&
   return layers;
 }
 
-std::string AovPath(const std::string& out, Aov aov) {
+std::string SiblingPath(const std::string& out, const std::string& tag) {
   const size_t dot = out.find_last_of('.');
   const size_t slash = out.find_last_of('/');
   const bool hasExtension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
   const std::string stem = hasExtension ? out.substr(0, dot) : out;
-  return stem + "." + AovName(aov) + (hasExtension ? out.substr(dot) : "");
+  return stem + "." + tag + (hasExtension ? out.substr(dot) : "");
 }
+
+std::string AovPath(const std::string& out, Aov aov) { return SiblingPath(out, AovName(aov)); }
 
 std::vector<std::string> WriteImageWithAovs(const Image& image, const std::vector<AovLayer>& layers,
                                             const std::string& out, float exposure) {

@@ -45,6 +45,9 @@ struct AovLayer {
 std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums& aovSums, const FrameSums& sums,
                                   const Image& image);
 
+// A file beside the image `out` = NAME.EXT: NAME.<tag>.EXT (NAME.raw.png, …).
+std::string SiblingPath(const std::string& out, const std::string& tag);
+
 // Where AOV `aov` of the image `out` goes when `out` is not an EXR: NAME.albedo.EXT beside it.
 std::string AovPath(const std::string& out, Aov aov);
 

@@ -373,4 +373,15 @@ Image DifferenceHeatmap(const Image& a, const Image& b) {
   return out;
 }
 
+double RelativeMse(const Image& a, const Image& reference) {
+  CheckSameSize(a, reference);
+  double total = 0.0;
+  for (size_t i = 0; i < reference.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(a.pixels[i][c]) - reference.pixels[i][c], r = reference.pixels[i][c];
+      total += d * d / (r * r + 0.01);
+    }
+  return total / (3.0 * reference.pixels.size());
+}
+
 }  // namespace vkpt

@@ -114,4 +114,8 @@ ImageComparison CompareImages(const Image& a, const Image& b, const CompareOptio
 // the sizes differ.
 Image DifferenceHeatmap(const Image& a, const Image& b);
 
+// The relative MSE of `a` against `reference` (same size): the mean over pixels and
+// channels of (a − r)² / (r² + 0.01), vkpt-bench's measure of noise.
+double RelativeMse(const Image& a, const Image& reference);
+
 }  // namespace vkpt

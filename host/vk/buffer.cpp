@@ -161,4 +161,21 @@ void TexelView::Release() {
   view_ = VK_NULL_HANDLE;
 }
 
+Buffer StorageBuffer(const Context& ctx, VkDeviceSize size, const std::string& what) {
+  const VkDeviceSize limit = ctx.Properties().limits.maxStorageBufferRange;
+  if (size > limit)
+    throw Error("the image needs a " + FormatBytes(size) + " " + what + " buffer, but " + ctx.DeviceName() +
+                " allows at most " + FormatBytes(limit) +
+                " per storage buffer (maxStorageBufferRange); use a smaller --width/--height or --backend cpu");
+  return Buffer(
+      ctx, size,
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+      VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+}
+
+Buffer ReadbackBuffer(const Context& ctx, VkDeviceSize size, const std::string& what) {
+  return Buffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what);
+}
+
 }  // namespace vkpt::vk

@@ -41,6 +41,12 @@ class Buffer {
 // checked against maxStorageBufferRange.
 Buffer UploadStorage(const Context& ctx, const void* data, size_t bytes, const std::string& what);
 
+// A device-local storage buffer of `size` bytes for the image's sums (also a transfer
+// source and destination), checked against maxStorageBufferRange with a message naming
+// the fix; and a host-visible, coherent one that such buffers are copied into.
+Buffer StorageBuffer(const Context& ctx, VkDeviceSize size, const std::string& what);
+Buffer ReadbackBuffer(const Context& ctx, VkDeviceSize size, const std::string& what);
+
 // A view of a whole buffer as a uniform texel buffer of RGBA32UI texels (16 bytes), which
 // shaders read with texelFetch. Checks that the device supports the format for that.
 class TexelView {

@@ -31,21 +31,6 @@ TexelBuffer UploadArray(const Context& ctx, std::span<const T> v, const char* wh
   return UploadTexelBuffer(ctx, v.data(), v.size() * sizeof(T), what);
 }
 
-Buffer Storage(const Context& ctx, VkDeviceSize size, const char* what) {
-  const VkDeviceSize limit = ctx.Properties().limits.maxStorageBufferRange;
-  if (size > limit)
-    throw Error("the image needs a " + FormatBytes(size) + " " + what + " buffer, but " + ctx.DeviceName() +
-                " allows at most " + FormatBytes(limit) +
-                " per storage buffer (maxStorageBufferRange); use a smaller --width/--height or --backend cpu");
-  return Buffer(ctx, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
-}
-
-Buffer Readback(const Context& ctx, VkDeviceSize size, const char* what) {
-  return Buffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what);
-}
-
 // Samples per invocation for a scene whose worst SIMD group needed `passesPerSample` loop
 // passes per sample in the last submission: a quarter of lavapipe's loop budget, so that
 // a run of unluckier samples still fits (a group past the budget is reported as cut
@@ -82,13 +67,13 @@ Buffer HostVisible(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usa
 
 FrameBuffers MakeFrameBuffers(const Context& ctx, uint64_t pixels) {
   FrameBuffers b;
-  b.accum = Storage(ctx, pixels * 2 * sizeof(glm::vec4), "accumulation");
-  b.counters = Storage(ctx, pixels * sizeof(glm::uvec4), "counter");
+  b.accum = StorageBuffer(ctx, pixels * 2 * sizeof(glm::vec4), "accumulation");
+  b.counters = StorageBuffer(ctx, pixels * sizeof(glm::uvec4), "counter");
   b.active = HostVisible(ctx, pixels * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "active pixels");
   b.params = HostVisible(ctx, sizeof(shader::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "frame params");
   b.loopStats = HostVisible(ctx, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "loop statistics");
-  b.accumHost = Readback(ctx, b.accum.Size(), "accumulation readback");
-  b.countersHost = Readback(ctx, b.counters.Size(), "counter readback");
+  b.accumHost = ReadbackBuffer(ctx, b.accum.Size(), "accumulation readback");
+  b.countersHost = ReadbackBuffer(ctx, b.counters.Size(), "counter readback");
   return b;
 }
 
@@ -271,8 +256,8 @@ class GpuFrame final : public FrameRenderer {
 
   AovSums RenderAovs(uint32_t samples) override {
     const uint64_t pixels = uint64_t(frame_.width) * frame_.height;
-    Buffer sums = Storage(ctx_, pixels * shader::kAovSumsPerPixel * sizeof(glm::vec4), "AOV sum");
-    Buffer sumsHost = Readback(ctx_, sums.Size(), "AOV readback");
+    Buffer sums = StorageBuffer(ctx_, pixels * shader::kAovSumsPerPixel * sizeof(glm::vec4), "AOV sum");
+    Buffer sumsHost = ReadbackBuffer(ctx_, sums.Size(), "AOV readback");
     std::unique_ptr<ComputePipeline> aov =
         kernels_(kAovSpirv, sizeof(kAovSpirv),
                  {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b_.params.Handle()},
@@ -372,7 +357,7 @@ std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQ
                                                   const uint32_t* spirv, size_t spirvBytes) {
   if (rays.empty()) return {};
   Buffer rayBuffer = Upload(ctx_, rays, "rays");
-  Buffer hits = Storage(ctx_, rays.size() * sizeof(shader::HitRecord), "hits");
+  Buffer hits = StorageBuffer(ctx_, rays.size() * sizeof(shader::HitRecord), "hits");
   ComputePipeline pipeline(ctx_, spirv ? spirv : kTraceSpirv, spirv ? spirvBytes : sizeof(kTraceSpirv),
                            {TexelBinding(shader::kBindingTriangles, triangles_),
                             TexelBinding(shader::kBindingNodes, nodes_),
@@ -380,7 +365,7 @@ std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQ
                             {shader::kBindingHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, hits.Handle()}},
                            "trace", 2 * sizeof(uint32_t));
   const uint32_t push[2] = {nodeCount_, nodeCopies_};
-  Buffer hitsHost = Readback(ctx_, hits.Size(), "hits readback");
+  Buffer hitsHost = ReadbackBuffer(ctx_, hits.Size(), "hits readback");
   const uint32_t groups = uint32_t((rays.size() + 63) / 64);
   auto t0 = std::chrono::steady_clock::now();
   ctx_.Submit([&](VkCommandBuffer cb) {

@@ -45,6 +45,13 @@ const uint kBindingActive = 23u;
 const uint kBindingAovSums = 24u;
 const uint kAovSumsPerPixel = 3u;
 
+// Descriptor bindings of the denoiser (denoise.comp, shared/denoise.h), one vec4 per pixel each.
+const uint kBindingDenoiseColor = 0u;   // readonly: this iteration's input (RGB, luminance variance)
+const uint kBindingDenoiseGuide = 1u;   // readonly: normal, depth
+const uint kBindingDenoiseAlbedo = 2u;  // readonly: albedo, 0
+const uint kBindingDenoiseOut = 3u;     // this iteration's output
+const uint kDenoiseIterations = 5u;     // its taps reach 2 · 2^4 = 32 pixels away
+
 // The environment map (shared/environment.h), both as RGBA32UI texel buffers; a 1-texel
 // dummy of each when there is none (FrameParams::envWidth == 0).
 const uint kBindingEnvRadiance = 11u;      // W·H texels, row-major from the top row: (RGB, 0)

@@ -1,0 +1,38 @@
+// --denoise: vkpt's à-trous filter (shaders/shared/denoise.h) on an image and its AOVs.
+// PrepareDenoise divides the image by its albedo and gathers the guides; either backend
+// runs the iterations (AtrousCpu here, vk::AtrousGpu on a device); FinishDenoise
+// multiplies the albedo back.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "image/film.h"
+#include "image/image.h"
+
+namespace vkpt {
+
+struct DenoiseInput {
+  uint32_t width = 0, height = 0;
+  std::vector<glm::vec4> color;   // demodulated RGB, variance of its luminance
+  std::vector<glm::vec4> guide;   // normal, depth
+  std::vector<glm::vec4> albedo;  // the albedo divided out (at least kMinAlbedo per channel), 0
+};
+
+// Albedo below this (a black surface, a dark background) is divided out as this, so the
+// division stays finite and is undone exactly.
+constexpr float kMinAlbedo = 1e-3f;
+
+// `image` must carry its variance; `aovs` are the AOV pass's sums of the same frame.
+DenoiseInput PrepareDenoise(const Image& image, const AovSums& aovs);
+
+// Every iteration on the CPU; returns the filtered colour (RGB, variance).
+std::vector<glm::vec4> AtrousCpu(const DenoiseInput& input, unsigned threads = 0);
+
+// The filtered colour times the albedo again: the denoised image (with the filtered
+// variance).
+Image FinishDenoise(const DenoiseInput& input, const std::vector<glm::vec4>& filtered);
+
+}  // namespace vkpt

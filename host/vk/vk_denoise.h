@@ -1,0 +1,17 @@
+// The à-trous denoiser (image/denoise.h) on a Vulkan device: denoise.comp, the shared
+// filter of shaders/shared/denoise.h, one dispatch per iteration between two buffers.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "image/denoise.h"
+#include "vk/context.h"
+
+namespace vkpt::vk {
+
+// Every iteration; returns the filtered colour (RGB, variance), as AtrousCpu does.
+std::vector<glm::vec4> AtrousGpu(const Context& ctx, const DenoiseInput& input);
+
+}  // namespace vkpt::vk
