@@ -274,10 +274,11 @@ TEST(AovCli, PngAndPfmFilesBesideTheImage) {
 
 TEST(AovCli, UnknownNamesAndCompareAreUsageErrors) {
   const std::string scene = test::SourcePath("scenes/cornell.gltf");
-  test::ProcessResult r = test::RunVkpt({"--scene", scene, "--aov", "albedo,glow"});
+  const std::string out = test::TempPath("aov_usage.png");  // never written: both are refused
+  test::ProcessResult r = test::RunVkpt({"--scene", scene, "--aov", "albedo,glow", "--out", out});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("unknown AOV \"glow\""), std::string::npos) << r.err;
-  r = test::RunVkpt({"--scene", scene, "--aov", "depth", "--compare"});
+  r = test::RunVkpt({"--scene", scene, "--aov", "depth", "--compare", "--out", out});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("no --aov"), std::string::npos) << r.err;
 }

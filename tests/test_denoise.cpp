@@ -125,7 +125,7 @@ TEST(DenoiseCli, WritesTheRawImageBeside) {
   EXPECT_EQ(test::DirectoryListing(dir), (std::vector<std::string>{"c.pfm", "c.raw.pfm", "plain.pfm"}));
   EXPECT_EQ(test::ReadFile(dir + "/c.raw.pfm"), test::ReadFile(dir + "/plain.pfm"));
   EXPECT_NE(test::ReadFile(dir + "/c.pfm"), test::ReadFile(dir + "/plain.pfm"));
-  const test::ProcessResult r = test::RunVkpt({"--scene", scene, "--denoise", "--compare"});
+  const test::ProcessResult r = test::RunVkpt({"--scene", scene, "--denoise", "--compare", "--out", dir + "/x.png"});
   EXPECT_EQ(r.exitCode, 2);
 }
 
