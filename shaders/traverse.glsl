@@ -47,7 +47,9 @@ void CountPasses(uint passes) {
 
 // Boxes this lane has tested, for the heat map AOV (aov.comp), in shaders that define
 // VKPT_COUNT_BOX_TESTS: one per node visited.
+#ifdef VKPT_COUNT_BOX_TESTS
 uint gBoxTests = 0u;
+#endif
 
 // One pass of the outer do-while loop holding two inner ones, in which this lane ran
 // its inner loops' bodies nodeSteps and triangleSteps times.

@@ -57,7 +57,7 @@ std::vector<uint8_t> Picture(const AovLayer& layer, size_t pixels) {
   glm::vec3 lo(0.0f), hi(0.0f);
   for (size_t i = 0; i < pixels; ++i) {
     largest = std::max(largest, scalar(i));
-    if (channels == 3) {
+    if (layer.aov == Aov::kPosition) {
       const glm::vec3 v(layer.values[3 * i], layer.values[3 * i + 1], layer.values[3 * i + 2]);
       lo = i == 0 ? v : glm::min(lo, v);
       hi = i == 0 ? v : glm::max(hi, v);
@@ -106,6 +106,13 @@ std::optional<Aov> AovFromName(std::string_view name) {
 
 bool NeedsAovPass(Aov aov) { return aov != Aov::kVariance && aov != Aov::kSpp; }
 
+AovPixel ResolveAovPixel(const AovPixelSums& a, uint32_t samples) {
+  const double perSample = samples > 0 ? 1.0 / samples : 0.0;
+  const double perHit = a.hits > 0 ? 1.0 / a.hits : 0.0;
+  return {glm::vec3(a.albedo * perSample), glm::vec3(a.normal * perSample), glm::vec3(a.position * perHit),
+          float(a.depth * perHit), float(a.boxTests * perSample)};
+}
+
 std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums& aovSums, const FrameSums& sums,
                                   const Image& image) {
   const size_t pixels = size_t(image.width) * image.height;
@@ -113,21 +120,17 @@ std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums&
   for (Aov aov : wanted) {
     AovLayer layer{aov, Suffixes(aov), {}};
     layer.values.reserve(pixels * layer.suffixes.size());
-    auto put = [&layer](glm::dvec3 v) {
-      for (int c = 0; c < 3; ++c) layer.values.push_back(float(v[c]));
-    };
+    auto put = [&layer](glm::vec3 v) { layer.values.insert(layer.values.end(), {v.x, v.y, v.z}); };
     for (size_t i = 0; i < pixels; ++i) {
-      const AovPixelSums* a = NeedsAovPass(aov) ? &aovSums.pixels.at(i) : nullptr;
-      const double perSample = aovSums.samples > 0 ? 1.0 / aovSums.samples : 0.0;
-      const double perHit = a && a->hits > 0 ? 1.0 / a->hits : 0.0;
+      const AovPixel a = NeedsAovPass(aov) ? ResolveAovPixel(aovSums.pixels.at(i), aovSums.samples) : AovPixel{};
       switch (aov) {
-        case Aov::kAlbedo: put(a->albedo * perSample); break;
-        case Aov::kNormal: put(a->normal * perSample); break;
-        case Aov::kDepth: layer.values.push_back(float(a->depth * perHit)); break;
-        case Aov::kPosition: put(a->position * perHit); break;
-        case Aov::kVariance: put(image.variance.empty() ? glm::dvec3(0.0) : glm::dvec3(image.variance[i])); break;
+        case Aov::kAlbedo: put(a.albedo); break;
+        case Aov::kNormal: put(a.normal); break;
+        case Aov::kDepth: layer.values.push_back(a.depth); break;
+        case Aov::kPosition: put(a.position); break;
+        case Aov::kVariance: put(image.variance.empty() ? glm::vec3(0.0f) : image.variance[i]); break;
         case Aov::kSpp: layer.values.push_back(float(sums.pixels.at(i).samples)); break;
-        case Aov::kHeatmap: layer.values.push_back(float(a->boxTests * perSample)); break;
+        case Aov::kHeatmap: layer.values.push_back(a.boxTests); break;
       }
     }
     layers.push_back(std::move(layer));

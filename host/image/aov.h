@@ -40,6 +40,14 @@ struct AovLayer {
   std::vector<float> values;          // width · height · suffixes.size()
 };
 
+// One pixel's AOV-pass values: albedo, normal and box tests averaged over the samples;
+// depth and position over the samples that hit (0 when none did).
+struct AovPixel {
+  glm::vec3 albedo, normal, position;
+  float depth, boxTests;
+};
+AovPixel ResolveAovPixel(const AovPixelSums& sums, uint32_t samples);
+
 // The requested AOVs of a render: `aovSums` (read only if some AOV needs the pass),
 // the render's sums and its image (for the variance).
 std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums& aovSums, const FrameSums& sums,

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "image/aov.h"
 #include "util/error.h"
 #include "util/parallel.h"
 
@@ -37,13 +38,12 @@ DenoiseInput PrepareDenoise(const Image& image, const AovSums& aovs) {
   in.albedo.resize(n);
   const glm::vec3 luminance(0.2126f, 0.7152f, 0.0722f);
   for (size_t i = 0; i < n; ++i) {
-    const AovPixelSums& a = aovs.pixels[i];
-    const glm::vec3 albedo = glm::max(glm::vec3(a.albedo / double(aovs.samples)), glm::vec3(kMinAlbedo));
+    const AovPixel a = ResolveAovPixel(aovs.pixels[i], aovs.samples);
+    const glm::vec3 albedo = glm::max(a.albedo, glm::vec3(kMinAlbedo));
     const glm::vec3 c = image.pixels[i] / albedo;
     const glm::vec3 v = image.variance[i] / (albedo * albedo);
     in.color[i] = glm::vec4(c, glm::dot(luminance * luminance, v));
-    const float depth = a.hits > 0 ? float(a.depth / a.hits) : 0.0f;
-    in.guide[i] = glm::vec4(glm::vec3(a.normal / double(aovs.samples)), depth);
+    in.guide[i] = glm::vec4(a.normal, a.depth);
     in.albedo[i] = glm::vec4(albedo, 0.0f);
   }
   return in;

@@ -91,9 +91,8 @@ VKPT_FN AovSample TraceAovSample(VKPT_SCENE_PARAM FrameParams params, uint px, u
     vec4 u = Random4(params.seed, s.pixel, s.sampleIndex, AovGroup(bounce));
     BsdfSample bs = SampleBsdf(bsdf, wo, vec3(u.x, u.y, u.z));
     vec3 wi = FrameToWorld(sh.frame, bs.wi);
+    if (!LeavesOnLobeSide(bs, wi, sh.ng)) return a;
     bool transmitted = bs.wi.z < 0.0f;
-    float side = dot(wi, sh.ng);
-    if (!(bs.pdf > 0.0f) || side == 0.0f || (side < 0.0f) != transmitted) return a;
     weight *= bs.weight;
     s.ray.origin = OffsetRayOrigin(sh.p, transmitted ? -sh.ng : sh.ng);
     s.ray.dir = wi;

@@ -194,6 +194,14 @@ VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(P
   s.lightContribution = s.throughput * f * ls.radiance * (abs(wi.z) * weight / ls.pdf);
 }
 
+// Whether sampled direction `wi` (bs.wi in the shading frame) is usable: reflection must
+// leave on the arrival side of the geometric surface (normal `ng`) and transmission on
+// the other, whatever the shading normal says, or light would leak.
+VKPT_FN bool LeavesOnLobeSide(BsdfSample bs, vec3 wi, vec3 ng) {
+  float side = dot(wi, ng);
+  return bs.pdf > 0.0f && side != 0.0f && (side < 0.0f) == (bs.wi.z < 0.0f);
+}
+
 // Russian roulette (GAMES101: continue with probability P, divide by P) on the throughput
 // times the sampled direction's weight: survival follows the throughput, so dim paths end
 // early and bright ones rarely. Returns false if the path ends here.
@@ -245,11 +253,8 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   vec2 ub = Sample2D(params.seed, s.pixel, s.sampleIndex, BsdfGroup(bounce));
   BsdfSample bs = SampleBsdf(bsdf, wo, vec3(ur.x, ub.x, ub.y));
   vec3 wi = FrameToWorld(sh.frame, bs.wi);
-  // Reflection must leave on the arrival side of the geometric surface and transmission
-  // on the other, whatever the shading normal says, or light would leak: the path ends.
+  if (!LeavesOnLobeSide(bs, wi, sh.ng)) return false;
   bool transmitted = bs.wi.z < 0.0f;
-  float side = dot(wi, sh.ng);
-  if (!(bs.pdf > 0.0f) || side == 0.0f || (side < 0.0f) != transmitted) return false;
   if (!bsdf.lambert && !Survives(params, s, bs.weight, bounce, ur.w)) return false;
   // Emission found through the surface competes with light sampling only where that
   // looks through it.
