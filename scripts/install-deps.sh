@@ -13,6 +13,7 @@ packages=(
   libstb-dev libtinyexr-dev             # PNG and EXR writers
   libgtest-dev                          # tests
   libembree-dev                         # vkpt-bench compares against Embree
+  libopenmpi-dev openmpi-bin            # optional: mpirun -n N vkpt shares a frame (tests use it)
   clang-format                          # scripts/check-format.sh
   clang-14 libclang-rt-14-dev           # the loader fuzzer: clang++ and libFuzzer's runtime
   llvm-14                               # llvm-symbolizer: sanitizer reports with file:line

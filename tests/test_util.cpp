@@ -57,6 +57,12 @@ std::string ProcessResult::Describe() const {
 
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds, const std::string& cwd,
                       const std::vector<std::string>& env, const ChildLimits& limits, const ChildSignals& signals) {
+  return RunProgram(VKPT_BINARY, args, timeoutSeconds, cwd, env, limits, signals);
+}
+
+ProcessResult RunProgram(const std::string& program, const std::vector<std::string>& args, double timeoutSeconds,
+                         const std::string& cwd, const std::vector<std::string>& env, const ChildLimits& limits,
+                         const ChildSignals& signals) {
   ProcessResult r;
   int outPipe[2], errPipe[2];
   if (pipe(outPipe) != 0 || pipe(errPipe) != 0) {
@@ -79,7 +85,7 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
       if (bytes && setrlimit(resource, &limit) != 0) _exit(126);
     }
     std::vector<char*> argv;
-    std::string bin = VKPT_BINARY;
+    std::string bin = program;
     argv.push_back(bin.data());
     std::vector<std::string> copy = args;
     for (std::string& a : copy) argv.push_back(a.data());

@@ -71,6 +71,12 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
                       const std::vector<std::string>& env = {}, const ChildLimits& limits = {},
                       const ChildSignals& signals = {});
 
+// The same for any program, by its path (mpirun, for the MPI tests).
+ProcessResult RunProgram(const std::string& program, const std::vector<std::string>& args,
+                         double timeoutSeconds = 120.0, const std::string& cwd = "",
+                         const std::vector<std::string>& env = {}, const ChildLimits& limits = {},
+                         const ChildSignals& signals = {});
+
 // Statistics.
 double ChiSquareSurvival(double statistic, double dof);  // P(X >= statistic), X ~ χ²(dof)
 double NormalSurvivalTwoSided(double z);                 // P(|Z| >= z)

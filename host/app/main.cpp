@@ -8,21 +8,27 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 
 #include "app/environment_option.h"
 #include "app/options.h"
 #include "app/render_loop.h"
 #include "app/run_stats.h"
 #include "cpu/path_tracer.h"
+#include "dist/chunk_dealer.h"
+#include "dist/cluster.h"
 #include "image/aov.h"
+#include "image/chunked_frame.h"
 #include "image/denoise.h"
 #include "image/image.h"
 #include "image/image_compare.h"
+#include "image/noise_estimate.h"
 #include "render/light_table.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
@@ -128,45 +134,121 @@ struct FrameOutcome {
   AovSums aovs;                // --aov: the AOV pass's sums (empty without one)
   double uploadSeconds = 0.0;  // the scene into device memory and the pipeline compiled
   double aovSeconds = 0.0;
+  std::vector<RankShare> ranks;  // an MPI job's ranks (empty for one process)
 };
 
-// The render under the options' budgets, on the Vulkan device if there is one, else on
-// the CPU, then the AOV pass if some --aov needs it. The image is written at every
-// checkpoint.
-FrameOutcome RenderFrame(vk::Context* ctx, const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
-  FrameOutcome out;
-  auto t0 = std::chrono::steady_clock::now();
+// This process's renderer of the frame: on the Vulkan device if there is one, else on the
+// CPU. `gpu` keeps the device's scene alive with it.
+struct BackendFrame {
   std::unique_ptr<vk::GpuRenderer> gpu;
   std::unique_ptr<FrameRenderer> frame;
+  double uploadSeconds = 0.0;
+};
+
+BackendFrame BeginBackendFrame(vk::Context* ctx, const RenderScene& rs, const shader::FrameParams& params,
+                               const Options& o) {
+  BackendFrame b;
+  const auto t0 = std::chrono::steady_clock::now();
   if (ctx) {
-    gpu = std::make_unique<vk::GpuRenderer>(*ctx, rs);
+    b.gpu = std::make_unique<vk::GpuRenderer>(*ctx, rs);
     vk::GpuRenderOptions options;
     options.batch = o.batch;
-    frame = gpu->BeginFrame(params, options);
+    b.frame = b.gpu->BeginFrame(params, options);
+    b.uploadSeconds = SecondsSince(t0);
   } else {
-    frame = BeginCpuFrame(rs, params, o.threads);
+    b.frame = BeginCpuFrame(rs, params, o.threads);
   }
-  out.uploadSeconds = ctx ? SecondsSince(t0) : 0.0;
+  return b;
+}
+
+// Writes the image of `sums` to --out during the render.
+void WriteCheckpoint(const Options& o, const FrameSums& sums, uint32_t spp) {
+  WriteImage(ResolveFilm(sums), o.out, o.exposure);
+  if (o.verbose) std::printf("  checkpoint: %s at %u spp\n", o.out.c_str(), spp);
+  std::fflush(stdout);
+}
+
+// The AOV pass, if some --aov (or --denoise) needs it.
+void RenderAovPass(FrameRenderer& frame, const Options& o, FrameOutcome& out) {
+  if (!o.denoise && std::none_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass)) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  out.aovs = frame.RenderAovs(std::min(kAovSamples, out.render.spp));
+  out.aovSeconds = SecondsSince(t0);
+}
+
+// The render under the options' budgets, in chunks (image/chunked_frame.h), then the AOV
+// pass. The image is written at every checkpoint.
+FrameOutcome RenderFrame(vk::Context* ctx, const RenderScene& rs, const shader::FrameParams& params, const Options& o) {
+  FrameOutcome out;
+  BackendFrame backend = BeginBackendFrame(ctx, rs, params, o);
+  out.uploadSeconds = backend.uploadSeconds;
+  ChunkedFrame frame(std::move(backend.frame), o.chunkSpp);
   RenderLoopHooks hooks;
   hooks.progress = ProgressLine();
-  hooks.checkpoint = [&o](const FrameSums& sums, uint32_t spp) {
-    WriteImage(ResolveFilm(sums), o.out, o.exposure);
-    if (o.verbose) std::printf("  checkpoint: %s at %u spp\n", o.out.c_str(), spp);
-    std::fflush(stdout);
-  };
+  hooks.checkpoint = [&o](const FrameSums& sums, uint32_t spp) { WriteCheckpoint(o, sums, spp); };
   // Flushed line by line: a script reading a pipe sees each pass as it ends.
   if (o.verbose)
     hooks.passReport = [](const std::string& line) {
       std::printf("  %s\n", line.c_str());
       std::fflush(stdout);
     };
-  out.render = RenderProgressively(*frame, BudgetFromOptions(o), hooks);
+  out.render = RenderProgressively(frame, BudgetFromOptions(o), hooks);
   EndProgressLine();
-  if (o.denoise || std::any_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass)) {
-    t0 = std::chrono::steady_clock::now();
-    out.aovs = frame->RenderAovs(std::min(kAovSamples, out.render.spp));
-    out.aovSeconds = SecondsSince(t0);
-  }
+  RenderAovPass(frame, o, out);
+  return out;
+}
+
+// A whole number from the environment, or `otherwise`.
+long EnvironmentNumber(const char* name, long otherwise) {
+  const char* v = std::getenv(name);
+  return v && *v ? std::strtol(v, nullptr, 10) : otherwise;
+}
+
+// A chunk of the frame on this rank's backend: its sums alone. For the tests of an MPI
+// job (docs/testing.md), VKPT_TEST_CHUNK_DELAY_MS slows this rank down by that much per
+// chunk, and VKPT_TEST_FAIL_AFTER_CHUNKS=N makes it fail after N chunks of its own.
+ChunkRenderer ChunkRendererOf(FrameRenderer& frame, const ChunkPlan& plan) {
+  const long delayMs = EnvironmentNumber("VKPT_TEST_CHUNK_DELAY_MS", 0);
+  const long failAfter = EnvironmentNumber("VKPT_TEST_FAIL_AFTER_CHUNKS", -1);
+  auto rendered = std::make_shared<long>(0);
+  return [&frame, plan, delayMs, failAfter, rendered](uint32_t chunk) {
+    if ((*rendered)++ == failAfter)
+      throw Error("failing at chunk " + std::to_string(chunk) + " (VKPT_TEST_FAIL_AFTER_CHUNKS)");
+    if (delayMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
+    frame.Clear();
+    frame.AddSamples(plan.Begin(chunk), plan.Samples(chunk), {}, {});
+    return frame.Sums();
+  };
+}
+
+// RenderFrame on rank 0 of an MPI job: the chunks dealt among the ranks (dist/chunk_dealer.h)
+// until --spp, --time or a signal ends the dealing, then the AOV pass here.
+FrameOutcome RenderFrameOnCluster(Cluster& cluster, FrameRenderer& frame, const Options& o) {
+  FrameOutcome out;
+  const ChunkPlan plan{o.spp, o.chunkSpp};
+  const auto t0 = std::chrono::steady_clock::now();
+  DealerHooks hooks;
+  hooks.progress = ProgressLine();
+  hooks.stopDealing = [&] { return GracefulStop::Signal() != 0 || (o.time && SecondsSince(t0) >= *o.time); };
+  hooks.checkpoint = [&o](const FrameSums& sums, uint32_t spp) { WriteCheckpoint(o, sums, spp); };
+  hooks.checkpointSeconds = o.checkpoint;
+  DealtFrame dealt = DealChunks(cluster, plan, ChunkRendererOf(frame, plan), hooks);
+  EndProgressLine();
+  ProgressiveRender& r = out.render;
+  r.seconds = SecondsSince(t0);
+  r.sums = std::move(dealt.sums);
+  r.spp = dealt.spp;
+  for (uint32_t c = 0; c < dealt.chunks; ++c) r.sppPerPass.push_back(plan.Samples(c));
+  for (const PixelSums& px : r.sums.pixels) r.samples += px.samples;
+  r.stoppedBy = dealt.chunks == plan.Chunks() ? StopReason::kSpp
+                : GracefulStop::Signal()      ? StopReason::kSignal
+                                              : StopReason::kTime;
+  r.signal = GracefulStop::Signal();
+  r.estimatedRelMse = EstimatedRelMse(r.sums);
+  r.activePixels = r.sums.pixels.size();
+  r.engine = "mpi: " + std::to_string(cluster.Size()) + " ranks, rank 0 " + frame.Engine();
+  out.ranks = std::move(dealt.ranks);
+  RenderAovPass(frame, o, out);
   return out;
 }
 
@@ -269,7 +351,8 @@ RenderScene PrepareForRender(const Scene& scene, const Options& o, bool gpu, Env
 // The frame constants from the options; a scene without light sources (HasLightSources)
 // is lit by a white environment unless --env or --background says otherwise (and is warned about if that is
 // black).
-shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, glm::uvec2 size, const Options& o) {
+shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, glm::uvec2 size, const Options& o,
+                                     bool report) {
   shader::FrameParams params = MakeFrameParams(rs, cam, size.x, size.y);
   params.seed = o.seed;
   params.sampleBegin = 0;
@@ -283,11 +366,11 @@ shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, g
     params.background = glm::vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]);
   } else if (!HasLightSources(rs)) {
     params.background = glm::vec3(1.0f);
-    if (o.verbose)
+    if (report && o.verbose)
       std::printf("  no lights%s: lit by a white environment (see --background)\n",
                   rs.lights.empty() ? "" : " but emissive textures");
   }
-  if (rs.lights.empty() && o.env.empty() && MaxComponent(params.background) <= 0.0f)
+  if (report && rs.lights.empty() && o.env.empty() && MaxComponent(params.background) <= 0.0f)
     std::fprintf(stderr, "vkpt: warning: %s: no lights and a black background; the image will be black\n",
                  o.scene.c_str());
   return params;
@@ -355,53 +438,62 @@ void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderRe
                  (unsigned long long)r.cutShort);
 }
 
-int Run(const Options& o) {
-  if (o.listDevices) return ListDevices();
-  if (!o.diff.empty()) return Diff(o);
-  const auto start = std::chrono::steady_clock::now();
+// Everything the render needs, from the options: the scene, its device and arrays.
+struct Prepared {
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  RunTimes times;
+  Scene scene;
+  std::unique_ptr<vk::Context> ctx;
+  RenderScene rs;
+  shader::FrameParams params;
+};
+
+Prepared Prepare(const Options& o, bool report) {
+  Prepared p;
   CheckOutputPath(o.out);  // fail before a long render, not after
   if (!o.stats.empty()) CheckWritablePath(o.stats, "a stats");
-
-  RunTimes times;
   auto phase = std::chrono::steady_clock::now();
   auto lap = [&phase](double& seconds) {
     seconds = SecondsSince(phase);
     phase = std::chrono::steady_clock::now();
   };
-  Scene scene = LoadGltf(o.scene, o.load);
-  lap(times.load);
-  EnvironmentMap env = LoadEnvironment(o, scene);
-  lap(times.environment);
+  p.scene = LoadGltf(o.scene, o.load);
+  lap(p.times.load);
+  EnvironmentMap env = LoadEnvironment(o, p.scene);
+  lap(p.times.environment);
   uint32_t camIndex = 0;
-  const Camera cam = ChooseCamera(scene, o, &camIndex);
+  const Camera cam = ChooseCamera(p.scene, o, &camIndex);
   const glm::uvec2 size = ImageSize(cam, o);
   // The device before the scene's arrays: without one (auto backend) the CPU renders, and
   // only then does the scene need the CPU's BVH layout.
-  std::unique_ptr<vk::Context> ctx = OpenVulkan(o);
+  p.ctx = OpenVulkan(o);
   phase = std::chrono::steady_clock::now();
-  const RenderScene rs = PrepareForRender(scene, o, ctx != nullptr, std::move(env));
-  lap(times.prepare);
-  if (o.verbose) PrintLoadReport(scene, rs, cam, camIndex);
-  const shader::FrameParams params = FrameFromOptions(rs, cam, size, o);
+  p.rs = PrepareForRender(p.scene, o, p.ctx != nullptr, std::move(env));
+  lap(p.times.prepare);
+  if (report && o.verbose) PrintLoadReport(p.scene, p.rs, cam, camIndex);
+  p.params = FrameFromOptions(p.rs, cam, size, o, report);
+  return p;
+}
 
-  std::optional<RenderResult> reference;
-  if (o.compare) reference = RenderOnCpu(rs, params, o);
-  // From here the first SIGINT/SIGTERM stops the render after its pass, and the image of
-  // the samples taken is still written.
-  GracefulStop stop;
-  const FrameOutcome frame = RenderFrame(ctx.get(), rs, params, o);
+// After the render: denoising, the files, the reports and the stats; the exit status.
+int Finish(const Options& o, Prepared& p, const FrameOutcome& frame, const RenderResult* reference) {
   const ProgressiveRender& progressive = frame.render;
   const RenderResult r = ResultOf(progressive);
+  RunTimes& times = p.times;
   times.upload = frame.uploadSeconds;
   times.render = r.seconds;
   times.aov = frame.aovSeconds;
-  const uint32_t validationMessages = ctx ? ctx->ValidationMessages() : 0;
+  const uint32_t validationMessages = p.ctx ? p.ctx->ValidationMessages() : 0;
 
-  phase = std::chrono::steady_clock::now();
+  auto phase = std::chrono::steady_clock::now();
+  auto lap = [&phase](double& seconds) {
+    seconds = SecondsSince(phase);
+    phase = std::chrono::steady_clock::now();
+  };
   std::optional<Image> denoised;
   if (o.denoise) {
     const DenoiseInput input = PrepareDenoise(r.image, frame.aovs);
-    denoised = FinishDenoise(input, ctx ? vk::AtrousGpu(*ctx, input) : AtrousCpu(input, o.threads));
+    denoised = FinishDenoise(input, p.ctx ? vk::AtrousGpu(*p.ctx, input) : AtrousCpu(input, o.threads));
     lap(times.denoise);
   }
   std::vector<std::string> files = WriteImageWithAovs(
@@ -412,7 +504,10 @@ int Run(const Options& o) {
   }
   lap(times.write);
   int status = reference ? CompareBackends(*reference, r, o) : 0;
-  PrintRenderReport(scene, rs, r, progressive, o);
+  PrintRenderReport(p.scene, p.rs, r, progressive, o);
+  for (const RankShare& rank : frame.ranks)
+    std::printf("  %s: %u chunk(s) in %.3f s, %s sent\n", rank.name.c_str(), rank.chunks, rank.renderSeconds,
+                FormatBytes(rank.bytesSent).c_str());
   if (!o.aovs.empty()) {
     std::string names, written;
     for (Aov aov : o.aovs) names += std::string(names.empty() ? "" : ", ") + AovName(aov);
@@ -422,7 +517,7 @@ int Run(const Options& o) {
                 written.c_str());
   }
   if (denoised)
-    std::printf("  denoised (à-trous, %s) in %.3f s; the raw image is %s\n", ctx ? "vulkan" : "cpu", times.denoise,
+    std::printf("  denoised (à-trous, %s) in %.3f s; the raw image is %s\n", p.ctx ? "vulkan" : "cpu", times.denoise,
                 SiblingPath(o.out, "raw").c_str());
   if (validationMessages) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
@@ -435,12 +530,25 @@ int Run(const Options& o) {
     status = 128 + sig;
   }
   if (!o.stats.empty()) {
-    times.total = SecondsSince(start);
-    const std::string json = StatsJson(o, {scene, rs, r, progressive, reference ? &*reference : nullptr, times,
-                                           validationMessages, status, frame.aovs.samples, files});
+    times.total = SecondsSince(p.start);
+    const std::string json = StatsJson(o, {p.scene, p.rs, r, progressive, reference, times, validationMessages, status,
+                                           frame.aovs.samples, files, frame.ranks});
     WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
   }
   return status;
+}
+
+int Run(const Options& o) {
+  if (o.listDevices) return ListDevices();
+  if (!o.diff.empty()) return Diff(o);
+  Prepared p = Prepare(o, true);
+  std::optional<RenderResult> reference;
+  if (o.compare) reference = RenderOnCpu(p.rs, p.params, o);
+  // From here the first SIGINT/SIGTERM stops the render after its pass, and the image of
+  // the samples taken is still written.
+  GracefulStop stop;
+  const FrameOutcome frame = RenderFrame(p.ctx.get(), p.rs, p.params, o);
+  return Finish(o, p, frame, reference ? &*reference : nullptr);
 }
 
 // Every error is one line of at most a few hundred characters, whatever a file or an
@@ -452,6 +560,104 @@ void PrintError(const char* kind, std::string what) {
   std::fprintf(stderr, "vkpt: %s: %s\n", kind, what.c_str());
 }
 
+// Runs `step` and returns its exit status (0, or 1 and the error's message).
+int Attempt(const std::function<void()>& step, std::string* message) {
+  try {
+    step();
+    return 0;
+  } catch (const Error& e) {
+    *message = e.what();
+  } catch (const std::bad_alloc&) {
+    *message = "out of memory";
+  } catch (const std::exception& e) {
+    *message = e.what();
+  }
+  return 1;
+}
+
+// A step every rank takes (parsing, loading): every rank's outcome, gathered. When some
+// failed, rank 0 prints each different message once (naming the ranks when they differ
+// between ranks) and every rank returns the worst status.
+int AgreeOnOutcome(Cluster& cluster, int status, const std::string& message, const char* kind) {
+  const std::vector<std::string> all = cluster.Gather(std::to_string(status) + ":" + message);
+  const int worst = cluster.MaxOf(status);
+  if (worst == 0 || cluster.Rank() != 0) return worst;
+  std::vector<std::pair<std::string, std::vector<int>>> distinct;  // message, its ranks
+  for (int r = 0; r < int(all.size()); ++r) {
+    if (all[r].rfind("0:", 0) == 0) continue;
+    const std::string text = all[r].substr(all[r].find(':') + 1);
+    auto it = std::find_if(distinct.begin(), distinct.end(), [&](const auto& d) { return d.first == text; });
+    if (it == distinct.end()) distinct.push_back({text, {r}});
+    else it->second.push_back(r);
+  }
+  for (const auto& [text, ranks] : distinct) {
+    if (ranks.size() == all.size()) {
+      PrintError(kind, text);
+    } else {
+      for (int r : ranks) PrintError(kind, cluster.Name(r) + ": " + text);
+    }
+  }
+  return worst;
+}
+
+// The options that must be the same on every rank: all but where and how each renders.
+uint64_t FrameKey(const Options& o, const Prepared& p) {
+  Options shared = o;
+  shared.backend = Backend::Auto;
+  shared.device.clear();
+  shared.threads = 0;
+  shared.batch = 0;
+  shared.validation = shared.verbose = false;
+  const std::string key = OptionsAsJson(shared) + std::to_string(p.scene.contentHash);
+  uint64_t h = 1469598103934665603ull;  // FNV-1a
+  for (unsigned char c : key) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+// One rank of an MPI job: every rank loads the scene and builds its arrays; rank 0 deals
+// the chunks and writes the files, the others render what it deals them.
+int RunRank(Cluster& cluster, int argc, char** argv) {
+  Options o;
+  std::string message;
+  int status = 0;
+  try {
+    o = ParseOptions(argc, argv);
+    if (o.compare) throw UsageError("--compare renders in one process; run it without mpirun");
+    if (o.noiseTarget || o.Adaptive())
+      throw UsageError("--noise-target and --adaptive are not supported across MPI ranks; use --spp or --time");
+    if (!o.diff.empty() || o.listDevices || o.help || o.version)
+      throw UsageError("--diff, --list-devices, --help and --version run in one process; run them without mpirun");
+  } catch (const UsageError& e) {
+    status = 2;
+    message = e.what();
+  }
+  if ((status = AgreeOnOutcome(cluster, status, message, "usage error"))) return status;
+  Prepared p;
+  BackendFrame backend;
+  status = Attempt(
+      [&] {
+        p = Prepare(o, cluster.Rank() == 0);
+        backend = BeginBackendFrame(p.ctx.get(), p.rs, p.params, o);
+      },
+      &message);
+  if ((status = AgreeOnOutcome(cluster, status, message, "error"))) return status;
+  if (!cluster.AllEqual(FrameKey(o, p))) {
+    if (cluster.Rank() == 0)
+      PrintError("usage error",
+                 "the ranks were given different frames: only --backend, --device, --threads, --batch, "
+                 "--validation and -v may differ between ranks");
+    return 2;
+  }
+  GracefulStop stop;  // rank 0 stops dealing at a signal; the others finish their chunk
+  if (cluster.Rank() != 0) {
+    RenderDealtChunks(cluster, ChunkRendererOf(*backend.frame, ChunkPlan{o.spp, o.chunkSpp}));
+    return 0;
+  }
+  FrameOutcome frame = RenderFrameOnCluster(cluster, *backend.frame, o);
+  frame.uploadSeconds = backend.uploadSeconds;
+  return Finish(o, p, frame, nullptr);
+}
+
 }  // namespace
 }  // namespace vkpt
 
@@ -461,6 +667,21 @@ int main(int argc, char** argv) {
   // kills vkpt mid-write with the temporary left behind; ignored, write(2) fails with
   // EFBIG and the checked writer reports it and cleans up.
   signal(SIGXFSZ, SIG_IGN);
+  std::unique_ptr<Cluster> cluster;
+  try {
+    cluster = JoinCluster(&argc, &argv);
+  } catch (const Error& e) {
+    PrintError("error", e.what());
+    return 1;
+  }
+  if (cluster) {
+    try {
+      return RunRank(*cluster, argc, argv);
+    } catch (const std::exception& e) {
+      PrintError("error", cluster->Name(cluster->Rank()) + ": " + e.what());
+      cluster->Abort(1);
+    }
+  }
   Options o;
   try {
     o = ParseOptions(argc, argv);
@@ -473,7 +694,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (o.version) {
-    std::printf("vkpt %s\n", VKPT_VERSION);
+    std::printf("vkpt %s\ndistributed rendering: %s\n", VKPT_VERSION, ClusterSupport().c_str());
     return 0;
   }
   try {

@@ -58,6 +58,9 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
   --checkpoint SECONDS
                      rewrite --out every SECONDS during the render, with the samples so far
   --seed N           random seed; same seed and device give a bit-identical image [default: 0]
+  --chunk N          samples per pixel per chunk: each chunk is summed on its own and the
+                     chunks added in order, so the image depends on N (as on the seed)
+                     but not on passes or MPI ranks [default: 16]
   --max-depth N      maximum number of bounces [default: 32]
   --rr-depth N       bounces before Russian roulette starts [default: 3]
   --backend NAME     vulkan (compute shader on a Vulkan device), cpu (reference path
@@ -158,6 +161,7 @@ Options ParseOptions(int argc, const char* const* argv) {
       {"--checkpoint",
        [&](const std::string& opt, const std::string& v) { o.checkpoint = ParseNumber(opt, v, 1e-3, 1e7); }},
       {"--seed", u32(o.seed, 0, 0xFFFFFFFFu)},
+      {"--chunk", u32(o.chunkSpp, 1, 1u << 30)},
       {"--max-depth", u32(o.maxDepth, 0, 1024)},
       {"--rr-depth", u32(o.rrDepth, 0, 1024)},
       {"--threads", [&](const std::string& opt, const std::string& v) { o.threads = ParseNumber(opt, v, 1u, 1024u); }},

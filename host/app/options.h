@@ -10,6 +10,7 @@
 
 #include "bvh/bvh.h"
 #include "image/aov.h"
+#include "image/chunked_frame.h"
 #include "scene/load_limits.h"
 
 namespace vkpt {
@@ -28,6 +29,7 @@ struct Options {
   std::optional<bool> adaptive;       // --adaptive / --no-adaptive; absent: on with --noise-target
   double checkpoint = 0.0;            // --checkpoint: seconds between rewrites of --out (0: none)
   uint32_t seed = 0;
+  uint32_t chunkSpp = kDefaultChunkSpp;  // --chunk (image/chunked_frame.h)
   uint32_t maxDepth = 32;
   uint32_t rrDepth = 3;
   Backend backend = Backend::Auto;  // Vulkan when a device exists, else the CPU

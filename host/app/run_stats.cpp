@@ -40,7 +40,7 @@ JsonObject OptionsJson(const Options& o) {
   auto optionalNumber = [](const std::optional<double>& v) { return v ? JsonNumber(*v) : std::string("null"); };
   j.Int("spp", o.spp).Raw("time", optionalNumber(o.time)).Raw("noise_target", optionalNumber(o.noiseTarget));
   j.Bool("adaptive", o.Adaptive()).Raw("checkpoint", o.checkpoint > 0.0 ? JsonNumber(o.checkpoint) : "null");
-  j.Int("seed", o.seed).Int("max_depth", o.maxDepth).Int("rr_depth", o.rrDepth);
+  j.Int("seed", o.seed).Int("chunk", o.chunkSpp).Int("max_depth", o.maxDepth).Int("rr_depth", o.rrDepth);
   j.Str("backend", BackendName(o.backend)).Str("device", o.device).Int("threads", o.threads).Int("batch", o.batch);
   j.Bool("compare", o.compare).Bool("validation", o.validation).Raw("camera", optional(o.camera));
   j.Num("exposure", o.exposure)
@@ -58,6 +58,8 @@ JsonObject OptionsJson(const Options& o) {
 }
 
 }  // namespace
+
+std::string OptionsAsJson(const Options& o) { return OptionsJson(o).Text(); }
 
 std::string StatsJson(const Options& o, const RunOutcome& run) {
   const RenderResult& r = run.result;
@@ -98,6 +100,20 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   j.Num("rays_per_s", double(r.rays) / r.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));
   j.Int("non_finite_samples", r.nonFinite).Int("cut_short_samples", r.cutShort).Obj("bvh", bvh);
   j.Int("aov_samples", run.aovSamples).Raw("files", Strings(run.files));
+  if (!run.ranks.empty()) {
+    std::vector<std::string> ranks;
+    for (const RankShare& share : run.ranks) {
+      JsonObject rank;
+      rank.Str("name", share.name)
+          .Int("chunks", share.chunks)
+          .Int("bytes_sent", share.bytesSent)
+          .Num("render_s", share.renderSeconds);
+      ranks.push_back(rank.Text());
+    }
+    JsonObject mpi;
+    mpi.Int("ranks", run.ranks.size()).Int("chunk_spp", o.chunkSpp).Raw("per_rank", JsonArray(ranks));
+    j.Obj("mpi", mpi);
+  }
   if (run.reference) {
     JsonObject ref;
     ref.Str("device", run.reference->engine).Num("render_s", run.reference->seconds);

@@ -9,6 +9,7 @@
 
 #include "app/options.h"
 #include "app/render_loop.h"
+#include "dist/chunk_dealer.h"
 #include "image/film.h"
 #include "render/render_scene.h"
 #include "scene/scene.h"
@@ -39,8 +40,12 @@ struct RunOutcome {
   int exitStatus = 0;
   uint32_t aovSamples = 0;         // --aov: samples per pixel of the AOV pass
   std::vector<std::string> files;  // the image files written, --out first
+  std::vector<RankShare> ranks;    // an MPI job's ranks (empty for one process)
 };
 
 std::string StatsJson(const Options& o, const RunOutcome& run);
+
+// The "options" object of the stats alone.
+std::string OptionsAsJson(const Options& o);
 
 }  // namespace vkpt

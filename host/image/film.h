@@ -97,6 +97,8 @@ class FrameRenderer {
   virtual void AddSamples(uint32_t begin, uint32_t count, std::span<const uint8_t> active,
                           const std::function<void(double)>& progress) = 0;
   virtual FrameSums Sums() = 0;  // the sums so far (Vulkan: read back)
+  // Zeroes the sums and counters: the next samples start new sums (a chunk's, chunked_frame.h).
+  virtual void Clear() = 0;
   // The AOVs of samples [0, samples) of every pixel, the camera rays of the render's
   // first `samples` samples (shaders/shared/aov.h); independent of the passes so far.
   virtual AovSums RenderAovs(uint32_t samples) = 0;

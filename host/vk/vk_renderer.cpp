@@ -206,6 +206,14 @@ using KernelFactory = std::function<std::unique_ptr<ComputePipeline>(const uint3
                                                                      std::vector<BufferBinding> frameBindings,
                                                                      const char* name, uint32_t pushConstantBytes)>;
 
+// Zeroes a frame's sums and counters on the device.
+void ClearSums(const Context& ctx, const FrameBuffers& b) {
+  ctx.Submit([&](VkCommandBuffer cb) {
+    vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);
+  });
+}
+
 // A render in progress on the device: the frame's buffers and pipeline, kept from pass
 // to pass, so the sums persist in device memory exactly as within one pass.
 class GpuFrame final : public FrameRenderer {
@@ -253,6 +261,8 @@ class GpuFrame final : public FrameRenderer {
     }
     return f;
   }
+
+  void Clear() override { ClearSums(ctx_, b_); }
 
   AovSums RenderAovs(uint32_t samples) override {
     const uint64_t pixels = uint64_t(frame_.width) * frame_.height;
@@ -328,10 +338,7 @@ std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams
                            {shader::kBindingActive, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.active.Handle()},
                            {shader::kBindingLoopStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.loopStats.Handle()}},
                           "pathtrace", 2 * sizeof(uint32_t));
-  ctx_.Submit([&](VkCommandBuffer cb) {
-    vkCmdFillBuffer(cb, b.accum.Handle(), 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cb, b.counters.Handle(), 0, VK_WHOLE_SIZE, 0);
-  });
+  ClearSums(ctx_, b);
   return std::make_unique<GpuFrame>(ctx_, std::move(b), std::move(pipeline), std::move(kernels), p, options);
 }
 

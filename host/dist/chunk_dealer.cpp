@@ -1,0 +1,241 @@
+#include "dist/chunk_dealer.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "image/chunked_frame.h"
+#include "util/error.h"
+
+namespace vkpt {
+namespace {
+
+// The protocol: a rank sends kRequest and gets kAssign (a chunk index, or kNoChunk), then
+// sends the chunk's sums as kResult and asks again; kFailure carries a rank's error.
+enum Tag : int { kRequest = 1, kAssign, kResult, kFailure };
+constexpr uint32_t kNoChunk = 0xFFFFFFFFu;
+
+struct ChunkHeader {
+  uint32_t chunk, width, height, pad;
+  uint64_t rays, nonFinite, cutShort;
+  double seconds;
+};
+constexpr size_t kPixelBytes = 6 * sizeof(double) + sizeof(uint32_t);
+
+std::span<const uint8_t> BytesOf(const uint32_t& v) { return {reinterpret_cast<const uint8_t*>(&v), sizeof v}; }
+
+uint32_t U32(const std::vector<uint8_t>& bytes) {
+  uint32_t v = 0;
+  if (bytes.size() != sizeof v) throw Error("MPI: a message of the wrong size");
+  std::memcpy(&v, bytes.data(), sizeof v);
+  return v;
+}
+
+double Since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+[[noreturn]] void Fail(Cluster& cluster, int rank, const std::string& what) {
+  std::fprintf(stderr, "vkpt: error: %s: %s\n", cluster.Name(rank).c_str(), what.c_str());
+  std::fflush(stderr);
+  cluster.Abort(1);
+}
+
+// Rank 0's own renderer: takes chunks from the same counter as the other ranks, on a
+// thread that never calls MPI.
+class LocalRenderer {
+ public:
+  LocalRenderer(const ChunkPlan& plan, const ChunkRenderer& render) : plan_(plan), render_(render) {
+    thread_ = std::thread([this] { Run(); });
+  }
+  ~LocalRenderer() {
+    StopDealing();
+    thread_.join();
+  }
+
+  // The next chunk to deal, or kNoChunk.
+  uint32_t Deal() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return DealLocked();
+  }
+  void StopDealing() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    dealing_ = false;
+  }
+  uint32_t Dealt() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return next_;
+  }
+  // Chunks rank 0 has finished since the last call; its error, if it failed.
+  std::map<uint32_t, FrameSums> TakeFinished(std::optional<std::string>* error) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    *error = error_;
+    return std::exchange(finished_, {});
+  }
+  bool Done() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return done_;
+  }
+  uint32_t chunks = 0;
+  double seconds = 0.0;
+
+ private:
+  uint32_t DealLocked() {
+    if (!dealing_ || next_ >= plan_.Chunks()) return kNoChunk;
+    return next_++;
+  }
+  void Run() {
+    try {
+      for (;;) {
+        const uint32_t c = Deal();
+        if (c == kNoChunk) break;
+        const auto t0 = std::chrono::steady_clock::now();
+        FrameSums sums = render_(c);
+        seconds += Since(t0);
+        ++chunks;
+        std::lock_guard<std::mutex> lock(mutex_);
+        finished_.emplace(c, std::move(sums));
+      }
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      error_ = e.what();
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_ = true;
+  }
+
+  const ChunkPlan plan_;
+  const ChunkRenderer& render_;
+  std::mutex mutex_;
+  uint32_t next_ = 0;
+  bool dealing_ = true, done_ = false;
+  std::map<uint32_t, FrameSums> finished_;
+  std::optional<std::string> error_;
+  std::thread thread_;
+};
+
+}  // namespace
+
+std::vector<uint8_t> EncodeChunk(uint32_t chunk, const FrameSums& sums, double seconds) {
+  const ChunkHeader h{chunk, sums.width, sums.height, 0, sums.rays, sums.nonFinite, sums.cutShort, seconds};
+  std::vector<uint8_t> bytes(sizeof h + sums.pixels.size() * kPixelBytes);
+  std::memcpy(bytes.data(), &h, sizeof h);
+  uint8_t* at = bytes.data() + sizeof h;
+  for (const PixelSums& p : sums.pixels) {
+    const double v[6] = {p.sum.x, p.sum.y, p.sum.z, p.sumOfSquares.x, p.sumOfSquares.y, p.sumOfSquares.z};
+    std::memcpy(at, v, sizeof v);
+    std::memcpy(at + sizeof v, &p.samples, sizeof p.samples);
+    at += kPixelBytes;
+  }
+  return bytes;
+}
+
+FrameSums DecodeChunk(const std::vector<uint8_t>& bytes, uint32_t* chunk, double* seconds) {
+  ChunkHeader h;
+  if (bytes.size() < sizeof h) throw Error("MPI: a chunk's message is truncated");
+  std::memcpy(&h, bytes.data(), sizeof h);
+  const uint64_t pixels = uint64_t(h.width) * h.height;
+  if (bytes.size() != sizeof h + pixels * kPixelBytes) throw Error("MPI: a chunk's message has the wrong size");
+  FrameSums s;
+  s.width = h.width;
+  s.height = h.height;
+  s.rays = h.rays;
+  s.nonFinite = h.nonFinite;
+  s.cutShort = h.cutShort;
+  s.pixels.resize(pixels);
+  const uint8_t* at = bytes.data() + sizeof h;
+  for (PixelSums& p : s.pixels) {
+    double v[6];
+    std::memcpy(v, at, sizeof v);
+    std::memcpy(&p.samples, at + sizeof v, sizeof p.samples);
+    p.sum = {v[0], v[1], v[2]};
+    p.sumOfSquares = {v[3], v[4], v[5]};
+    at += kPixelBytes;
+  }
+  *chunk = h.chunk;
+  *seconds = h.seconds;
+  return s;
+}
+
+DealtFrame DealChunks(Cluster& cluster, const ChunkPlan& plan, const ChunkRenderer& render, const DealerHooks& hooks) {
+  DealtFrame out;
+  out.ranks.resize(cluster.Size());
+  for (int r = 0; r < cluster.Size(); ++r) out.ranks[r].name = cluster.Name(r);
+  std::map<uint32_t, FrameSums> pending;  // arrived out of order
+  int told = 0;                           // ranks told there are no more chunks
+  const auto t0 = std::chrono::steady_clock::now();
+  double lastCheckpoint = 0.0;
+  LocalRenderer local(plan, render);
+  for (;;) {
+    bool busy = false;
+    if (std::optional<Cluster::Envelope> e = cluster.Poll()) {
+      busy = true;
+      const std::vector<uint8_t> bytes = cluster.Receive(e->from, e->tag);
+      if (e->tag == kRequest) {
+        const uint32_t c = local.Deal();
+        if (c == kNoChunk) ++told;
+        cluster.Send(e->from, kAssign, BytesOf(c));
+      } else if (e->tag == kResult) {
+        uint32_t c = 0;
+        double seconds = 0.0;
+        FrameSums sums = DecodeChunk(bytes, &c, &seconds);
+        pending.emplace(c, std::move(sums));
+        ++out.ranks[e->from].chunks;
+        out.ranks[e->from].renderSeconds += seconds;
+        out.ranks[e->from].bytesSent += bytes.size();
+      } else if (e->tag == kFailure) {
+        Fail(cluster, e->from, std::string(bytes.begin(), bytes.end()));
+      }
+    }
+    std::optional<std::string> error;
+    pending.merge(local.TakeFinished(&error));
+    if (error) Fail(cluster, 0, *error);
+    for (auto it = pending.find(out.chunks); it != pending.end(); it = pending.find(out.chunks)) {
+      AddChunk(out.sums, it->second);
+      out.spp += plan.Samples(out.chunks);
+      ++out.chunks;
+      pending.erase(it);
+      busy = true;
+      if (hooks.progress) hooks.progress(double(out.chunks) / plan.Chunks());
+      if (hooks.checkpoint && hooks.checkpointSeconds > 0.0 && Since(t0) - lastCheckpoint >= hooks.checkpointSeconds &&
+          out.chunks < plan.Chunks()) {
+        hooks.checkpoint(out.sums, out.spp);
+        lastCheckpoint = Since(t0);
+      }
+    }
+    if (hooks.stopDealing && hooks.stopDealing()) local.StopDealing();
+    if (told == cluster.Size() - 1 && local.Done() && out.chunks == local.Dealt()) break;
+    if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  out.ranks[0].chunks = local.chunks;
+  out.ranks[0].renderSeconds = local.seconds;
+  return out;
+}
+
+void RenderDealtChunks(Cluster& cluster, const ChunkRenderer& render) {
+  for (;;) {
+    cluster.Send(0, kRequest, {});
+    cluster.Wait(0, kAssign);
+    const uint32_t c = U32(cluster.Receive(0, kAssign));
+    if (c == kNoChunk) return;
+    std::vector<uint8_t> result;
+    try {
+      const auto t0 = std::chrono::steady_clock::now();
+      FrameSums sums = render(c);
+      result = EncodeChunk(c, sums, Since(t0));
+    } catch (const std::exception& e) {
+      const std::string what = e.what();
+      cluster.Send(0, kFailure, {reinterpret_cast<const uint8_t*>(what.data()), what.size()});
+      cluster.Wait(0, kAssign);  // rank 0 ends the job
+    }
+    cluster.Send(0, kResult, result);
+  }
+}
+
+}  // namespace vkpt

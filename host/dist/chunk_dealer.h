@@ -1,0 +1,66 @@
+// One frame's chunks (image/chunked_frame.h) shared among the ranks of a Cluster. Rank 0
+// deals chunk indices on request, renders chunks itself on a thread of its own, and adds
+// every chunk's sums to the frame's in chunk order as they arrive, so the image is the one
+// a single process makes, bit for bit, whatever the ranks, their speeds and the order in
+// which chunks come back. A rank that is done with a chunk asks for the next: fast ranks
+// take more chunks (dynamic balancing).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dist/cluster.h"
+#include "image/film.h"
+
+namespace vkpt {
+
+struct ChunkPlan {
+  uint32_t spp = 0;       // samples per pixel of the frame
+  uint32_t chunkSpp = 0;  // of each chunk but perhaps the last
+  uint32_t Chunks() const { return (spp + chunkSpp - 1) / chunkSpp; }
+  uint32_t Begin(uint32_t chunk) const { return chunk * chunkSpp; }
+  uint32_t Samples(uint32_t chunk) const { return std::min(chunkSpp, spp - Begin(chunk)); }
+};
+
+// Renders chunk `chunk` of the plan on this rank: its sums alone.
+using ChunkRenderer = std::function<FrameSums(uint32_t chunk)>;
+
+// What one rank did.
+struct RankShare {
+  std::string name;          // "rank 1 (host)"
+  uint32_t chunks = 0;       // chunks it rendered
+  uint64_t bytesSent = 0;    // its chunks' sums as sent to rank 0 (0 for rank 0)
+  double renderSeconds = 0;  // rendering its chunks, by its own clock
+};
+
+struct DealtFrame {
+  FrameSums sums;       // chunks [0, chunks) added in order
+  uint32_t chunks = 0;  // a prefix of the plan: fewer if dealing stopped early
+  uint32_t spp = 0;     // samples per pixel of those chunks
+  std::vector<RankShare> ranks;
+};
+
+struct DealerHooks {
+  std::function<bool()> stopDealing;                               // no more chunks (time, signal)
+  std::function<void(double)> progress;                            // chunks added / planned
+  std::function<void(const FrameSums&, uint32_t spp)> checkpoint;  // the chunks added so far
+  double checkpointSeconds = 0.0;
+};
+
+// Rank 0. A failure on any rank, its own included, prints that rank's message and ends
+// the job (Cluster::Abort) before anything is written.
+DealtFrame DealChunks(Cluster& cluster, const ChunkPlan& plan, const ChunkRenderer& render,
+                      const DealerHooks& hooks = {});
+
+// Every other rank: renders the chunks rank 0 deals it until rank 0 says there are none.
+void RenderDealtChunks(Cluster& cluster, const ChunkRenderer& render);
+
+// A chunk's sums as sent (52 bytes per pixel and a header), with the seconds it took to
+// render, and back.
+std::vector<uint8_t> EncodeChunk(uint32_t chunk, const FrameSums& sums, double seconds);
+FrameSums DecodeChunk(const std::vector<uint8_t>& bytes, uint32_t* chunk, double* seconds);
+
+}  // namespace vkpt

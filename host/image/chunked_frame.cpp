@@ -1,0 +1,65 @@
+#include "image/chunked_frame.h"
+
+#include <algorithm>
+
+#include "util/error.h"
+
+namespace vkpt {
+
+void AddChunk(FrameSums& frame, const FrameSums& chunk) {
+  if (frame.pixels.empty()) {
+    frame.width = chunk.width;
+    frame.height = chunk.height;
+    frame.pixels.resize(chunk.pixels.size());
+  }
+  if (frame.pixels.size() != chunk.pixels.size()) throw Error("a chunk's size differs from its frame's");
+  for (size_t i = 0; i < frame.pixels.size(); ++i) {
+    frame.pixels[i].sum += chunk.pixels[i].sum;
+    frame.pixels[i].sumOfSquares += chunk.pixels[i].sumOfSquares;
+    frame.pixels[i].samples += chunk.pixels[i].samples;
+  }
+  frame.rays += chunk.rays;
+  frame.nonFinite += chunk.nonFinite;
+  frame.cutShort += chunk.cutShort;
+}
+
+ChunkedFrame::ChunkedFrame(std::unique_ptr<FrameRenderer> inner, uint32_t chunkSpp)
+    : inner_(std::move(inner)), chunkSpp_(chunkSpp) {
+  if (chunkSpp_ == 0) throw Error("a chunk needs at least one sample per pixel");
+}
+
+void ChunkedFrame::AddSamples(uint32_t begin, uint32_t count, std::span<const uint8_t> active,
+                              const std::function<void(double)>& progress) {
+  if (begin != done_) throw Error("a chunked frame's passes must follow each other");
+  uint32_t added = 0;
+  while (added < count) {
+    const uint32_t first = begin + added;
+    const uint32_t piece = std::min(count - added, chunkSpp_ - first % chunkSpp_);
+    std::function<void(double)> pieceProgress;
+    if (progress) pieceProgress = [&progress, added, piece, count](double f) { progress((added + f * piece) / count); };
+    inner_->AddSamples(first, piece, active, pieceProgress);
+    open_ = true;
+    added += piece;
+    if ((first + piece) % chunkSpp_ == 0) {
+      AddChunk(closed_, inner_->Sums());
+      inner_->Clear();
+      open_ = false;
+    }
+  }
+  done_ += count;
+}
+
+FrameSums ChunkedFrame::Sums() {
+  FrameSums sums = closed_;
+  if (open_ || sums.pixels.empty()) AddChunk(sums, inner_->Sums());
+  return sums;
+}
+
+void ChunkedFrame::Clear() {
+  closed_ = FrameSums{};
+  inner_->Clear();
+  done_ = 0;
+  open_ = false;
+}
+
+}  // namespace vkpt

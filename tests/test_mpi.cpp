@@ -1,0 +1,175 @@
+// Distributed rendering over MPI (dist/, app/main.cpp's RunRank), run through mpirun on
+// this machine: the image file is byte-identical for one process and for 2 and 3 ranks,
+// on the CPU backend and on lavapipe, for the Cornell box and a textured corpus model,
+// also when a slowed rank makes the ranks take unequal chunk counts; a rank failing
+// mid-render ends the job non-zero with its message and leaves no file; setup errors are
+// reported once; ranks given different frames are refused. Built only when CMake found
+// MPI (VKPT_MPIEXEC).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "test_util.h"
+
+namespace vkpt {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using test::ProcessResult;
+
+const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
+const std::string kBoxTextured = test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf");
+
+struct Folder {
+  explicit Folder(const std::string& name) : path(test::FreshTempDirectory(name)) {}
+  ~Folder() { fs::remove_all(path); }
+  std::string operator/(const std::string& file) const { return path + "/" + file; }
+  std::vector<std::string> Listing() const { return test::DirectoryListing(path); }
+  std::string path;
+};
+
+// Open MPI refuses root without these; CI runs as root.
+const std::vector<std::string> kMpiEnv = {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"};
+
+// mpirun with one app context per entry of `ranks`: each is the environment of one rank
+// ("" for none), all running `build/vkpt args`.
+ProcessResult MpiRun(const std::vector<std::string>& ranks, const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {"--oversubscribe", "--bind-to", "none"};
+  for (size_t r = 0; r < ranks.size(); ++r) {
+    std::vector<std::string> context = {"-n", "1"};
+    if (r > 0) context.insert(context.begin(), ":");
+    if (!ranks[r].empty()) {
+      context.push_back("env");
+      context.push_back(ranks[r]);
+    }
+    context.push_back(VKPT_BINARY);
+    argv.insert(argv.end(), context.begin(), context.end());
+    argv.insert(argv.end(), args.begin(), args.end());
+  }
+  return test::RunProgram(VKPT_MPIEXEC, argv, 300.0, "", kMpiEnv);
+}
+
+// Two ranks: rank 0 renders `args`, rank 1 `args` and `rank1Extra`.
+ProcessResult MpiRunTwo(const std::vector<std::string>& args, const std::vector<std::string>& rank1Extra) {
+  std::vector<std::string> argv = {"--oversubscribe", "--bind-to", "none", "-n", "1", VKPT_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const std::vector<std::string> second = {":", "-n", "1", VKPT_BINARY};
+  argv.insert(argv.end(), second.begin(), second.end());
+  argv.insert(argv.end(), args.begin(), args.end());
+  argv.insert(argv.end(), rank1Extra.begin(), rank1Extra.end());
+  return test::RunProgram(VKPT_MPIEXEC, argv, 120.0, "", kMpiEnv);
+}
+
+ProcessResult MpiRun(int ranks, const std::vector<std::string>& args) {
+  return MpiRun(std::vector<std::string>(size_t(ranks)), args);
+}
+
+std::vector<std::string> Frame(const std::string& scene, const std::string& backend, const std::string& out,
+                               std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"--scene",   scene, "--backend", backend, "--width", "40",
+                                   "--height",  "40",  "--spp",     "72",    "--chunk", "16",
+                                   "--threads", "1",   "--seed",    "9",     "--out",   out};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+uint32_t ChunksOf(const json& stats, int rank) { return stats["mpi"]["per_rank"][rank]["chunks"]; }
+
+struct Case {
+  const char* backend;
+  const std::string* scene;
+};
+
+class MpiIdentity : public ::testing::TestWithParam<Case> {};
+
+TEST_P(MpiIdentity, SameImageBytesForOneTwoAndThreeRanks) {
+  const Folder dir("mpi-identity");
+  const auto [backend, scene] = GetParam();
+  ProcessResult one = test::RunVkpt(Frame(*scene, backend, dir / "one.pfm"));
+  ASSERT_TRUE(one.ExitedWith(0)) << one.Describe();
+  const std::string expected = test::ReadFile(dir / "one.pfm");
+  for (int n : {2, 3}) {
+    const std::string out = dir / ("ranks" + std::to_string(n) + ".pfm");
+    const std::string statsPath = dir / ("ranks" + std::to_string(n) + ".json");
+    ProcessResult r = MpiRun(n, Frame(*scene, backend, out, {"--stats", statsPath}));
+    ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
+    EXPECT_TRUE(test::ReadFile(out) == expected) << n << " ranks gave other bytes than one process";
+    const json stats = json::parse(test::ReadFile(statsPath));
+    ASSERT_EQ(stats["mpi"]["ranks"], n);
+    uint32_t chunks = 0;
+    for (int k = 0; k < n; ++k) chunks += ChunksOf(stats, k);
+    EXPECT_EQ(chunks, 5u);  // 72 spp in chunks of 16
+    EXPECT_EQ(stats["spp"], 72);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, MpiIdentity,
+                         ::testing::Values(Case{"cpu", &kCornell}, Case{"vulkan", &kCornell},
+                                           Case{"cpu", &kBoxTextured}, Case{"vulkan", &kBoxTextured}),
+                         [](const auto& info) {
+                           return std::string(info.param.backend) +
+                                  (info.param.scene == &kCornell ? "Cornell" : "BoxTextured");
+                         });
+
+// Rank 1 takes 400 ms longer per chunk: rank 0 takes more of the 9 chunks, and the image
+// is still the one process's.
+TEST(Mpi, DynamicBalancingKeepsTheImage) {
+  const Folder dir("mpi-balance");
+  const std::vector<std::string> extra = {"--spp", "144", "--stats", dir / "slow.json"};
+  ProcessResult r = MpiRun({"", "VKPT_TEST_CHUNK_DELAY_MS=400"}, Frame(kCornell, "cpu", dir / "slow.pfm", extra));
+  ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
+  const json stats = json::parse(test::ReadFile(dir / "slow.json"));
+  EXPECT_GT(ChunksOf(stats, 0), ChunksOf(stats, 1) + 2) << stats["mpi"].dump();
+  EXPECT_EQ(ChunksOf(stats, 0) + ChunksOf(stats, 1), 9u);
+  ProcessResult one = test::RunVkpt(Frame(kCornell, "cpu", dir / "one.pfm", {"--spp", "144"}));
+  ASSERT_TRUE(one.ExitedWith(0)) << one.Describe();
+  EXPECT_TRUE(test::ReadFile(dir / "slow.pfm") == test::ReadFile(dir / "one.pfm"));
+}
+
+TEST(Mpi, FailingRankEndsTheJobWithoutAnImage) {
+  const Folder dir("mpi-fail");
+  ProcessResult r = MpiRun({"", "VKPT_TEST_FAIL_AFTER_CHUNKS=1"},
+                           Frame(kCornell, "cpu", dir / "fail.png", {"--spp", "400", "--stats", dir / "fail.json"}));
+  EXPECT_FALSE(r.ExitedWith(0)) << r.Describe();
+  EXPECT_NE(r.err.find("vkpt: error: rank 1 ("), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("VKPT_TEST_FAIL_AFTER_CHUNKS"), std::string::npos) << r.err;
+  EXPECT_TRUE(dir.Listing().empty()) << "left: " << testing::PrintToString(dir.Listing());
+}
+
+TEST(Mpi, SetupErrorsAreReportedOnceOrByRank) {
+  const Folder dir("mpi-setup");
+  ProcessResult missing = MpiRun(3, Frame(dir / "absent.gltf", "cpu", dir / "x.png"));
+  EXPECT_TRUE(missing.ExitedWith(1)) << missing.Describe();
+  const std::string error = "vkpt: error: " + dir / "absent.gltf";
+  const size_t first = missing.err.find(error);
+  ASSERT_NE(first, std::string::npos) << missing.err;
+  EXPECT_EQ(missing.err.find(error, first + 1), std::string::npos) << "reported more than once:\n" << missing.err;
+
+  ProcessResult device = MpiRun(2, Frame(kCornell, "cpu", dir / "x.png"));
+  ASSERT_TRUE(device.ExitedWith(0)) << device.Describe();
+  fs::remove(dir / "x.png");
+  ProcessResult one =
+      MpiRunTwo(Frame(kCornell, "cpu", dir / "x.png"), {"--backend", "vulkan", "--device", "no-such-device"});
+  EXPECT_TRUE(one.ExitedWith(1)) << one.Describe();
+  EXPECT_NE(one.err.find("vkpt: error: rank 1 ("), std::string::npos) << one.err;
+  EXPECT_NE(one.err.find("no-such-device"), std::string::npos) << one.err;
+  EXPECT_TRUE(dir.Listing().empty()) << "left: " << testing::PrintToString(dir.Listing());
+}
+
+TEST(Mpi, RanksGivenDifferentFramesAreRefused) {
+  const Folder dir("mpi-frames");
+  ProcessResult r = MpiRunTwo(Frame(kCornell, "cpu", dir / "x.png"), {"--seed", "10"});
+  EXPECT_TRUE(r.ExitedWith(2)) << r.Describe();
+  EXPECT_NE(r.err.find("different frames"), std::string::npos) << r.err;
+  ProcessResult adaptive = MpiRun(2, Frame(kCornell, "cpu", dir / "x.png", {"--noise-target", "0.01"}));
+  EXPECT_TRUE(adaptive.ExitedWith(2)) << adaptive.Describe();
+  EXPECT_TRUE(dir.Listing().empty());
+}
+
+}  // namespace
+}  // namespace vkpt
