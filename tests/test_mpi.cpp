@@ -41,7 +41,8 @@ struct Folder {
 // is leak-checked by the rest of the suite (test_chunks.cpp for the chunk sums).
 std::vector<std::string> MpiEnvironment() {
   std::vector<std::string> env = {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"};
-  if (const char* asan = std::getenv("ASAN_OPTIONS")) env.push_back(std::string("ASAN_OPTIONS=") + asan + ":detect_leaks=0");
+  if (const char* asan = std::getenv("ASAN_OPTIONS"))
+    env.push_back(std::string("ASAN_OPTIONS=") + asan + ":detect_leaks=0");
   return env;
 }
 const std::vector<std::string> kMpiEnv = MpiEnvironment();
