@@ -23,6 +23,8 @@
 
 #include "cpu/path_tracer.h"
 #include "cpu/traversal.h"
+#include "glb_writer.h"
+#include "image/image.h"
 #include "procedural.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
@@ -30,7 +32,7 @@
 #include "shared/intersect.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
-#include "image/image.h"
+#include "util/atomic_write.h"
 #include "util/error.h"
 #include "util/parallel.h"
 #include "vk/vk_renderer.h"
@@ -53,6 +55,7 @@ struct Options {
   bool json = false;
   bool markdown = false;  // one row of bench/README.md's table
   std::string quality;    // --quality REF.pfm: time to reach relMSE <= kQualityTarget
+  std::string writeGlb;   // --write-glb FILE: the procedural scene as a glTF, no benchmark
   std::string splits = "object";  // --splits: the builder as compared with Embree's
   uint32_t leafSize = BvhBuildOptions{}.maxLeafSize;
   float traversalCost = BvhBuildOptions{}.traversalCost;  // SAH cost of a node visit
@@ -66,7 +69,8 @@ constexpr int kBuildRuns = 3;
 [[noreturn]] void Usage(const std::string& why) {
   std::fprintf(stderr,
                "vkpt-bench: %s\nusage: vkpt-bench (--scene FILE | --procedural N) [--width W] [--height H] "
-               "[--threads N] [--splits object|spatial|auto] [--leaf-size N] [--traversal-cost C] [--json | --markdown] [--quality REF.pfm]\n",
+               "[--threads N] [--splits object|spatial|auto] [--leaf-size N] [--traversal-cost C] [--json | "
+               "--markdown] [--quality REF.pfm] [--write-glb FILE]\n",
                why.c_str());
   std::exit(2);
 }
@@ -94,6 +98,7 @@ Options Parse(int argc, char** argv) {
     else if (a == "--json") o.json = true;
     else if (a == "--markdown") o.markdown = true;
     else if (a == "--quality") o.quality = value();
+    else if (a == "--write-glb") o.writeGlb = value();
     else if (a == "--splits") {
       o.splits = value();
       if (!ParseSplitMode(o.splits)) Usage("--splits must be object, spatial or auto, got \"" + o.splits + "\"");
@@ -110,6 +115,7 @@ Options Parse(int argc, char** argv) {
   }
   if (o.scene.empty() == (o.procedural == 0)) Usage("give exactly one of --scene FILE and --procedural N");
   if (!o.quality.empty() && o.markdown) Usage("--quality prints text or --json, not --markdown");
+  if (!o.writeGlb.empty() && o.procedural == 0) Usage("--write-glb writes the --procedural scene");
   return o;
 }
 
@@ -560,7 +566,16 @@ void PrintReport(const Options& o, Report& rep) {
   else PrintTable(rep);
 }
 
+// --write-glb: the procedural scene as a file vkpt itself can render.
+int WriteGlb(const Options& o) {
+  const std::vector<uint8_t> glb = EncodeGlb(ProceduralScene(o.procedural));
+  WriteFileAtomically(o.writeGlb, glb);
+  std::printf("vkpt-bench: %s: %u triangles, %.1f MiB\n", o.writeGlb.c_str(), o.procedural, glb.size() / 1048576.0);
+  return 0;
+}
+
 int Run(const Options& o) {
+  if (!o.writeGlb.empty()) return WriteGlb(o);
   const unsigned threads = ThreadCount(o.threads);
   // lavapipe reads LP_NUM_THREADS when its device is created: set it first.
   setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
