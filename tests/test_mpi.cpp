@@ -3,9 +3,11 @@
 // on the CPU backend and on lavapipe, for the Cornell box and a textured corpus model,
 // also when a slowed rank makes the ranks take unequal chunk counts; a rank failing
 // mid-render ends the job non-zero with its message and leaves no file; setup errors are
-// reported once; ranks given different frames are refused. Built only when CMake found
-// MPI (VKPT_MPIEXEC).
+// reported once; ranks given different frames are refused; Ctrl-C on mpirun leaves the
+// image of the chunks done. Built only when CMake found MPI (VKPT_MPIEXEC).
 #include <gtest/gtest.h>
+
+#include <signal.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -140,6 +142,27 @@ TEST(Mpi, DynamicBalancingKeepsTheImage) {
   ProcessResult one = test::RunVkpt(Frame(kCornell, "cpu", dir / "one.pfm", {"--spp", "144"}));
   ASSERT_TRUE(one.ExitedWith(0)) << one.Describe();
   EXPECT_TRUE(test::ReadFile(dir / "slow.pfm") == test::ReadFile(dir / "one.pfm"));
+}
+
+// Ctrl-C on mpirun: rank 0 stops dealing, takes the chunks in flight and writes the image
+// of the chunks added, which is the one-process --spp render of that count, bit for bit.
+TEST(Mpi, InterruptWritesTheImageOfTheChunksDone) {
+  const Folder dir("mpi-signal");
+  std::vector<std::string> argv = {"--oversubscribe", "--bind-to", "none", "-n", "2", VKPT_BINARY};
+  const std::vector<std::string> args =
+      Frame(kCornell, "cpu", dir / "stopped.pfm", {"--spp", "100000", "--stats", dir / "stopped.json"});
+  argv.insert(argv.end(), args.begin(), args.end());
+  ProcessResult r = test::RunProgram(VKPT_MPIEXEC, argv, 120.0, "", kMpiEnv, {},
+                                     {.after = "", .signals = {SIGINT}, .delaySeconds = 2.0});
+  ASSERT_FALSE(r.timedOut) << r.Describe();
+  const json stats = json::parse(test::ReadFile(dir / "stopped.json"));
+  EXPECT_EQ(stats["stopped_by"], "signal");
+  const uint32_t spp = stats["spp"];
+  ASSERT_GT(spp, 0u);
+  EXPECT_EQ(spp % 16, 0u) << "a prefix of whole chunks";
+  ProcessResult one = test::RunVkpt(Frame(kCornell, "cpu", dir / "one.pfm", {"--spp", std::to_string(spp)}));
+  ASSERT_TRUE(one.ExitedWith(0)) << one.Describe();
+  EXPECT_TRUE(test::ReadFile(dir / "stopped.pfm") == test::ReadFile(dir / "one.pfm"));
 }
 
 TEST(Mpi, FailingRankEndsTheJobWithoutAnImage) {

@@ -123,6 +123,10 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
 SIGINT or SIGTERM during the render stops it after the current pass (about a second)
 and writes the image of the samples taken; a second one exits at once.
 
+Under mpirun (built with MPI: see --version), the processes share one frame by chunks
+and rank 0 writes the image, bit-identical to one process's (README, "Distributed
+rendering").
+
 Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error,
 3 Vulkan validation messages were reported, 4 --compare/--diff found a disagreement,
 130/143 stopped by SIGINT/SIGTERM (the image of the samples taken was written).
