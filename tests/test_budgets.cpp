@@ -7,7 +7,6 @@
 
 #include <signal.h>
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -19,7 +18,6 @@
 namespace vkpt {
 namespace {
 
-namespace fs = std::filesystem;
 using nlohmann::json;
 using test::ProcessResult;
 using test::RunVkpt;
@@ -27,15 +25,6 @@ using test::RunVkpt;
 const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
 
 json ReadJson(const std::string& path) { return json::parse(test::ReadFile(path)); }
-
-// A fresh folder holding only what the render writes there.
-struct Folder {
-  explicit Folder(const std::string& name) : path(test::FreshTempDirectory(name)) {}
-  ~Folder() { fs::remove_all(path); }
-  std::string operator/(const std::string& file) const { return path + "/" + file; }
-  std::vector<std::string> Listing() const { return test::DirectoryListing(path); }
-  std::string path;
-};
 
 std::vector<std::string> CornellArgs(const std::string& backend, uint32_t size, std::vector<std::string> extra) {
   std::vector<std::string> args = {
@@ -49,7 +38,7 @@ class Budgets : public ::testing::TestWithParam<const char*> {};
 // The render ends within the budget and one pass; its image is the --spp render of the
 // samples it reached, byte for byte.
 TEST_P(Budgets, TimeEndsWithinBudgetAndEqualsTheFixedSppRender) {
-  const Folder dir("budget-time");
+  const test::TempFolder dir("budget-time");
   const double budget = 1.5;
   ProcessResult r = RunVkpt(CornellArgs(
       GetParam(), 48, {"--time", "1.5", "--out", dir / "timed.pfm", "--stats", dir / "timed.json", "--seed", "5"}));
@@ -75,7 +64,7 @@ TEST_P(Budgets, TimeEndsWithinBudgetAndEqualsTheFixedSppRender) {
 }
 
 TEST_P(Budgets, NoiseTargetStopsTheRender) {
-  const Folder dir("budget-noise");
+  const test::TempFolder dir("budget-noise");
   ProcessResult r = RunVkpt(
       CornellArgs(GetParam(), 32, {"--noise-target", "0.02", "--out", dir / "n.pfm", "--stats", dir / "n.json"}));
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
@@ -90,7 +79,7 @@ TEST_P(Budgets, NoiseTargetStopsTheRender) {
 INSTANTIATE_TEST_SUITE_P(Backends, Budgets, ::testing::Values("cpu", "vulkan"));
 
 // A long render: stopped by the test's signals, never by its budget.
-std::vector<std::string> LongRender(const Folder& dir, std::vector<std::string> extra = {}) {
+std::vector<std::string> LongRender(const test::TempFolder& dir, std::vector<std::string> extra = {}) {
   std::vector<std::string> args =
       CornellArgs("cpu", 64, {"--time", "600", "-v", "--out", dir / "image.pfm", "--stats", dir / "stats.json"});
   args.insert(args.end(), extra.begin(), extra.end());
@@ -98,7 +87,7 @@ std::vector<std::string> LongRender(const Folder& dir, std::vector<std::string> 
 }
 
 void ExpectStoppedBySignalWithImage(int sig, int status) {
-  const Folder dir("budget-signal");
+  const test::TempFolder dir("budget-signal");
   ProcessResult r = RunVkpt(LongRender(dir), 120.0, "", {}, {}, {.after = "pass 3:", .signals = {sig}});
   ASSERT_TRUE(r.ExitedWith(status)) << r.Describe();
   EXPECT_LT(r.seconds - r.sentAt, 10.0) << "the pass after the signal took too long";
@@ -121,7 +110,7 @@ TEST(Signals, SigtermStopsAfterThePassWritesTheImageAndExits143) { ExpectStopped
 // The second SIGINT ends vkpt at once, by the signal, with no image begun and no
 // temporary file.
 TEST(Signals, SecondSigintExitsAtOnce) {
-  const Folder dir("budget-second-signal");
+  const test::TempFolder dir("budget-second-signal");
   // By pass 10 the passes take about a second each: both signals fall inside pass 11
   // (the first one, sent as pass 10 ends, would stop the render before pass 11 began).
   ProcessResult r = RunVkpt(LongRender(dir), 120.0, "", {}, {},
@@ -134,7 +123,7 @@ TEST(Signals, SecondSigintExitsAtOnce) {
 // --checkpoint: while the render goes on, --out already holds a complete image; killed
 // outright (SIGKILL: no handler runs) vkpt leaves that image and no temporary file.
 TEST(Signals, CheckpointLeavesACompleteImageDuringTheRender) {
-  const Folder dir("budget-checkpoint");
+  const test::TempFolder dir("budget-checkpoint");
   ProcessResult r = RunVkpt(LongRender(dir, {"--checkpoint", "0.5"}), 120.0, "", {}, {},
                             {.after = "checkpoint:", .signals = {SIGKILL}});
   EXPECT_EQ(r.signal, SIGKILL) << r.Describe();
@@ -144,7 +133,7 @@ TEST(Signals, CheckpointLeavesACompleteImageDuringTheRender) {
 }
 
 TEST(Signals, CheckpointsAreCountedInTheStats) {
-  const Folder dir("budget-checkpoints");
+  const test::TempFolder dir("budget-checkpoints");
   ProcessResult r = RunVkpt(CornellArgs(
       "cpu", 48, {"--time", "2", "--checkpoint", "0.3", "--out", dir / "c.png", "--stats", dir / "c.json"}));
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();

@@ -1,5 +1,9 @@
 // Rendering in passes under budgets (app/render_loop.h), in process: passes sum exactly as
-// one pass does on both backends, the pass plan keeps to its budgets, the noise estimate
+// one pass does on both backends; a chunked render (image/chunked_frame.h) cut into any
+// passes equals its chunks rendered on separate frames, in any order, and added in chunk
+// order — the identity an MPI job's merge relies on (on the CPU, whose chunk sums are
+// doubles, adding in another order changes bits; the GPU's float chunk sums a few double
+// additions add exactly in any order); the pass plan keeps to its budgets, the noise estimate
 // is what vkpt-bench measures, and adaptive sampling stays unbiased, spends its samples
 // where the noise is, and makes the same decisions on both backends.
 #include <gtest/gtest.h>
@@ -7,17 +11,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <vector>
 
 #include "app/render_loop.h"
 #include "cpu/path_tracer.h"
 #include "gpu_test.h"
+#include "image/chunked_frame.h"
 #include "image/image_compare.h"
 #include "image/noise_estimate.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
 #include "test_util.h"
+#include "util/error.h"
 #include "vk/vk_renderer.h"
 
 namespace vkpt {
@@ -85,6 +92,57 @@ TEST_F(ProgressiveGpu, PassesSumBitForBitAsOnePass) {
   const Cornell& c = TheCornellBox();
   vk::GpuRenderer gpu(test::Gpu(), c.gpu);
   ExpectPassesSumAsOnePass([&] { return gpu.BeginFrame(c.Frame(24, 7)); });
+}
+
+// 22 samples in chunks of 8: passes of 3, 9 and 10 (cutting chunks 0 and 1 and ending in
+// the unfinished chunk 2) against chunks 2, 0 and 1 rendered on their own frames.
+void ExpectChunksMergeInOrder(const std::function<std::unique_ptr<FrameRenderer>()>& begin, bool orderMatters) {
+  constexpr uint32_t kChunk = 8;
+  ChunkedFrame chunked(begin(), kChunk);
+  chunked.AddSamples(0, 3, {}, {});
+  chunked.AddSamples(3, 9, {}, {});
+  chunked.AddSamples(12, 10, {}, {});
+  std::vector<FrameSums> chunks(3);
+  for (uint32_t c : {2u, 0u, 1u}) {
+    auto frame = begin();
+    frame->AddSamples(c * kChunk, c == 2 ? 6 : kChunk, {}, {});
+    chunks[c] = frame->Sums();
+  }
+  FrameSums inOrder, reversed;
+  for (int c = 0; c < 3; ++c) AddChunk(inOrder, chunks[c]);
+  for (int c = 2; c >= 0; --c) AddChunk(reversed, chunks[c]);
+  const FrameSums sums = chunked.Sums();
+  EXPECT_TRUE(SameBits(sums, inOrder));
+  if (orderMatters) {
+    EXPECT_FALSE(SameBits(sums, reversed)) << "the chunk order never mattered: no teeth";
+  }
+  for (const PixelSums& p : sums.pixels) ASSERT_EQ(p.samples, 22u);
+
+  // One chunk is summed exactly as an unchunked frame sums it; Clear starts again.
+  auto plain = begin();
+  plain->AddSamples(0, kChunk, {}, {});
+  chunked.Clear();
+  chunked.AddSamples(0, kChunk, {}, {});
+  EXPECT_TRUE(SameBits(chunked.Sums(), plain->Sums()));
+}
+
+TEST(Progressive, CpuChunksMergeInChunkOrder) {
+  const Cornell& c = TheCornellBox();
+  ExpectChunksMergeInOrder([&] { return BeginCpuFrame(c.cpu, c.Frame(20, 11)); }, true);
+}
+
+TEST_F(ProgressiveGpu, ChunksMergeInChunkOrder) {
+  const Cornell& c = TheCornellBox();
+  vk::GpuRenderer gpu(test::Gpu(), c.gpu);
+  ExpectChunksMergeInOrder([&] { return gpu.BeginFrame(c.Frame(20, 11)); }, false);
+}
+
+TEST(Progressive, ChunkedPassesMustFollowEachOther) {
+  const Cornell& c = TheCornellBox();
+  ChunkedFrame chunked(BeginCpuFrame(c.cpu, c.Frame(20, 11)), 4);
+  chunked.AddSamples(0, 2, {}, {});
+  EXPECT_THROW(chunked.AddSamples(0, 2, {}, {}), Error);
+  EXPECT_THROW(ChunkedFrame(BeginCpuFrame(c.cpu, c.Frame(20, 11)), 0), Error);
 }
 
 TEST(Progressive, DecisionPointsAreFixedSampleCounts) {

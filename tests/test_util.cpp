@@ -55,6 +55,9 @@ std::string ProcessResult::Describe() const {
   return s + "\nstdout: " + out.substr(0, 2000) + "\nstderr: " + err.substr(0, 2000);
 }
 
+TempFolder::TempFolder(const std::string& name) : path(FreshTempDirectory(name)) {}
+TempFolder::~TempFolder() { std::filesystem::remove_all(path); }
+
 ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSeconds, const std::string& cwd,
                       const std::vector<std::string>& env, const ChildLimits& limits, const ChildSignals& signals) {
   return RunProgram(VKPT_BINARY, args, timeoutSeconds, cwd, env, limits, signals);

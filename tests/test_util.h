@@ -32,6 +32,18 @@ std::string CorpusPath(const std::string& relative);  // ../shared/gltf-corpus/r
 std::string TempPath(const std::string& name);        // unique per test process
 std::string FreshTempDirectory(const std::string& name);           // TempPath(name), created empty
 std::vector<std::string> DirectoryListing(const std::string& dir);  // entry names, sorted
+
+// A fresh folder (FreshTempDirectory) holding only what a test's run writes there,
+// removed with everything in it at the end of the scope.
+struct TempFolder {
+  explicit TempFolder(const std::string& name);
+  ~TempFolder();
+  TempFolder(const TempFolder&) = delete;
+  TempFolder& operator=(const TempFolder&) = delete;
+  std::string operator/(const std::string& file) const { return path + "/" + file; }
+  std::vector<std::string> Listing() const { return DirectoryListing(path); }
+  std::string path;
+};
 std::string ReadFile(const std::string& path);                      // every byte
 
 struct ProcessResult {
