@@ -95,8 +95,9 @@ SCALING
   echo "$scaling"
   cat <<'MODEL'
 
-A rank sends 52 bytes per pixel per chunk, plus a 64-byte header: 3.4 MB for a 256²
-chunk, 13.6 MB at 512², 108 MB at 1920 × 1080. Rank 0 adds each chunk to the frame as it
+A rank sends a 48-byte header and 52 bytes per pixel per chunk (Σf, Σf² as doubles and
+the count), or 28 when every sum is a float exactly, as a GPU's are: for a CPU rank 3.4 MB
+per 256² chunk, 13.6 MB at 512², 108 MB at 1920 × 1080; a GPU rank about half that. Rank 0 adds each chunk to the frame as it
 arrives, while its own thread renders.
 A model of k machines, each rendering a chunk in t seconds, with C chunks of B bytes and
 rank 0 receiving at b bytes/s:
@@ -107,7 +108,7 @@ rank 0 receiving at b bytes/s:
 With this machine's figures (t = 0.70 s per 256² chunk on one CPU core, B = 3.4 MB) and
 1 Gbit/s Ethernet (b ≈ 117 MB/s, B / b = 29 ms), k = 2, 4, 8, 16 machines would give
 1.99×, 3.96×, 7.8× and 15.4× (load left out), and rank 0's link would saturate near
-k = 24. On this machine 2 ranks measured 1.72–1.87× (over several runs) against the model's 1.99×: rank 0's
+k = 24. On this machine 2 ranks measured 1.72–1.88× (over several runs) against the model's 1.99×: rank 0's
 dealing and adding, and whatever else runs, share its 2 cores. The chunk count
 caps the speed-up at C: a render meant for many machines needs spp / `--chunk` of at
 least the number of ranks (`--chunk` is part of the image, like the seed: choose it once).

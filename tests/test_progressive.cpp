@@ -17,6 +17,7 @@
 
 #include "app/render_loop.h"
 #include "cpu/path_tracer.h"
+#include "dist/chunk_dealer.h"
 #include "gpu_test.h"
 #include "image/chunked_frame.h"
 #include "image/image_compare.h"
@@ -143,6 +144,26 @@ TEST(Progressive, ChunkedPassesMustFollowEachOther) {
   chunked.AddSamples(0, 2, {}, {});
   EXPECT_THROW(chunked.AddSamples(0, 2, {}, {}), Error);
   EXPECT_THROW(ChunkedFrame(BeginCpuFrame(c.cpu, c.Frame(20, 11)), 0), Error);
+}
+
+// A chunk's message (dist/chunk_dealer.h) gives back the same bits: the GPU's float sums at
+// 28 bytes per pixel, the CPU's double sums at 52; a cut message is an error.
+TEST_F(ProgressiveGpu, ChunkMessagesKeepEveryBit) {
+  const Cornell& c = TheCornellBox();
+  vk::GpuRenderer gpu(test::Gpu(), c.gpu);
+  std::unique_ptr<FrameRenderer> frames[] = {gpu.BeginFrame(c.Frame(20, 11)), BeginCpuFrame(c.cpu, c.Frame(20, 11))};
+  for (size_t k = 0; k < 2; ++k) {
+    frames[k]->AddSamples(16, 16, {}, {});
+    const FrameSums sums = frames[k]->Sums();
+    const std::vector<uint8_t> bytes = EncodeChunk(1, sums, 0.5);
+    EXPECT_EQ(bytes.size(), 48u + 400u * (k == 0 ? 28u : 52u));
+    uint32_t chunk = 0;
+    double seconds = 0.0;
+    EXPECT_TRUE(SameBits(DecodeChunk(bytes, &chunk, &seconds), sums));
+    EXPECT_EQ(chunk, 1u);
+    EXPECT_EQ(seconds, 0.5);
+    EXPECT_THROW(DecodeChunk(std::vector<uint8_t>(bytes.begin(), bytes.end() - 1), &chunk, &seconds), Error);
+  }
 }
 
 TEST(Progressive, DecisionPointsAreFixedSampleCounts) {
