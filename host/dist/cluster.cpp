@@ -7,7 +7,7 @@
 namespace vkpt {
 
 std::string Cluster::Name(int rank) const {
-  const std::string host = size_t(rank) < hosts_.size() ? hosts_[rank] : "?";
+  const std::string host = rank == Rank() ? Host() : size_t(rank) < hosts_.size() ? hosts_[rank] : "?";
   return "rank " + std::to_string(rank) + " (" + host + ")";
 }
 

@@ -19,7 +19,9 @@ class Cluster {
   virtual int Rank() const = 0;
   virtual int Size() const = 0;
   virtual const std::string& Host() const = 0;
-  std::string Name(int rank) const;  // "rank 2 (host)" by every rank's host, gathered at the start
+  // "rank 2 (host)": rank 0 knows every rank's host (gathered at the start), the others
+  // their own.
+  std::string Name(int rank) const;
 
   // Point to point, in order between two ranks for the same tag; any size (sent in parts).
   virtual void Send(int to, int tag, std::span<const uint8_t> bytes) = 0;
@@ -42,7 +44,7 @@ class Cluster {
 
  protected:
   virtual void AbortJob(int status) = 0;
-  std::vector<std::string> hosts_;
+  std::vector<std::string> hosts_;  // every rank's, at rank 0
 };
 
 // Joins the job if an MPI launcher started this process as one of several; nullptr when

@@ -36,20 +36,7 @@ class MpiCluster final : public Cluster {
     int length = 0;
     MPI_Get_processor_name(name, &length);
     host_.assign(name, size_t(length));
-    hosts_ = Gather(host_);
-    // Every rank names every rank in its messages: rank 0's list, sent to all.
-    std::string all;
-    for (const std::string& h : hosts_) all += h + '\n';
-    uint64_t n = all.size();
-    MPI_Bcast(&n, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
-    all.resize(n);
-    MPI_Bcast(all.data(), int(n), MPI_CHAR, 0, MPI_COMM_WORLD);
-    hosts_.clear();
-    for (size_t at = 0; at < all.size();) {
-      const size_t end = all.find('\n', at);
-      hosts_.push_back(all.substr(at, end - at));
-      at = end + 1;
-    }
+    hosts_ = Gather(host_);  // rank 0 names every rank; the others only name themselves
   }
   ~MpiCluster() override { MPI_Finalize(); }
 
