@@ -239,7 +239,7 @@ FrameOutcome RenderFrameOnCluster(Cluster& cluster, FrameRenderer& frame, const 
   r.sums = std::move(dealt.sums);
   r.spp = dealt.spp;
   for (uint32_t c = 0; c < dealt.chunks; ++c) r.sppPerPass.push_back(plan.Samples(c));
-  for (const PixelSums& px : r.sums.pixels) r.samples += px.samples;
+  r.samples = TotalSamples(r.sums);
   r.stoppedBy = dealt.chunks == plan.Chunks() ? StopReason::kSpp
                 : GracefulStop::Signal()      ? StopReason::kSignal
                                               : StopReason::kTime;

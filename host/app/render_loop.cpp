@@ -134,7 +134,7 @@ ProgressiveRender RenderProgressively(FrameRenderer& renderer, const RenderBudge
   out.engine = renderer.Engine();
   out.seconds = Since(t0);
   out.estimatedRelMse = EstimatedRelMse(out.sums);
-  for (const PixelSums& px : out.sums.pixels) out.samples += px.samples;
+  out.samples = TotalSamples(out.sums);
   out.activePixels =
       active.empty() ? out.sums.pixels.size() : uint64_t(std::count(active.begin(), active.end(), uint8_t(1)));
   return out;

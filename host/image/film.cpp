@@ -8,4 +8,10 @@ Image ResolveFilm(const FrameSums& sums) {
   return film.TakeImage();
 }
 
+uint64_t TotalSamples(const FrameSums& sums) {
+  uint64_t n = 0;
+  for (const PixelSums& p : sums.pixels) n += p.samples;
+  return n;
+}
+
 }  // namespace vkpt

@@ -66,6 +66,9 @@ struct FrameSums {
 // The image of the sums: every pixel through a Film.
 Image ResolveFilm(const FrameSums& sums);
 
+// Every pixel's samples added up.
+uint64_t TotalSamples(const FrameSums& sums);
+
 // Sums over one pixel's AOV samples (shaders/shared/aov.h), in double like PixelSums:
 // albedo, normal and box tests over all samples, depth and position over those that hit.
 struct AovPixelSums {
