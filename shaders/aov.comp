@@ -38,6 +38,7 @@ void main() {
   gNodeCount = params.nodeCount;
   gNodeCopies = params.nodeCopies;
   gTexelSplit = params.texelSplit;
+  gTriangleSplit = params.triangleSplit;
   uvec2 pixel = gl_GlobalInvocationID.xy;
   // Every lane runs the walk (subgroup operations count its loop passes); only those in
   // the image add what they found.

@@ -41,6 +41,9 @@ layout(constant_id = 9) const uint kSceneHasExtensionTextures = 1u;
 // 1 when the texel store needs two texel buffers: see scene_fetch.glsl.
 layout(constant_id = 10) const uint kSceneHasTwoTexelBuffers = 0u;
 #define VKPT_TWO_TEXEL_BUFFERS (kSceneHasTwoTexelBuffers != 0u)
+// 1 when the triangles need two texel buffers: see scene_fetch.glsl.
+layout(constant_id = 11) const uint kSceneHasTwoTriangleBuffers = 0u;
+#define VKPT_TWO_TRIANGLE_BUFFERS (kSceneHasTwoTriangleBuffers != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

@@ -15,6 +15,7 @@
 #include "shared/layout.h"
 
 layout(binding = kBindingTriangles) uniform usamplerBuffer triangleTexels;
+layout(binding = kBindingTrianglesHigh) uniform usamplerBuffer triangleTexelsHigh;
 layout(binding = kBindingNodes) uniform usamplerBuffer nodeTexels;
 layout(binding = kBindingMaterials) uniform usamplerBuffer materialTexels;
 layout(binding = kBindingLights) uniform usamplerBuffer lightTexels;
@@ -42,10 +43,27 @@ BvhNode FetchNode(uint i) {
   return n;
 }
 
+// The triangles in two buffers (VKPT_TWO_TRIANGLE_BUFFERS, a specialization constant of
+// the including shader): triangles from gTriangleSplit on (set by main()) are in the
+// second. With one, the branch compiles away: lavapipe would otherwise run both fetches.
+#ifndef VKPT_TWO_TRIANGLE_BUFFERS
+#define VKPT_TWO_TRIANGLE_BUFFERS false
+#endif
+uint gTriangleSplit = 0xFFFFFFFFu;
+
 Triangle FetchTriangle(uint k) {
-  uvec4 a = texelFetch(triangleTexels, int(kTexelsPerTriangle * k));
-  uvec4 b = texelFetch(triangleTexels, int(kTexelsPerTriangle * k + 1u));
-  uvec4 c = texelFetch(triangleTexels, int(kTexelsPerTriangle * k + 2u));
+  uvec4 a, b, c;
+  if (VKPT_TWO_TRIANGLE_BUFFERS && k >= gTriangleSplit) {
+    int t = int(kTexelsPerTriangle * (k - gTriangleSplit));
+    a = texelFetch(triangleTexelsHigh, t);
+    b = texelFetch(triangleTexelsHigh, t + 1);
+    c = texelFetch(triangleTexelsHigh, t + 2);
+  } else {
+    int t = int(kTexelsPerTriangle * k);
+    a = texelFetch(triangleTexels, t);
+    b = texelFetch(triangleTexels, t + 1);
+    c = texelFetch(triangleTexels, t + 2);
+  }
   Triangle t;
   t.v0 = uintBitsToFloat(a.xyz);
   t.material = a.w;

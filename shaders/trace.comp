@@ -12,13 +12,18 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = kBindingRays) readonly buffer Rays { RayQuery rays[]; };
 layout(std430, binding = kBindingHits) writeonly buffer Hits { HitRecord hits[]; };
-layout(push_constant) uniform Push { uint nodeCount; uint nodeCopies; };
+// nodeCount and nodeCopies as in FrameParams; the triangles from triangleSplit on are in a
+// second texel buffer when kTwoTriangleBuffers is 1 (scene_fetch.glsl).
+layout(push_constant) uniform Push { uint nodeCount; uint nodeCopies; uint triangleSplit; };
+layout(constant_id = 0) const uint kTwoTriangleBuffers = 0u;
+#define VKPT_TWO_TRIANGLE_BUFFERS (kTwoTriangleBuffers != 0u)
 
 #include "traverse.glsl"
 
 void main() {
   gNodeCount = nodeCount;
   gNodeCopies = nodeCopies;
+  gTriangleSplit = triangleSplit;
   uint i = gl_GlobalInvocationID.x;
   // No early return: every lane takes part in the subgroup operations of the traversal.
   bool inside = i < uint(rays.length());

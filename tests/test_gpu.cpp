@@ -124,9 +124,11 @@ std::vector<shader::RayQuery> RandomRays(const RenderScene& rs, uint32_t count, 
   return rays;
 }
 
-void CompareTraversal(const RenderScene& rs, uint32_t count, uint32_t seed, bool bruteForce) {
+// `maxTexelsPerBuffer` > 0 caps the triangles' texel buffers, splitting them in two.
+void CompareTraversal(const RenderScene& rs, uint32_t count, uint32_t seed, bool bruteForce,
+                      uint32_t maxTexelsPerBuffer = 0) {
   std::vector<shader::RayQuery> rays = RandomRays(rs, count, seed);
-  vk::GpuRenderer gpu(Gpu(), rs);
+  vk::GpuRenderer gpu(Gpu(), rs, nullptr, 0, maxTexelsPerBuffer);
   std::vector<shader::HitRecord> hits = gpu.Trace(rays);
   uint32_t mismatches = 0, ties = 0, hitCount = 0;
   for (uint32_t i = 0; i < count; ++i) {
@@ -169,6 +171,14 @@ TEST_F(GpuTest, TraversalMatchesCpuOnRandomSoup) {
   Material m{};
   Scene s = test::MakeScene(test::RandomSoup(2000, 5), {m});
   CompareTraversal(PrepareRenderScene(s), 65536, 2, true);
+}
+
+// The triangles in two texel buffers, as on a device whose maxTexelBufferElements one
+// buffer of them passes: 777 in the first, 1223 in the second.
+TEST_F(GpuTest, TraversalMatchesCpuWithTrianglesInTwoBuffers) {
+  Material m{};
+  Scene s = test::MakeScene(test::RandomSoup(2000, 5), {m});
+  CompareTraversal(PrepareRenderScene(s), 65536, 2, true, 777 * shader::kTexelsPerTriangle + 2);
 }
 
 TEST_F(GpuTest, TraversalMatchesCpuWithSpatialSplits) {
@@ -300,6 +310,24 @@ TEST_F(GpuTest, TexturedQuadShowsItsTexels) {
   EXPECT_EQ(gpuOff, 0);
   EXPECT_EQ(splitOff, 0);
   EXPECT_EQ(cpuOff, 0);
+}
+
+// Cornell's triangles split over two texel buffers at every third triangle: the image is
+// the one-buffer image, bit for bit.
+TEST_F(GpuTest, TrianglesInTwoBuffersRenderTheSameImage) {
+  Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  RenderScene rs = PrepareRenderScene(s);
+  FrameParams p = Params(rs, s, 48, 40, 8, 3);
+  const Image one = vk::GpuRenderer(Gpu(), rs).Render(p).image;
+  int identical = 0;
+  for (uint32_t split : {1u, 3u, uint32_t(rs.triangles.size()) / 2}) {
+    const Image two = vk::GpuRenderer(Gpu(), rs, nullptr, 0, split * shader::kTexelsPerTriangle).Render(p).image;
+    const bool same = two.pixels == one.pixels && two.variance == one.variance;
+    EXPECT_TRUE(same) << split << " triangles in the first buffer";
+    identical += same;
+  }
+  std::printf("Cornell (%zu triangles) with the triangles in two texel buffers: %d of 3 splits render the same bytes\n",
+              rs.triangles.size(), identical);
 }
 
 // Path regeneration (pathtrace.comp) adds each invocation's samples in sample order, as

@@ -92,7 +92,8 @@ uint32_t DifferingLookups(const RenderScene& rs, const std::vector<TextureLookup
   const uint32_t n = uint32_t(lookups.size());
   vk::Context& ctx = test::Gpu();
   vk::TexelBuffer textures = vk::UploadTexelBuffer(ctx, rs.textures.data(), rs.textures.size() * 16, "texture table");
-  vk::SplitTexelBuffer texels = vk::UploadSplitTexelBuffer(ctx, rs.texels, "texels", texelsPerBuffer);
+  vk::SplitTexelBuffer texels =
+      vk::UploadSplitTexelBuffer(ctx, rs.texels.data(), rs.texels.size() * 4, 1, "texels", texelsPerBuffer);
   EXPECT_EQ(texels.twoBuffers, texelsPerBuffer != 0);
   vk::TexelBuffer decode = vk::UploadTexelBuffer(ctx, rs.texelDecode.data(), rs.texelDecode.size() * 4, "decode");
   vk::Buffer in = vk::UploadStorage(ctx, lookups.data(), n * sizeof(TextureLookup), "lookups");

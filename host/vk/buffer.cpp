@@ -113,18 +113,24 @@ TexelBuffer UploadTexelBuffer(const Context& ctx, const void* data, size_t bytes
   return t;
 }
 
-SplitTexelBuffer UploadSplitTexelBuffer(const Context& ctx, std::span<const uint32_t> words, const std::string& what,
-                                        uint32_t maxTexelsPerBuffer) {
+SplitTexelBuffer UploadSplitTexelBuffer(const Context& ctx, const void* data, size_t bytes, uint32_t texelsPerElement,
+                                        const std::string& what, uint32_t maxTexelsPerBuffer) {
   const uint32_t limit = ctx.Properties().limits.maxTexelBufferElements;
   const uint64_t perBuffer = maxTexelsPerBuffer ? std::min(maxTexelsPerBuffer, limit) : limit;
-  const uint64_t texels = (words.size() + 3) / 4;
+  const uint64_t elementBytes = uint64_t(texelsPerElement) * 16;
+  const uint64_t elements = (bytes + elementBytes - 1) / elementBytes;
+  const uint64_t elementsPerBuffer = std::max<uint64_t>(perBuffer / texelsPerElement, 1);
   SplitTexelBuffer s;
-  s.twoBuffers = texels > perBuffer;
-  s.split = uint32_t(std::min(texels, perBuffer));
-  const size_t lowWords = std::min<size_t>(words.size(), size_t(s.split) * 4);
-  s.low = UploadTexelBuffer(ctx, words.data(), lowWords * 4, what);
-  // Past two buffers UploadTexelBuffer refuses the second, naming the limit.
-  s.high = UploadTexelBuffer(ctx, words.data() + lowWords, (words.size() - lowWords) * 4, what + " (second buffer)");
+  s.twoBuffers = elements > elementsPerBuffer;
+  s.split = uint32_t(std::min(elements, elementsPerBuffer));
+  if (elements - s.split > limit / texelsPerElement)
+    throw Error("the scene's " + what + " need " + std::to_string(elements * texelsPerElement) +
+                " texels of 16 bytes, more than two texel buffers hold on " + ctx.DeviceName() + " (at most " +
+                std::to_string(limit) + " texels each, maxTexelBufferElements); render this scene with --backend cpu");
+  const size_t lowBytes = std::min<size_t>(bytes, size_t(s.split * elementBytes));
+  s.low = UploadTexelBuffer(ctx, data, lowBytes, what);
+  s.high =
+      UploadTexelBuffer(ctx, static_cast<const uint8_t*>(data) + lowBytes, bytes - lowBytes, what + " (second buffer)");
   return s;
 }
 

@@ -75,16 +75,18 @@ struct TexelBuffer {
 };
 TexelBuffer UploadTexelBuffer(const Context& ctx, const void* data, size_t bytes, const std::string& what);
 
-// 32-bit words in one texel buffer, or in two when one cannot hold them: the first
-// `split` RGBA32UI texels in `low`, the rest in `high` (a 1-texel dummy when one
-// suffices). Texels per buffer: at most maxTexelsPerBuffer, 0 meaning the device's
-// maxTexelBufferElements (tests pass fewer, to split small stores).
+// An array of elements of `texelsPerElement` RGBA32UI texels in one texel buffer, or in
+// two when one cannot hold it: the first `split` elements in `low`, the rest in `high` (a
+// 1-texel dummy when one suffices). No element straddles the two, so a shader reads each
+// from one buffer. Texels per buffer: at most maxTexelsPerBuffer, 0 meaning the device's
+// maxTexelBufferElements (tests pass fewer, to split small arrays); past two buffers the
+// upload is refused, naming that limit.
 struct SplitTexelBuffer {
   TexelBuffer low, high;
   uint32_t split = 0;
   bool twoBuffers = false;
 };
-SplitTexelBuffer UploadSplitTexelBuffer(const Context& ctx, std::span<const uint32_t> words, const std::string& what,
-                                        uint32_t maxTexelsPerBuffer = 0);
+SplitTexelBuffer UploadSplitTexelBuffer(const Context& ctx, const void* data, size_t bytes, uint32_t texelsPerElement,
+                                        const std::string& what, uint32_t maxTexelsPerBuffer = 0);
 
 }  // namespace vkpt::vk

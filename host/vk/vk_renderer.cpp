@@ -31,6 +31,14 @@ TexelBuffer UploadArray(const Context& ctx, std::span<const T> v, const char* wh
   return UploadTexelBuffer(ctx, v.data(), v.size() * sizeof(T), what);
 }
 
+// An array of whole-texel structs, in two texel buffers if one cannot hold it.
+template <class T>
+SplitTexelBuffer UploadSplitArray(const Context& ctx, std::span<const T> v, const char* what,
+                                  uint32_t maxTexelsPerBuffer) {
+  static_assert(sizeof(T) % 16 == 0);
+  return UploadSplitTexelBuffer(ctx, v.data(), v.size() * sizeof(T), sizeof(T) / 16, what, maxTexelsPerBuffer);
+}
+
 // Samples per invocation for a scene whose worst SIMD group needed `passesPerSample` loop
 // passes per sample in the last submission: a quarter of lavapipe's loop budget, so that
 // a run of unluckier samples still fits (a group past the budget is reported as cut
@@ -130,11 +138,11 @@ void DispatchSamples(const Context& ctx, const ComputePipeline& pipeline, const 
 }  // namespace
 
 GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv, size_t spirvBytes,
-                         uint32_t texelsPerBuffer)
+                         uint32_t maxTexelsPerBuffer)
     : ctx_(ctx),
       spirv_(spirv ? spirv : kPathTraceSpirv),
       spirvBytes_(spirv ? spirvBytes : sizeof(kPathTraceSpirv)),
-      triangles_(UploadArray<shader::Triangle>(ctx, scene.triangles, "triangles")),
+      triangles_(UploadSplitArray<shader::Triangle>(ctx, scene.triangles, "triangles", maxTexelsPerBuffer)),
       nodes_(UploadArray<shader::BvhNode>(ctx, scene.nodes, "BVH nodes")),
       materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
       lights_(UploadArray<shader::Light>(ctx, scene.lights, "lights")),
@@ -145,7 +153,8 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       tangents_(UploadArray<shader::TriangleTangents>(ctx, scene.tangents, "tangents")),
       textureRefs_(UploadArray<shader::TextureRef>(ctx, scene.textureRefs, "material textures")),
       textures_(UploadArray<shader::Texture>(ctx, scene.textures, "texture table")),
-      texels_(UploadSplitTexelBuffer(ctx, scene.texels, "texture texels", texelsPerBuffer)),
+      texels_(UploadSplitTexelBuffer(ctx, scene.texels.data(), scene.texels.size() * sizeof(uint32_t), 1,
+                                     "texture texels", maxTexelsPerBuffer)),
       texelDecode_(UploadArray<float>(ctx, scene.texelDecode, "texel decode tables")),
       envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
       envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
@@ -167,7 +176,8 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
 }
 
 std::vector<BufferBinding> GpuRenderer::SceneBindings() const {
-  return {TexelBinding(shader::kBindingTriangles, triangles_),
+  return {TexelBinding(shader::kBindingTriangles, triangles_.low),
+          TexelBinding(shader::kBindingTrianglesHigh, triangles_.high),
           TexelBinding(shader::kBindingNodes, nodes_),
           TexelBinding(shader::kBindingMaterials, materials_),
           TexelBinding(shader::kBindingLights, lights_),
@@ -196,7 +206,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           hasNormalMaps_ ? 1u : 0u,
           hasAlpha_ ? 1u : 0u,
           hasExtensionTextures_ ? 1u : 0u,
-          texels_.twoBuffers ? 1u : 0u};
+          texels_.twoBuffers ? 1u : 0u,
+          triangles_.twoBuffers ? 1u : 0u};
 }
 
 namespace {
@@ -324,6 +335,7 @@ std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams
   FrameBuffers b = MakeFrameBuffers(ctx_, uint64_t(frame.width) * frame.height);
   shader::FrameParams p = frame;
   p.texelSplit = texels_.split;
+  p.triangleSplit = triangles_.split;
   KernelFactory kernels = [this, p](const uint32_t* spirv, size_t spirvBytes, std::vector<BufferBinding> bindings,
                                     const char* name, uint32_t pushConstantBytes) {
     std::vector<BufferBinding> scene = SceneBindings();
@@ -366,12 +378,13 @@ std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQ
   Buffer rayBuffer = Upload(ctx_, rays, "rays");
   Buffer hits = StorageBuffer(ctx_, rays.size() * sizeof(shader::HitRecord), "hits");
   ComputePipeline pipeline(ctx_, spirv ? spirv : kTraceSpirv, spirv ? spirvBytes : sizeof(kTraceSpirv),
-                           {TexelBinding(shader::kBindingTriangles, triangles_),
+                           {TexelBinding(shader::kBindingTriangles, triangles_.low),
+                            TexelBinding(shader::kBindingTrianglesHigh, triangles_.high),
                             TexelBinding(shader::kBindingNodes, nodes_),
                             {shader::kBindingRays, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, rayBuffer.Handle()},
                             {shader::kBindingHits, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, hits.Handle()}},
-                           "trace", 2 * sizeof(uint32_t));
-  const uint32_t push[2] = {nodeCount_, nodeCopies_};
+                           "trace", 3 * sizeof(uint32_t), {triangles_.twoBuffers ? 1u : 0u});
+  const uint32_t push[3] = {nodeCount_, nodeCopies_, triangles_.split};
   Buffer hitsHost = ReadbackBuffer(ctx_, hits.Size(), "hits readback");
   const uint32_t groups = uint32_t((rays.size() + 63) / 64);
   auto t0 = std::chrono::steady_clock::now();

@@ -33,9 +33,10 @@ class GpuRenderer {
  public:
   // Uploads the scene. `spirv` defaults to the embedded pathtrace.comp; tests pass
   // deliberately wrong variants.
-  // `texelsPerBuffer` caps the texel store's buffers below the device's limit (tests).
+  // `maxTexelsPerBuffer` caps the buffers of the arrays that may take two (triangles, the
+  // texel store) below the device's limit (tests).
   GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv = nullptr, size_t spirvBytes = 0,
-              uint32_t texelsPerBuffer = 0);
+              uint32_t maxTexelsPerBuffer = 0);
   // A render in progress (params.sampleBegin and sampleCount are ignored: each pass
   // names its samples); it must not outlive this renderer. options.progress is unused:
   // each pass takes its own.
@@ -60,7 +61,8 @@ class GpuRenderer {
   const uint32_t* spirv_;
   size_t spirvBytes_;
   // The scene is read as texel buffers (shaders/scene_fetch.glsl says why).
-  TexelBuffer triangles_, nodes_, materials_, lights_, ggxAlbedo_, shading_;
+  SplitTexelBuffer triangles_;  // in two buffers if one cannot hold them
+  TexelBuffer nodes_, materials_, lights_, ggxAlbedo_, shading_;
   // The vertex colours; without any, one zero texel that the shader never reads.
   TexelBuffer vertexColors_;
   // Texture coordinates and textures (shared/texture.h); one zero texel each without.
@@ -70,7 +72,7 @@ class GpuRenderer {
   // The environment map's texels and CDFs; without a map one zero texel each, so that the
   // descriptor set is complete all the same.
   TexelBuffer envRadiance_, envDistribution_;
-  // What the scene has, for pathtrace.comp's specialization constants 0-10 (the frame
+  // What the scene has, for pathtrace.comp's specialization constants 0-11 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
   uint32_t lightTypes_ = 0;          // bit 1 << type for each type in the light table
   bool hasGlossy_;                   // some triangle's material is not Lambertian

@@ -37,6 +37,9 @@ const uint kBindingTangents = 20u;          // texel buffer of TriangleTangents,
 // The texels past the first FrameParams::texelSplit, when one texel buffer cannot hold the
 // store (its device's maxTexelBufferElements); else a 1-texel dummy.
 const uint kBindingTexelsHigh = 22u;
+// The triangles from FrameParams::triangleSplit on, when one texel buffer cannot hold them;
+// else a 1-texel dummy (trace.comp takes the split as a push constant).
+const uint kBindingTrianglesHigh = 25u;
 // Adaptive sampling: per pixel 1 if it takes this pass's samples, else 0 (read when
 // FrameParams::adaptive is 1).
 const uint kBindingActive = 23u;
@@ -312,9 +315,9 @@ struct FrameParams {
   float envIntensity;    // radiance scale (--env-intensity)
   float envRotationCos;  // the map turned by α about +Y (--env-rotation): cos α, sin α
   float envRotationSin;
-  uint texelSplit;  // RGBA32UI texels of the store in kBindingTexels; the rest are in kBindingTexelsHigh
-  uint adaptive;    // 1: only the pixels kBindingActive marks take samples
-  uint pad5;        // std140 rounds the struct up to a multiple of 16 bytes
+  uint texelSplit;     // RGBA32UI texels of the store in kBindingTexels; the rest are in kBindingTexelsHigh
+  uint adaptive;       // 1: only the pixels kBindingActive marks take samples
+  uint triangleSplit;  // Triangles in kBindingTriangles; the rest are in kBindingTrianglesHigh
 };
 
 VKPT_END_NAMESPACE
