@@ -167,9 +167,15 @@ TEST_F(ProgressiveGpu, ChunkMessagesKeepEveryBit) {
 }
 
 TEST(Progressive, DecisionPointsAreFixedSampleCounts) {
-  const std::vector<std::pair<uint32_t, uint32_t>> expected = {{0, 16},  {15, 16}, {16, 24}, {24, 32},
-                                                               {31, 32}, {32, 40}, {40, 50}, {50, 62}};
-  for (auto [spp, next] : expected) EXPECT_EQ(NextDecisionPoint(spp), next) << spp;
+  const std::vector<std::pair<uint32_t, uint32_t>> single = {{0, 16},  {15, 16}, {16, 24}, {24, 32},
+                                                             {31, 32}, {32, 40}, {40, 50}, {50, 62}};
+  for (auto [spp, next] : single) EXPECT_EQ(NextDecisionPoint(spp, 1), next) << spp;
+  // In chunks of 16: the same points rounded up to whole chunks (24 → 32, 40 → 48, 50 → 64).
+  const std::vector<std::pair<uint32_t, uint32_t>> chunked = {{0, 16},  {15, 16}, {16, 32}, {31, 32},
+                                                              {32, 48}, {48, 64}, {64, 80}, {96, 128}};
+  for (auto [spp, next] : chunked) EXPECT_EQ(NextDecisionPoint(spp, 16), next) << spp;
+  EXPECT_EQ(NextDecisionPoint(0, 40), 40u);
+  EXPECT_EQ(NextDecisionPoint(40, 40), 80u);
 }
 
 TEST(Progressive, PassPlanKeepsToTheBudgets) {
@@ -191,8 +197,12 @@ TEST(Progressive, PassPlanKeepsToTheBudgets) {
   p.elapsed = 9.95;
   EXPECT_EQ(NextPassSpp(b, p), 0u);  // less than a sample's time left: stop
   b.seconds.reset();
-  p = {.done = 30, .lastPass = 8, .secondsPerSpp = 0.001, .decisions = true};
+  b.adaptive = true;
+  p = {.done = 30, .lastPass = 8, .secondsPerSpp = 0.001};
   EXPECT_EQ(NextPassSpp(b, p), 2u);  // never past a decision point (32)
+  b.chunkSpp = 16;
+  p.done = 33;
+  EXPECT_EQ(NextPassSpp(b, p), 15u);  // nor past one between chunks (48)
 }
 
 // The estimate is Var[mean] / (mean² + 0.01), averaged over channels and pixels: two

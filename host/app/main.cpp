@@ -125,6 +125,7 @@ RenderBudget BudgetFromOptions(const Options& o) {
   b.adaptive = o.Adaptive();
   if (o.noiseTarget) b.adaptiveThreshold = *o.noiseTarget;
   b.checkpointSeconds = o.checkpoint;
+  b.chunkSpp = o.chunkSpp;
   return b;
 }
 
@@ -211,24 +212,42 @@ ChunkRenderer ChunkRendererOf(FrameRenderer& frame, const ChunkPlan& plan) {
   const long delayMs = EnvironmentNumber("VKPT_TEST_CHUNK_DELAY_MS", 0);
   const long failAfter = EnvironmentNumber("VKPT_TEST_FAIL_AFTER_CHUNKS", -1);
   auto rendered = std::make_shared<long>(0);
-  return [&frame, plan, delayMs, failAfter, rendered](uint32_t chunk) {
+  return [&frame, plan, delayMs, failAfter, rendered](uint32_t chunk, std::span<const uint8_t> active) {
     if ((*rendered)++ == failAfter)
       throw Error("failing at chunk " + std::to_string(chunk) + " (VKPT_TEST_FAIL_AFTER_CHUNKS)");
     if (delayMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
     frame.Clear();
-    frame.AddSamples(plan.Begin(chunk), plan.Samples(chunk), {}, {});
+    frame.AddSamples(plan.Begin(chunk), plan.Samples(chunk), active, {});
     return frame.Sums();
   };
 }
 
 // RenderFrame on rank 0 of an MPI job: the chunks dealt among the ranks (dist/chunk_dealer.h)
-// until --spp, --time or a signal ends the dealing, then the AOV pass here.
+// until --spp, --time, --noise-target, converged pixels or a signal ends the dealing,
+// with the adaptive decisions of RenderProgressively, then the AOV pass here.
 FrameOutcome RenderFrameOnCluster(Cluster& cluster, FrameRenderer& frame, const Options& o) {
   FrameOutcome out;
   const ChunkPlan plan{o.spp, o.chunkSpp};
+  const RenderBudget budget = BudgetFromOptions(o);
   const auto t0 = std::chrono::steady_clock::now();
   DealerHooks hooks;
-  hooks.progress = ProgressLine();
+  std::optional<Decision> last;  // of the last decision point
+  if (budget.Decisions()) {
+    hooks.decisions.nextPoint = [&o](uint32_t spp) { return NextDecisionPoint(spp, o.chunkSpp); };
+    hooks.decisions.decide = [&](const FrameSums& sums, uint32_t spp, std::vector<uint8_t>& active) {
+      last = Decide(budget, sums, active);
+      if (o.verbose) std::printf("  decision at %u spp%s\n", spp, last->report.c_str());
+      return last->stop.has_value();
+    };
+  }
+  // The finished fraction, as RenderProgressively counts it: of --spp, --time or (relMSE
+  // falling as 1/n) the noise target, whichever is nearest.
+  if (std::function<void(double)> line = ProgressLine())
+    hooks.progress = [&, line](double f) {
+      if (o.time) f = std::max(f, SecondsSince(t0) / *o.time);
+      if (o.noiseTarget && last) f = std::max(f, *o.noiseTarget / last->noise);
+      line(std::min(f, 1.0));
+    };
   hooks.stopDealing = [&] { return GracefulStop::Signal() != 0 || (o.time && SecondsSince(t0) >= *o.time); };
   hooks.checkpoint = [&o](const FrameSums& sums, uint32_t spp) { WriteCheckpoint(o, sums, spp); };
   hooks.checkpointSeconds = o.checkpoint;
@@ -240,12 +259,13 @@ FrameOutcome RenderFrameOnCluster(Cluster& cluster, FrameRenderer& frame, const 
   r.spp = dealt.spp;
   for (uint32_t c = 0; c < dealt.chunks; ++c) r.sppPerPass.push_back(plan.Samples(c));
   r.samples = TotalSamples(r.sums);
-  r.stoppedBy = dealt.chunks == plan.Chunks() ? StopReason::kSpp
-                : GracefulStop::Signal()      ? StopReason::kSignal
-                                              : StopReason::kTime;
+  r.stoppedBy = dealt.decidedToStop             ? *last->stop
+                : dealt.chunks == plan.Chunks() ? StopReason::kSpp
+                : GracefulStop::Signal()        ? StopReason::kSignal
+                                                : StopReason::kTime;
   r.signal = GracefulStop::Signal();
   r.estimatedRelMse = EstimatedRelMse(r.sums);
-  r.activePixels = r.sums.pixels.size();
+  r.activePixels = last ? last->activePixels : r.sums.pixels.size();
   r.engine = "mpi: " + std::to_string(cluster.Size()) + " ranks, rank 0 " + frame.Engine();
   out.ranks = std::move(dealt.ranks);
   RenderAovPass(frame, o, out);
@@ -623,8 +643,6 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
   try {
     o = ParseOptions(argc, argv);
     if (o.compare) throw UsageError("--compare renders in one process; run it without mpirun");
-    if (o.noiseTarget || o.Adaptive())
-      throw UsageError("--noise-target and --adaptive are not supported across MPI ranks; use --spp or --time");
     if (!o.diff.empty() || o.listDevices || o.help || o.version)
       throw UsageError("--diff, --list-devices, --help and --version run in one process; run them without mpirun");
   } catch (const UsageError& e) {

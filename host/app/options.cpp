@@ -43,7 +43,8 @@ Renders a glTF 2.0 scene (.gltf or .glb) by Monte Carlo path tracing.
                      BVH build and upload); every pixel gets the same samples
   --noise-target X   stop once the image's estimated relMSE (from each pixel's variance,
                      as vkpt-bench measures against a reference) is at most X, checked
-                     at 16, 24, 32, 40, 50... spp; turns on --adaptive
+                     at 16, 24, 32, 40, 50... spp rounded up to whole chunks (16, 32,
+                     48, 64, 80, 96, 128... with --chunk 16); turns on --adaptive
   --adaptive         adaptive sampling: at those same counts, pixels whose estimated
                      error (and their neighbours') is below --noise-target, else 1e-3,
                      stop taking samples [default: on with --noise-target]

@@ -30,10 +30,31 @@ const char* StopReasonName(StopReason r) {
   }
 }
 
-uint32_t NextDecisionPoint(uint32_t spp) {
-  uint32_t point = kFirstDecision;
-  while (point <= spp) point += std::max(8u, point / 4);
-  return point;
+uint32_t NextDecisionPoint(uint32_t spp, uint32_t chunkSpp) {
+  const uint64_t step = std::max(chunkSpp, 1u);
+  for (uint64_t point = kFirstDecision;; point += std::max<uint64_t>(8, point / 4)) {
+    const uint64_t aligned = (point + step - 1) / step * step;
+    if (aligned > spp) return uint32_t(std::min<uint64_t>(aligned, UINT32_MAX));
+  }
+}
+
+Decision Decide(const RenderBudget& budget, const FrameSums& sums, std::vector<uint8_t>& active) {
+  Decision d;
+  d.noise = EstimatedRelMse(sums);
+  char report[160];
+  std::snprintf(report, sizeof report, ", estimated relMSE %.4g", d.noise);
+  d.report = report;
+  if (budget.adaptive) {
+    d.activePixels = UpdateActivePixels(sums, budget.adaptiveThreshold, active);
+    std::snprintf(report, sizeof report, ", %llu of %zu pixels active", (unsigned long long)d.activePixels,
+                  active.size());
+    d.report += report;
+    if (d.activePixels == 0) d.stop = StopReason::kConverged;
+  } else {
+    d.activePixels = sums.pixels.size();
+  }
+  if (budget.noiseTarget && d.noise <= *budget.noiseTarget) d.stop = StopReason::kNoiseTarget;
+  return d;
 }
 
 uint32_t NextPassSpp(const RenderBudget& budget, const PassPlan& plan, double passSeconds) {
@@ -49,19 +70,18 @@ uint32_t NextPassSpp(const RenderBudget& budget, const PassPlan& plan, double pa
     }
   }
   n = std::min(n, budget.maxSpp - plan.done);
-  if (plan.decisions) n = std::min(n, NextDecisionPoint(plan.done) - plan.done);
+  if (budget.Decisions()) n = std::min(n, NextDecisionPoint(plan.done, budget.chunkSpp) - plan.done);
   return n;
 }
 
 ProgressiveRender RenderProgressively(FrameRenderer& renderer, const RenderBudget& budget,
                                       const RenderLoopHooks& hooks) {
   ProgressiveRender out;
-  const bool decisions = budget.adaptive || budget.noiseTarget.has_value();
+  const bool decisions = budget.Decisions();
   std::vector<uint8_t> active;  // empty: every pixel
   FrameSums sums;
   bool fresh = false;  // `sums` holds every sample taken
   PassPlan plan;
-  plan.decisions = decisions;
   double noise = INFINITY;
   const auto t0 = std::chrono::steady_clock::now();
   double lastCheckpoint = 0.0;
@@ -101,19 +121,13 @@ ProgressiveRender RenderProgressively(FrameRenderer& renderer, const RenderBudge
                   plan.done - 1, passSeconds);
     std::string line = report;
     std::optional<StopReason> stop;
-    if (decisions && plan.done == NextDecisionPoint(plan.done - 1)) {
+    if (decisions && plan.done == NextDecisionPoint(plan.done - 1, budget.chunkSpp)) {
       sums = renderer.Sums();
       fresh = true;
-      noise = EstimatedRelMse(sums);
-      std::snprintf(report, sizeof report, ", estimated relMSE %.4g", noise);
-      line += report;
-      if (budget.adaptive) {
-        const uint64_t left = UpdateActivePixels(sums, budget.adaptiveThreshold, active);
-        std::snprintf(report, sizeof report, ", %llu of %zu pixels active", (unsigned long long)left, active.size());
-        line += report;
-        if (left == 0) stop = StopReason::kConverged;
-      }
-      if (budget.noiseTarget && noise <= *budget.noiseTarget) stop = StopReason::kNoiseTarget;
+      const Decision d = Decide(budget, sums, active);
+      noise = d.noise;
+      line += d.report;
+      stop = d.stop;
     }
     if (hooks.passReport) hooks.passReport(line);
     if (stop) {

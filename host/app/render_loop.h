@@ -20,6 +20,8 @@ struct RenderBudget {
   bool adaptive = false;              // --adaptive: converged pixels stop taking samples
   double adaptiveThreshold = 1e-3;    // a pixel's estimated error below which it stops
   double checkpointSeconds = 0.0;     // --checkpoint: seconds between writes (0: none)
+  uint32_t chunkSpp = 1;              // --chunk: decisions fall between chunks
+  bool Decisions() const { return adaptive || noiseTarget.has_value(); }
 };
 
 // kConverged: adaptive sampling without a noise target found every pixel below its
@@ -28,10 +30,23 @@ enum class StopReason { kSpp, kTime, kNoiseTarget, kConverged, kSignal };
 const char* StopReasonName(StopReason r);  // "spp", "time", "noise_target", "converged", "signal"
 
 // Adaptive decisions and noise checks happen only when the render reaches one of these
-// sample counts (16, 24, 32, 40, 50, …: each a quarter more, at least 8), never at a
-// moment set by the clock, so that for a given seed and device the image depends on the
-// samples taken alone.
-uint32_t NextDecisionPoint(uint32_t spp);
+// sample counts, never at a moment set by the clock, so that for a given seed and device
+// the image depends on the samples taken alone: 16, 24, 32, 40, 50, … (each a quarter
+// more, at least 8) rounded up to whole chunks of `chunkSpp` (16, 32, 48, 64, 80, 96,
+// 128, … for 16), so that no decision falls inside a chunk and an MPI job, which deals
+// whole chunks, makes the decisions a single process makes.
+uint32_t NextDecisionPoint(uint32_t spp, uint32_t chunkSpp);
+
+// What a decision point finds in the sums so far: their estimated relMSE, with adaptive
+// sampling the pixels that go on (`active`, empty: every pixel), and whether the render
+// stops there.
+struct Decision {
+  double noise = 0.0;
+  uint64_t activePixels = 0;
+  std::optional<StopReason> stop;
+  std::string report;  // ", estimated relMSE …[, N of M pixels active]"
+};
+Decision Decide(const RenderBudget& budget, const FrameSums& sums, std::vector<uint8_t>& active);
 
 // How many samples per pixel the next pass takes: about `passSeconds` of work at the rate
 // of the last pass (at most twice its samples), within the time left and the --spp
@@ -41,7 +56,6 @@ struct PassPlan {
   uint32_t lastPass = 0;       // samples of the last pass (0: none yet)
   double secondsPerSpp = 0.0;  // of the last pass
   double elapsed = 0.0;        // rendering seconds so far
-  bool decisions = false;      // adaptive sampling or a noise target
 };
 uint32_t NextPassSpp(const RenderBudget& budget, const PassPlan& plan, double passSeconds = 1.0);
 

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <exception>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -16,10 +17,15 @@
 namespace vkpt {
 namespace {
 
-// The protocol: a rank sends kRequest and gets kAssign (a chunk index, or kNoChunk), then
-// sends the chunk's sums as kResult and asks again; kFailure carries a rank's error.
+// The protocol: a rank sends kRequest and gets kAssign (a chunk index, or kNoChunk, and
+// the active pixels when they changed since its last chunk), then sends the chunk's sums
+// as kResult and asks again; kFailure carries a rank's error. A request made while every
+// chunk before the next decision point is out waits for that decision.
 enum Tag : int { kRequest = 1, kAssign, kResult, kFailure };
 constexpr uint32_t kNoChunk = 0xFFFFFFFFu;
+constexpr uint32_t kNotYet = 0xFFFFFFFEu;  // none before the next decision (never sent)
+
+using ActivePixels = std::shared_ptr<const std::vector<uint8_t>>;
 
 struct ChunkHeader {
   uint32_t chunk, width, height;
@@ -62,13 +68,21 @@ void GetPixels(const uint8_t* at, FrameSums& sums) {
   }
 }
 
-std::span<const uint8_t> BytesOf(const uint32_t& v) { return {reinterpret_cast<const uint8_t*>(&v), sizeof v}; }
+// kAssign: the chunk, whether the active pixels follow, and those.
+std::vector<uint8_t> AssignmentMessage(uint32_t chunk, const std::vector<uint8_t>* active) {
+  const uint32_t head[2] = {chunk, active ? 1u : 0u};
+  std::vector<uint8_t> bytes(sizeof head + (active ? active->size() : 0));
+  std::memcpy(bytes.data(), head, sizeof head);
+  if (active && !active->empty()) std::memcpy(bytes.data() + sizeof head, active->data(), active->size());
+  return bytes;
+}
 
-uint32_t U32(const std::vector<uint8_t>& bytes) {
-  uint32_t v = 0;
-  if (bytes.size() != sizeof v) throw Error("MPI: a message of the wrong size");
-  std::memcpy(&v, bytes.data(), sizeof v);
-  return v;
+uint32_t ReadAssignment(const std::vector<uint8_t>& bytes, std::vector<uint8_t>& active) {
+  uint32_t head[2];
+  if (bytes.size() < sizeof head) throw Error("MPI: an assignment message is truncated");
+  std::memcpy(head, bytes.data(), sizeof head);
+  if (head[1]) active.assign(bytes.begin() + sizeof head, bytes.end());
+  return head[0];
 }
 
 double Since(std::chrono::steady_clock::time_point t0) {
@@ -81,11 +95,12 @@ double Since(std::chrono::steady_clock::time_point t0) {
   cluster.Abort(1);
 }
 
-// Rank 0's own renderer: takes chunks from the same counter as the other ranks, on a
-// thread that never calls MPI.
+// Rank 0's own renderer and the count of chunks dealt: it takes chunks from the same
+// count as the other ranks, on a thread that never calls MPI.
 class LocalRenderer {
  public:
-  LocalRenderer(const ChunkPlan& plan, const ChunkRenderer& render) : plan_(plan), render_(render) {
+  LocalRenderer(const ChunkPlan& plan, const ChunkRenderer& render, uint32_t limit, ActivePixels active)
+      : plan_(plan), render_(render), limit_(limit), active_(std::move(active)) {
     thread_ = std::thread([this] { Run(); });
   }
   ~LocalRenderer() {
@@ -93,14 +108,22 @@ class LocalRenderer {
     thread_.join();
   }
 
-  // The next chunk to deal, or kNoChunk.
+  // The next chunk to deal, kNoChunk, or kNotYet.
   uint32_t Deal() {
     std::lock_guard<std::mutex> lock(mutex_);
     return DealLocked();
   }
+  // Chunks before `limit` may be dealt, sampling the pixels `active` marks.
+  void Open(uint32_t limit, ActivePixels active) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    limit_ = limit;
+    active_ = std::move(active);
+    dealable_.notify_all();
+  }
   void StopDealing() {
     std::lock_guard<std::mutex> lock(mutex_);
     dealing_ = false;
+    dealable_.notify_all();
   }
   uint32_t Dealt() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -122,18 +145,23 @@ class LocalRenderer {
  private:
   uint32_t DealLocked() {
     if (!dealing_ || next_ >= plan_.Chunks()) return kNoChunk;
+    if (next_ >= limit_) return kNotYet;
     return next_++;
   }
   void Run() {
     try {
       for (;;) {
-        const uint32_t c = Deal();
+        std::unique_lock<std::mutex> lock(mutex_);
+        uint32_t c = kNotYet;
+        dealable_.wait(lock, [&] { return (c = DealLocked()) != kNotYet; });
         if (c == kNoChunk) break;
+        const ActivePixels active = active_;
+        lock.unlock();
         const auto t0 = std::chrono::steady_clock::now();
-        FrameSums sums = render_(c);
+        FrameSums sums = render_(c, *active);
         seconds += Since(t0);
         ++chunks;
-        std::lock_guard<std::mutex> lock(mutex_);
+        lock.lock();
         finished_.emplace(c, std::move(sums));
       }
     } catch (const std::exception& e) {
@@ -147,7 +175,9 @@ class LocalRenderer {
   const ChunkPlan plan_;
   const ChunkRenderer& render_;
   std::mutex mutex_;
-  uint32_t next_ = 0;
+  std::condition_variable dealable_;
+  uint32_t next_ = 0, limit_;
+  ActivePixels active_;
   bool dealing_ = true, done_ = false;
   std::map<uint32_t, FrameSums> finished_;
   std::optional<std::string> error_;
@@ -192,20 +222,36 @@ DealtFrame DealChunks(Cluster& cluster, const ChunkPlan& plan, const ChunkRender
   DealtFrame out;
   out.ranks.resize(cluster.Size());
   for (int r = 0; r < cluster.Size(); ++r) out.ranks[r].name = cluster.Name(r);
+  // The next decision point, and the chunks before it.
+  const Decisions& decisions = hooks.decisions;
+  uint32_t point = decisions.nextPoint ? decisions.nextPoint(0) : UINT32_MAX;
+  auto chunksBefore = [&plan](uint32_t spp) {
+    return uint32_t(std::min<uint64_t>(plan.Chunks(), (uint64_t(spp) + plan.chunkSpp - 1) / plan.chunkSpp));
+  };
   std::map<uint32_t, FrameSums> pending;  // arrived out of order
   int told = 0;                           // ranks told there are no more chunks
+  std::vector<int> waiting;               // ranks whose request waits for a decision
+  // The pixels the chunks dealt now sample (empty: every pixel), and those each rank has.
+  ActivePixels active = std::make_shared<const std::vector<uint8_t>>();
+  std::vector<ActivePixels> sent(cluster.Size(), active);
   const auto t0 = std::chrono::steady_clock::now();
   double lastCheckpoint = 0.0;
-  LocalRenderer local(plan, render);
+  LocalRenderer local(plan, render, chunksBefore(point), active);
+  auto assign = [&](int rank) {
+    const uint32_t c = local.Deal();
+    if (c == kNotYet) return false;
+    if (c == kNoChunk) ++told;
+    cluster.Send(rank, kAssign, AssignmentMessage(c, sent[rank] == active ? nullptr : active.get()));
+    sent[rank] = active;
+    return true;
+  };
   for (;;) {
     bool busy = false;
     if (std::optional<Cluster::Envelope> e = cluster.Poll()) {
       busy = true;
       const std::vector<uint8_t> bytes = cluster.Receive(e->from, e->tag);
       if (e->tag == kRequest) {
-        const uint32_t c = local.Deal();
-        if (c == kNoChunk) ++told;
-        cluster.Send(e->from, kAssign, BytesOf(c));
+        if (!assign(e->from)) waiting.push_back(e->from);
       } else if (e->tag == kResult) {
         uint32_t c = 0;
         double seconds = 0.0;
@@ -228,6 +274,17 @@ DealtFrame DealChunks(Cluster& cluster, const ChunkPlan& plan, const ChunkRender
       pending.erase(it);
       busy = true;
       if (hooks.progress) hooks.progress(double(out.chunks) / plan.Chunks());
+      if (out.spp == point) {  // every chunk dealt has been added
+        std::vector<uint8_t> next = *active;
+        if (decisions.decide(out.sums, out.spp, next)) {
+          out.decidedToStop = true;
+          local.StopDealing();
+          break;
+        }
+        point = decisions.nextPoint(out.spp);
+        active = std::make_shared<const std::vector<uint8_t>>(std::move(next));
+        local.Open(chunksBefore(point), active);
+      }
       if (hooks.checkpoint && hooks.checkpointSeconds > 0.0 && Since(t0) - lastCheckpoint >= hooks.checkpointSeconds &&
           out.chunks < plan.Chunks()) {
         hooks.checkpoint(out.sums, out.spp);
@@ -235,6 +292,7 @@ DealtFrame DealChunks(Cluster& cluster, const ChunkPlan& plan, const ChunkRender
       }
     }
     if (hooks.stopDealing && hooks.stopDealing()) local.StopDealing();
+    while (!waiting.empty() && assign(waiting.front())) waiting.erase(waiting.begin());
     if (told == cluster.Size() - 1 && local.Done() && out.chunks == local.Dealt()) break;
     if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
@@ -244,15 +302,16 @@ DealtFrame DealChunks(Cluster& cluster, const ChunkPlan& plan, const ChunkRender
 }
 
 void RenderDealtChunks(Cluster& cluster, const ChunkRenderer& render) {
+  std::vector<uint8_t> active;  // empty: every pixel
   for (;;) {
     cluster.Send(0, kRequest, {});
     cluster.Wait(0, kAssign);
-    const uint32_t c = U32(cluster.Receive(0, kAssign));
+    const uint32_t c = ReadAssignment(cluster.Receive(0, kAssign), active);
     if (c == kNoChunk) return;
     std::vector<uint8_t> result;
     try {
       const auto t0 = std::chrono::steady_clock::now();
-      FrameSums sums = render(c);
+      FrameSums sums = render(c, active);
       result = EncodeChunk(c, sums, Since(t0));
     } catch (const std::exception& e) {
       const std::string what = e.what();

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,9 @@ struct ChunkPlan {
   uint32_t Samples(uint32_t chunk) const { return std::min(chunkSpp, spp - Begin(chunk)); }
 };
 
-// Renders chunk `chunk` of the plan on this rank: its sums alone.
-using ChunkRenderer = std::function<FrameSums(uint32_t chunk)>;
+// Renders chunk `chunk` of the plan on this rank: its sums alone, with samples in the
+// pixels `active` marks (empty: every pixel).
+using ChunkRenderer = std::function<FrameSums(uint32_t chunk, std::span<const uint8_t> active)>;
 
 // What one rank did.
 struct RankShare {
@@ -37,13 +39,27 @@ struct RankShare {
 };
 
 struct DealtFrame {
-  FrameSums sums;       // chunks [0, chunks) added in order
-  uint32_t chunks = 0;  // a prefix of the plan: fewer if dealing stopped early
-  uint32_t spp = 0;     // samples per pixel of those chunks
+  FrameSums sums;              // chunks [0, chunks) added in order
+  uint32_t chunks = 0;         // a prefix of the plan: fewer if dealing stopped early
+  uint32_t spp = 0;            // samples per pixel of those chunks
+  bool decidedToStop = false;  // Decisions::decide ended the frame
   std::vector<RankShare> ranks;
 };
 
+// Adaptive sampling and noise targets across ranks. At each decision point (a sample count
+// that ends a chunk: app/render_loop.h) rank 0 judges the chunks added so far, and may end
+// the frame there or change which pixels the later chunks sample. No chunk past a
+// decision point is dealt before that judgement, so every chunk is rendered with the
+// pixels a single process would sample, and no work is thrown away.
+struct Decisions {
+  std::function<uint32_t(uint32_t spp)> nextPoint;  // the first decision point after spp
+  // Judges the frame at `spp` samples per pixel: updates `active` (empty: every pixel) and
+  // returns whether the frame ends there.
+  std::function<bool(const FrameSums& sums, uint32_t spp, std::vector<uint8_t>& active)> decide;
+};
+
 struct DealerHooks {
+  Decisions decisions;                                             // none without nextPoint
   std::function<bool()> stopDealing;                               // no more chunks (time, signal)
   std::function<void(double)> progress;                            // chunks added / planned
   std::function<void(const FrameSums&, uint32_t spp)> checkpoint;  // the chunks added so far
