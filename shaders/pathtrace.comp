@@ -49,6 +49,7 @@ void main() {
   gNodeCopies = params.nodeCopies;
   gTexelSplit = params.texelSplit;
   gTriangleSplit = params.triangleSplit;
+  gUvSplit = params.uvSplit;
   // lavapipe hands each thread one contiguous range of workgroups (the top and bottom
   // half of the image with two threads), so costly regions would leave a thread idle:
   // rows of tiles are dealt out with a stride coprime to their count (host: TileRowStride).

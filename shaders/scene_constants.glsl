@@ -44,6 +44,9 @@ layout(constant_id = 10) const uint kSceneHasTwoTexelBuffers = 0u;
 // 1 when the triangles need two texel buffers: see scene_fetch.glsl.
 layout(constant_id = 11) const uint kSceneHasTwoTriangleBuffers = 0u;
 #define VKPT_TWO_TRIANGLE_BUFFERS (kSceneHasTwoTriangleBuffers != 0u)
+// 1 when the texture coordinates need two texel buffers: see scene_fetch.glsl.
+layout(constant_id = 12) const uint kSceneHasTwoUvBuffers = 0u;
+#define VKPT_TWO_UV_BUFFERS (kSceneHasTwoUvBuffers != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

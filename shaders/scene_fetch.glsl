@@ -23,6 +23,7 @@ layout(binding = kBindingGgxAlbedo) uniform usamplerBuffer ggxAlbedoTexels;
 layout(binding = kBindingShading) uniform usamplerBuffer shadingTexels;
 layout(binding = kBindingVertexColors) uniform usamplerBuffer colorTexels;
 layout(binding = kBindingVertexUVs) uniform usamplerBuffer uvTexels;
+layout(binding = kBindingVertexUVsHigh) uniform usamplerBuffer uvTexelsHigh;
 layout(binding = kBindingTangents) uniform usamplerBuffer tangentTexels;
 layout(binding = kBindingMaterialTextures) uniform usamplerBuffer textureRefTexels;
 layout(binding = kBindingTextures) uniform usamplerBuffer textureTexels;
@@ -43,34 +44,45 @@ BvhNode FetchNode(uint i) {
   return n;
 }
 
-// The triangles in two buffers (VKPT_TWO_TRIANGLE_BUFFERS, a specialization constant of
-// the including shader): triangles from gTriangleSplit on (set by main()) are in the
-// second. With one, the branch compiles away: lavapipe would otherwise run both fetches.
+// Element k of an array of three-texel structs that may continue in a second texel
+// buffer: from element `split` on in `high`, when `two`. `two` is a specialization
+// constant of the including shader, so with one buffer the second branch compiles away
+// (lavapipe would otherwise run both fetches).
+void FetchThreeTexels(usamplerBuffer low, usamplerBuffer high, bool two, uint split, uint k, out uvec4 t[3]) {
+  if (two && k >= split) {
+    int i = int(3u * (k - split));
+    t[0] = texelFetch(high, i);
+    t[1] = texelFetch(high, i + 1);
+    t[2] = texelFetch(high, i + 2);
+  } else {
+    int i = int(3u * k);
+    t[0] = texelFetch(low, i);
+    t[1] = texelFetch(low, i + 1);
+    t[2] = texelFetch(low, i + 2);
+  }
+}
+
+// The triangles, and the texture coordinates, in two buffers when one cannot hold them
+// (VKPT_TWO_TRIANGLE_BUFFERS, VKPT_TWO_UV_BUFFERS); main() sets the splits.
 #ifndef VKPT_TWO_TRIANGLE_BUFFERS
 #define VKPT_TWO_TRIANGLE_BUFFERS false
 #endif
+#ifndef VKPT_TWO_UV_BUFFERS
+#define VKPT_TWO_UV_BUFFERS false
+#endif
 uint gTriangleSplit = 0xFFFFFFFFu;
+uint gUvSplit = 0xFFFFFFFFu;
 
 Triangle FetchTriangle(uint k) {
-  uvec4 a, b, c;
-  if (VKPT_TWO_TRIANGLE_BUFFERS && k >= gTriangleSplit) {
-    int t = int(kTexelsPerTriangle * (k - gTriangleSplit));
-    a = texelFetch(triangleTexelsHigh, t);
-    b = texelFetch(triangleTexelsHigh, t + 1);
-    c = texelFetch(triangleTexelsHigh, t + 2);
-  } else {
-    int t = int(kTexelsPerTriangle * k);
-    a = texelFetch(triangleTexels, t);
-    b = texelFetch(triangleTexels, t + 1);
-    c = texelFetch(triangleTexels, t + 2);
-  }
+  uvec4 x[3];
+  FetchThreeTexels(triangleTexels, triangleTexelsHigh, VKPT_TWO_TRIANGLE_BUFFERS, gTriangleSplit, k, x);
   Triangle t;
-  t.v0 = uintBitsToFloat(a.xyz);
-  t.material = a.w;
-  t.e1 = uintBitsToFloat(b.xyz);
-  t.sourceIndex = b.w;
-  t.e2 = uintBitsToFloat(c.xyz);
-  t.light = c.w;
+  t.v0 = uintBitsToFloat(x[0].xyz);
+  t.material = x[0].w;
+  t.e1 = uintBitsToFloat(x[1].xyz);
+  t.sourceIndex = x[1].w;
+  t.e2 = uintBitsToFloat(x[2].xyz);
+  t.light = x[2].w;
   return t;
 }
 
@@ -158,16 +170,15 @@ TriangleColors FetchColors(uint i) {
 
 // i: a Triangle's sourceIndex.
 TriangleUVs FetchUVs(uint i) {
-  uvec4 a = texelFetch(uvTexels, int(kTexelsPerUVs * i));
-  uvec4 b = texelFetch(uvTexels, int(kTexelsPerUVs * i + 1u));
-  uvec4 c = texelFetch(uvTexels, int(kTexelsPerUVs * i + 2u));
+  uvec4 x[3];
+  FetchThreeTexels(uvTexels, uvTexelsHigh, VKPT_TWO_UV_BUFFERS, gUvSplit, i, x);
   TriangleUVs t;
-  t.uv00 = uintBitsToFloat(a.xy);
-  t.uv01 = uintBitsToFloat(a.zw);
-  t.uv02 = uintBitsToFloat(b.xy);
-  t.uv10 = uintBitsToFloat(b.zw);
-  t.uv11 = uintBitsToFloat(c.xy);
-  t.uv12 = uintBitsToFloat(c.zw);
+  t.uv00 = uintBitsToFloat(x[0].xy);
+  t.uv01 = uintBitsToFloat(x[0].zw);
+  t.uv02 = uintBitsToFloat(x[1].xy);
+  t.uv10 = uintBitsToFloat(x[1].zw);
+  t.uv11 = uintBitsToFloat(x[2].xy);
+  t.uv12 = uintBitsToFloat(x[2].zw);
   return t;
 }
 

@@ -312,22 +312,28 @@ TEST_F(GpuTest, TexturedQuadShowsItsTexels) {
   EXPECT_EQ(cpuOff, 0);
 }
 
-// Cornell's triangles split over two texel buffers at every third triangle: the image is
-// the one-buffer image, bit for bit.
-TEST_F(GpuTest, TrianglesInTwoBuffersRenderTheSameImage) {
-  Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
-  RenderScene rs = PrepareRenderScene(s);
-  FrameParams p = Params(rs, s, 48, 40, 8, 3);
-  const Image one = vk::GpuRenderer(Gpu(), rs).Render(p).image;
-  int identical = 0;
-  for (uint32_t split : {1u, 3u, uint32_t(rs.triangles.size()) / 2}) {
-    const Image two = vk::GpuRenderer(Gpu(), rs, nullptr, 0, split * shader::kTexelsPerTriangle).Render(p).image;
-    const bool same = two.pixels == one.pixels && two.variance == one.variance;
-    EXPECT_TRUE(same) << split << " triangles in the first buffer";
-    identical += same;
+// The triangles and texture coordinates split over two texel buffers each, after the
+// first triangle, the third, and half of them: the image is the one-buffer image, bit for
+// bit, for the Cornell box and a textured corpus model.
+TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImage) {
+  for (const std::string& path :
+       {test::SourcePath("scenes/cornell.gltf"), test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf")}) {
+    Scene s = LoadGltf(path);
+    RenderScene rs = PrepareRenderScene(s);
+    FrameParams p = Params(rs, s, 48, 40, 8, 3);
+    const Image one = vk::GpuRenderer(Gpu(), rs).Render(p).image;
+    int identical = 0;
+    for (uint32_t split : {1u, 3u, uint32_t(rs.triangles.size()) / 2}) {
+      const Image two = vk::GpuRenderer(Gpu(), rs, nullptr, 0, split * shader::kTexelsPerTriangle).Render(p).image;
+      const bool same = two.pixels == one.pixels && two.variance == one.variance;
+      EXPECT_TRUE(same) << path << ": " << split << " triangles in the first buffer";
+      identical += same;
+    }
+    std::printf(
+        "%s (%zu triangles, %zu with texture coordinates), arrays in two texel buffers: %d of 3 splits "
+        "render the same bytes\n",
+        path.c_str(), rs.triangles.size(), rs.uvs.size(), identical);
   }
-  std::printf("Cornell (%zu triangles) with the triangles in two texel buffers: %d of 3 splits render the same bytes\n",
-              rs.triangles.size(), identical);
 }
 
 // Path regeneration (pathtrace.comp) adds each invocation's samples in sample order, as

@@ -54,7 +54,7 @@ static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Light) == 16
 static_assert(offsetof(RayQuery, tMax) == 12 && offsetof(RayQuery, dir) == 16);
 static_assert(sizeof(HitRecord) == 16 && offsetof(HitRecord, triangle) == 12);
 
-static_assert(sizeof(FrameParams) == 160);
+static_assert(sizeof(FrameParams) == 176);
 static_assert(offsetof(FrameParams, origin) == 0 && offsetof(FrameParams, tanHalfFovY) == 12);
 static_assert(offsetof(FrameParams, right) == 16 && offsetof(FrameParams, aspect) == 28);
 static_assert(offsetof(FrameParams, up) == 32 && offsetof(FrameParams, width) == 44);
@@ -64,5 +64,6 @@ static_assert(offsetof(FrameParams, background) == 96 && offsetof(FrameParams, o
 static_assert(offsetof(FrameParams, nodeCopies) == 112);
 static_assert(offsetof(FrameParams, envWidth) == 128 && offsetof(FrameParams, envHeight) == 132);
 static_assert(offsetof(FrameParams, envIntensity) == 136 && offsetof(FrameParams, envRotationSin) == 144);
+static_assert(offsetof(FrameParams, triangleSplit) == 156 && offsetof(FrameParams, uvSplit) == 160);
 
 }  // namespace vkpt::shader

@@ -149,7 +149,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uin
       ggxAlbedo_(UploadArray<float>(ctx, shader::kGgxAlbedo, "GGX albedo table")),
       shading_(UploadArray<shader::TriangleShading>(ctx, scene.shading, "shading normals")),
       vertexColors_(UploadArray<shader::TriangleColors>(ctx, scene.vertexColors, "vertex colours")),
-      uvs_(UploadArray<shader::TriangleUVs>(ctx, scene.uvs, "texture coordinates")),
+      uvs_(UploadSplitArray<shader::TriangleUVs>(ctx, scene.uvs, "texture coordinates", maxTexelsPerBuffer)),
       tangents_(UploadArray<shader::TriangleTangents>(ctx, scene.tangents, "tangents")),
       textureRefs_(UploadArray<shader::TextureRef>(ctx, scene.textureRefs, "material textures")),
       textures_(UploadArray<shader::Texture>(ctx, scene.textures, "texture table")),
@@ -184,7 +184,8 @@ std::vector<BufferBinding> GpuRenderer::SceneBindings() const {
           TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
           TexelBinding(shader::kBindingShading, shading_),
           TexelBinding(shader::kBindingVertexColors, vertexColors_),
-          TexelBinding(shader::kBindingVertexUVs, uvs_),
+          TexelBinding(shader::kBindingVertexUVs, uvs_.low),
+          TexelBinding(shader::kBindingVertexUVsHigh, uvs_.high),
           TexelBinding(shader::kBindingTangents, tangents_),
           TexelBinding(shader::kBindingMaterialTextures, textureRefs_),
           TexelBinding(shader::kBindingTextures, textures_),
@@ -207,7 +208,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           hasAlpha_ ? 1u : 0u,
           hasExtensionTextures_ ? 1u : 0u,
           texels_.twoBuffers ? 1u : 0u,
-          triangles_.twoBuffers ? 1u : 0u};
+          triangles_.twoBuffers ? 1u : 0u,
+          uvs_.twoBuffers ? 1u : 0u};
 }
 
 namespace {
@@ -336,6 +338,7 @@ std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams
   shader::FrameParams p = frame;
   p.texelSplit = texels_.split;
   p.triangleSplit = triangles_.split;
+  p.uvSplit = uvs_.split;
   KernelFactory kernels = [this, p](const uint32_t* spirv, size_t spirvBytes, std::vector<BufferBinding> bindings,
                                     const char* name, uint32_t pushConstantBytes) {
     std::vector<BufferBinding> scene = SceneBindings();

@@ -33,8 +33,8 @@ class GpuRenderer {
  public:
   // Uploads the scene. `spirv` defaults to the embedded pathtrace.comp; tests pass
   // deliberately wrong variants.
-  // `maxTexelsPerBuffer` caps the buffers of the arrays that may take two (triangles, the
-  // texel store) below the device's limit (tests).
+  // `maxTexelsPerBuffer` caps the buffers of the arrays that may take two (triangles,
+  // texture coordinates, the texel store) below the device's limit (tests).
   GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv = nullptr, size_t spirvBytes = 0,
               uint32_t maxTexelsPerBuffer = 0);
   // A render in progress (params.sampleBegin and sampleCount are ignored: each pass
@@ -66,13 +66,14 @@ class GpuRenderer {
   // The vertex colours; without any, one zero texel that the shader never reads.
   TexelBuffer vertexColors_;
   // Texture coordinates and textures (shared/texture.h); one zero texel each without.
-  TexelBuffer uvs_, tangents_, textureRefs_, textures_;
+  SplitTexelBuffer uvs_;  // in two buffers if one cannot hold them
+  TexelBuffer tangents_, textureRefs_, textures_;
   SplitTexelBuffer texels_;  // the texel store, in two buffers if one cannot hold it
   TexelBuffer texelDecode_;
   // The environment map's texels and CDFs; without a map one zero texel each, so that the
   // descriptor set is complete all the same.
   TexelBuffer envRadiance_, envDistribution_;
-  // What the scene has, for pathtrace.comp's specialization constants 0-11 (the frame
+  // What the scene has, for pathtrace.comp's specialization constants 0-12 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
   uint32_t lightTypes_ = 0;          // bit 1 << type for each type in the light table
   bool hasGlossy_;                   // some triangle's material is not Lambertian

@@ -37,9 +37,11 @@ const uint kBindingTangents = 20u;          // texel buffer of TriangleTangents,
 // The texels past the first FrameParams::texelSplit, when one texel buffer cannot hold the
 // store (its device's maxTexelBufferElements); else a 1-texel dummy.
 const uint kBindingTexelsHigh = 22u;
-// The triangles from FrameParams::triangleSplit on, when one texel buffer cannot hold them;
-// else a 1-texel dummy (trace.comp takes the split as a push constant).
+// The triangles from FrameParams::triangleSplit on, and the texture coordinates from
+// FrameParams::uvSplit on, when one texel buffer cannot hold them; else a 1-texel dummy
+// (trace.comp takes the triangles' split as a push constant).
 const uint kBindingTrianglesHigh = 25u;
+const uint kBindingVertexUVsHigh = 26u;
 // Adaptive sampling: per pixel 1 if it takes this pass's samples, else 0 (read when
 // FrameParams::adaptive is 1).
 const uint kBindingActive = 23u;
@@ -318,6 +320,10 @@ struct FrameParams {
   uint texelSplit;     // RGBA32UI texels of the store in kBindingTexels; the rest are in kBindingTexelsHigh
   uint adaptive;       // 1: only the pixels kBindingActive marks take samples
   uint triangleSplit;  // Triangles in kBindingTriangles; the rest are in kBindingTrianglesHigh
+  uint uvSplit;        // TriangleUVs in kBindingVertexUVs; the rest are in kBindingVertexUVsHigh
+  uint pad6;           // std140 rounds the struct up to a multiple of 16 bytes
+  uint pad7;
+  uint pad8;
 };
 
 VKPT_END_NAMESPACE
