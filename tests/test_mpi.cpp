@@ -2,9 +2,10 @@
 // this machine: the image file is byte-identical for one process and for 2 and 3 ranks,
 // on the CPU backend and on lavapipe, for the Cornell box and a textured corpus model,
 // also when a slowed rank makes the ranks take unequal chunk counts; a rank failing
-// mid-render ends the job non-zero with its message and leaves no file; setup errors are
-// reported once; ranks given different frames are refused; Ctrl-C on mpirun leaves the
-// image of the chunks done; --noise-target and adaptive sampling stop where one process
+// mid-render, or killed by a signal, ends the job non-zero, naming it, and leaves no file;
+// setup errors are reported once; ranks given different frames are refused; Ctrl-C on
+// mpirun leaves the image of the chunks done; --noise-target and adaptive sampling stop
+// where one process
 // stops, with the same bytes. Built only when CMake found MPI (VKPT_MPIEXEC).
 #include <gtest/gtest.h>
 
@@ -198,6 +199,34 @@ TEST(Mpi, FailingRankEndsTheJobWithoutAnImage) {
   EXPECT_FALSE(r.ExitedWith(0)) << r.Describe();
   EXPECT_NE(r.err.find("vkpt: error: rank 1 ("), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("VKPT_TEST_FAIL_AFTER_CHUNKS"), std::string::npos) << r.err;
+  EXPECT_TRUE(dir.Listing().empty()) << "left: " << testing::PrintToString(dir.Listing());
+}
+
+// A rank killed by a signal mid-render (rank 1's shell schedules SIGKILL to itself in 2 s,
+// then becomes vkpt for a render far longer): mpirun exits non-zero, naming the rank, and
+// no image is written.
+TEST(Mpi, KilledRankEndsTheJobWithoutAnImage) {
+  const test::TempFolder dir("mpi-killed");
+  const std::vector<std::string> args = Frame(kCornell, "cpu", dir / "killed.png", {"--spp", "1000000"});
+  std::vector<std::string> command = {VKPT_BINARY};
+  command.insert(command.end(), args.begin(), args.end());
+  std::string rank1 = "(sleep 2; kill -KILL $$) & exec";
+  for (const std::string& a : command) {
+    rank1 += " '";
+    rank1 += a;
+    rank1 += "'";
+  }
+  std::vector<std::string> argv = {"--oversubscribe", "--bind-to", "none", "-n", "1", VKPT_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  argv.insert(argv.end(), {":", "-n", "1", "sh", "-c", rank1});
+  ProcessResult r = test::RunProgram(VKPT_MPIEXEC, argv, 120.0, "", kMpiEnv);
+  EXPECT_FALSE(r.timedOut) << r.Describe();
+  EXPECT_FALSE(r.ExitedWith(0)) << r.Describe();
+  const size_t at = r.err.find("rank 1");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const size_t begin = r.err.rfind('\n', at) + 1;
+  std::printf("mpirun exited %d after %.1f s: %s\n", r.exitCode, r.seconds,
+              r.err.substr(begin, r.err.find('\n', at) - begin).c_str());
   EXPECT_TRUE(dir.Listing().empty()) << "left: " << testing::PrintToString(dir.Listing());
 }
 
