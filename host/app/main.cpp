@@ -240,13 +240,9 @@ FrameOutcome RenderFrameOnCluster(Cluster& cluster, FrameRenderer& frame, const 
       return last->stop.has_value();
     };
   }
-  // The finished fraction, as RenderProgressively counts it: of --spp, --time or (relMSE
-  // falling as 1/n) the noise target, whichever is nearest.
   if (std::function<void(double)> line = ProgressLine())
-    hooks.progress = [&, line](double f) {
-      if (o.time) f = std::max(f, SecondsSince(t0) / *o.time);
-      if (o.noiseTarget && last) f = std::max(f, *o.noiseTarget / last->noise);
-      line(std::min(f, 1.0));
+    hooks.progress = [&, line](double chunks) {
+      line(FinishedFraction(budget, chunks * o.spp, SecondsSince(t0), last ? last->noise : INFINITY));
     };
   hooks.stopDealing = [&] { return GracefulStop::Signal() != 0 || (o.time && SecondsSince(t0) >= *o.time); };
   hooks.checkpoint = [&o](const FrameSums& sums, uint32_t spp) { WriteCheckpoint(o, sums, spp); };

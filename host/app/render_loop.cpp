@@ -38,6 +38,13 @@ uint32_t NextDecisionPoint(uint32_t spp, uint32_t chunkSpp) {
   }
 }
 
+double FinishedFraction(const RenderBudget& budget, double spp, double seconds, double noise) {
+  double f = spp / budget.maxSpp;
+  if (budget.seconds) f = std::max(f, seconds / *budget.seconds);
+  if (budget.noiseTarget && std::isfinite(noise)) f = std::max(f, *budget.noiseTarget / noise);
+  return std::min(f, 1.0);
+}
+
 Decision Decide(const RenderBudget& budget, const FrameSums& sums, std::vector<uint8_t>& active) {
   Decision d;
   d.noise = EstimatedRelMse(sums);
@@ -85,14 +92,7 @@ ProgressiveRender RenderProgressively(FrameRenderer& renderer, const RenderBudge
   double noise = INFINITY;
   const auto t0 = std::chrono::steady_clock::now();
   double lastCheckpoint = 0.0;
-  // The finished fraction of the render: of the spp bound, the time, or (as relMSE falls
-  // as 1/n) the noise target, whichever is nearest.
-  auto fraction = [&](double passDone) {
-    double f = passDone / budget.maxSpp;
-    if (budget.seconds) f = std::max(f, Since(t0) / *budget.seconds);
-    if (budget.noiseTarget && std::isfinite(noise)) f = std::max(f, *budget.noiseTarget / noise);
-    return std::min(f, 1.0);
-  };
+  auto fraction = [&](double passDone) { return FinishedFraction(budget, passDone, Since(t0), noise); };
   for (;;) {
     if (GracefulStop::Signal()) {
       out.stoppedBy = StopReason::kSignal;

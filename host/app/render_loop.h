@@ -37,6 +37,11 @@ const char* StopReasonName(StopReason r);  // "spp", "time", "noise_target", "co
 // whole chunks, makes the decisions a single process makes.
 uint32_t NextDecisionPoint(uint32_t spp, uint32_t chunkSpp);
 
+// The finished fraction of a render at `spp` samples per pixel after `seconds`, whose
+// last decision estimated `noise` (infinite before the first): of the spp bound, the
+// time, or (as relMSE falls as 1/n) the noise target, whichever is nearest.
+double FinishedFraction(const RenderBudget& budget, double spp, double seconds, double noise);
+
 // What a decision point finds in the sums so far: their estimated relMSE, with adaptive
 // sampling the pixels that go on (`active`, empty: every pixel), and whether the render
 // stops there.

@@ -241,7 +241,8 @@ DealtFrame DealChunks(Cluster& cluster, const ChunkPlan& plan, const ChunkRender
     const uint32_t c = local.Deal();
     if (c == kNotYet) return false;
     if (c == kNoChunk) ++told;
-    cluster.Send(rank, kAssign, AssignmentMessage(c, sent[rank] == active ? nullptr : active.get()));
+    const bool changed = c != kNoChunk && sent[rank] != active;
+    cluster.Send(rank, kAssign, AssignmentMessage(c, changed ? active.get() : nullptr));
     sent[rank] = active;
     return true;
   };
