@@ -4,7 +4,7 @@
 // reject. Each renders as RenderCpu does (same RNG streams, same Film), on all cores.
 #pragma once
 
-#include "image/film.h"
+#include "render/film.h"
 #include "render/render_scene.h"
 
 namespace vkpt::test {

@@ -1,4 +1,4 @@
-// AOVs (shaders/shared/aov.h, image/aov.h): exact albedo, normals, depth and position on
+// AOVs (shaders/shared/aov.h, session/aov.h): exact albedo, normals, depth and position on
 // an axis-aligned box, the environment's albedo, the specular walk, agreement of the CPU
 // and the GPU, the spp AOV under adaptive sampling, and the files vkpt writes.
 #include <gtest/gtest.h>
@@ -9,13 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "app/render_loop.h"
 #include "cpu/path_tracer.h"
 #include "gpu_test.h"
-#include "image/aov.h"
-#include "image/noise_estimate.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
+#include "session/aov.h"
+#include "session/noise_estimate.h"
 #include "test_util.h"
 #include "vk/vk_renderer.h"
 
@@ -201,7 +200,7 @@ TEST(Aov, SppLayerFollowsTheNoise) {
   budget.maxSpp = 256;
   budget.adaptive = true;
   budget.adaptiveThreshold = 4e-3;
-  const ProgressiveRender r = RenderProgressively(*adaptive, budget, {});
+  const RenderedFrame r = test::RenderUnderBudget(*adaptive, budget);
   const std::vector<AovLayer> layers = ResolveAovs({Aov::kSpp}, {}, r.sums, ResolveFilm(r.sums));
   const float* spp = layers.at(0).values.data();
   std::vector<std::pair<double, float>> byNoise;

@@ -1,4 +1,4 @@
-// The à-trous denoiser (shaders/shared/denoise.h, image/denoise.h): it keeps a hard edge
+// The à-trous denoiser (shaders/shared/denoise.h, render/denoise.h): it keeps a hard edge
 // between two albedos, the CPU and the GPU filter alike, it lowers the Cornell box's relMSE
 // against the converged reference, and --denoise writes the raw image beside the result.
 #include <gtest/gtest.h>
@@ -10,8 +10,8 @@
 
 #include "cpu/path_tracer.h"
 #include "gpu_test.h"
-#include "image/denoise.h"
 #include "image/image_compare.h"
+#include "render/denoise.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
 #include "test_util.h"

@@ -344,7 +344,7 @@ RenderResult RenderOn(bool gpu, const RenderScene& rs, FrameParams p) {
 }
 
 // The environment map in `file`, set up as vkpt --env FILE --env-intensity X
-// --env-rotation 30 does (host/app/main.cpp): a light of the table, and the frame's map.
+// --env-rotation 30 does (host/app/prepare.cpp): a light of the table, and the frame's map.
 RenderResult RenderWithMap(bool gpu, const Scene& scene, const std::string& file, float intensity, uint32_t seed) {
   RenderScene rs = PrepareRenderScene(scene);
   std::vector<std::string> warnings;

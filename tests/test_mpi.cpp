@@ -1,4 +1,4 @@
-// Distributed rendering over MPI (dist/, app/main.cpp's RunRank), run through mpirun on
+// Distributed rendering over MPI (cluster/, session/dealt_chunks.h, app/run.cpp's RunRank), run through mpirun on
 // this machine: the image file is byte-identical for one process and for 2 and 3 ranks,
 // on the CPU backend and on lavapipe, for the Cornell box and a textured corpus model,
 // also when a slowed rank makes the ranks take unequal chunk counts; a rank failing

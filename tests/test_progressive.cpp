@@ -1,5 +1,5 @@
-// Rendering in passes under budgets (app/render_loop.h), in process: passes sum exactly as
-// one pass does on both backends; a chunked render (image/chunked_frame.h) cut into any
+// Rendering in passes under budgets (session/render_session.h), in process: passes sum exactly as
+// one pass does on both backends; a chunked render (session/chunked_frame.h) cut into any
 // passes equals its chunks rendered on separate frames, in any order, and added in chunk
 // order — the identity an MPI job's merge relies on (on the CPU, whose chunk sums are
 // doubles, adding in another order changes bits; the GPU's float chunk sums a few double
@@ -15,15 +15,16 @@
 #include <memory>
 #include <vector>
 
-#include "app/render_loop.h"
+#include "cluster/chunk_dealer.h"
 #include "cpu/path_tracer.h"
-#include "dist/chunk_dealer.h"
 #include "gpu_test.h"
-#include "image/chunked_frame.h"
 #include "image/image_compare.h"
-#include "image/noise_estimate.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
+#include "session/chunked_frame.h"
+#include "session/local_passes.h"
+#include "session/noise_estimate.h"
+#include "session/render_session.h"
 #include "test_util.h"
 #include "util/error.h"
 #include "vk/vk_renderer.h"
@@ -99,7 +100,8 @@ TEST_F(ProgressiveGpu, PassesSumBitForBitAsOnePass) {
 // the unfinished chunk 2) against chunks 2, 0 and 1 rendered on their own frames.
 void ExpectChunksMergeInOrder(const std::function<std::unique_ptr<FrameRenderer>()>& begin, bool orderMatters) {
   constexpr uint32_t kChunk = 8;
-  ChunkedFrame chunked(begin(), kChunk);
+  auto inner = begin();
+  ChunkedFrame chunked(*inner, kChunk);
   chunked.AddSamples(0, 3, {}, {});
   chunked.AddSamples(3, 9, {}, {});
   chunked.AddSamples(12, 10, {}, {});
@@ -140,13 +142,14 @@ TEST_F(ProgressiveGpu, ChunksMergeInChunkOrder) {
 
 TEST(Progressive, ChunkedPassesMustFollowEachOther) {
   const Cornell& c = TheCornellBox();
-  ChunkedFrame chunked(BeginCpuFrame(c.cpu, c.Frame(20, 11)), 4);
+  auto inner = BeginCpuFrame(c.cpu, c.Frame(20, 11));
+  ChunkedFrame chunked(*inner, 4);
   chunked.AddSamples(0, 2, {}, {});
   EXPECT_THROW(chunked.AddSamples(0, 2, {}, {}), Error);
-  EXPECT_THROW(ChunkedFrame(BeginCpuFrame(c.cpu, c.Frame(20, 11)), 0), Error);
+  EXPECT_THROW(ChunkedFrame(*inner, 0), Error);
 }
 
-// A chunk's message (dist/chunk_dealer.h) gives back the same bits: the GPU's float sums at
+// A chunk's message (cluster/chunk_dealer.h) gives back the same bits: the GPU's float sums at
 // 28 bytes per pixel, the CPU's double sums at 52; a cut message is an error.
 TEST_F(ProgressiveGpu, ChunkMessagesKeepEveryBit) {
   const Cornell& c = TheCornellBox();
@@ -179,30 +182,28 @@ TEST(Progressive, DecisionPointsAreFixedSampleCounts) {
 }
 
 TEST(Progressive, PassPlanKeepsToTheBudgets) {
-  RenderBudget b;
-  b.maxSpp = 100;
+  const std::optional<double> noTime;
   PassPlan p;
-  EXPECT_EQ(NextPassSpp(b, p), 1u);  // the first pass measures the rate
+  EXPECT_EQ(NextPassSpp(p, 100, noTime), 1u);  // the first pass measures the rate
   p = {.done = 1, .lastPass = 1, .secondsPerSpp = 0.01};
-  EXPECT_EQ(NextPassSpp(b, p), 2u);  // at most twice the last pass
+  EXPECT_EQ(NextPassSpp(p, 100, noTime), 2u);  // at most twice the last pass
   p = {.done = 40, .lastPass = 40, .secondsPerSpp = 0.1};
-  EXPECT_EQ(NextPassSpp(b, p), 10u);  // about a second's work
+  EXPECT_EQ(NextPassSpp(p, 100, noTime), 10u);  // about a second's work
   p = {.done = 95, .lastPass = 40, .secondsPerSpp = 0.001};
-  EXPECT_EQ(NextPassSpp(b, p), 5u);  // the --spp bound
+  EXPECT_EQ(NextPassSpp(p, 100, noTime), 5u);  // the --spp bound
   p.done = 100;
-  EXPECT_EQ(NextPassSpp(b, p), 0u);
-  b.seconds = 10.0;
-  p = {.done = 40, .lastPass = 40, .secondsPerSpp = 0.1, .elapsed = 9.75};
-  EXPECT_EQ(NextPassSpp(b, p), 2u);  // the time left
-  p.elapsed = 9.95;
-  EXPECT_EQ(NextPassSpp(b, p), 0u);  // less than a sample's time left: stop
-  b.seconds.reset();
+  EXPECT_EQ(NextPassSpp(p, 100, noTime), 0u);
+  p = {.done = 40, .lastPass = 40, .secondsPerSpp = 0.1};
+  EXPECT_EQ(NextPassSpp(p, 100, 0.25), 2u);  // the time left
+  EXPECT_EQ(NextPassSpp(p, 100, 0.05), 0u);  // less than a sample's time left: stop
+  // The session's limit is the next decision point when there is one: never past it.
+  RenderBudget b;
   b.adaptive = true;
   p = {.done = 30, .lastPass = 8, .secondsPerSpp = 0.001};
-  EXPECT_EQ(NextPassSpp(b, p), 2u);  // never past a decision point (32)
+  EXPECT_EQ(NextPassSpp(p, NextDecisionPoint(p.done, b.chunkSpp), noTime), 2u);  // 32
   b.chunkSpp = 16;
   p.done = 33;
-  EXPECT_EQ(NextPassSpp(b, p), 15u);  // nor past one between chunks (48)
+  EXPECT_EQ(NextPassSpp(p, NextDecisionPoint(p.done, b.chunkSpp), noTime), 15u);  // between chunks: 48
 }
 
 // The estimate is Var[mean] / (mean² + 0.01), averaged over channels and pixels: two
@@ -227,12 +228,12 @@ TEST(Adaptive, ANoisyNeighbourKeepsAPixelActiveAndStoppedPixelsStayStopped) {
 }
 
 // The per-pixel sample counts of an adaptive render of the Cornell box, 32² up to 256 spp.
-ProgressiveRender AdaptiveCornell(FrameRenderer& frame) {
+RenderedFrame AdaptiveCornell(FrameRenderer& frame) {
   RenderBudget b;
   b.maxSpp = 256;
   b.adaptive = true;
   b.adaptiveThreshold = 4e-3;
-  return RenderProgressively(frame, b);
+  return test::RenderUnderBudget(frame, b);
 }
 
 // Unbiased: every region's mean agrees with a uniform render of another seed; and it
@@ -241,7 +242,7 @@ ProgressiveRender AdaptiveCornell(FrameRenderer& frame) {
 TEST(Adaptive, RegionMeansEqualTheUniformRendersAndSamplesGoWhereTheNoiseIs) {
   const Cornell& c = TheCornellBox();
   auto frame = BeginCpuFrame(c.cpu, c.Frame(32, 3));
-  const ProgressiveRender adaptive = AdaptiveCornell(*frame);
+  const RenderedFrame adaptive = AdaptiveCornell(*frame);
   shader::FrameParams uniformParams = c.Frame(32, 4);
   uniformParams.sampleCount = 256;
   const RenderResult uniform = RenderCpu(c.cpu, uniformParams);
@@ -293,7 +294,7 @@ TEST_F(ProgressiveGpu, AdaptiveDecisionsMatchTheCpus) {
   vk::GpuRenderer gpu(test::Gpu(), c.gpu);
   auto gpuFrame = gpu.BeginFrame(c.Frame(32, 3));
   auto cpuFrame = BeginCpuFrame(c.cpu, c.Frame(32, 3));
-  const ProgressiveRender g = AdaptiveCornell(*gpuFrame), cpu = AdaptiveCornell(*cpuFrame);
+  const RenderedFrame g = AdaptiveCornell(*gpuFrame), cpu = AdaptiveCornell(*cpuFrame);
   size_t differing = 0, stopped = 0;
   for (size_t i = 0; i < g.sums.pixels.size(); ++i) {
     differing += g.sums.pixels[i].samples != cpu.sums.pixels[i].samples;
@@ -334,7 +335,7 @@ TEST(Progressive, NoiseTargetIsReachedAgainstTheReference) {
     b.noiseTarget = 1e-2;
     b.adaptive = adaptive;
     b.adaptiveThreshold = 1e-2;
-    const ProgressiveRender r = RenderProgressively(*frame, b);
+    const RenderedFrame r = test::RenderUnderBudget(*frame, b);
     const double actual = RelativeMse(ResolveFilm(r.sums), ref);
     std::printf("%s: stopped at %u spp, estimated relMSE %.4g, against the reference %.4g\n",
                 adaptive ? "adaptive" : "uniform", r.spp, r.estimatedRelMse, actual);

@@ -1,5 +1,7 @@
 #include "test_util.h"
 
+#include "session/local_passes.h"
+
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -427,6 +429,13 @@ int PixelsNear(const Image& image, glm::vec3 expected, float tolerance) {
   for (const glm::vec3& px : image.pixels)
     n += glm::all(glm::lessThanEqual(glm::abs(px - expected), tolerance * expected));
   return n;
+}
+
+RenderedFrame RenderUnderBudget(FrameRenderer& frame, const RenderBudget& budget) {
+  LocalPasses source(frame, budget.chunkSpp);
+  SessionSettings settings;
+  settings.budget = budget;
+  return RenderSession(source, settings);
 }
 
 }  // namespace vkpt::test

@@ -10,6 +10,8 @@
 #include "image/image.h"
 #include "render/render_scene.h"
 #include "scene/scene.h"
+#include "session/budget.h"
+#include "session/render_session.h"
 
 namespace vkpt::test {
 
@@ -160,5 +162,9 @@ RenderScene TexturesOnly(const Scene& s);
 
 // How many pixels of `image` are within `tolerance` (relative) of `expected` in every channel.
 int PixelsNear(const Image& image, glm::vec3 expected, float tolerance);
+
+// A render session of `frame` in passes under `budget` (session/local_passes.h), as vkpt
+// renders one process's frame.
+RenderedFrame RenderUnderBudget(FrameRenderer& frame, const RenderBudget& budget);
 
 }  // namespace vkpt::test

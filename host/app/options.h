@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "bvh/bvh.h"
-#include "image/aov.h"
-#include "image/chunked_frame.h"
 #include "scene/load_limits.h"
+#include "session/aov.h"
+#include "session/chunked_frame.h"
 
 namespace vkpt {
 
@@ -29,7 +29,7 @@ struct Options {
   std::optional<bool> adaptive;       // --adaptive / --no-adaptive; absent: on with --noise-target
   double checkpoint = 0.0;            // --checkpoint: seconds between rewrites of --out (0: none)
   uint32_t seed = 0;
-  uint32_t chunkSpp = kDefaultChunkSpp;  // --chunk (image/chunked_frame.h)
+  uint32_t chunkSpp = kDefaultChunkSpp;  // --chunk (session/chunked_frame.h)
   uint32_t maxDepth = 32;
   uint32_t rrDepth = 3;
   Backend backend = Backend::Auto;  // Vulkan when a device exists, else the CPU
@@ -53,17 +53,14 @@ struct Options {
   bool textureLod = true;               // --texture-lod cones (true) or none
   LoadLimits load;                      // --max-memory, --allow-external-uris
   std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)
-  std::vector<Aov> aovs;                // --aov: written with the image (image/aov.h), in the order given
-  bool denoise = false;                 // --denoise: --out denoised (image/denoise.h), the raw image beside it
+  std::vector<Aov> aovs;                // --aov: written with the image (session/aov.h), in the order given
+  bool denoise = false;                 // --denoise: --out denoised (render/denoise.h), the raw image beside it
   bool verbose = false;
   bool help = false;
   bool version = false;
 
   bool Adaptive() const { return adaptive.value_or(noiseTarget.has_value()); }
 };
-
-// AOV samples per pixel: the first kAovSamples of the render's (fewer if it took fewer).
-constexpr uint32_t kAovSamples = 16;
 
 // The --spp bound when --time or --noise-target is given without --spp.
 constexpr uint32_t kBudgetMaxSpp = 65536;

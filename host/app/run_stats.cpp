@@ -61,15 +61,19 @@ JsonObject OptionsJson(const Options& o) {
 
 std::string OptionsAsJson(const Options& o) { return OptionsJson(o).Text(); }
 
+double SecondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 std::string StatsJson(const Options& o, const RunOutcome& run) {
-  const RenderResult& r = run.result;
-  const ProgressiveRender& p = run.progressive;
-  const uint64_t pixels = uint64_t(r.image.width) * r.image.height;
+  const RenderedFrame& p = run.frame;
+  const Image& image = p.image;
+  const uint64_t pixels = uint64_t(image.width) * image.height;
   const uint64_t samples = p.samples;
   std::vector<std::string> passes;
   for (uint32_t n : p.sppPerPass) passes.push_back(std::to_string(n));
   glm::dvec3 mean(0.0);
-  for (const glm::vec3& p : r.image.pixels) mean += glm::dvec3(p);
+  for (const glm::vec3& px : image.pixels) mean += glm::dvec3(px);
   mean /= double(pixels);
 
   char hash[32];
@@ -91,18 +95,19 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   times.Num("render", t.render).Num("aov", t.aov).Num("denoise", t.denoise).Num("write", t.write).Num("total", t.total);
 
   JsonObject j;
-  j.Str("vkpt_version", VKPT_VERSION).Obj("scene", scene).Str("device", r.engine).Obj("options", OptionsJson(o));
-  j.Int("seed", o.seed).Int("width", r.image.width).Int("height", r.image.height);
+  j.Str("vkpt_version", VKPT_VERSION).Obj("scene", scene).Str("device", p.engine).Obj("options", OptionsJson(o));
+  j.Int("seed", o.seed).Int("width", image.width).Int("height", image.height);
   j.Int("spp", p.spp).Raw("spp_per_pass", JsonArray(passes)).Int("samples", samples);
   j.Str("stopped_by", StopReasonName(p.stoppedBy)).Num("estimated_rel_mse", p.estimatedRelMse);
   j.Int("active_pixels", p.activePixels).Int("checkpoints", p.checkpoints);
-  j.Obj("times_s", times).Int("rays", r.rays).Num("samples_per_s", double(samples) / r.seconds);
-  j.Num("rays_per_s", double(r.rays) / r.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));
-  j.Int("non_finite_samples", r.nonFinite).Int("cut_short_samples", r.cutShort).Obj("bvh", bvh);
-  j.Int("aov_samples", run.aovSamples).Raw("files", Strings(run.files));
-  if (!run.ranks.empty()) {
+  const FrameSums& sums = p.sums;
+  j.Obj("times_s", times).Int("rays", sums.rays).Num("samples_per_s", double(samples) / p.seconds);
+  j.Num("rays_per_s", double(sums.rays) / p.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));
+  j.Int("non_finite_samples", sums.nonFinite).Int("cut_short_samples", sums.cutShort).Obj("bvh", bvh);
+  j.Int("aov_samples", p.aovs.samples).Raw("files", Strings(run.files));
+  if (!p.ranks.empty()) {
     std::vector<std::string> ranks;
-    for (const RankShare& share : run.ranks) {
+    for (const RankShare& share : p.ranks) {
       JsonObject rank;
       rank.Str("name", share.name)
           .Int("chunks", share.chunks)
@@ -111,7 +116,7 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
       ranks.push_back(rank.Text());
     }
     JsonObject mpi;
-    mpi.Int("ranks", run.ranks.size()).Int("chunk_spp", o.chunkSpp).Raw("per_rank", JsonArray(ranks));
+    mpi.Int("ranks", p.ranks.size()).Int("chunk_spp", o.chunkSpp).Raw("per_rank", JsonArray(ranks));
     j.Obj("mpi", mpi);
   }
   if (run.reference) {

@@ -2,17 +2,16 @@
 // is in the README ("Stats as JSON"); tests/test_cli.cpp checks it.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "app/options.h"
-#include "app/render_loop.h"
-#include "dist/chunk_dealer.h"
-#include "image/film.h"
 #include "render/render_scene.h"
 #include "scene/scene.h"
+#include "session/render_session.h"
 
 namespace vkpt {
 
@@ -29,18 +28,30 @@ struct RunTimes {
   double total = 0.0;        // from start to the stats being written
 };
 
+double SecondsSince(std::chrono::steady_clock::time_point t0);
+
+// Times the phases of a run one after another: each Lap is the time since the last.
+class PhaseTimer {
+ public:
+  void Lap(double& seconds) {
+    seconds = SecondsSince(last_);
+    Restart();
+  }
+  void Restart() { last_ = std::chrono::steady_clock::now(); }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 struct RunOutcome {
   const Scene& scene;
   const RenderScene& rs;
-  const RenderResult& result;
-  const ProgressiveRender& progressive;
-  const RenderResult* reference;  // --compare: the CPU render; else null
+  const RenderedFrame& frame;
+  const RenderedFrame* reference;  // --compare: the CPU render; else null
   RunTimes times;
   uint32_t validationMessages = 0;
   int exitStatus = 0;
-  uint32_t aovSamples = 0;         // --aov: samples per pixel of the AOV pass
   std::vector<std::string> files;  // the image files written, --out first
-  std::vector<RankShare> ranks;    // an MPI job's ranks (empty for one process)
 };
 
 std::string StatsJson(const Options& o, const RunOutcome& run);

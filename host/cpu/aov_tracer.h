@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "image/film.h"
+#include "render/film.h"
 #include "render/render_scene.h"
 
 namespace vkpt {

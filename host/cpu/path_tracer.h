@@ -5,7 +5,7 @@
 #include <functional>
 #include <memory>
 
-#include "image/film.h"
+#include "render/film.h"
 #include "render/render_scene.h"
 
 namespace vkpt {

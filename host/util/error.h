@@ -12,4 +12,8 @@ class Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Prints "vkpt: <kind>: <what>" to stderr as one line of at most a few hundred characters,
+// whatever a file or an argument put into `what`.
+void PrintError(const char* kind, std::string what);
+
 }  // namespace vkpt

@@ -1,4 +1,4 @@
-// The à-trous denoiser (image/denoise.h) on a Vulkan device: denoise.comp, the shared
+// The à-trous denoiser (render/denoise.h) on a Vulkan device: denoise.comp, the shared
 // filter of shaders/shared/denoise.h, one dispatch per iteration between two buffers.
 #pragma once
 
@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "image/denoise.h"
+#include "render/denoise.h"
 #include "vk/context.h"
 
 namespace vkpt::vk {

@@ -1,6 +1,6 @@
 // The Vulkan backend: the scene uploaded once into device-local buffers read as texel
 // buffers, then pathtrace.comp dispatched in batches of samples per pixel into per-pixel
-// sums (storage buffers), which are read back and resolved by a Film (image/film.h).
+// sums (storage buffers), which are read back and resolved by a Film (render/film.h).
 #pragma once
 
 #include <cstdint>
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "image/film.h"
+#include "render/film.h"
 #include "render/render_scene.h"
 #include "vk/buffer.h"
 #include "vk/compute_pipeline.h"

@@ -1,6 +1,5 @@
-// The render as a loop of passes under budgets: --spp (an upper bound), --time, and
-// --noise-target with adaptive sampling; --checkpoint writes the image meanwhile, and a
-// GracefulStop signal ends the loop after its pass. Either backend's FrameRenderer.
+// What ends a render and when it is judged: --spp (an upper bound), --time, and
+// --noise-target with adaptive sampling, whose decisions fall at fixed sample counts.
 #pragma once
 
 #include <cstdint>
@@ -9,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "image/film.h"
+#include "render/film.h"
 
 namespace vkpt {
 
@@ -52,39 +51,5 @@ struct Decision {
   std::string report;  // ", estimated relMSE …[, N of M pixels active]"
 };
 Decision Decide(const RenderBudget& budget, const FrameSums& sums, std::vector<uint8_t>& active);
-
-// How many samples per pixel the next pass takes: about `passSeconds` of work at the rate
-// of the last pass (at most twice its samples), within the time left and the --spp
-// bound, and never past the next decision point; 0 when the time left fits no sample.
-struct PassPlan {
-  uint32_t done = 0;           // samples per pixel so far
-  uint32_t lastPass = 0;       // samples of the last pass (0: none yet)
-  double secondsPerSpp = 0.0;  // of the last pass
-  double elapsed = 0.0;        // rendering seconds so far
-};
-uint32_t NextPassSpp(const RenderBudget& budget, const PassPlan& plan, double passSeconds = 1.0);
-
-struct ProgressiveRender {
-  FrameSums sums;
-  std::vector<uint32_t> sppPerPass;
-  uint32_t spp = 0;      // samples per pixel of the passes (adaptive: the most any pixel has)
-  uint64_t samples = 0;  // every pixel's samples added up
-  StopReason stoppedBy = StopReason::kSpp;
-  int signal = 0;                // kSignal: which one
-  double seconds = 0.0;          // the loop, checkpoints included
-  double estimatedRelMse = 0.0;  // of the final sums (noise_estimate.h)
-  uint64_t activePixels = 0;     // adaptive: pixels still taking samples at the end
-  uint32_t checkpoints = 0;      // images written during the render
-  std::string engine;            // the renderer's, at the end
-};
-
-struct RenderLoopHooks {
-  std::function<void(double)> progress;                            // finished fraction, now and then
-  std::function<void(const FrameSums&, uint32_t spp)> checkpoint;  // write the image so far
-  std::function<void(const std::string&)> passReport;              // a line per pass (-v)
-};
-
-ProgressiveRender RenderProgressively(FrameRenderer& renderer, const RenderBudget& budget,
-                                      const RenderLoopHooks& hooks = {});
 
 }  // namespace vkpt

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include "dist/cluster.h"
-#include "dist/launcher_env.h"
+#include "cluster/cluster.h"
+#include "cluster/launcher_env.h"
 #include "util/error.h"
 
 namespace vkpt {

@@ -1,5 +1,5 @@
 // The processes of one job, when an MPI launcher (mpirun, srun) started several: who this
-// one is, and the few messages vkpt's chunk dealing needs (dist/chunk_dealer.h). Built
+// one is, and the few messages vkpt's chunk dealing needs (cluster/chunk_dealer.h). Built
 // over MPI when CMake found it (cluster_mpi.cpp), else over nothing (cluster_single.cpp),
 // so that no other file knows whether MPI is there.
 #pragma once

@@ -1,4 +1,4 @@
-#include "image/aov.h"
+#include "session/aov.h"
 
 #include <algorithm>
 #include <array>
@@ -105,13 +105,6 @@ std::optional<Aov> AovFromName(std::string_view name) {
 }
 
 bool NeedsAovPass(Aov aov) { return aov != Aov::kVariance && aov != Aov::kSpp; }
-
-AovPixel ResolveAovPixel(const AovPixelSums& a, uint32_t samples) {
-  const double perSample = samples > 0 ? 1.0 / samples : 0.0;
-  const double perHit = a.hits > 0 ? 1.0 / a.hits : 0.0;
-  return {glm::vec3(a.albedo * perSample), glm::vec3(a.normal * perSample), glm::vec3(a.position * perHit),
-          float(a.depth * perHit), float(a.boxTests * perSample)};
-}
 
 std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums& aovSums, const FrameSums& sums,
                                   const Image& image) {

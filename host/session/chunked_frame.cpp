@@ -1,4 +1,4 @@
-#include "image/chunked_frame.h"
+#include "session/chunked_frame.h"
 
 #include <algorithm>
 
@@ -23,8 +23,7 @@ void AddChunk(FrameSums& frame, const FrameSums& chunk) {
   frame.cutShort += chunk.cutShort;
 }
 
-ChunkedFrame::ChunkedFrame(std::unique_ptr<FrameRenderer> inner, uint32_t chunkSpp)
-    : inner_(std::move(inner)), chunkSpp_(chunkSpp) {
+ChunkedFrame::ChunkedFrame(FrameRenderer& inner, uint32_t chunkSpp) : inner_(inner), chunkSpp_(chunkSpp) {
   if (chunkSpp_ == 0) throw Error("a chunk needs at least one sample per pixel");
 }
 
@@ -37,12 +36,12 @@ void ChunkedFrame::AddSamples(uint32_t begin, uint32_t count, std::span<const ui
     const uint32_t piece = std::min(count - added, chunkSpp_ - first % chunkSpp_);
     std::function<void(double)> pieceProgress;
     if (progress) pieceProgress = [&progress, added, piece, count](double f) { progress((added + f * piece) / count); };
-    inner_->AddSamples(first, piece, active, pieceProgress);
+    inner_.AddSamples(first, piece, active, pieceProgress);
     open_ = true;
     added += piece;
     if ((first + piece) % chunkSpp_ == 0) {
-      AddChunk(closed_, inner_->Sums());
-      inner_->Clear();
+      AddChunk(closed_, inner_.Sums());
+      inner_.Clear();
       open_ = false;
     }
   }
@@ -51,13 +50,13 @@ void ChunkedFrame::AddSamples(uint32_t begin, uint32_t count, std::span<const ui
 
 FrameSums ChunkedFrame::Sums() {
   FrameSums sums = closed_;
-  if (open_ || sums.pixels.empty()) AddChunk(sums, inner_->Sums());
+  if (open_ || sums.pixels.empty()) AddChunk(sums, inner_.Sums());
   return sums;
 }
 
 void ChunkedFrame::Clear() {
   closed_ = FrameSums{};
-  inner_->Clear();
+  inner_.Clear();
   done_ = 0;
   open_ = false;
 }

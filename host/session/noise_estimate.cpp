@@ -1,4 +1,4 @@
-#include "image/noise_estimate.h"
+#include "session/noise_estimate.h"
 
 #include <algorithm>
 #include <limits>

@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "image/film.h"
+#include "render/film.h"
 
 namespace vkpt {
 

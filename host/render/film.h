@@ -88,6 +88,14 @@ struct AovSums {
   uint64_t nonFinite = 0;            // CPU: AOV samples left out for a NaN or Inf (a bug if > 0)
 };
 
+// One pixel's AOV-pass values: albedo, normal and box tests averaged over the samples;
+// depth and position over the samples that hit (0 when none did).
+struct AovPixel {
+  glm::vec3 albedo, normal, position;
+  float depth, boxTests;
+};
+AovPixel ResolveAovPixel(const AovPixelSums& sums, uint32_t samples);
+
 // A render in progress on either backend. Samples are added in passes to sums that persist
 // between them, each pixel's in sample order, so a render of n samples made in any number
 // of passes is bit-identical to one pass of n.

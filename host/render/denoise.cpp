@@ -1,8 +1,8 @@
-#include "image/denoise.h"
+#include "render/denoise.h"
 
 #include <utility>
 
-#include "image/aov.h"
+#include "render/film.h"
 #include "util/error.h"
 #include "util/parallel.h"
 

@@ -1,8 +1,8 @@
 // vkpt built without MPI: one process, and a clear error if a launcher started several.
 #include <cstdlib>
 
-#include "dist/cluster.h"
-#include "dist/launcher_env.h"
+#include "cluster/cluster.h"
+#include "cluster/launcher_env.h"
 #include "util/error.h"
 
 namespace vkpt {

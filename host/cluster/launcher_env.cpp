@@ -1,4 +1,4 @@
-#include "dist/launcher_env.h"
+#include "cluster/launcher_env.h"
 
 #include <cstdlib>
 #include <initializer_list>

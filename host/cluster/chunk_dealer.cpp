@@ -1,8 +1,9 @@
-#include "dist/chunk_dealer.h"
+#include "cluster/chunk_dealer.h"
 
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <map>
@@ -11,7 +12,6 @@
 #include <optional>
 #include <thread>
 
-#include "image/chunked_frame.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -89,18 +89,72 @@ double Since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// A whole number from the environment, or `otherwise`.
+long EnvironmentNumber(const char* name, long otherwise) {
+  const char* v = std::getenv(name);
+  return v && *v ? std::strtol(v, nullptr, 10) : otherwise;
+}
+
 [[noreturn]] void Fail(Cluster& cluster, int rank, const std::string& what) {
   std::fprintf(stderr, "vkpt: error: %s: %s\n", cluster.Name(rank).c_str(), what.c_str());
   std::fflush(stderr);
   cluster.Abort(1);
 }
 
+}  // namespace
+
+ChunkRenderer ChunkRendererOf(FrameRenderer& frame, const ChunkPlan& plan) {
+  const long delayMs = EnvironmentNumber("VKPT_TEST_CHUNK_DELAY_MS", 0);
+  const long failAfter = EnvironmentNumber("VKPT_TEST_FAIL_AFTER_CHUNKS", -1);
+  auto rendered = std::make_shared<long>(0);
+  return [&frame, plan, delayMs, failAfter, rendered](uint32_t chunk, std::span<const uint8_t> active) {
+    if ((*rendered)++ == failAfter)
+      throw Error("failing at chunk " + std::to_string(chunk) + " (VKPT_TEST_FAIL_AFTER_CHUNKS)");
+    if (delayMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
+    frame.Clear();
+    frame.AddSamples(plan.Begin(chunk), plan.Samples(chunk), active, {});
+    return frame.Sums();
+  };
+}
+
+std::vector<uint8_t> EncodeChunk(uint32_t chunk, const FrameSums& sums, double seconds) {
+  const uint32_t valueBytes = AllFloats(sums) ? sizeof(float) : sizeof(double);
+  const ChunkHeader h{chunk, sums.width, sums.height, valueBytes, sums.rays, sums.nonFinite, sums.cutShort, seconds};
+  std::vector<uint8_t> bytes(sizeof h + sums.pixels.size() * PixelBytes(valueBytes));
+  std::memcpy(bytes.data(), &h, sizeof h);
+  if (valueBytes == sizeof(float)) PutPixels<float>(sums, bytes.data() + sizeof h);
+  else PutPixels<double>(sums, bytes.data() + sizeof h);
+  return bytes;
+}
+
+FrameSums DecodeChunk(const std::vector<uint8_t>& bytes, uint32_t* chunk, double* seconds) {
+  ChunkHeader h;
+  if (bytes.size() < sizeof h) throw Error("MPI: a chunk's message is truncated");
+  std::memcpy(&h, bytes.data(), sizeof h);
+  const uint64_t pixels = uint64_t(h.width) * h.height;
+  if ((h.valueBytes != sizeof(float) && h.valueBytes != sizeof(double)) ||
+      bytes.size() != sizeof h + pixels * PixelBytes(h.valueBytes))
+    throw Error("MPI: a chunk's message has the wrong size");
+  FrameSums s;
+  s.width = h.width;
+  s.height = h.height;
+  s.rays = h.rays;
+  s.nonFinite = h.nonFinite;
+  s.cutShort = h.cutShort;
+  s.pixels.resize(pixels);
+  if (h.valueBytes == sizeof(float)) GetPixels<float>(bytes.data() + sizeof h, s);
+  else GetPixels<double>(bytes.data() + sizeof h, s);
+  *chunk = h.chunk;
+  *seconds = h.seconds;
+  return s;
+}
+
 // Rank 0's own renderer and the count of chunks dealt: it takes chunks from the same
 // count as the other ranks, on a thread that never calls MPI.
-class LocalRenderer {
+class ChunkDealer::LocalRenderer {
  public:
-  LocalRenderer(const ChunkPlan& plan, const ChunkRenderer& render, uint32_t limit, ActivePixels active)
-      : plan_(plan), render_(render), limit_(limit), active_(std::move(active)) {
+  LocalRenderer(const ChunkPlan& plan, const ChunkRenderer& render, ActivePixels active)
+      : plan_(plan), render_(render), limit_(0), active_(std::move(active)) {
     thread_ = std::thread([this] { Run(); });
   }
   ~LocalRenderer() {
@@ -125,15 +179,17 @@ class LocalRenderer {
     dealing_ = false;
     dealable_.notify_all();
   }
-  uint32_t Dealt() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return next_;
-  }
   // Chunks rank 0 has finished since the last call; its error, if it failed.
   std::map<uint32_t, FrameSums> TakeFinished(std::optional<std::string>* error) {
     std::lock_guard<std::mutex> lock(mutex_);
     *error = error_;
     return std::exchange(finished_, {});
+  }
+  // Whether chunk `chunk` will never be dealt: past the plan, or not dealt yet and no more
+  // dealing (stopped, or the limit reached).
+  bool NeverDealt(uint32_t chunk) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return chunk >= plan_.Chunks() || (chunk >= next_ && (!dealing_ || next_ >= limit_));
   }
   bool Done() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -184,122 +240,80 @@ class LocalRenderer {
   std::thread thread_;
 };
 
-}  // namespace
-
-std::vector<uint8_t> EncodeChunk(uint32_t chunk, const FrameSums& sums, double seconds) {
-  const uint32_t valueBytes = AllFloats(sums) ? sizeof(float) : sizeof(double);
-  const ChunkHeader h{chunk, sums.width, sums.height, valueBytes, sums.rays, sums.nonFinite, sums.cutShort, seconds};
-  std::vector<uint8_t> bytes(sizeof h + sums.pixels.size() * PixelBytes(valueBytes));
-  std::memcpy(bytes.data(), &h, sizeof h);
-  if (valueBytes == sizeof(float)) PutPixels<float>(sums, bytes.data() + sizeof h);
-  else PutPixels<double>(sums, bytes.data() + sizeof h);
-  return bytes;
+ChunkDealer::ChunkDealer(Cluster& cluster, const ChunkPlan& plan, const ChunkRenderer& render)
+    : cluster_(cluster),
+      plan_(plan),
+      active_(std::make_shared<const std::vector<uint8_t>>()),
+      sent_(cluster.Size(), active_),
+      ranks_(cluster.Size()) {
+  for (int r = 0; r < cluster.Size(); ++r) ranks_[r].name = cluster.Name(r);
+  local_ = std::make_unique<LocalRenderer>(plan_, render, active_);
 }
 
-FrameSums DecodeChunk(const std::vector<uint8_t>& bytes, uint32_t* chunk, double* seconds) {
-  ChunkHeader h;
-  if (bytes.size() < sizeof h) throw Error("MPI: a chunk's message is truncated");
-  std::memcpy(&h, bytes.data(), sizeof h);
-  const uint64_t pixels = uint64_t(h.width) * h.height;
-  if ((h.valueBytes != sizeof(float) && h.valueBytes != sizeof(double)) ||
-      bytes.size() != sizeof h + pixels * PixelBytes(h.valueBytes))
-    throw Error("MPI: a chunk's message has the wrong size");
-  FrameSums s;
-  s.width = h.width;
-  s.height = h.height;
-  s.rays = h.rays;
-  s.nonFinite = h.nonFinite;
-  s.cutShort = h.cutShort;
-  s.pixels.resize(pixels);
-  if (h.valueBytes == sizeof(float)) GetPixels<float>(bytes.data() + sizeof h, s);
-  else GetPixels<double>(bytes.data() + sizeof h, s);
-  *chunk = h.chunk;
-  *seconds = h.seconds;
-  return s;
+ChunkDealer::~ChunkDealer() = default;
+
+void ChunkDealer::Open(uint32_t limit, const std::vector<uint8_t>& active) {
+  if (active != *active_) active_ = std::make_shared<const std::vector<uint8_t>>(active);
+  local_->Open(std::min(limit, plan_.Chunks()), active_);
 }
 
-DealtFrame DealChunks(Cluster& cluster, const ChunkPlan& plan, const ChunkRenderer& render, const DealerHooks& hooks) {
-  DealtFrame out;
-  out.ranks.resize(cluster.Size());
-  for (int r = 0; r < cluster.Size(); ++r) out.ranks[r].name = cluster.Name(r);
-  // The next decision point, and the chunks before it.
-  const Decisions& decisions = hooks.decisions;
-  uint32_t point = decisions.nextPoint ? decisions.nextPoint(0) : UINT32_MAX;
-  auto chunksBefore = [&plan](uint32_t spp) {
-    return uint32_t(std::min<uint64_t>(plan.Chunks(), (uint64_t(spp) + plan.chunkSpp - 1) / plan.chunkSpp));
-  };
-  std::map<uint32_t, FrameSums> pending;  // arrived out of order
-  int told = 0;                           // ranks told there are no more chunks
-  std::vector<int> waiting;               // ranks whose request waits for a decision
-  // The pixels the chunks dealt now sample (empty: every pixel), and those each rank has.
-  ActivePixels active = std::make_shared<const std::vector<uint8_t>>();
-  std::vector<ActivePixels> sent(cluster.Size(), active);
-  const auto t0 = std::chrono::steady_clock::now();
-  double lastCheckpoint = 0.0;
-  LocalRenderer local(plan, render, chunksBefore(point), active);
-  auto assign = [&](int rank) {
-    const uint32_t c = local.Deal();
-    if (c == kNotYet) return false;
-    if (c == kNoChunk) ++told;
-    const bool changed = c != kNoChunk && sent[rank] != active;
-    cluster.Send(rank, kAssign, AssignmentMessage(c, changed ? active.get() : nullptr));
-    sent[rank] = active;
-    return true;
-  };
-  for (;;) {
-    bool busy = false;
-    if (std::optional<Cluster::Envelope> e = cluster.Poll()) {
-      busy = true;
-      const std::vector<uint8_t> bytes = cluster.Receive(e->from, e->tag);
-      if (e->tag == kRequest) {
-        if (!assign(e->from)) waiting.push_back(e->from);
-      } else if (e->tag == kResult) {
-        uint32_t c = 0;
-        double seconds = 0.0;
-        FrameSums sums = DecodeChunk(bytes, &c, &seconds);
-        pending.emplace(c, std::move(sums));
-        ++out.ranks[e->from].chunks;
-        out.ranks[e->from].renderSeconds += seconds;
-        out.ranks[e->from].bytesSent += bytes.size();
-      } else if (e->tag == kFailure) {
-        Fail(cluster, e->from, std::string(bytes.begin(), bytes.end()));
-      }
+bool ChunkDealer::Assign(int rank) {
+  const uint32_t c = local_->Deal();
+  if (c == kNotYet) return false;
+  if (c == kNoChunk) ++told_;
+  const bool changed = c != kNoChunk && sent_[rank] != active_;
+  cluster_.Send(rank, kAssign, AssignmentMessage(c, changed ? active_.get() : nullptr));
+  sent_[rank] = active_;
+  return true;
+}
+
+bool ChunkDealer::Serve() {
+  bool busy = false;
+  if (std::optional<Cluster::Envelope> e = cluster_.Poll()) {
+    busy = true;
+    const std::vector<uint8_t> bytes = cluster_.Receive(e->from, e->tag);
+    if (e->tag == kRequest) {
+      if (!Assign(e->from)) waiting_.push_back(e->from);
+    } else if (e->tag == kResult) {
+      uint32_t c = 0;
+      double seconds = 0.0;
+      FrameSums sums = DecodeChunk(bytes, &c, &seconds);
+      pending_.emplace(c, std::move(sums));
+      ++ranks_[e->from].chunks;
+      ranks_[e->from].renderSeconds += seconds;
+      ranks_[e->from].bytesSent += bytes.size();
+    } else if (e->tag == kFailure) {
+      Fail(cluster_, e->from, std::string(bytes.begin(), bytes.end()));
     }
-    std::optional<std::string> error;
-    pending.merge(local.TakeFinished(&error));
-    if (error) Fail(cluster, 0, *error);
-    for (auto it = pending.find(out.chunks); it != pending.end(); it = pending.find(out.chunks)) {
-      AddChunk(out.sums, it->second);
-      out.spp += plan.Samples(out.chunks);
-      ++out.chunks;
-      pending.erase(it);
-      busy = true;
-      if (hooks.progress) hooks.progress(double(out.chunks) / plan.Chunks());
-      if (out.spp == point) {  // every chunk dealt has been added
-        std::vector<uint8_t> next = *active;
-        if (decisions.decide(out.sums, out.spp, next)) {
-          out.decidedToStop = true;
-          local.StopDealing();
-          break;
-        }
-        point = decisions.nextPoint(out.spp);
-        active = std::make_shared<const std::vector<uint8_t>>(std::move(next));
-        local.Open(chunksBefore(point), active);
-      }
-      if (hooks.checkpoint && hooks.checkpointSeconds > 0.0 && Since(t0) - lastCheckpoint >= hooks.checkpointSeconds &&
-          out.chunks < plan.Chunks()) {
-        hooks.checkpoint(out.sums, out.spp);
-        lastCheckpoint = Since(t0);
-      }
-    }
-    if (hooks.stopDealing && hooks.stopDealing()) local.StopDealing();
-    while (!waiting.empty() && assign(waiting.front())) waiting.erase(waiting.begin());
-    if (told == cluster.Size() - 1 && local.Done() && out.chunks == local.Dealt()) break;
-    if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
-  out.ranks[0].chunks = local.chunks;
-  out.ranks[0].renderSeconds = local.seconds;
-  return out;
+  std::optional<std::string> error;
+  pending_.merge(local_->TakeFinished(&error));
+  if (error) Fail(cluster_, 0, *error);
+  while (!waiting_.empty() && Assign(waiting_.front())) waiting_.erase(waiting_.begin());
+  return busy;
+}
+
+std::optional<FrameSums> ChunkDealer::Next(const std::function<bool()>& stopDealing) {
+  for (;;) {
+    if (auto it = pending_.find(next_); it != pending_.end()) {
+      FrameSums sums = std::move(it->second);
+      pending_.erase(it);
+      ++next_;
+      return sums;
+    }
+    if (local_->NeverDealt(next_)) return std::nullopt;
+    if (stopDealing && stopDealing()) local_->StopDealing();
+    if (!Serve()) std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+}
+
+std::vector<RankShare> ChunkDealer::Finish() {
+  local_->StopDealing();
+  while (told_ < cluster_.Size() - 1 || !local_->Done())
+    if (!Serve()) std::this_thread::sleep_for(std::chrono::microseconds(200));
+  ranks_[0].chunks = local_->chunks;
+  ranks_[0].renderSeconds = local_->seconds;
+  return ranks_;
 }
 
 void RenderDealtChunks(Cluster& cluster, const ChunkRenderer& render) {

@@ -2,16 +2,15 @@
 // ([0, k), [k, 2k), …), each chunk summed from zero by a backend, and the chunks' sums
 // added to the frame's in chunk order. The image then depends on the chunk size, the
 // seed and the device alone: a render's passes, or the processes among which an MPI job
-// shares the chunks (app/distributed.h), cannot change a bit of it.
+// shares the chunks (session/dealt_chunks.h), cannot change a bit of it.
 #pragma once
 
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <span>
 #include <string>
 
-#include "image/film.h"
+#include "render/film.h"
 
 namespace vkpt {
 
@@ -22,23 +21,23 @@ constexpr uint32_t kDefaultChunkSpp = 16;
 // Chunks must be added in chunk order for the result to be the one every render makes.
 void AddChunk(FrameSums& frame, const FrameSums& chunk);
 
-// A FrameRenderer that renders through `inner` chunk by chunk: a pass is cut at chunk
-// boundaries, and at each one the inner frame's sums are added to the frame's and
-// cleared. Sums() is the closed chunks' sums with the open chunk's added last.
+// A FrameRenderer that renders through `inner` (which must outlive it) chunk by chunk: a
+// pass is cut at chunk boundaries, and at each one the inner frame's sums are added to
+// the frame's and cleared. Sums() is the closed chunks' sums with the open chunk's added last.
 class ChunkedFrame final : public FrameRenderer {
  public:
-  ChunkedFrame(std::unique_ptr<FrameRenderer> inner, uint32_t chunkSpp);
+  ChunkedFrame(FrameRenderer& inner, uint32_t chunkSpp);
 
   // Passes must follow each other: `begin` is the samples taken so far.
   void AddSamples(uint32_t begin, uint32_t count, std::span<const uint8_t> active,
                   const std::function<void(double)>& progress) override;
   FrameSums Sums() override;
   void Clear() override;
-  AovSums RenderAovs(uint32_t samples) override { return inner_->RenderAovs(samples); }
-  std::string Engine() const override { return inner_->Engine(); }
+  AovSums RenderAovs(uint32_t samples) override { return inner_.RenderAovs(samples); }
+  std::string Engine() const override { return inner_.Engine(); }
 
  private:
-  std::unique_ptr<FrameRenderer> inner_;
+  FrameRenderer& inner_;
   const uint32_t chunkSpp_;
   FrameSums closed_;   // chunks [0, done_ / chunkSpp_)
   uint32_t done_ = 0;  // samples per pixel taken

@@ -9,8 +9,8 @@
 
 #include <glm/glm.hpp>
 
-#include "image/film.h"
 #include "image/image.h"
+#include "render/film.h"
 
 namespace vkpt {
 

@@ -17,8 +17,8 @@
 #include <string_view>
 #include <vector>
 
-#include "image/film.h"
 #include "image/image.h"
+#include "render/film.h"
 
 namespace vkpt {
 
@@ -39,14 +39,6 @@ struct AovLayer {
   std::vector<std::string> suffixes;  // {"R", "G", "B"}, {"X", "Y", "Z"}, {"Z"} or {"Y"}
   std::vector<float> values;          // width · height · suffixes.size()
 };
-
-// One pixel's AOV-pass values: albedo, normal and box tests averaged over the samples;
-// depth and position over the samples that hit (0 when none did).
-struct AovPixel {
-  glm::vec3 albedo, normal, position;
-  float depth, boxTests;
-};
-AovPixel ResolveAovPixel(const AovPixelSums& sums, uint32_t samples);
 
 // The requested AOVs of a render: `aovSums` (read only if some AOV needs the pass),
 // the render's sums and its image (for the variance).

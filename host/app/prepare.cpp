@@ -1,0 +1,132 @@
+#include "app/prepare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "app/environment_option.h"
+#include "app/report.h"
+#include "image/image.h"
+#include "render/light_table.h"
+#include "scene/gltf_loader.h"
+#include "shared/sampling.h"
+#include "util/atomic_write.h"
+#include "util/error.h"
+
+namespace vkpt {
+namespace {
+
+using shader::MaxComponent;
+
+// The camera --camera names (the scene's first, or a default one framing the scene if
+// it has none); its index goes to *index.
+Camera ChooseCamera(const Scene& scene, const Options& o, uint32_t* index) {
+  *index = o.camera.value_or(0);
+  if (scene.cameras.empty()) {
+    if (o.camera)
+      throw Error(o.scene + ": --camera " + std::to_string(*o.camera) + " given, but the scene has no cameras");
+    return DefaultCamera(scene.bounds);
+  }
+  if (*index >= scene.cameras.size())
+    throw Error(o.scene + ": --camera " + std::to_string(*index) + " is out of range; the scene has " +
+                std::to_string(scene.cameras.size()) + " camera(s)");
+  return scene.cameras[*index];
+}
+
+// Resolution: what the user said; the missing side follows the camera's aspect ratio.
+glm::uvec2 ImageSize(const Camera& cam, const Options& o) {
+  float aspect = cam.aspectRatio > 0.0f ? cam.aspectRatio : 1.0f;
+  uint32_t width = o.width.value_or(o.height ? uint32_t(std::lround(*o.height * aspect)) : 512u);
+  uint32_t height = o.height.value_or(uint32_t(std::lround(width / aspect)));
+  return {std::max(1u, std::min(width, 16384u)), std::max(1u, std::min(height, 16384u))};
+}
+
+// The Vulkan context for --backend vulkan (errors are fatal) or auto (no device: the
+// CPU renders, after saying why).
+std::unique_ptr<vk::Context> OpenVulkan(const Options& o) {
+  if (o.backend == Backend::Cpu && !o.compare) return nullptr;
+  // lavapipe reads LP_NUM_THREADS when the device is created: --threads applies to it too.
+  if (o.threads) setenv("LP_NUM_THREADS", std::to_string(o.threads).c_str(), 1);
+  vk::ContextOptions opt;
+  opt.validation = o.validation;
+  opt.device = o.device;
+  if (o.backend == Backend::Vulkan || o.compare || !o.device.empty() || o.validation)
+    return std::make_unique<vk::Context>(opt);
+  try {
+    return std::make_unique<vk::Context>(opt);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vkpt: %s\nvkpt: rendering on the CPU instead\n", e.what());
+    return nullptr;
+  }
+}
+// The BVH and the renderers' arrays, with the environment map. `gpu`: a Vulkan device will
+// render, so the shader's direction-ordered copies of the tree are built; the CPU's layout
+// only where the CPU renders (no device, or --compare).
+RenderScene PrepareForRender(const Scene& scene, const Options& o, bool gpu, EnvironmentMap env) {
+  BvhBuildOptions bvhOptions;
+  bvhOptions.maxLeafSize = o.leafSize;
+  bvhOptions.splits = o.splits;
+  bvhOptions.threads = o.threads;
+  bvhOptions.directionCopies = gpu;
+  RenderScene rs = PrepareRenderScene(scene, bvhOptions, !gpu || o.compare);
+  rs.environment = std::move(env);
+  if (rs.environment.width > 0) AddEnvironmentLight(rs, o.envIntensity);
+  return rs;
+}
+
+// The frame constants from the options; a scene without light sources (HasLightSources)
+// is lit by a white environment unless --env or --background says otherwise (and is warned about if that is
+// black).
+shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, glm::uvec2 size, const Options& o,
+                                     bool report) {
+  shader::FrameParams params = MakeFrameParams(rs, cam, size.x, size.y);
+  params.seed = o.seed;
+  params.sampleBegin = 0;
+  params.sampleCount = o.spp;
+  params.maxDepth = o.maxDepth;
+  params.rrDepth = o.rrDepth;
+  params.textureLod = o.textureLod ? 1u : 0u;
+  if (!o.env.empty()) {
+    SetEnvironmentParams(params, rs.environment, o.envRotation, o.envIntensity);
+  } else if (o.background) {
+    params.background = glm::vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]);
+  } else if (!HasLightSources(rs)) {
+    params.background = glm::vec3(1.0f);
+    if (report && o.verbose)
+      std::printf("  no lights%s: lit by a white environment (see --background)\n",
+                  rs.lights.empty() ? "" : " but emissive textures");
+  }
+  if (report && rs.lights.empty() && o.env.empty() && MaxComponent(params.background) <= 0.0f)
+    std::fprintf(stderr, "vkpt: warning: %s: no lights and a black background; the image will be black\n",
+                 o.scene.c_str());
+  return params;
+}
+
+}  // namespace
+
+Prepared Prepare(const Options& o, bool report) {
+  Prepared p;
+  CheckOutputPath(o.out);  // fail before a long render, not after
+  if (!o.stats.empty()) CheckWritablePath(o.stats, "a stats");
+  PhaseTimer phase;
+  p.scene = LoadGltf(o.scene, o.load);
+  phase.Lap(p.times.load);
+  EnvironmentMap env = LoadEnvironment(o, p.scene);
+  phase.Lap(p.times.environment);
+  uint32_t camIndex = 0;
+  const Camera cam = ChooseCamera(p.scene, o, &camIndex);
+  const glm::uvec2 size = ImageSize(cam, o);
+  // The device before the scene's arrays: without one (auto backend) the CPU renders, and
+  // only then does the scene need the CPU's BVH layout.
+  p.ctx = OpenVulkan(o);
+  phase.Restart();
+  p.rs = PrepareForRender(p.scene, o, p.ctx != nullptr, std::move(env));
+  phase.Lap(p.times.prepare);
+  if (report && o.verbose) PrintLoadReport(p.scene, p.rs, cam, camIndex);
+  p.params = FrameFromOptions(p.rs, cam, size, o, report);
+  return p;
+}
+
+}  // namespace vkpt

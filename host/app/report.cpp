@@ -1,0 +1,168 @@
+#include "app/report.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "image/image_compare.h"
+#include "util/byte_size.h"
+
+namespace vkpt {
+namespace {
+
+// " alpha MASK (cutoff c)", " alpha BLEND", or nothing for OPAQUE; with the factor's alpha.
+std::string AlphaNote(const Material& m) {
+  char note[64] = "";
+  if (m.flags & shader::kMaterialAlphaMask)
+    std::snprintf(note, sizeof note, " alpha MASK %.3g (cutoff %.3g)", m.alpha, m.alphaCutoff);
+  else if (m.flags & shader::kMaterialAlphaBlend) std::snprintf(note, sizeof note, " alpha BLEND %.3g", m.alpha);
+  return note;
+}
+
+std::string DiffPath(const std::string& out) {
+  size_t dot = out.find_last_of('.');
+  return out.substr(0, dot) + "-diff.png";
+}
+
+// Why the render stopped, as the user asked for it.
+std::string StopReasonText(const RenderedFrame& frame, const Options& o) {
+  char why[96];
+  switch (frame.stoppedBy) {
+    case StopReason::kTime: std::snprintf(why, sizeof why, "--time %g s", *o.time); break;
+    case StopReason::kNoiseTarget: std::snprintf(why, sizeof why, "--noise-target %g", *o.noiseTarget); break;
+    case StopReason::kConverged: std::snprintf(why, sizeof why, "every pixel converged (--adaptive)"); break;
+    case StopReason::kSignal:
+      std::snprintf(why, sizeof why, "%s", frame.signal == SIGTERM ? "SIGTERM" : "SIGINT");
+      break;
+    default: std::snprintf(why, sizeof why, "--spp %u", o.spp); break;
+  }
+  return why;
+}
+
+void PrintSceneLine(const Scene& scene, const RenderScene& rs) {
+  const BvhStats& bvh = rs.bvhStats;
+  const char* kind = bvh.spatialSplits ? "spatial" : "object";
+  char choice[96] = "";
+  if (bvh.rejectedSahCost > 0.0)
+    std::snprintf(choice, sizeof choice, " (auto: %s splits' SAH cost was %.3f)",
+                  bvh.spatialSplits ? "object" : "spatial", bvh.rejectedSahCost);
+  std::printf(
+      "  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %s splits%s, %u nodes, %u leaves, "
+      "depth %u, %u triangle references, SAH cost %.3f, built in %.2f ms\n",
+      scene.triangles.size(), rs.degenerateTriangles, rs.lights.size(), kind, choice, bvh.nodes, bvh.leaves, bvh.depth,
+      bvh.references, bvh.sahCost, bvh.buildMs);
+  if (!rs.textures.empty())
+    std::printf("  textures: %zu, %s with their mip levels\n", rs.textures.size(),
+                FormatBytes(rs.texels.size() * sizeof(uint32_t)).c_str());
+}
+
+// The ranks of an MPI job, the AOVs and the denoised image.
+void PrintOutputs(const RenderedFrame& frame, const Options& o, const std::vector<std::string>& files,
+                  const char* denoiser) {
+  for (const RankShare& rank : frame.ranks)
+    std::printf("  %s: %u chunk(s) in %.3f s, %s sent\n", rank.name.c_str(), rank.chunks, rank.renderSeconds,
+                FormatBytes(rank.bytesSent).c_str());
+  if (!o.aovs.empty()) {
+    std::string names, written;
+    for (Aov aov : o.aovs) names += std::string(names.empty() ? "" : ", ") + AovName(aov);
+    for (size_t k = 1; k < files.size(); ++k) written += std::string(written.empty() ? "" : ", ") + files[k];
+    if (written.empty()) written = o.out;
+    std::printf("  AOVs: %s (%u samples per pixel, %.3f s) in %s\n", names.c_str(), frame.aovs.samples,
+                frame.aovSeconds, written.c_str());
+  }
+  if (frame.denoised)
+    std::printf("  denoised (à-trous, %s) in %.3f s; the raw image is %s\n", denoiser, frame.denoiseSeconds,
+                files.back().c_str());
+}
+
+}  // namespace
+
+void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& cam, uint32_t camIndex) {
+  std::printf("scene: %s\n", scene.path.c_str());
+  std::printf("  triangles: %zu, materials: %zu (incl. default), lights: %zu\n", scene.triangles.size(),
+              scene.materials.size(), rs.lights.size());
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    std::printf(
+        "  material %zu \"%s\": baseColor (%.4g, %.4g, %.4g) metallic %.3g roughness %.3g specular %.3g ior %.3g "
+        "transmission %.3g%s emission (%.6g, %.6g, %.6g)%s%s%s\n",
+        i, scene.materialNames[i].c_str(), m.baseColor.x, m.baseColor.y, m.baseColor.z, m.metallic, m.roughness,
+        m.specular, m.ior, m.transmission, (m.flags & shader::kMaterialVolume) ? " (volume)" : "", m.emission.x,
+        m.emission.y, m.emission.z, (m.flags & shader::kMaterialDoubleSided) ? " double-sided" : "",
+        (m.flags & shader::kMaterialUnlit) ? " unlit" : "", AlphaNote(m).c_str());
+  }
+  if (!scene.colors.empty()) std::printf("  vertex colours (COLOR_0): multiply the base colour\n");
+  if (!scene.textures.empty()) {
+    uint64_t texels = 0;
+    for (const TextureImage& im : scene.images) texels += uint64_t(im.width) * im.height;
+    std::printf("  textures: %zu from %zu images, %llu texels at level 0\n", scene.textures.size(), scene.images.size(),
+                (unsigned long long)texels);
+  }
+  if (scene.generatedTangentPrimitives > 0)
+    std::printf("  tangents: generated (MikkTSpace) for %u normal-mapped primitive(s) without TANGENT\n",
+                scene.generatedTangentPrimitives);
+  std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", scene.bounds.lo.x, scene.bounds.lo.y,
+              scene.bounds.lo.z, scene.bounds.hi.x, scene.bounds.hi.y, scene.bounds.hi.z);
+  char which[16] = "default";
+  if (!scene.cameras.empty()) std::snprintf(which, sizeof which, "#%u", camIndex);
+  std::printf("  cameras: %zu; using %s \"%s\" at (%.6g, %.6g, %.6g) looking (%.4g, %.4g, %.4g), %s %.4g\n",
+              scene.cameras.size(), which, cam.name.c_str(), cam.position.x, cam.position.y, cam.position.z,
+              cam.forward.x, cam.forward.y, cam.forward.z,
+              cam.orthographic ? "orthographic ymag" : "perspective yfov(deg)",
+              cam.orthographic ? cam.ymag : cam.yfov * 180.0 / M_PI);
+  std::printf("  memory: %s counted for the scene, of --max-memory %s\n", FormatBytes(scene.memoryCounted).c_str(),
+              FormatBytes(scene.memoryLimit).c_str());
+  for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
+  for (const std::string& f : scene.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
+}
+
+std::function<void(double)> ProgressLine() {
+  if (!isatty(STDERR_FILENO)) return {};
+  return [](double f) { std::fprintf(stderr, "\rrendering: %5.1f%%", 100.0 * f); };
+}
+
+void EndProgressLine() {
+  if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r%*s\r", 20, "");
+}
+
+void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderedFrame& frame, const Options& o,
+                       const std::vector<std::string>& files, const char* denoiser) {
+  const Image& image = frame.image;
+  glm::dvec3 mean(0.0);
+  for (const glm::vec3& px : image.pixels) mean += glm::dvec3(px);
+  mean /= double(image.pixels.size());
+  std::printf("vkpt: %s -> %s: %ux%u, %u spp, %s\n", o.scene.c_str(), o.out.c_str(), image.width, image.height,
+              frame.spp, frame.engine.c_str());
+  std::printf("  stopped by %s after %zu pass(es); estimated relMSE %.4g", StopReasonText(frame, o).c_str(),
+              frame.sppPerPass.size(), frame.estimatedRelMse);
+  const double samples = double(frame.samples);
+  if (o.Adaptive())
+    std::printf("; adaptive: %.2f spp per pixel on average, %llu pixels still active", samples / image.pixels.size(),
+                (unsigned long long)frame.activePixels);
+  std::printf("\n  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", frame.seconds,
+              samples / frame.seconds * 1e-6, double(frame.sums.rays) / frame.seconds * 1e-6, mean.x, mean.y, mean.z);
+  PrintSceneLine(scene, rs);
+  if (frame.sums.nonFinite)
+    std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)frame.sums.nonFinite);
+  if (frame.sums.cutShort)
+    std::fprintf(stderr,
+                 "vkpt: warning: %llu samples came near lavapipe's limit of 65535 loop iterations per SIMD group "
+                 "and may have been cut short (image biased dark); use --backend cpu or a smaller --max-depth\n",
+                 (unsigned long long)frame.sums.cutShort);
+  PrintOutputs(frame, o, files, denoiser);
+}
+
+int CompareBackends(const RenderedFrame& reference, const RenderedFrame& frame, const Options& o) {
+  ImageComparison c = CompareImages(reference.image, frame.image);
+  WriteImage(DifferenceHeatmap(reference.image, frame.image), DiffPath(o.out));
+  std::printf("vkpt: --compare: A = %s (%.3f s), B = %s (%.3f s), seed %u\n%s\n  heat map: %s\n",
+              reference.engine.c_str(), reference.seconds, frame.engine.c_str(), frame.seconds, o.seed,
+              c.Summary().c_str(), DiffPath(o.out).c_str());
+  if (c.lockstepAgree && c.statisticallyAgree) return 0;
+  std::fprintf(stderr, "vkpt: --compare: the CPU and Vulkan images DISAGREE\n");
+  return 4;
+}
+
+}  // namespace vkpt

@@ -1,0 +1,239 @@
+#include "app/run.h"
+
+#include <signal.h>
+
+#include <cstdio>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/prepare.h"
+#include "app/report.h"
+#include "app/run_stats.h"
+#include "cluster/agreement.h"
+#include "cluster/chunk_dealer.h"
+#include "image/image.h"
+#include "image/image_compare.h"
+#include "session/aov.h"
+#include "session/backend.h"
+#include "session/dealt_chunks.h"
+#include "session/local_passes.h"
+#include "session/render_session.h"
+#include "util/atomic_write.h"
+#include "util/content_hash.h"
+#include "util/error.h"
+#include "util/graceful_stop.h"
+#include "vk/context.h"
+
+namespace vkpt {
+namespace {
+
+SessionSettings SettingsFromOptions(const Options& o, const RenderBackend& backend) {
+  SessionSettings s;
+  RenderBudget& b = s.budget;
+  b.maxSpp = o.spp;
+  b.seconds = o.time;
+  b.noiseTarget = o.noiseTarget;
+  b.adaptive = o.Adaptive();
+  if (o.noiseTarget) b.adaptiveThreshold = *o.noiseTarget;
+  b.checkpointSeconds = o.checkpoint;
+  b.chunkSpp = o.chunkSpp;
+  s.checkpointPath = o.out;
+  s.exposure = o.exposure;
+  s.aovPass = std::any_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass);
+  if (o.denoise) s.denoise = backend.MakeDenoiser();
+  return s;
+}
+
+SessionHooks HooksFromOptions(const Options& o) {
+  SessionHooks hooks;
+  hooks.progress = ProgressLine();
+  // Flushed line by line: a script reading a pipe sees each pass as it ends.
+  if (o.verbose)
+    hooks.report = [](const std::string& line) {
+      std::printf("  %s\n", line.c_str());
+      std::fflush(stdout);
+    };
+  return hooks;
+}
+
+RenderedFrame Render(SampleSource& source, const SessionSettings& settings, const Options& o) {
+  RenderedFrame frame = RenderSession(source, settings, HooksFromOptions(o));
+  EndProgressLine();
+  return frame;
+}
+
+// --compare's reference: the same samples on the CPU, without budgets but --spp.
+RenderedFrame RenderReference(const Prepared& p, const Options& o) {
+  RenderBackend cpu(nullptr, p.rs, p.params, 0, o.threads);
+  LocalPasses source(cpu.Frame(), o.chunkSpp);
+  SessionSettings settings;
+  settings.budget.maxSpp = o.spp;
+  settings.budget.chunkSpp = o.chunkSpp;
+  return Render(source, settings, Options{});
+}
+
+// The image files: --out (denoised with --denoise, the raw one beside it) and its AOVs.
+std::vector<std::string> WriteFiles(const RenderedFrame& frame, const Options& o) {
+  std::vector<std::string> files =
+      WriteImageWithAovs(frame.denoised ? *frame.denoised : frame.image,
+                         ResolveAovs(o.aovs, frame.aovs, frame.sums, frame.image), o.out, o.exposure);
+  if (frame.denoised) {
+    files.push_back(SiblingPath(o.out, "raw"));
+    WriteImage(frame.image, files.back(), o.exposure);
+  }
+  return files;
+}
+
+// After the render: the files, the reports and the stats; the exit status.
+int Finish(const Options& o, Prepared& p, const RenderedFrame& frame, const RenderedFrame* reference,
+           const RenderBackend& backend) {
+  RunTimes& times = p.times;
+  times.upload = backend.UploadSeconds();
+  times.render = frame.seconds;
+  times.aov = frame.aovSeconds;
+  times.denoise = frame.denoiseSeconds;
+  PhaseTimer phase;
+  const std::vector<std::string> files = WriteFiles(frame, o);
+  phase.Lap(times.write);
+  int status = reference ? CompareBackends(*reference, frame, o) : 0;
+  PrintRenderReport(p.scene, p.rs, frame, o, files, backend.DenoiserName());
+  const uint32_t validationMessages = p.ctx ? p.ctx->ValidationMessages() : 0;
+  if (validationMessages) {
+    std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
+    status = 3;
+  }
+  if (const int sig = GracefulStop::Signal()) {
+    std::fprintf(stderr, "vkpt: interrupted by %s: %s holds the %u spp rendered (%s)\n",
+                 sig == SIGTERM ? "SIGTERM" : "SIGINT", o.out.c_str(), frame.spp,
+                 frame.stoppedBy == StopReason::kSignal ? "stopped early" : "the render had finished");
+    status = 128 + sig;
+  }
+  if (!o.stats.empty()) {
+    times.total = SecondsSince(p.start);
+    const std::string json = StatsJson(o, {p.scene, p.rs, frame, reference, times, validationMessages, status, files});
+    WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
+  }
+  return status;
+}
+
+int ListDevices() {
+  std::vector<vk::DeviceInfo> devices = vk::ListDevices();
+  if (devices.empty()) {
+    std::printf("no Vulkan devices (install mesa-vulkan-drivers for lavapipe, a software device)\n");
+    return 0;
+  }
+  for (const vk::DeviceInfo& d : devices)
+    std::printf("%u: %s (%s, Vulkan %u.%u)%s\n", d.index, d.name.c_str(), d.TypeName(),
+                VK_API_VERSION_MAJOR(d.apiVersion), VK_API_VERSION_MINOR(d.apiVersion),
+                d.hasComputeQueue ? "" : " [no compute queue]");
+  return 0;
+}
+
+// --diff A B: two existing images, no rendering.
+int Diff(const Options& o) {
+  Image a = ReadPfm(o.diff[0]);
+  Image b = ReadPfm(o.diff[1]);
+  if (!o.outGiven.empty()) CheckOutputPath(o.outGiven);
+  ImageComparison c = CompareImages(a, b);
+  std::printf("vkpt: %s (A) vs %s (B)\n%s\n", o.diff[0].c_str(), o.diff[1].c_str(), c.Summary().c_str());
+  if (!o.outGiven.empty()) WriteImage(DifferenceHeatmap(a, b), o.outGiven);
+  return c.statisticallyAgree ? 0 : 4;
+}
+
+// Runs `step` and returns its exit status (0, or 1 and the error's message).
+int Attempt(const std::function<void()>& step, std::string* message) {
+  try {
+    step();
+    return 0;
+  } catch (const Error& e) {
+    *message = e.what();
+  } catch (const std::bad_alloc&) {
+    *message = "out of memory";
+  } catch (const std::exception& e) {
+    *message = e.what();
+  }
+  return 1;
+}
+
+// The options that must be the same on every rank: all but where and how each renders.
+uint64_t FrameKey(const Options& o, const Prepared& p) {
+  Options shared = o;
+  shared.backend = Backend::Auto;
+  shared.device.clear();
+  shared.threads = 0;
+  shared.batch = 0;
+  shared.validation = shared.verbose = false;
+  const std::string key = OptionsAsJson(shared) + std::to_string(p.scene.contentHash);
+  ContentHash hash;
+  hash.Add({reinterpret_cast<const unsigned char*>(key.data()), key.size()});
+  return hash.Value();
+}
+
+// The options on every rank, refused where a run needs one process.
+int ParseOnEveryRank(Cluster& cluster, int argc, char** argv, Options& o) {
+  std::string message;
+  int status = 0;
+  try {
+    o = ParseOptions(argc, argv);
+    if (o.compare) throw UsageError("--compare renders in one process; run it without mpirun");
+    if (!o.diff.empty() || o.listDevices || o.help || o.version)
+      throw UsageError("--diff, --list-devices, --help and --version run in one process; run them without mpirun");
+  } catch (const UsageError& e) {
+    status = 2;
+    message = e.what();
+  }
+  return AgreeOnOutcome(cluster, status, message, "usage error");
+}
+
+}  // namespace
+
+int Run(const Options& o) {
+  if (o.listDevices) return ListDevices();
+  if (!o.diff.empty()) return Diff(o);
+  Prepared p = Prepare(o, true);
+  std::optional<RenderedFrame> reference;
+  if (o.compare) reference = RenderReference(p, o);
+  RenderBackend backend(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
+  LocalPasses source(backend.Frame(), o.chunkSpp);
+  // From here the first SIGINT/SIGTERM stops the render after its pass, and the image of
+  // the samples taken is still written.
+  GracefulStop stop;
+  const RenderedFrame frame = Render(source, SettingsFromOptions(o, backend), o);
+  return Finish(o, p, frame, reference ? &*reference : nullptr, backend);
+}
+
+int RunRank(Cluster& cluster, int argc, char** argv) {
+  Options o;
+  if (const int status = ParseOnEveryRank(cluster, argc, argv, o)) return status;
+  Prepared p;
+  std::unique_ptr<RenderBackend> backend;
+  std::string message;
+  int status = Attempt(
+      [&] {
+        p = Prepare(o, cluster.Rank() == 0);
+        backend = std::make_unique<RenderBackend>(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
+      },
+      &message);
+  if ((status = AgreeOnOutcome(cluster, status, message, "error"))) return status;
+  if (!cluster.AllEqual(FrameKey(o, p))) {
+    if (cluster.Rank() == 0)
+      PrintError("usage error",
+                 "the ranks were given different frames: only --backend, --device, --threads, --batch, "
+                 "--validation and -v may differ between ranks");
+    return 2;
+  }
+  GracefulStop stop;  // rank 0 stops dealing at a signal; the others finish their chunk
+  const ChunkPlan plan{o.spp, o.chunkSpp};
+  if (cluster.Rank() != 0) {
+    RenderDealtChunks(cluster, ChunkRendererOf(backend->Frame(), plan));
+    return 0;
+  }
+  DealtChunks source(cluster, backend->Frame(), plan);
+  const RenderedFrame frame = Render(source, SettingsFromOptions(o, *backend), o);
+  return Finish(o, p, frame, nullptr, *backend);
+}
+
+}  // namespace vkpt

@@ -1,0 +1,151 @@
+#include "session/render_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "image/image.h"
+#include "session/noise_estimate.h"
+#include "util/graceful_stop.h"
+
+namespace vkpt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The loop's state between steps.
+class FrameLoop {
+ public:
+  FrameLoop(SampleSource& source, const SessionSettings& settings, const SessionHooks& hooks)
+      : source_(source), settings_(settings), budget_(settings.budget), hooks_(hooks) {
+    if (budget_.seconds)
+      deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(*budget_.seconds));
+  }
+
+  RenderedFrame Run() {
+    while (!stoppedBy_.has_value()) {
+      const uint32_t point = budget_.Decisions() ? NextDecisionPoint(done_, budget_.chunkSpp) : UINT32_MAX;
+      const uint32_t n = Step(std::min(budget_.maxSpp, point));
+      if (n == 0) {
+        stoppedBy_ = done_ >= budget_.maxSpp  ? StopReason::kSpp
+                     : GracefulStop::Signal() ? StopReason::kSignal
+                                              : StopReason::kTime;
+        break;
+      }
+      std::string line = PassLine(n);
+      if (done_ == point) line += Judge();
+      if (hooks_.report) hooks_.report(line);
+      if (!stoppedBy_ && done_ < budget_.maxSpp) Checkpoint();
+    }
+    return Result();
+  }
+
+ private:
+  // Asks the source for samples before `limit`: how many it added.
+  uint32_t Step(uint32_t limit) {
+    SampleRequest request{done_, limit, active_, deadline_, {}};
+    if (hooks_.progress) request.progress = [this](double spp) { hooks_.progress(Fraction(spp)); };
+    const auto t0 = Clock::now();
+    const uint32_t n = source_.Advance(request);
+    stepSeconds_ = Since(t0);
+    done_ += n;
+    if (n) {
+      passes_.push_back(n);
+      fresh_ = false;
+    }
+    if (n && hooks_.progress) hooks_.progress(Fraction(done_));
+    return n;
+  }
+
+  // At a decision point: the noise, the pixels that go on, and perhaps the end.
+  std::string Judge() {
+    sums_ = source_.Sums();
+    fresh_ = true;
+    const Decision d = Decide(budget_, sums_, active_);
+    noise_ = d.noise;
+    activePixels_ = d.activePixels;
+    if (d.stop) stoppedBy_ = *d.stop;
+    return d.report;
+  }
+
+  void Checkpoint() {
+    if (budget_.checkpointSeconds <= 0.0 || settings_.checkpointPath.empty() ||
+        Since(start_) - lastCheckpoint_ < budget_.checkpointSeconds)
+      return;
+    if (!fresh_) sums_ = source_.Sums();
+    fresh_ = true;
+    WriteImage(ResolveFilm(sums_), settings_.checkpointPath, settings_.exposure);
+    ++checkpoints_;
+    lastCheckpoint_ = Since(start_);
+    if (hooks_.report)
+      hooks_.report("checkpoint: " + settings_.checkpointPath + " at " + std::to_string(done_) + " spp");
+  }
+
+  std::string PassLine(uint32_t n) const {
+    char line[96];
+    std::snprintf(line, sizeof line, "pass %zu: samples %u..%u in %.3f s", passes_.size(), done_ - n, done_ - 1,
+                  stepSeconds_);
+    return line;
+  }
+
+  double Fraction(double spp) const { return FinishedFraction(budget_, spp, Since(start_), noise_); }
+
+  RenderedFrame Result() {
+    RenderedFrame r;
+    r.sums = fresh_ ? std::move(sums_) : source_.Sums();
+    r.ranks = source_.Finish();
+    r.stoppedBy = *stoppedBy_;
+    r.signal = GracefulStop::Signal();
+    r.sppPerPass = std::move(passes_);
+    r.spp = done_;
+    r.engine = source_.Engine();
+    r.seconds = Since(start_);
+    r.image = ResolveFilm(r.sums);
+    r.estimatedRelMse = EstimatedRelMse(r.sums);
+    r.samples = TotalSamples(r.sums);
+    r.activePixels = active_.empty() ? r.sums.pixels.size() : activePixels_;
+    r.checkpoints = checkpoints_;
+    return r;
+  }
+
+  SampleSource& source_;
+  const SessionSettings& settings_;
+  const RenderBudget& budget_;
+  const SessionHooks& hooks_;
+  const Clock::time_point start_ = Clock::now();
+  std::optional<Clock::time_point> deadline_;
+  std::optional<StopReason> stoppedBy_;
+  uint32_t done_ = 0;
+  std::vector<uint32_t> passes_;
+  double stepSeconds_ = 0.0;
+  std::vector<uint8_t> active_;  // empty: every pixel
+  uint64_t activePixels_ = 0;
+  double noise_ = INFINITY;  // of the last decision
+  FrameSums sums_;
+  bool fresh_ = false;  // sums_ holds every sample taken
+  uint32_t checkpoints_ = 0;
+  double lastCheckpoint_ = 0.0;
+};
+
+}  // namespace
+
+RenderedFrame RenderSession(SampleSource& source, const SessionSettings& settings, const SessionHooks& hooks) {
+  RenderedFrame frame = FrameLoop(source, settings, hooks).Run();
+  if (settings.aovPass || settings.denoise) {
+    const auto t0 = Clock::now();
+    frame.aovs = source.RenderAovs(std::min(kAovSamples, frame.spp));
+    frame.aovSeconds = Since(t0);
+  }
+  if (settings.denoise) {
+    const auto t0 = Clock::now();
+    const DenoiseInput input = PrepareDenoise(frame.image, frame.aovs);
+    frame.denoised = FinishDenoise(input, settings.denoise(input));
+    frame.denoiseSeconds = Since(t0);
+  }
+  return frame;
+}
+
+}  // namespace vkpt
