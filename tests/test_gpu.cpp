@@ -201,7 +201,7 @@ TEST_F(GpuTest, TraversalMatchesCpuOnLargeCorpusModel) {
 // lavapipe ends a shader after 65535 loop passes per SIMD group; pathtrace.comp flags
 // samples near that limit from the passes the traversal counts. The count must be exact:
 // a probe loop sized from it must end right at the limit, and one pass longer must be
-// cut (see VKPT_TEST_LOOP_BUDGET in trace.comp).
+// cut (see tests/shaders/trace_loop_budget.comp).
 TEST_F(GpuTest, TraversalCountsLoopPassesExactly) {
   // The loop limit is lavapipe's, and the suite pins lavapipe (tests/CMakeLists.txt).
   ASSERT_NE(Gpu().DeviceName().find("llvmpipe"), std::string::npos) << Gpu().DeviceName();
