@@ -8,7 +8,7 @@
 // intensity I and a directional light's (lux) irradiance E, 1:1, so a point light of
 // intensity I lights a Lambert surface at distance r to ρ/π · I cos θ / r².
 //
-// Scene access (see path.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i),
+// Scene access (backend_contract.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i),
 // environment.h's VKPT_ENV_TEXEL(i), VKPT_ENV_CDF(i), and material_textures.h's.
 //
 // The punctual falloffs and the emitter's cosine and texture below are seams of the

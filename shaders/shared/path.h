@@ -31,12 +31,14 @@
 #ifdef VKPT_ESTIMATOR_OVERRIDES
 #include "estimator_overrides.h"  // first: before any header whose seams it replaces
 #endif
+#include "prelude.h"  // first, as in every shared header
+
+#include "backend_contract.h"  // the backend's scene access is complete by now
 #include "bsdf.h"
 #include "estimator.h"
 #include "intersect.h"
 #include "layout.h"
 #include "lights.h"
-#include "prelude.h"
 #include "ray_cone.h"
 #include "rng.h"
 #include "sampling.h"
