@@ -29,19 +29,5 @@ void main() {
   bool inside = i < uint(rays.length());
   RayQuery r = rays[inside ? i : 0u];
   HitRecord h = TraceClosest(r.origin, r.dir, r.tMax, 0u);
-#ifdef VKPT_TEST_LOOP_BUDGET
-  // Test variant (tests/test_gpu.cpp): checks the traversal's count of loop passes
-  // against lavapipe's limit itself. Both traversals run; then a probe loop of L passes
-  // is sized so that, if the count C is exact, it ends on the last pass the limit allows
-  // (pad0 = 0: the probe completes, j = L) or one pass past it (pad0 = 1: j = L - 1).
-  TraceOccluded(r.origin, r.dir, h.t > 0.0f ? h.t : r.tMax, 0u);
-  uint counted = subgroupAdd(gLoopIterations);
-  uint probe = 65535u + r.pad0 - counted;
-  uint j = 0u;
-  while (j < probe) ++j;
-  h.t = uintBitsToFloat(j);
-  h.b1 = uintBitsToFloat(probe);
-  h.b2 = uintBitsToFloat(counted);
-#endif
   if (inside) hits[i] = h;
 }

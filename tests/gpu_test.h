@@ -6,12 +6,23 @@
 
 #include <cstdint>
 
+#include "render/render_scene.h"
 #include "vk/context.h"
+#include "vk/vk_renderer.h"
 
 namespace vkpt::test {
 
 // Created on first use (device creation costs ~100 ms), with the validation layer on.
 vk::Context& Gpu();
+
+// A GpuRenderer on Gpu() with some of its kernels or limits replaced (deliberately wrong
+// kernels, probes, small texel buffers): vk::GpuRendererOverrides, through the renderer's
+// protected constructor.
+class GpuRendererWith : public vk::GpuRenderer {
+ public:
+  GpuRendererWith(const RenderScene& scene, const vk::GpuRendererOverrides& overrides)
+      : GpuRenderer(Gpu(), scene, overrides) {}
+};
 
 class ValidatedGpuTest : public ::testing::Test {
  protected:

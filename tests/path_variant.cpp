@@ -1,12 +1,13 @@
 // One variant of the shared estimator for the CPU (see path_variants.h): compiled with
-// VKPT_PATH_VARIANT=<the function's name> and the variant's macros.
+// VKPT_PATH_VARIANT=<the function's name>, VKPT_ESTIMATOR_OVERRIDES and the macros that
+// select the variant's replacements (shaders/estimator_overrides.h).
 //
-// The headers a variant changes (microfacet.h, bsdf.h, lights.h, path.h) are compiled here
-// inside the namespace vkpt::shader::<variant>, so that their inline functions cannot stand
-// in for the product's (one definition rule) nor the product's for them; everything else
-// they use comes from vkpt::shader as in host/cpu/cpu_path.h, included first. Only path.h
-// includes bsdf.h and lights.h, and only bsdf.h microfacet.h, so none of the four is
-// included before.
+// The headers that call the replaced seams (path.h, and through it the overrides,
+// bsdf.h, microfacet.h and lights.h) are compiled here inside the namespace
+// vkpt::shader::<variant>, so that their inline functions cannot stand in for the
+// product's (one definition rule) nor the product's for them; everything else they use
+// comes from vkpt::shader as in host/cpu/cpu_path.h, included first. Only path.h includes
+// bsdf.h and lights.h, and only bsdf.h microfacet.h, so none of the four is included before.
 #include "path_variants.h"
 
 #include <atomic>

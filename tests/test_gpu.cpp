@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <random>
+#include <span>
 
 #include "cpu/path_tracer.h"
 #include "cpu/traversal.h"
@@ -61,7 +62,8 @@ FrameParams Params(const RenderScene& rs, const Scene& scene, uint32_t w, uint32
 
 TEST_F(GpuTest, SharedMathMatchesCpu) {
   const uint32_t n = 65536;
-  vk::Buffer out(Gpu(), n * sizeof(shader::MathOut), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+  vk::Buffer out(Gpu(), n * sizeof(shader::MathOut),
+                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                  VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "math out");
   vk::Buffer host(Gpu(), out.Size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                   VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "math readback");
@@ -87,9 +89,10 @@ TEST_F(GpuTest, SharedMathMatchesCpu) {
     maxMisc = std::max(maxMisc, md);
     miscDiff += md > 1e-5f;
   }
-  std::printf("%u inputs: hash mismatches %u, random-float and Sobol mismatches %u (bitwise); direction max error %.2e "
-              "(%u > 1e-5); barycentric/box/triangle max error %.2e (%u > 1e-5)\n",
-              n, hashDiff, randDiff, maxDir, dirDiff, maxMisc, miscDiff);
+  std::printf(
+      "%u inputs: hash mismatches %u, random-float and Sobol mismatches %u (bitwise); direction max error %.2e "
+      "(%u > 1e-5); barycentric/box/triangle max error %.2e (%u > 1e-5)\n",
+      n, hashDiff, randDiff, maxDir, dirDiff, maxMisc, miscDiff);
   EXPECT_EQ(hashDiff, 0u);
   EXPECT_EQ(randDiff, 0u);
   EXPECT_EQ(dirDiff, 0u);
@@ -112,7 +115,8 @@ std::vector<shader::RayQuery> RandomRays(const RenderScene& rs, uint32_t count, 
     glm::vec3 o = b.lo - 0.25f * ext + 1.5f * ext * glm::vec3(u(rng), u(rng), u(rng));
     glm::vec3 d;
     if (i % 2) {
-      const shader::Triangle& t = rs.triangles[std::min<size_t>(size_t(u(rng) * rs.triangles.size()), rs.triangles.size() - 1)];
+      const shader::Triangle& t =
+          rs.triangles[std::min<size_t>(size_t(u(rng) * rs.triangles.size()), rs.triangles.size() - 1)];
       d = t.v0 + u(rng) * 0.5f * t.e1 + u(rng) * 0.5f * t.e2 - o;
     } else {
       d = glm::vec3(u(rng), u(rng), u(rng)) * 2.0f - 1.0f;
@@ -128,7 +132,7 @@ std::vector<shader::RayQuery> RandomRays(const RenderScene& rs, uint32_t count, 
 void CompareTraversal(const RenderScene& rs, uint32_t count, uint32_t seed, bool bruteForce,
                       uint32_t maxTexelsPerBuffer = 0) {
   std::vector<shader::RayQuery> rays = RandomRays(rs, count, seed);
-  vk::GpuRenderer gpu(Gpu(), rs, nullptr, 0, maxTexelsPerBuffer);
+  test::GpuRendererWith gpu(rs, {.maxTexelsPerBuffer = maxTexelsPerBuffer});
   std::vector<shader::HitRecord> hits = gpu.Trace(rays);
   uint32_t mismatches = 0, ties = 0, hitCount = 0;
   for (uint32_t i = 0; i < count; ++i) {
@@ -201,7 +205,7 @@ TEST_F(GpuTest, TraversalMatchesCpuOnLargeCorpusModel) {
 // lavapipe ends a shader after 65535 loop passes per SIMD group; pathtrace.comp flags
 // samples near that limit from the passes the traversal counts. The count must be exact:
 // a probe loop sized from it must end right at the limit, and one pass longer must be
-// cut (see VKPT_TEST_LOOP_BUDGET in trace.comp).
+// cut (see tests/shaders/trace_loop_budget.comp).
 TEST_F(GpuTest, TraversalCountsLoopPassesExactly) {
   // The loop limit is lavapipe's, and the suite pins lavapipe (tests/CMakeLists.txt).
   ASSERT_NE(Gpu().DeviceName().find("llvmpipe"), std::string::npos) << Gpu().DeviceName();
@@ -210,11 +214,11 @@ TEST_F(GpuTest, TraversalCountsLoopPassesExactly) {
   scenes.push_back(PrepareRenderScene(cornell));
   scenes.push_back(PrepareRenderScene(test::MakeScene(test::RandomSoup(3000, 11), {Material{}})));
   for (const RenderScene& rs : scenes) {
-    vk::GpuRenderer gpu(Gpu(), rs);
+    test::GpuRendererWith gpu(rs, {.traceSpirv = kTraceLoopBudgetSpirv});
     std::vector<shader::RayQuery> rays = RandomRays(rs, 4096, 5);
     for (uint32_t beyond : {0u, 1u}) {
       for (shader::RayQuery& r : rays) r.pad0 = beyond;
-      std::vector<shader::HitRecord> out = gpu.Trace(rays, nullptr, kTraceLoopBudgetSpirv, sizeof(kTraceLoopBudgetSpirv));
+      std::vector<shader::HitRecord> out = gpu.Trace(rays);
       uint32_t wrong = 0, minCounted = ~0u, maxCounted = 0;
       for (const shader::HitRecord& h : out) {
         uint32_t passes = glm::floatBitsToUint(h.t), probe = glm::floatBitsToUint(h.b1);
@@ -302,7 +306,7 @@ TEST_F(GpuTest, TexturedQuadShowsItsTexels) {
   const int cpuOff = test::PixelsOffTexturedQuad(RenderCpu(rs, p).image);
   // The store (5 texels) in two texel buffers of at most 2, as on a device whose
   // maxTexelBufferElements it passes: texels from the 9th word on come from the second.
-  vk::GpuRenderer split(Gpu(), rs, nullptr, 0, 2);
+  test::GpuRendererWith split(rs, {.maxTexelsPerBuffer = 2});
   const int splitOff = test::PixelsOffTexturedQuad(split.Render(p).image);
   std::printf(
       "textured quad: %d (GPU), %d (GPU, two texel buffers) and %d (CPU) of 4096 pixels differ from their texel\n",
@@ -324,7 +328,8 @@ TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImage) {
     const Image one = vk::GpuRenderer(Gpu(), rs).Render(p).image;
     int identical = 0;
     for (uint32_t split : {1u, 3u, uint32_t(rs.triangles.size()) / 2}) {
-      const Image two = vk::GpuRenderer(Gpu(), rs, nullptr, 0, split * shader::kTexelsPerTriangle).Render(p).image;
+      const Image two =
+          test::GpuRendererWith(rs, {.maxTexelsPerBuffer = split * shader::kTexelsPerTriangle}).Render(p).image;
       const bool same = two.pixels == one.pixels && two.variance == one.variance;
       EXPECT_TRUE(same) << path << ": " << split << " triangles in the first buffer";
       identical += same;
@@ -376,18 +381,18 @@ TEST_F(GpuTest, RunPastTheLoopLimitIsReported) {
   vk::GpuRenderOptions o;
   o.samplesPerInvocation = p.sampleCount;
   RenderResult r = gpu.Render(p, o);
-  std::printf("2000 samples per invocation: %llu of %u samples flagged as cut short\n",
-              (unsigned long long)r.cutShort, 64 * p.sampleCount);
+  std::printf("2000 samples per invocation: %llu of %u samples flagged as cut short\n", (unsigned long long)r.cutShort,
+              64 * p.sampleCount);
   EXPECT_GT(r.cutShort, 0u);
 }
 
 // Independent seeds: region means must agree within their standard errors. The same
 // test must reject deliberately wrong shaders (proof that it has teeth).
-ImageComparison IndependentComparison(const uint32_t* spirv, size_t bytes, const char* name) {
+ImageComparison IndependentComparison(std::span<const uint32_t> spirv, const char* name) {
   Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
   RenderScene rs = PrepareRenderScene(s);
   Image cpu = RenderCpu(rs, Params(rs, s, 64, 64, 64, 1)).image;
-  vk::GpuRenderer gpu(Gpu(), rs, spirv, bytes);
+  test::GpuRendererWith gpu(rs, {.pathTraceSpirv = spirv});
   Image g = gpu.Render(Params(rs, s, 64, 64, 64, 2)).image;
   ImageComparison c = CompareImages(cpu, g);
   std::printf("[%s]\n%s\n", name, c.Summary().c_str());
@@ -395,25 +400,22 @@ ImageComparison IndependentComparison(const uint32_t* spirv, size_t bytes, const
 }
 
 TEST_F(GpuTest, IndependentCornellAgreesStatistically) {
-  EXPECT_TRUE(IndependentComparison(nullptr, 0, "pathtrace.comp").statisticallyAgree);
+  EXPECT_TRUE(IndependentComparison({}, "pathtrace.comp").statisticallyAgree);
 }
 
 TEST_F(GpuTest, MutantWithoutLightCosineIsCaught) {
-  EXPECT_FALSE(IndependentComparison(kPathTraceMutantNoLightCosine, sizeof(kPathTraceMutantNoLightCosine),
-                                     "mutant: no cos at the light")
-                   .statisticallyAgree);
+  EXPECT_FALSE(IndependentComparison(kPathTraceMutantNoLightCosine, "mutant: no cos at the light").statisticallyAgree);
 }
 
 TEST_F(GpuTest, MutantRouletteWithoutDivisionIsCaught) {
-  EXPECT_FALSE(IndependentComparison(kPathTraceMutantRouletteWithoutDivision,
-                                     sizeof(kPathTraceMutantRouletteWithoutDivision), "mutant: roulette without 1/P")
+  EXPECT_FALSE(IndependentComparison(kPathTraceMutantRouletteWithoutDivision, "mutant: roulette without 1/P")
                    .statisticallyAgree);
 }
 
-test::ZTest GpuFurnace(const uint32_t* spirv, size_t bytes, glm::dvec3* expected) {
+test::ZTest GpuFurnace(std::span<const uint32_t> spirv, glm::dvec3* expected) {
   Scene s = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
   RenderScene rs = PrepareRenderScene(s);
-  vk::GpuRenderer gpu(Gpu(), rs, spirv, bytes);
+  test::GpuRendererWith gpu(rs, {.pathTraceSpirv = spirv});
   RenderResult r = gpu.Render(Params(rs, s, 32, 32, 128, 9, 200, 3));
   EXPECT_EQ(r.nonFinite, 0u);
   *expected = test::FurnaceExpected(s, 200);
@@ -422,16 +424,15 @@ test::ZTest GpuFurnace(const uint32_t* spirv, size_t bytes, glm::dvec3* expected
 
 TEST_F(GpuTest, FurnaceMatchesClosedForm) {
   glm::dvec3 expected;
-  test::ZTest t = GpuFurnace(nullptr, 0, &expected);
+  test::ZTest t = GpuFurnace({}, &expected);
   EXPECT_TRUE(test::Agrees(t, expected, 1e-3, "GPU furnace"));
 }
 
 TEST_F(GpuTest, FurnaceCatchesBothMutants) {
   glm::dvec3 expected;
-  test::ZTest a = GpuFurnace(kPathTraceMutantNoLightCosine, sizeof(kPathTraceMutantNoLightCosine), &expected);
+  test::ZTest a = GpuFurnace(kPathTraceMutantNoLightCosine, &expected);
   EXPECT_FALSE(test::Agrees(a, expected, 1e-3, "GPU furnace, mutant no light cosine (must fail)"));
-  test::ZTest b = GpuFurnace(kPathTraceMutantRouletteWithoutDivision, sizeof(kPathTraceMutantRouletteWithoutDivision),
-                             &expected);
+  test::ZTest b = GpuFurnace(kPathTraceMutantRouletteWithoutDivision, &expected);
   EXPECT_FALSE(test::Agrees(b, expected, 1e-3, "GPU furnace, mutant roulette without 1/P (must fail)"));
 }
 

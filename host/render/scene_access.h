@@ -1,4 +1,4 @@
-// The shared headers' scene access (shaders/shared/path.h lists the macros) over a
+// The shared headers' scene access (shaders/shared/backend_contract.h lists the macros) over a
 // RenderScene named `scene`: what the CPU renderer, and host code that samples the
 // scene as the renderers do (the light table reading emissive textures), compile them with.
 #pragma once

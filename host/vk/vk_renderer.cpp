@@ -137,24 +137,24 @@ void DispatchSamples(const Context& ctx, const ComputePipeline& pipeline, const 
 
 }  // namespace
 
-GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv, size_t spirvBytes,
-                         uint32_t maxTexelsPerBuffer)
+GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const GpuRendererOverrides& overrides)
     : ctx_(ctx),
-      spirv_(spirv ? spirv : kPathTraceSpirv),
-      spirvBytes_(spirv ? spirvBytes : sizeof(kPathTraceSpirv)),
-      triangles_(UploadSplitArray<shader::Triangle>(ctx, scene.triangles, "triangles", maxTexelsPerBuffer)),
+      pathTraceSpirv_(overrides.pathTraceSpirv.empty() ? std::span<const uint32_t>(kPathTraceSpirv)
+                                                       : overrides.pathTraceSpirv),
+      traceSpirv_(overrides.traceSpirv.empty() ? std::span<const uint32_t>(kTraceSpirv) : overrides.traceSpirv),
+      triangles_(UploadSplitArray<shader::Triangle>(ctx, scene.triangles, "triangles", overrides.maxTexelsPerBuffer)),
       nodes_(UploadArray<shader::BvhNode>(ctx, scene.nodes, "BVH nodes")),
       materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
       lights_(UploadArray<shader::Light>(ctx, scene.lights, "lights")),
       ggxAlbedo_(UploadArray<float>(ctx, shader::kGgxAlbedo, "GGX albedo table")),
       shading_(UploadArray<shader::TriangleShading>(ctx, scene.shading, "shading normals")),
       vertexColors_(UploadArray<shader::TriangleColors>(ctx, scene.vertexColors, "vertex colours")),
-      uvs_(UploadSplitArray<shader::TriangleUVs>(ctx, scene.uvs, "texture coordinates", maxTexelsPerBuffer)),
+      uvs_(UploadSplitArray<shader::TriangleUVs>(ctx, scene.uvs, "texture coordinates", overrides.maxTexelsPerBuffer)),
       tangents_(UploadArray<shader::TriangleTangents>(ctx, scene.tangents, "tangents")),
       textureRefs_(UploadArray<shader::TextureRef>(ctx, scene.textureRefs, "material textures")),
       textures_(UploadArray<shader::Texture>(ctx, scene.textures, "texture table")),
       texels_(UploadSplitTexelBuffer(ctx, scene.texels.data(), scene.texels.size() * sizeof(uint32_t), 1,
-                                     "texture texels", maxTexelsPerBuffer)),
+                                     "texture texels", overrides.maxTexelsPerBuffer)),
       texelDecode_(UploadArray<float>(ctx, scene.texelDecode, "texel decode tables")),
       envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
       envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
@@ -346,7 +346,7 @@ std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams
     return std::make_unique<ComputePipeline>(ctx_, spirv, spirvBytes, bindings, name, pushConstantBytes,
                                              Specialization(p));
   };
-  auto pipeline = kernels(spirv_, spirvBytes_,
+  auto pipeline = kernels(pathTraceSpirv_.data(), pathTraceSpirv_.size_bytes(),
                           {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.Handle()},
                            {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
                            {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
@@ -375,12 +375,11 @@ RenderResult GpuRenderer::Render(const shader::FrameParams& frame, const GpuRend
   return result;
 }
 
-std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQuery>& rays, double* seconds,
-                                                  const uint32_t* spirv, size_t spirvBytes) {
+std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQuery>& rays, double* seconds) {
   if (rays.empty()) return {};
   Buffer rayBuffer = Upload(ctx_, rays, "rays");
   Buffer hits = StorageBuffer(ctx_, rays.size() * sizeof(shader::HitRecord), "hits");
-  ComputePipeline pipeline(ctx_, spirv ? spirv : kTraceSpirv, spirv ? spirvBytes : sizeof(kTraceSpirv),
+  ComputePipeline pipeline(ctx_, traceSpirv_.data(), traceSpirv_.size_bytes(),
                            {TexelBinding(shader::kBindingTriangles, triangles_.low),
                             TexelBinding(shader::kBindingTrianglesHigh, triangles_.high),
                             TexelBinding(shader::kBindingNodes, nodes_),

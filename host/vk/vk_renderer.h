@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,14 +30,23 @@ struct GpuRenderOptions {
   std::function<void(double)> progress;  // finished fraction, after every batch
 };
 
+// What a renderer derived from GpuRenderer may substitute, through its protected
+// constructor: kernels with the interface of pathtrace.comp and trace.comp (bindings,
+// push and specialization constants), and a cap on the texels per buffer below the
+// device's limit, so that the arrays that may take two buffers (triangles, texture
+// coordinates, the texel store) take two on any device. The product renders with none of
+// these; tests derive a renderer to run deliberately wrong kernels and probes, and to
+// split small scenes.
+struct GpuRendererOverrides {
+  std::span<const uint32_t> pathTraceSpirv = {};  // empty: the embedded pathtrace.comp
+  std::span<const uint32_t> traceSpirv = {};      // empty: the embedded trace.comp
+  uint32_t maxTexelsPerBuffer = 0;                // 0: the device's limit
+};
+
 class GpuRenderer {
  public:
-  // Uploads the scene. `spirv` defaults to the embedded pathtrace.comp; tests pass
-  // deliberately wrong variants.
-  // `maxTexelsPerBuffer` caps the buffers of the arrays that may take two (triangles,
-  // texture coordinates, the texel store) below the device's limit (tests).
-  GpuRenderer(const Context& ctx, const RenderScene& scene, const uint32_t* spirv = nullptr, size_t spirvBytes = 0,
-              uint32_t maxTexelsPerBuffer = 0);
+  // Uploads the scene.
+  GpuRenderer(const Context& ctx, const RenderScene& scene) : GpuRenderer(ctx, scene, GpuRendererOverrides{}) {}
   // A render in progress (params.sampleBegin and sampleCount are ignored: each pass
   // names its samples); it must not outlive this renderer. options.progress is unused:
   // each pass takes its own.
@@ -45,11 +55,13 @@ class GpuRenderer {
   // in one pass of a BeginFrame render.
   RenderResult Render(const shader::FrameParams& params, const GpuRenderOptions& options = {});
 
-  // Closest hits of a batch of rays with the shader's traversal (trace.comp, or a test
-  // variant of it). `seconds`, if given, receives the time of the dispatch alone (no
-  // upload, pipeline creation or readback), for benchmarks.
-  std::vector<shader::HitRecord> Trace(const std::vector<shader::RayQuery>& rays, double* seconds = nullptr,
-                                       const uint32_t* spirv = nullptr, size_t spirvBytes = 0);
+  // Closest hits of a batch of rays with the shader's traversal (trace.comp). `seconds`,
+  // if given, receives the time of the dispatch alone (no upload, pipeline creation or
+  // readback), for benchmarks.
+  std::vector<shader::HitRecord> Trace(const std::vector<shader::RayQuery>& rays, double* seconds = nullptr);
+
+ protected:
+  GpuRenderer(const Context& ctx, const RenderScene& scene, const GpuRendererOverrides& overrides);
 
  private:
   // The scene's texel buffers as bound by every kernel that reads the scene, and the
@@ -58,8 +70,7 @@ class GpuRenderer {
   std::vector<uint32_t> Specialization(const shader::FrameParams& frame) const;
 
   const Context& ctx_;
-  const uint32_t* spirv_;
-  size_t spirvBytes_;
+  std::span<const uint32_t> pathTraceSpirv_, traceSpirv_;
   // The scene is read as texel buffers (shaders/scene_fetch.glsl says why).
   SplitTexelBuffer triangles_;  // in two buffers if one cannot hold them
   TexelBuffer nodes_, materials_, lights_, ggxAlbedo_, shading_;

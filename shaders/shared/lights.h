@@ -8,21 +8,11 @@
 // intensity I and a directional light's (lux) irradiance E, 1:1, so a point light of
 // intensity I lights a Lambert surface at distance r to ρ/π · I cos θ / r².
 //
-// Scene access (see path.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i),
+// Scene access (backend_contract.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i),
 // environment.h's VKPT_ENV_TEXEL(i), VKPT_ENV_CDF(i), and material_textures.h's.
 //
-// Test-only CPU builds (tests/path_variant.cpp; never the product nor the shader) may
-// define one deliberately wrong punctual light that tests/test_light_transport.cpp's
-// closed forms must reject:
-//   VKPT_MUTANT_SPOT_FALLOFF_LINEAR     the cone's falloff not squared
-//   VKPT_MUTANT_RANGE_WINDOW_SQUARED    the range window squared (the window of Frostbite
-//                                       and Unreal, not the extension's)
-//   VKPT_MUTANT_POINT_NO_INVERSE_SQUARE point and spot lights without 1/r²
-//   VKPT_MUTANT_DIRECTIONAL_EXTRA_COSINE a directional light's E already times cos θ,
-//                                        which the estimator then counts again
-// and one deliberately wrong triangle light, which tests/test_mis.cpp must reject:
-//   VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_TEXTURE  the emissive factor taken for the emission
-//                                             at the sampled point, its texture ignored
+// The punctual falloffs and the emitter's cosine and texture below are seams of the
+// estimator (path.h): a test build may replace them.
 #ifndef VKPT_LIGHTS_H
 #define VKPT_LIGHTS_H
 #include "alpha.h"
@@ -70,30 +60,59 @@ VKPT_FN float TriangleLightPdf(Light l, float dist, float cosLight) {
 }
 
 // KHR_lights_punctual's spot cone: smoothstep-free quadratic falloff between the outer
-// and inner cone, as the extension's reference implementation computes it.
+// and inner cone, as the extension's reference implementation computes it. A seam.
+#ifndef SpotFalloff
 VKPT_FN float SpotFalloff(Light l, vec3 wiFromLight) {
   float cd = dot(l.direction, wiFromLight);
   float scale = 1.0f / max(0.001f, l.cosInner - l.cosOuter);
   float a = clamp((cd - l.cosOuter) * scale, 0.0f, 1.0f);
-#ifdef VKPT_MUTANT_SPOT_FALLOFF_LINEAR
-  return a;
-#else
   return a * a;
-#endif
 }
+#endif
 
 // KHR_lights_punctual's recommended range window, clamp(1 − (dist/range)⁴, 0, 1): 1 at
-// the light, 0 from `range` on. Unsquared, unlike the windows of Frostbite and Unreal.
+// the light, 0 from `range` on. Unsquared, unlike the windows of Frostbite and Unreal. A
+// seam.
+#ifndef RangeFalloff
 VKPT_FN float RangeFalloff(float range, float dist) {
   if (range <= 0.0f) return 1.0f;
   float x = dist / range;
   float x2 = x * x;
-  float window = clamp(1.0f - x2 * x2, 0.0f, 1.0f);
-#ifdef VKPT_MUTANT_RANGE_WINDOW_SQUARED
-  window *= window;
-#endif
-  return window;
+  return clamp(1.0f - x2 * x2, 0.0f, 1.0f);
 }
+#endif
+
+// What reaches distance `dist` (dist2 = dist²) of a point or spot light per unit of its
+// intensity: the inverse-square law, times the range window. A seam.
+#ifndef PunctualFalloff
+VKPT_FN float PunctualFalloff(float range, float dist, float dist2) { return RangeFalloff(range, dist) / dist2; }
+#endif
+
+// A directional light's irradiance, given (as glTF gives it, in lux) on a surface facing
+// the light: the estimator's cos θ at the shading point (path.h) makes it the irradiance
+// of a surface at any angle. A seam.
+#ifndef DirectionalIrradiance
+VKPT_FN vec3 DirectionalIrradiance(Light l) { return l.radiance; }
+#endif
+
+// cos θ' at a point of triangle light `l` seen along wi (unit, towards the light): ≤ 0
+// where its emitting side faces away, unless it emits from both sides. A seam.
+#ifndef EmitterCosine
+VKPT_FN float EmitterCosine(Light l, vec3 wi) {
+  float cosLight = -dot(l.direction, wi);
+  return l.type == kLightTwoSidedTriangle ? abs(cosLight) : cosLight;
+}
+#endif
+
+// The emissive texture of material `mat` (index `material`) at barycentrics b of source
+// triangle `sourceIndex`, which a ray hitting that point would find (shading_frame.h);
+// 1 where the material has none. A seam.
+#ifndef EmissionTextureAt
+VKPT_FN vec3 EmissionTextureAt(VKPT_SCENE_PARAM Material mat, uint material, uint sourceIndex, vec2 b) {
+  if ((mat.flags & kMaterialTextured) == 0u) return vec3(1.0f);
+  return EmissiveTexture(VKPT_SCENE_ARG material, sourceIndex, b.x, b.y);
+}
+#endif
 
 // Samples a light for the shading point p, whose rays leave from `origin` (p offset along
 // the geometric normal on the side the path arrived from; path.h moves a shadow ray that
@@ -121,12 +140,7 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
     vec3 d = x - p;
     float dist = length(d);
     ls.wi = d / dist;
-    float cosLight = -dot(nl, ls.wi);
-    if (l.type == kLightTwoSidedTriangle) cosLight = abs(cosLight);
-#ifdef VKPT_MUTANT_NO_LIGHT_COSINE
-    // Deliberately wrong (test builds only): forgets cos θ' at the emitter.
-    if (cosLight > 0.0f) cosLight = 1.0f;
-#endif
+    float cosLight = EmitterCosine(l, ls.wi);
     ls.pdf = TriangleLightPdf(l, dist, cosLight);
     ls.radiance = l.radiance;
     // The emission at x, as a ray hitting x would find it (shading_frame.h), so that both
@@ -135,10 +149,7 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
     // (its coverage), so the sample counts its emission times that.
     if (VKPT_TEXTURES || VKPT_ALPHA) {
       Material mat = VKPT_MATERIAL(tri.material);
-#ifndef VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_TEXTURE
-      if (VKPT_TEXTURES && (mat.flags & kMaterialTextured) != 0u)
-        ls.radiance *= EmissiveTexture(VKPT_SCENE_ARG tri.material, tri.sourceIndex, b.x, b.y);
-#endif
+      if (VKPT_TEXTURES) ls.radiance *= EmissionTextureAt(VKPT_SCENE_ARG mat, tri.material, tri.sourceIndex, b);
       if (VKPT_ALPHA) ls.radiance *= Coverage(VKPT_SCENE_ARG mat, tri.material, tri.sourceIndex, b.x, b.y);
     }
     // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
@@ -155,11 +166,7 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
   } else if (SceneHasLightType(kLightDirectional) && l.type == kLightDirectional) {
     ls.wi = -l.direction;
     ls.pdf = l.pmf;
-    ls.radiance = l.radiance;
-#ifdef VKPT_MUTANT_DIRECTIONAL_EXTRA_COSINE
-    // origin − p leaves on the geometric normal's side, along it on an axis-aligned surface.
-    ls.radiance *= max(dot(ls.wi, normalize(origin - p)), 0.0f);
-#endif
+    ls.radiance = DirectionalIrradiance(l);
     ls.shadowRay.dir = ls.wi;
     ls.shadowTMax = kInfinity;
   } else if (SceneHasLightType(kLightPoint) || SceneHasLightType(kLightSpot)) {  // point or spot
@@ -167,11 +174,7 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
     float dist2 = dot(d, d);
     float dist = sqrt(dist2);
     ls.wi = d / dist;
-#ifdef VKPT_MUTANT_POINT_NO_INVERSE_SQUARE
-    float falloff = RangeFalloff(l.extent, dist);
-#else
-    float falloff = RangeFalloff(l.extent, dist) / dist2;
-#endif
+    float falloff = PunctualFalloff(l.extent, dist, dist2);
     if (SceneHasLightType(kLightSpot) && l.type == kLightSpot) falloff *= SpotFalloff(l, -ls.wi);
     ls.pdf = dist2 > 0.0f ? l.pmf : 0.0f;
     ls.radiance = l.radiance * falloff;

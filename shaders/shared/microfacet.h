@@ -48,16 +48,14 @@ VKPT_FN float GgxReflection(vec3 wo, vec3 wi, float alpha) {
 // Density of the reflected direction ωi = reflect(−ωo, h) when h is drawn from the
 // visible normals of ωo: D_ωo(h) / (4 ωo·h) with D_ωo(h) = G1(ωo) max(0, ωo·h) D(h) / cos θo
 // (Heitz 2018), which simplifies to D(h) / (2 (cos θo + sqrt(α² + (1 − α²) cos²θo))).
+// A seam of the estimator (path.h): a test build may replace it.
+#ifndef GgxReflectionPdf
 VKPT_FN float GgxReflectionPdf(vec3 wo, vec3 wi, float alpha) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
   vec3 h = normalize(wo + wi);
-#ifdef VKPT_MUTANT_GGX_PDF_NO_JACOBIAN
-  // Deliberately wrong (test builds only): D_ωo(h), the density of the half vector,
-  // without the Jacobian 1/(4 ωo·h) of reflecting ωo about it.
-  return 2.0f * dot(wo, h) * GgxD(h, alpha) / (wo.z + GgxLambdaRoot(wo.z, alpha));
-#endif
   return GgxD(h, alpha) / (2.0f * (wo.z + GgxLambdaRoot(wo.z, alpha)));
 }
+#endif
 
 // A visible normal of ωo (cos θo > 0) from u ∈ [0,1)²: Dupuy & Benyoub 2023, "Sampling
 // Visible GGX Normals with Spherical Caps" (HPG): in the configuration stretched to α = 1

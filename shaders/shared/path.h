@@ -15,23 +15,30 @@
 // that hits the back face of a volume's boundary travelled inside that volume and is
 // attenuated by Beer–Lambert over its length (nested volumes are not told apart).
 //
-// Each side supplies scene access before including this file, so that traversal stays
-// separate (the CPU walks the BVH with an ordered stack, the shader stackless):
-//   VKPT_SCENE_PARAM          a leading parameter declaration ("" in GLSL)
-//   VKPT_SCENE_ARG            the matching leading argument ("" in GLSL)
-//   VKPT_TRIANGLE(i), VKPT_MATERIAL(i), VKPT_LIGHT(i)   element access
-//   VKPT_LIGHT_CDF(i)         VKPT_LIGHT(i).cdf (the GPU fetches one texel for it)
-//   HitRecord TraceClosest(VKPT_SCENE_PARAM vec3 origin, vec3 dir, float tMax, uint alphaKey)
-//   bool TraceOccluded(VKPT_SCENE_PARAM vec3 origin, vec3 dir, float tMax, uint alphaKey)
-// which pass through the hits alpha.h's AlphaRejects(…, alphaKey) leaves out.
+// Each side supplies scene access before including this file (backend_contract.h lists
+// it), so that traversal stays separate (the CPU walks the BVH with an ordered stack, the
+// shader stackless).
+//
+// Seams: a few functions of the estimator, each marked "A seam" (the MIS weights and
+// roulette below, GgxReflectionPdf in microfacet.h, the punctual falloffs and the
+// emitter's cosine and texture in lights.h), that a test build may replace to prove its
+// tests reject a wrong estimator. Such a build defines VKPT_ESTIMATOR_OVERRIDES and puts
+// its estimator_overrides.h on the include path; that header defines a replaced
+// function's name as a macro naming its replacement, so the default here is left out.
+// Product builds define no override.
 #ifndef VKPT_PATH_H
 #define VKPT_PATH_H
+#ifdef VKPT_ESTIMATOR_OVERRIDES
+#include "estimator_overrides.h"  // first: before any header whose seams it replaces
+#endif
+#include "prelude.h"  // first, as in every shared header
+
+#include "backend_contract.h"  // the backend's scene access is complete by now
 #include "bsdf.h"
 #include "estimator.h"
 #include "intersect.h"
 #include "layout.h"
 #include "lights.h"
-#include "prelude.h"
 #include "ray_cone.h"
 #include "rng.h"
 #include "sampling.h"
@@ -48,40 +55,15 @@ VKPT_BEGIN_NAMESPACE
 
 // MIS weights of the two strategies: Veach's power heuristic for a light sample (density
 // lightPdf, which BSDF sampling would have found with bsdfPdf) and for a BSDF sample
-// (bsdfPdf, which light sampling would have found with lightPdf). Test-only CPU builds
-// (tests/path_variant.cpp; never the product nor the shader) may define one of
-//   VKPT_MIS_LIGHT_ONLY  light sampling alone: light that light sampling can reach
-//                        counts nothing when a BSDF-sampled ray finds it
-//   VKPT_MIS_BSDF_ONLY   BSDF sampling alone (delta lights keep light sampling)
-// or a deliberately wrong weight the MIS test must reject: VKPT_MUTANT_MIS_WEIGHT_ONE
-// (both strategies count in full: double counting), VKPT_MUTANT_MIS_SWAPPED_PDFS (the
-// light sample's weight with its pdfs swapped; swapped on both sides the weights would
-// still sum to one, and the estimator stay unbiased).
-VKPT_FN float LightSampleWeight(float lightPdf, float bsdfPdf) {
-#if defined(VKPT_MIS_LIGHT_ONLY) || defined(VKPT_MUTANT_MIS_WEIGHT_ONE)
-  (void)bsdfPdf;  // C++ only, as every test build
-  return lightPdf > 0.0f ? 1.0f : 0.0f;
-#elif defined(VKPT_MIS_BSDF_ONLY)
-  (void)lightPdf;
-  return bsdfPdf > 0.0f ? 0.0f : 1.0f;
-#elif defined(VKPT_MUTANT_MIS_SWAPPED_PDFS)
-  return PowerHeuristic(bsdfPdf, lightPdf);
-#else
-  return PowerHeuristic(lightPdf, bsdfPdf);
+// (bsdfPdf, which light sampling would have found with lightPdf). The two weights of one
+// direction sum to 1, so the estimator stays unbiased. A seam.
+#ifndef LightSampleWeight
+VKPT_FN float LightSampleWeight(float lightPdf, float bsdfPdf) { return PowerHeuristic(lightPdf, bsdfPdf); }
 #endif
-}
 
-VKPT_FN float BsdfSampleWeight(float bsdfPdf, float lightPdf) {
-#if defined(VKPT_MIS_BSDF_ONLY) || defined(VKPT_MUTANT_MIS_WEIGHT_ONE)
-  (void)lightPdf;
-  return bsdfPdf > 0.0f ? 1.0f : 0.0f;
-#elif defined(VKPT_MIS_LIGHT_ONLY)
-  (void)bsdfPdf;
-  return lightPdf > 0.0f ? 0.0f : 1.0f;
-#else
-  return PowerHeuristic(bsdfPdf, lightPdf);
+#ifndef BsdfSampleWeight
+VKPT_FN float BsdfSampleWeight(float bsdfPdf, float lightPdf) { return PowerHeuristic(bsdfPdf, lightPdf); }
 #endif
-}
 
 struct PathSample {
   vec3 radiance;
@@ -202,6 +184,12 @@ VKPT_FN bool LeavesOnLobeSide(BsdfSample bs, vec3 wi, vec3 ng) {
   return bs.pdf > 0.0f && side != 0.0f && (side < 0.0f) == (bs.wi.z < 0.0f);
 }
 
+// A path that survives Russian roulette with probability `survive` carries its throughput
+// divided by it, so that its expected contribution is what it was. A seam.
+#ifndef RouletteSurvivorThroughput
+VKPT_FN vec3 RouletteSurvivorThroughput(vec3 throughput, float survive) { return throughput / survive; }
+#endif
+
 // Russian roulette (GAMES101: continue with probability P, divide by P) on the throughput
 // times the sampled direction's weight: survival follows the throughput, so dim paths end
 // early and bright ones rarely. Returns false if the path ends here.
@@ -210,9 +198,7 @@ VKPT_FN bool Survives(FrameParams params, VKPT_INOUT(PathState) s, vec3 weight, 
   if (bounce < params.rrDepth) return true;
   float survive = min(1.0f, MaxComponent(s.throughput));
   if (!(u < survive)) return false;
-#ifndef VKPT_MUTANT_ROULETTE_WITHOUT_DIVISION
-  s.throughput /= survive;
-#endif
+  s.throughput = RouletteSurvivorThroughput(s.throughput, survive);
   return true;
 }
 
