@@ -1,13 +1,16 @@
-// ParseOptions and the "options" object of --stats in process (no subprocess): the
-// object keeps its keys and values for every kind of option.
+// The options in process (no subprocess): the "options" object of --stats keeps its keys
+// and values for every kind of option; --help lists the option table
+// (app/option_table.cpp); usage errors show ranges as people write them.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "app/option_table.h"
 #include "app/options.h"
 #include "app/run_stats.h"
 
@@ -71,6 +74,97 @@ TEST(Options, StatsObjectOfBackgroundCompareAndBudgets) {
   EXPECT_EQ(StatsOptions({"--scene", "s", "--time", "1", "--spp", "9"})["spp"], 9);
   EXPECT_EQ(StatsOptions({"--scene", "s", "--adaptive"})["adaptive"], true);
   EXPECT_EQ(StatsOptions({"--scene", "s", "--backend", "vulkan"})["backend"], "vulkan");
+}
+
+// ---------------------------------------------------------------------------------------
+// The option table: --help and the parser's messages
+
+// The usage error of `args` after "--scene s"; "" if they parse.
+std::string ErrorOf(std::vector<std::string> args) {
+  args.insert(args.begin(), {"--scene", "s.gltf"});
+  try {
+    Parse(args);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Options, NumbersAreShownAsPeopleWriteThem) {
+  EXPECT_EQ(FormatNumber(0), "0");
+  EXPECT_EQ(FormatNumber(1), "1");
+  EXPECT_EQ(FormatNumber(0.001), "0.001");
+  EXPECT_EQ(FormatNumber(16384), "16384");
+  EXPECT_EQ(FormatNumber(4294967295.0), "4294967295");
+  EXPECT_EQ(FormatNumber(1e7), "1e+07");
+  EXPECT_EQ(FormatNumber(-3600), "-3600");
+  EXPECT_EQ(RangeText({1, 15}), "[1, 15]");
+  EXPECT_EQ(RangeText({0, 1, true}), "(0, 1]");
+  EXPECT_EQ(RangeText({0}), "≥ 0");
+  EXPECT_EQ(RangeText({0, INFINITY, true}), "> 0");
+}
+
+TEST(Options, RangeErrorsReadAsPeopleWriteThem) {
+  EXPECT_EQ(ErrorOf({"--noise-target", "0"}), "--noise-target must be in (0, 1], got 0");
+  EXPECT_EQ(ErrorOf({"--noise-target", "1.5"}), "--noise-target must be in (0, 1], got 1.5");
+  EXPECT_EQ(ErrorOf({"--env", "e.hdr", "--env-intensity", "-1"}), "--env-intensity must be ≥ 0, got -1");
+  EXPECT_EQ(ErrorOf({"--env-intensity", "inf"}), "--env-intensity expects a finite number, got \"inf\"");
+  EXPECT_EQ(ErrorOf({"--background", "1,-2,3"}), "--background must be ≥ 0, got -2");
+  EXPECT_EQ(ErrorOf({"--width", "0"}), "--width must be in [1, 16384], got 0");
+  EXPECT_EQ(ErrorOf({"--leaf-size", "16"}), "--leaf-size must be in [1, 15], got 16");
+  EXPECT_EQ(ErrorOf({"--time", "0"}), "--time must be in [0.001, 1e+07], got 0");
+  EXPECT_EQ(ErrorOf({"--exposure", "nan"}), "--exposure must be in [-64, 64], got nan");
+  EXPECT_EQ(ErrorOf({"--spp", "4x"}), "--spp expects a number, got \"4x\"");
+  EXPECT_EQ(ErrorOf({"--seed", "-1"}), "--seed expects a number, got \"-1\"");
+  EXPECT_EQ(ErrorOf({"--backend", "foo"}), "--backend must be auto, vulkan or cpu, got \"foo\"");
+  EXPECT_EQ(ErrorOf({"--splits", "sbvh"}), "--splits must be auto, object or spatial, got \"sbvh\"");
+  EXPECT_EQ(ErrorOf({"--texture-lod", "auto"}), "--texture-lod must be cones or none, got \"auto\"");
+  EXPECT_EQ(ErrorOf({"--aov", "albedo,glow"}),
+            "--aov: unknown AOV \"glow\" (albedo, normal, depth, position, variance, spp, heatmap or all)");
+  EXPECT_EQ(ErrorOf({"--device", ""}), "--device needs a device index or name");
+  EXPECT_EQ(ErrorOf({"--env-intensity", "1e30", "--env", "e.hdr"}), "");
+}
+
+TEST(Options, ValuesFollowTheOptionOrItsEqualsSign) {
+  EXPECT_EQ(ErrorOf({"--spp"}), "--spp needs a value: --spp N");
+  EXPECT_EQ(ErrorOf({"--diff", "a.pfm"}), "--diff needs two values: --diff A B");
+  EXPECT_EQ(ErrorOf({"--diff=a.pfm", "b.pfm"}), "--diff needs two values: --diff A B");
+  EXPECT_EQ(ErrorOf({"--denoise=yes"}), "--denoise takes no value, got \"--denoise=yes\"");
+  EXPECT_EQ(ErrorOf({"--frobnicate"}), "unknown option \"--frobnicate\" (see --help)");
+  EXPECT_EQ(Parse({"--diff", "a.pfm", "b.pfm"}).diff, (std::vector<std::string>{"a.pfm", "b.pfm"}));
+  EXPECT_EQ(Parse({"--scene=x.glb", "--spp=3", "-v"}).spp, 3u);
+}
+
+// --help lists every option of the table with its values and default, within 92 columns.
+TEST(Options, HelpIsTheTable) {
+  const std::string help = HelpText();
+  for (const OptionDef& def : OptionTable()) EXPECT_NE(help.find("  " + def.Synopsis()), std::string::npos);
+  EXPECT_NE(help.find("(values: [1, 15]) [default: 8]"), std::string::npos) << help;
+  EXPECT_NE(help.find("(values: auto, vulkan, cpu) [default: auto]"), std::string::npos) << help;
+  EXPECT_EQ(help.find('`'), std::string::npos) << help;
+  std::istringstream lines(help);
+  for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 92u) << line;
+}
+
+// A default the table shows as a number, or as "off", is what an unset option has.
+TEST(Options, DefaultsShownAreTheDefaults) {
+  const Options o = Parse({"--scene", "s.gltf"});
+  int checked = 0;
+  for (const OptionDef& def : OptionTable()) {
+    if (!def.how.json) continue;
+    const std::string value = def.how.json(o);
+    const bool number =
+        !def.defaultText.empty() && def.defaultText.find_first_not_of("0123456789.") == std::string::npos;
+    const bool choice = def.how.accepts.find("`" + def.defaultText + "`") != std::string::npos;
+    std::string want;
+    if (number && value != "null") want = def.defaultText;
+    else if (def.defaultText == "off") want = "false";
+    else if (choice) want = "\"" + def.defaultText + "\"";
+    else continue;
+    EXPECT_EQ(value, want) << def.LongName();
+    ++checked;
+  }
+  EXPECT_GE(checked, 14);
 }
 
 }  // namespace
