@@ -1,6 +1,7 @@
 // The options in process (no subprocess): the "options" object of --stats keeps its keys
-// and values for every kind of option; --help lists the option table
-// (app/option_table.cpp); usage errors show ranges as people write them.
+// and values for every kind of option; the table of docs/options.md is the option table
+// (app/option_table.cpp), and a table altered in any way is caught; --help lists the
+// table; usage errors show ranges as people write them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "app/option_table.h"
 #include "app/options.h"
 #include "app/run_stats.h"
+#include "test_util.h"
 
 namespace vkpt {
 namespace {
@@ -77,7 +79,63 @@ TEST(Options, StatsObjectOfBackgroundCompareAndBudgets) {
 }
 
 // ---------------------------------------------------------------------------------------
-// The option table: --help and the parser's messages
+// The option table against docs/options.md, --help and the parser's messages
+
+// The Markdown table of `doc` that starts with "| option |": its lines up to the first
+// that is not a table row. Empty if there is none.
+std::string TableOf(const std::string& doc) {
+  std::istringstream lines(doc);
+  std::string line, table;
+  bool in = false;
+  while (std::getline(lines, line)) {
+    if (!in && line.rfind("| option |", 0) == 0) in = true;
+    if (in && line.rfind("|", 0) != 0) break;
+    if (in) table += line + "\n";
+  }
+  return table;
+}
+
+// Empty if `doc`'s table is the option table; else the first line where they part.
+std::string TableMismatch(const std::string& doc) {
+  std::istringstream have(TableOf(doc)), want(OptionTableMarkdown());
+  std::string h, w;
+  for (int line = 1;; ++line) {
+    const bool moreHave = bool(std::getline(have, h)), moreWant = bool(std::getline(want, w));
+    if (!moreHave && !moreWant) return "";
+    if (moreHave != moreWant || h != w)
+      return "row " + std::to_string(line) + ": docs/options.md has\n  " + (moreHave ? h : "(nothing)") +
+             "\nthe option table (host/app/option_table.cpp) has\n  " + (moreWant ? w : "(nothing)");
+  }
+}
+
+std::string Replaced(std::string s, const std::string& from, const std::string& to) {
+  const size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? s : s.replace(at, from.size(), to);
+}
+
+TEST(OptionTable, DocsTableIsTheOptionTable) {
+  const std::string doc = test::ReadFile(test::SourcePath("docs/options.md"));
+  const std::string mismatch = TableMismatch(doc);
+  EXPECT_EQ(mismatch, "") << "docs/options.md's table should be, exactly:\n" << OptionTableMarkdown();
+}
+
+// The check has teeth: a default, a meaning, a range changed, a row dropped or added, the
+// table missing, all are caught.
+TEST(OptionTable, AlteredDocsTablesAreCaught) {
+  const std::string doc = test::ReadFile(test::SourcePath("docs/options.md"));
+  ASSERT_EQ(TableMismatch(doc), "");
+  const std::string row =
+      "| `--max-depth N` | maximum number of bounces (0: emission seen directly only) | [0, 1024] | 32 |";
+  EXPECT_NE(TableMismatch(Replaced(doc, row, Replaced(row, "| 32 |", "| 33 |"))), "");
+  EXPECT_NE(TableMismatch(Replaced(doc, row, Replaced(row, "bounces", "bounce"))), "");
+  EXPECT_NE(TableMismatch(Replaced(doc, row, Replaced(row, "[0, 1024]", "[0, 1000]"))), "");
+  EXPECT_NE(TableMismatch(Replaced(doc, row + "\n", "")), "");
+  EXPECT_NE(TableMismatch(Replaced(doc, row + "\n", row + "\n| `--frobnicate` | | | |\n")), "");
+  EXPECT_NE(TableMismatch(Replaced(doc, "| option |", "| Option |")), "");
+  const std::string last = "| `--version` | print the version and exit | | |\n";
+  EXPECT_NE(TableMismatch(Replaced(doc, last, "")), "");
+}
 
 // The usage error of `args` after "--scene s"; "" if they parse.
 std::string ErrorOf(std::vector<std::string> args) {
