@@ -1,4 +1,4 @@
-// Command-line options of `vkpt`.
+// Command-line options of `vkpt`; each is a row of the one option table (app/option_table.cpp).
 #pragma once
 
 #include <array>

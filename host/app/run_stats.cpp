@@ -4,25 +4,10 @@
 #include <cstdio>
 
 #include "app/json_object.h"
+#include "app/option_table.h"
 
 namespace vkpt {
 namespace {
-
-const char* BackendName(Backend b) {
-  switch (b) {
-    case Backend::Cpu: return "cpu";
-    case Backend::Vulkan: return "vulkan";
-    default: return "auto";
-  }
-}
-
-const char* SplitName(SplitMode m) {
-  switch (m) {
-    case SplitMode::kObject: return "object";
-    case SplitMode::kSpatial: return "spatial";
-    default: return "auto";
-  }
-}
 
 std::string Vec3(double x, double y, double z) { return JsonArray({JsonNumber(x), JsonNumber(y), JsonNumber(z)}); }
 
@@ -32,28 +17,11 @@ std::string Strings(const std::vector<std::string>& v) {
   return JsonArray(quoted);
 }
 
-// Every option as given or defaulted; absent optional ones are null.
+// Every option as given or defaulted (app/option_table.cpp); absent optional ones are null.
 JsonObject OptionsJson(const Options& o) {
-  auto optional = [](const std::optional<uint32_t>& v) { return v ? std::to_string(*v) : std::string("null"); };
   JsonObject j;
-  j.Str("scene", o.scene).Str("out", o.out).Raw("width", optional(o.width)).Raw("height", optional(o.height));
-  auto optionalNumber = [](const std::optional<double>& v) { return v ? JsonNumber(*v) : std::string("null"); };
-  j.Int("spp", o.spp).Raw("time", optionalNumber(o.time)).Raw("noise_target", optionalNumber(o.noiseTarget));
-  j.Bool("adaptive", o.Adaptive()).Raw("checkpoint", o.checkpoint > 0.0 ? JsonNumber(o.checkpoint) : "null");
-  j.Int("seed", o.seed).Int("chunk", o.chunkSpp).Int("max_depth", o.maxDepth).Int("rr_depth", o.rrDepth);
-  j.Str("backend", BackendName(o.backend)).Str("device", o.device).Int("threads", o.threads).Int("batch", o.batch);
-  j.Bool("compare", o.compare).Bool("validation", o.validation).Raw("camera", optional(o.camera));
-  j.Num("exposure", o.exposure)
-      .Raw("background", o.background ? Vec3((*o.background)[0], (*o.background)[1], (*o.background)[2]) : "null");
-  j.Str("env", o.env).Num("env_rotation", o.envRotation).Num("env_intensity", o.envIntensity);
-  j.Str("texture_lod", o.textureLod ? "cones" : "none");
-  j.Int("leaf_size", o.leafSize).Str("splits", SplitName(o.splits));
-  j.Int("max_memory", o.load.maxMemory)
-      .Int("max_texels", o.load.maxTextureTexels)
-      .Bool("allow_external_uris", o.load.allowExternalUris);
-  std::vector<std::string> aovs;
-  for (Aov aov : o.aovs) aovs.push_back(AovName(aov));
-  j.Raw("aov", Strings(aovs)).Bool("denoise", o.denoise).Str("stats", o.stats).Bool("verbose", o.verbose);
+  for (const OptionDef& def : OptionTable())
+    if (def.how.json) j.Raw(def.StatsKey(), def.how.json(o));
   return j;
 }
 

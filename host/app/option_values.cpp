@@ -1,0 +1,222 @@
+#include "app/option_values.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+
+#include "app/json_object.h"
+#include "util/byte_size.h"
+
+namespace vkpt {
+
+std::string FormatNumber(double v) {
+  char text[32];
+  auto [end, ec] = std::to_chars(text, text + sizeof text, v);
+  return ec == std::errc() ? std::string(text, end) : std::string("?");
+}
+
+std::string RangeText(const Range& r) {
+  // Built by constructors and appends: GCC 12 warns of a false -Wrestrict (PR 105651) in
+  // a literal assigned or prepended to a string.
+  if (std::isinf(r.hi)) return std::string(r.loOpen ? "> " : "≥ ").append(FormatNumber(r.lo));
+  return std::string(r.loOpen ? "(" : "[")
+      .append(FormatNumber(r.lo))
+      .append(", ")
+      .append(FormatNumber(r.hi))
+      .append("]");
+}
+
+template <class T>
+T ParseNumber(const std::string& opt, const std::string& text, const Range& r) {
+  T v{};
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size())
+    throw UsageError(opt + " expects a number, got \"" + text + "\"");
+  const double d = double(v);
+  if (std::isinf(r.hi) && !std::isfinite(d)) throw UsageError(opt + " expects a finite number, got \"" + text + "\"");
+  if (!((r.loOpen ? d > r.lo : d >= r.lo) && d <= r.hi)) {
+    const bool interval = !std::isinf(r.hi);
+    throw UsageError(opt + " must be " + (interval ? "in " : "") + RangeText(r) + ", got " + text);
+  }
+  return v;
+}
+
+template uint32_t ParseNumber<uint32_t>(const std::string&, const std::string&, const Range&);
+template float ParseNumber<float>(const std::string&, const std::string&, const Range&);
+template double ParseNumber<double>(const std::string&, const std::string&, const Range&);
+
+namespace {
+
+std::string Null() { return "null"; }
+
+// "a, b or c".
+std::string OrList(const std::vector<std::string>& names) {
+  std::string list;
+  for (size_t k = 0; k < names.size(); ++k) list += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
+  return list;
+}
+
+// The comma-separated parts of `text` ("a,,b": "a", "", "b").
+std::vector<std::string> SplitCommas(const std::string& text) {
+  std::vector<std::string> parts;
+  for (size_t start = 0;;) {
+    const size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) return parts;
+    start = comma + 1;
+  }
+}
+
+}  // namespace
+
+using JsonFn = std::function<std::string(const Options&)>;
+
+JsonFn JsonOf(uint32_t Options::*f) {
+  return [f](const Options& o) { return std::to_string(o.*f); };
+}
+JsonFn JsonOf(std::optional<uint32_t> Options::*f) {
+  return [f](const Options& o) { return o.*f ? std::to_string(*(o.*f)) : Null(); };
+}
+JsonFn JsonOf(double Options::*f) {
+  return [f](const Options& o) { return JsonNumber(o.*f); };
+}
+JsonFn JsonOf(std::optional<double> Options::*f) {
+  return [f](const Options& o) { return o.*f ? JsonNumber(*(o.*f)) : Null(); };
+}
+JsonFn JsonOf(float Options::*f) {
+  return [f](const Options& o) { return JsonNumber(o.*f); };
+}
+JsonFn JsonOf(bool Options::*f) {
+  return [f](const Options& o) { return std::string(o.*f ? "true" : "false"); };
+}
+JsonFn JsonOf(std::string Options::*f) {
+  return [f](const Options& o) { return JsonString(o.*f); };
+}
+
+std::string ChoicesText(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "`" : ", `") + name + "`";
+  return text;
+}
+
+void ThrowNotAChoice(const GivenOption& g, const std::vector<std::string>& names) {
+  throw UsageError(g.name + " must be " + OrList(names) + ", got \"" + g.value() + "\"");
+}
+
+OptionValue Flag(bool Options::*f) {
+  return {"", [f](Options& o, const GivenOption&) { o.*f = true; }, JsonOf(f)};
+}
+
+OptionValue Text(std::string Options::*f, const char* needs) {
+  return {"",
+          [f, needs](Options& o, const GivenOption& g) {
+            if (needs && g.value().empty()) throw UsageError(g.name + " needs " + needs);
+            o.*f = g.value();
+          },
+          JsonOf(f)};
+}
+
+OptionValue NoStats(OptionValue v) {
+  v.json = nullptr;
+  return v;
+}
+
+OptionValue OutValue() {
+  return {"", [](Options& o, const GivenOption& g) { o.out = o.outGiven = g.value(); }, JsonOf(&Options::out)};
+}
+
+OptionValue SppValue() {
+  OptionValue v = Number(&Options::spp, {1, 1u << 30});
+  v.set = [number = v.set](Options& o, const GivenOption& g) {
+    number(o, g);
+    o.sppGiven = true;
+  };
+  return v;
+}
+
+OptionValue AdaptiveValue(bool on) {
+  OptionValue v{"", [on](Options& o, const GivenOption&) { o.adaptive = on; }, nullptr};
+  if (on) v.json = [](const Options& o) { return std::string(o.Adaptive() ? "true" : "false"); };
+  return v;
+}
+
+OptionValue CheckpointValue() {
+  OptionValue v = Number(&Options::checkpoint, {1e-3, 1e7});
+  v.json = [](const Options& o) { return o.checkpoint > 0.0 ? JsonNumber(o.checkpoint) : Null(); };
+  return v;
+}
+
+OptionValue DiffValue() {
+  return {"", [](Options& o, const GivenOption& g) { o.diff = g.values; }, nullptr};
+}
+
+OptionValue BackgroundValue() {
+  const Range range{0.0};
+  auto set = [range](Options& o, const GivenOption& g) {
+    const std::vector<std::string> parts = SplitCommas(g.value());
+    if (parts.size() != 1 && parts.size() != 3)
+      throw UsageError(g.name + " expects R,G,B or one number, got \"" + g.value() + "\"");
+    std::array<float, 3> c{};
+    for (size_t k = 0; k < 3; ++k) c[k] = ParseNumber<float>(g.name, parts[parts.size() == 1 ? 0 : k], range);
+    o.background = c;
+  };
+  auto json = [](const Options& o) {
+    if (!o.background) return Null();
+    const std::array<float, 3>& c = *o.background;
+    return JsonArray({JsonNumber(c[0]), JsonNumber(c[1]), JsonNumber(c[2])});
+  };
+  return {"each " + RangeText(range), set, json};
+}
+
+OptionValue AovValue() {
+  std::vector<std::string> names;
+  for (int k = 0; k < kAovCount; ++k) names.push_back(AovName(Aov(k)));
+  names.push_back("all");
+  auto set = [names](Options& o, const GivenOption& g) {
+    o.aovs.clear();
+    for (const std::string& name : SplitCommas(g.value())) {
+      if (name == "all") {
+        for (int k = 0; k < kAovCount; ++k) o.aovs.push_back(Aov(k));
+      } else if (std::optional<Aov> aov = AovFromName(name)) {
+        if (std::find(o.aovs.begin(), o.aovs.end(), *aov) == o.aovs.end()) o.aovs.push_back(*aov);
+      } else {
+        throw UsageError(g.name + ": unknown AOV \"" + name + "\" (" + OrList(names) + ")");
+      }
+    }
+  };
+  auto json = [](const Options& o) {
+    std::vector<std::string> aovs;
+    for (Aov aov : o.aovs) aovs.push_back(JsonString(AovName(aov)));
+    return JsonArray(aovs);
+  };
+  return {ChoicesText(names) + ", comma-separated", set, json};
+}
+
+OptionValue MaxMemoryValue() {
+  auto set = [](Options& o, const GivenOption& g) {
+    std::optional<uint64_t> bytes = ParseByteSize(g.value());
+    if (!bytes || *bytes < (uint64_t(1) << 20))
+      throw UsageError(g.name + " expects a size of at least 1M (bytes, or with K, M, G or T), got \"" + g.value() +
+                       "\"");
+    o.load.maxMemory = *bytes;
+  };
+  return {"≥ 1M", set, [](const Options& o) { return std::to_string(o.load.maxMemory); }};
+}
+
+OptionValue MaxTexelsValue() {
+  auto set = [](Options& o, const GivenOption& g) {
+    std::optional<uint64_t> texels = ParseByteSize(g.value());
+    if (!texels || *texels < 1 || *texels > (uint64_t(1) << 31))
+      throw UsageError(g.name + " expects a count from 1 to 2G (a number, or with K, M or G), got \"" + g.value() +
+                       "\"");
+    o.load.maxTextureTexels = *texels;
+  };
+  return {"[1, 2G]", set, [](const Options& o) { return std::to_string(o.load.maxTextureTexels); }};
+}
+
+OptionValue AllowExternalUrisValue() {
+  return {"", [](Options& o, const GivenOption&) { o.load.allowExternalUris = true; },
+          [](const Options& o) { return std::string(o.load.allowExternalUris ? "true" : "false"); }};
+}
+
+}  // namespace vkpt

@@ -1,0 +1,113 @@
+// The kinds of value an option of `vkpt` takes (app/option_table.h): each gives the text
+// of the values it accepts, the setter that checks and stores a value in Options, and the
+// option's value in the "options" object of --stats. The text and the check come from
+// the same range or list, so the docs cannot promise what the parser refuses.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "app/options.h"
+
+namespace vkpt {
+
+// What was given for an option: its name as written and its values (none for a flag).
+struct GivenOption {
+  const std::string& name;
+  const std::vector<std::string>& values;
+  const std::string& value() const { return values.at(0); }
+};
+
+struct OptionValue {
+  std::string accepts;  // "[1, 16384]", "≥ 0", "`auto`, `cpu`"; empty: anything (or a flag)
+  std::function<void(Options&, const GivenOption&)> set;  // throws UsageError
+  std::function<std::string(const Options&)> json;        // the --stats value; null: none
+};
+
+// Numbers from lo to hi; hi infinite: no upper bound (but the number must be finite);
+// loOpen: lo itself excluded.
+struct Range {
+  double lo;
+  double hi = INFINITY;
+  bool loOpen = false;
+};
+
+// The shortest text that reads back as v: 0.001, 16384, 4294967295, 1e+07, 1e-09.
+std::string FormatNumber(double v);
+// "[1, 16384]", "(0, 1]", "≥ 0", "> 0": what "must be ..." completes.
+std::string RangeText(const Range& r);
+// T is uint32_t, float or double; the error names `opt` and says what was wrong.
+template <class T>
+T ParseNumber(const std::string& opt, const std::string& text, const Range& r);
+
+std::function<std::string(const Options&)> JsonOf(uint32_t Options::*field);
+std::function<std::string(const Options&)> JsonOf(std::optional<uint32_t> Options::*field);
+std::function<std::string(const Options&)> JsonOf(double Options::*field);
+std::function<std::string(const Options&)> JsonOf(std::optional<double> Options::*field);
+std::function<std::string(const Options&)> JsonOf(float Options::*field);
+std::function<std::string(const Options&)> JsonOf(bool Options::*field);
+std::function<std::string(const Options&)> JsonOf(std::string Options::*field);
+
+template <class T>
+struct NumberOf {
+  using type = T;
+};
+template <class T>
+struct NumberOf<std::optional<T>> {
+  using type = T;
+};
+
+// A number in `range` stored in `field` (plain or optional).
+template <class Field>
+OptionValue Number(Field Options::*field, Range range) {
+  return {RangeText(range),
+          [field, range](Options& o, const GivenOption& g) {
+            o.*field = ParseNumber<typename NumberOf<Field>::type>(g.name, g.value(), range);
+          },
+          JsonOf(field)};
+}
+
+// The text of one of `names`, listed as the docs show them and the error says them.
+std::string ChoicesText(const std::vector<std::string>& names);
+[[noreturn]] void ThrowNotAChoice(const GivenOption& g, const std::vector<std::string>& names);
+
+// One of the named values of `field`, its name in the stats.
+template <class E>
+OptionValue Choice(E Options::*field, std::vector<std::pair<std::string, E>> choices) {
+  std::vector<std::string> names;
+  for (const auto& [name, value] : choices) names.push_back(name);
+  return {ChoicesText(names),
+          [field, choices, names](Options& o, const GivenOption& g) {
+            for (const auto& [name, value] : choices)
+              if (name == g.value()) return void(o.*field = value);
+            ThrowNotAChoice(g, names);
+          },
+          [field, choices](const Options& o) {
+            for (const auto& [name, value] : choices)
+              if (value == o.*field) return "\"" + name + "\"";
+            return std::string("null");
+          }};
+}
+
+OptionValue Flag(bool Options::*field);  // sets it true; false in the stats when absent
+// Any text (`needs` null), or a non-empty one: `needs` completes "--opt needs ..." if empty.
+OptionValue Text(std::string Options::*field, const char* needs = nullptr);
+OptionValue NoStats(OptionValue v);  // the option leaves no value in the stats
+
+// The values of the options whose values are of their own kind (option_values.cpp).
+OptionValue OutValue();
+OptionValue SppValue();
+OptionValue AdaptiveValue(bool on);
+OptionValue CheckpointValue();
+OptionValue DiffValue();
+OptionValue BackgroundValue();
+OptionValue AovValue();
+OptionValue MaxMemoryValue();
+OptionValue MaxTexelsValue();
+OptionValue AllowExternalUrisValue();
+
+}  // namespace vkpt
