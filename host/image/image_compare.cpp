@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <utility>
 
+#include "image/image_pair.h"
+#include "image/p_values.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -15,86 +15,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kZ95 = 1.959963984540054;  // two-sided 95 % normal quantile
-constexpr const char* kChannelNames[3] = {"R", "G", "B"};
-
-// P(|Z| ≥ z) for a standard normal Z.
-double NormalTwoSidedP(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }
-
-// The |z| whose two-sided normal p-value is p (bisection; erfc is monotone). Lets the
-// t-test of the fallback report a statistic on the same scale as the Welch z-tests.
-double NormalEquivalentZ(double p) {
-  if (!(p < 1.0)) return 0.0;
-  if (p <= 0.0) return kInf;
-  double lo = 0.0, hi = 40.0;  // erfc(40/√2) underflows to 0 in double
-  for (int i = 0; i < 100 && hi - lo > 1e-12; ++i) {
-    double mid = 0.5 * (lo + hi);
-    (NormalTwoSidedP(mid) > p ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
-// Continued fraction for the regularized incomplete beta function I_x(a, b), evaluated
-// with the modified Lentz method; converges quickly for x < (a + 1) / (a + b + 2).
-double BetaContinuedFraction(double a, double b, double x) {
-  constexpr double kTiny = 1e-300, kEps = 1e-15;
-  auto guard = [](double v) { return std::abs(v) < kTiny ? kTiny : v; };
-  double c = 1.0, d = 1.0 / guard(1.0 - (a + b) * x / (a + 1.0)), h = d;
-  for (int m = 1; m <= 500; ++m) {
-    // Even step: d_{2m} = m(b − m)x / ((a + 2m − 1)(a + 2m)).
-    double num = m * (b - m) * x / ((a + 2 * m - 1) * (a + 2 * m));
-    d = 1.0 / guard(1.0 + num * d);
-    c = guard(1.0 + num / c);
-    h *= d * c;
-    // Odd step: d_{2m+1} = −(a + m)(a + b + m)x / ((a + 2m)(a + 2m + 1)).
-    num = -(a + m) * (a + b + m) * x / ((a + 2 * m) * (a + 2 * m + 1));
-    d = 1.0 / guard(1.0 + num * d);
-    c = guard(1.0 + num / c);
-    double step = d * c;
-    h *= step;
-    if (std::abs(step - 1.0) < kEps) break;
-  }
-  return h;
-}
-
-double RegularizedIncompleteBeta(double a, double b, double x) {
-  if (x <= 0.0) return 0.0;
-  if (x >= 1.0) return 1.0;
-  double front = std::exp(std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x));
-  // Use the symmetry I_x(a, b) = 1 − I_{1−x}(b, a) where the fraction converges slowly.
-  if (x < (a + 1.0) / (a + b + 2.0)) return front * BetaContinuedFraction(a, b, x) / a;
-  return 1.0 - front * BetaContinuedFraction(b, a, 1.0 - x) / b;
-}
-
-// P(|T| ≥ t) for Student's t with ν degrees of freedom: I_{ν/(ν+t²)}(ν/2, 1/2).
-double StudentTwoSidedP(double t, double nu) {
-  if (std::isinf(t)) return 0.0;
-  return RegularizedIncompleteBeta(0.5 * nu, 0.5, nu / (nu + t * t));
-}
-
-bool HasVariance(const Image& img) { return !img.variance.empty(); }
-
-void Validate(const Image& img, const char* name) {
-  size_t n = size_t(img.width) * img.height;
-  if (img.pixels.size() != n)
-    throw Error(std::string("image ") + name + ": " + std::to_string(img.pixels.size()) + " pixels for a " +
-                std::to_string(img.width) + "×" + std::to_string(img.height) + " image");
-  if (HasVariance(img) && img.variance.size() != n)
-    throw Error(std::string("image ") + name + ": " + std::to_string(img.variance.size()) + " variances for " +
-                std::to_string(n) + " pixels");
-}
-
-void CheckSameSize(const Image& a, const Image& b) {
-  Validate(a, "A");
-  Validate(b, "B");
-  if (a.width != b.width || a.height != b.height)
-    throw Error("cannot compare images of different sizes: " + std::to_string(a.width) + "×" +
-                std::to_string(a.height) + " and " + std::to_string(b.width) + "×" + std::to_string(b.height));
-}
-
-// A channel is usable when its value (and variance, if the image has them) is finite.
-bool Finite(const Image& img, size_t i, int c) {
-  return std::isfinite(img.pixels[i][c]) && (!HasVariance(img) || std::isfinite(img.variance[i][c]));
-}
 
 void CountNonFinite(const Image& img, size_t i, int c, uint64_t& nan, uint64_t& inf) {
   float v = img.pixels[i][c];
@@ -103,12 +23,6 @@ void CountNonFinite(const Image& img, size_t i, int c, uint64_t& nan, uint64_t& 
     ++nan;
   else if (std::isinf(v) || std::isinf(var))
     ++inf;
-}
-
-std::string Fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
 }
 
 void CheckOptions(const CompareOptions& options) {
@@ -131,7 +45,7 @@ ChannelSums LockstepPass(const Image& a, const Image& b, const CompareOptions& o
       ++r.channels;
       CountNonFinite(a, i, c, r.nanA, r.infA);
       CountNonFinite(b, i, c, r.nanB, r.infB);
-      if (!Finite(a, i, c) || !Finite(b, i, c)) {
+      if (!FiniteChannel(a, i, c) || !FiniteChannel(b, i, c)) {
         ++r.differing;
         continue;
       }
@@ -157,7 +71,7 @@ double PairedSquares(const Image& a, const Image& b, int c, double meanDiff, uin
   for (uint32_t y = y0; y < y0 + h; ++y)
     for (uint32_t x = x0; x < x0 + w; ++x) {
       size_t i = size_t(y) * a.width + x;
-      if (!Finite(a, i, c) || !Finite(b, i, c)) continue;
+      if (!FiniteChannel(a, i, c) || !FiniteChannel(b, i, c)) continue;
       double d = double(a.pixels[i][c]) - double(b.pixels[i][c]) - meanDiff;
       ss += d * d;
     }
@@ -196,7 +110,7 @@ std::optional<RegionResult> TestRegion(const Image& a, const Image& b, RegionRes
   for (uint32_t y = t.y0; y < t.y0 + t.height; ++y)
     for (uint32_t x = t.x0; x < t.x0 + t.width; ++x) {
       size_t i = size_t(y) * a.width + x;
-      if (!Finite(a, i, c) || !Finite(b, i, c)) continue;
+      if (!FiniteChannel(a, i, c) || !FiniteChannel(b, i, c)) continue;
       sa += a.pixels[i][c];
       sb += b.pixels[i][c];
       if (usedVariances) {
@@ -289,99 +203,6 @@ ImageComparison CompareImages(const Image& a, const Image& b, const CompareOptio
   r.lockstepAgree = allFinite && r.differingFraction <= options.maxDifferingFraction;
   r.statisticallyAgree = allFinite && r.significantRegions == 0;
   return r;
-}
-
-std::string ImageComparison::Summary() const {
-  const CompareOptions& o = options;
-  std::ostringstream s;
-  s << "Image comparison, " << width << "×" << height << " (A − B)\n";
-  s << "Lockstep: " << differing << " of " << channels << " channels (" << Fmt("%.3f", 100.0 * differingFraction)
-    << " %) beyond " << Fmt("%g", o.relTolerance) << " relative + " << Fmt("%g", o.absFloor)
-    << " absolute; limit " << Fmt("%g", 100.0 * o.maxDifferingFraction) << " % -> "
-    << (lockstepAgree ? "agree" : "DISAGREE") << "\n";
-  s << "  max abs error " << Fmt("%.4g", maxAbsError) << ", max rel error " << Fmt("%.4g", maxRelError) << "\n";
-  s << "  non-finite channels: A " << nanA << " NaN " << infA << " Inf, B " << nanB << " NaN " << infB << " Inf"
-    << (nanA + infA + nanB + infB ? " (forces DISAGREE)" : "") << "\n";
-  s << "Channel means, 95 % CI of A − B from "
-    << (usedVariances ? "the per-pixel variances" : "the spread of pixel differences (no variances)") << ":\n";
-  for (int c = 0; c < 3; ++c) {
-    const ChannelStats& p = perChannel[c];
-    s << "  " << kChannelNames[c] << ": A " << Fmt("%.6g", p.meanA) << ", B " << Fmt("%.6g", p.meanB) << ", A − B "
-      << Fmt("%+.4g", p.meanDiff) << " ± " << Fmt("%.4g", p.ciHalfWidth) << "\n";
-  }
-  s << "Region tests: " << regions << " regions of " << o.regionSize << "×" << o.regionSize << ", " << tests
-    << " tests, standard error from "
-    << (usedVariances ? "the per-pixel variances (Welch z)"
-                      : "the spread of paired pixel differences within each region (no variances; paired t)")
-    << "\n";
-  s << "  Šidák α per test " << Fmt("%.3g", alphaPerTest) << " (family " << Fmt("%g", o.alpha) << "), margin "
-    << Fmt("%g", 100.0 * o.margin) << " %\n";
-  s << "  worst |z| " << Fmt("%.3f", worstZ) << " (p " << Fmt("%.3g", worstP) << "), " << significantRegions
-    << " significant region(s) -> " << (statisticallyAgree ? "agree" : "DISAGREE") << "\n";
-  const size_t kListed = 10;
-  for (size_t k = 0; k < significant.size() && k < kListed; ++k) {
-    const RegionResult& t = significant[k];
-    s << "    region (" << t.x0 << ", " << t.y0 << ") " << t.width << "×" << t.height << " "
-      << kChannelNames[t.channel] << ": A " << Fmt("%.6g", t.meanA) << ", B " << Fmt("%.6g", t.meanB) << ", "
-      << Fmt("%.2f", 100.0 * t.relDiff) << " %, z " << Fmt("%+.2f", t.z) << ", p " << Fmt("%.3g", t.p) << "\n";
-  }
-  if (significant.size() > kListed) s << "    ... and " << significant.size() - kListed << " more\n";
-  return s.str();
-}
-
-namespace {
-
-// sRGB display value → linear, so the heat map's ramp is even on screen after
-// WriteImage's LinearToSrgb8.
-float SrgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
-
-// t ∈ [0, 1]: black → yellow (0.5) → red (1), in display space.
-glm::vec3 HeatColour(double t) {
-  t = std::clamp(t, 0.0, 1.0);
-  float r = float(std::min(1.0, 2.0 * t)), g = float(t <= 0.5 ? 2.0 * t : 2.0 - 2.0 * t);
-  return glm::vec3(SrgbToLinear(r), SrgbToLinear(g), 0.0f);
-}
-
-}  // namespace
-
-Image DifferenceHeatmap(const Image& a, const Image& b) {
-  CheckSameSize(a, b);
-  const bool useVariance = HasVariance(a) && HasVariance(b);
-  Image out{a.width, a.height};
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    double score = 0.0;  // in [0, 1], the largest over the channels
-    bool finite = true;
-    for (int c = 0; c < 3; ++c) {
-      if (!Finite(a, i, c) || !Finite(b, i, c)) {
-        finite = false;
-        break;
-      }
-      double va = a.pixels[i][c], vb = b.pixels[i][c], d = std::abs(va - vb);
-      if (d == 0.0) continue;
-      double t;
-      if (useVariance) {
-        double sd = std::sqrt(double(a.variance[i][c]) + double(b.variance[i][c]));
-        t = sd > 0.0 ? d / sd / 6.0 : 1.0;  // z / 6: z = 3 is yellow, z ≥ 6 red
-      } else {
-        double rel = d / std::max({std::abs(va), std::abs(vb), 1e-6});
-        t = (std::log10(rel) + 6.0) / 6.0;  // 1e-6 black, 1e-3 yellow, 1 red
-      }
-      score = std::max(score, t);
-    }
-    out.pixels[i] = finite ? HeatColour(score) : glm::vec3(1.0f, 0.0f, 1.0f);
-  }
-  return out;
-}
-
-double RelativeMse(const Image& a, const Image& reference) {
-  CheckSameSize(a, reference);
-  double total = 0.0;
-  for (size_t i = 0; i < reference.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(a.pixels[i][c]) - reference.pixels[i][c], r = reference.pixels[i][c];
-      total += d * d / (r * r + 0.01);
-    }
-  return total / (3.0 * reference.pixels.size());
 }
 
 }  // namespace vkpt

@@ -99,6 +99,15 @@ class Instancer {
     }
   }
 
+  // A mesh instance's transform and what follows from it for its attributes.
+  struct Placement {
+    glm::dmat4 world;
+    glm::dmat3 normalMatrix;  // normals stay perpendicular to the surface under the inverse transpose
+    // A mirroring transform (negative determinant) flips the winding; swap two
+    // vertices so the front face stays the one the author meant (glTF spec §3.7.4).
+    bool mirrored;
+  };
+
   // Adds one node's camera, light and mesh; returns its world transform.
   glm::dmat4 InstantiateNode(int nodeIndex, const glm::dmat4& parent) {
     const tinygltf::Node& n = src_.m.nodes[nodeIndex];
@@ -112,63 +121,75 @@ class Instancer {
       scene_.lights.push_back(PlaceLight(src_, light, world, name));
     if (n.mesh != -1) {
       src_.CheckIndex(n.mesh, src_.m.meshes, name + ".mesh");
-      // A mirroring transform (negative determinant) flips the winding; swap two
-      // vertices so the front face stays the one the author meant (glTF spec §3.7.4).
-      bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
-      // Normals stay perpendicular to the surface under the inverse transpose.
-      const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(world));
-      for (const DecodedPrimitive& prim : meshes_[n.mesh]) {
-        std::vector<glm::vec3> p(prim.positions.size());
-        for (size_t v = 0; v < p.size(); ++v) {
-          glm::dvec4 w = world * glm::dvec4(glm::dvec3(prim.positions[v]), 1.0);
-          if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z) ||
-              glm::any(glm::greaterThan(glm::abs(glm::dvec3(w)), glm::dvec3(1e30))))
-            src_.Fail(name + ": transformed position is not finite (mesh " + std::to_string(n.mesh) + ")");
-          p[v] = glm::vec3(w);
-        }
-        std::vector<glm::vec3> nw(prim.normals.size());
-        for (size_t v = 0; v < nw.size(); ++v) nw[v] = WorldNormal(normalMatrix, prim.normals[v]);
-        // Tangents lie in the surface: they transform as directions, and a mirroring
-        // transform flips the bitangent (w). Per vertex (TANGENT) or per corner (generated).
-        const bool perCorner = !prim.cornerTangents.empty();
-        const std::vector<glm::vec4>& tangents = perCorner ? prim.cornerTangents : prim.tangents;
-        std::vector<glm::vec4> tw(tangents.size());
-        for (size_t v = 0; v < tw.size(); ++v) {
-          const glm::dvec3 t = glm::dmat3(world) * glm::dvec3(tangents[v]);
-          const double len = glm::length(t);
-          if (len > 0.0 && std::isfinite(len))
-            tw[v] = glm::vec4(glm::vec3(t / len), tangents[v].w * (mirrored ? -1.0f : 1.0f));
-        }
-        for (size_t k = 0; k < prim.indices.size(); k += 3) {
-          const uint32_t i0 = prim.indices[k], i1 = prim.indices[k + 1], i2 = prim.indices[k + 2];
-          SceneTriangle t{p[i0], p[i1], p[i2], prim.material};
-          VertexNormals vn;
-          if (!nw.empty()) vn = {nw[i0], nw[i1], nw[i2]};
-          VertexColors vc;
-          const std::vector<glm::vec4>& c = prim.colors;
-          if (!c.empty()) vc = {c[i0], c[i1], c[i2]};
-          VertexUVs vu;
-          for (int set = 0; set < 2; ++set) {
-            const std::vector<glm::vec2>& uv = prim.uvs[set];
-            glm::vec2* out = set == 0 ? vu.set0 : vu.set1;
-            if (!uv.empty()) out[0] = uv[i0], out[1] = uv[i1], out[2] = uv[i2];
-          }
-          VertexTangents vt;
-          if (perCorner) vt = {{tw[k], tw[k + 1], tw[k + 2]}};
-          else if (!tw.empty()) vt = {{tw[i0], tw[i1], tw[i2]}};
-          if (mirrored) {
-            std::swap(t.v1, t.v2);
-            std::swap(vt.t[1], vt.t[2]);
-            std::swap(vn.n1, vn.n2);
-            std::swap(vc.c1, vc.c2);
-            std::swap(vu.set0[1], vu.set0[2]);
-            std::swap(vu.set1[1], vu.set1[2]);
-          }
-          AddTriangle(t, vn, vc, !c.empty(), vu, vt);
-        }
-      }
+      const Placement place{world, glm::inverseTranspose(glm::dmat3(world)), glm::determinant(glm::dmat3(world)) < 0.0};
+      for (const DecodedPrimitive& prim : meshes_[n.mesh]) AddPrimitive(prim, place, name, n.mesh);
     }
     return world;
+  }
+
+  // One primitive of a mesh instance (nodes[…] `name`, meshes[`mesh`]): its attributes
+  // in world space, then its triangles.
+  void AddPrimitive(const DecodedPrimitive& prim, const Placement& place, const std::string& name, int mesh) {
+    std::vector<glm::vec3> p(prim.positions.size());
+    for (size_t v = 0; v < p.size(); ++v) {
+      glm::dvec4 w = place.world * glm::dvec4(glm::dvec3(prim.positions[v]), 1.0);
+      if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z) ||
+          glm::any(glm::greaterThan(glm::abs(glm::dvec3(w)), glm::dvec3(1e30))))
+        src_.Fail(name + ": transformed position is not finite (mesh " + std::to_string(mesh) + ")");
+      p[v] = glm::vec3(w);
+    }
+    std::vector<glm::vec3> nw(prim.normals.size());
+    for (size_t v = 0; v < nw.size(); ++v) nw[v] = WorldNormal(place.normalMatrix, prim.normals[v]);
+    // Per vertex (TANGENT) or per corner (generated).
+    const bool perCorner = !prim.cornerTangents.empty();
+    const std::vector<glm::vec4> tw = WorldTangents(perCorner ? prim.cornerTangents : prim.tangents, place);
+    for (size_t k = 0; k < prim.indices.size(); k += 3) {
+      const uint32_t i[3] = {prim.indices[k], prim.indices[k + 1], prim.indices[k + 2]};
+      VertexTangents vt;
+      if (perCorner) vt = {{tw[k], tw[k + 1], tw[k + 2]}};
+      else if (!tw.empty()) vt = {{tw[i[0]], tw[i[1]], tw[i[2]]}};
+      AddCorners(prim, i, p, nw, vt, place.mirrored);
+    }
+  }
+
+  // Tangents lie in the surface: they transform as directions, and a mirroring
+  // transform flips the bitangent (w). Zero where the transform leaves no direction.
+  static std::vector<glm::vec4> WorldTangents(const std::vector<glm::vec4>& tangents, const Placement& place) {
+    std::vector<glm::vec4> tw(tangents.size());
+    for (size_t v = 0; v < tw.size(); ++v) {
+      const glm::dvec3 t = glm::dmat3(place.world) * glm::dvec3(tangents[v]);
+      const double len = glm::length(t);
+      if (len > 0.0 && std::isfinite(len))
+        tw[v] = glm::vec4(glm::vec3(t / len), tangents[v].w * (place.mirrored ? -1.0f : 1.0f));
+    }
+    return tw;
+  }
+
+  // The triangle of corners i[0..2] with its world-space positions p, normals nw and
+  // tangents vt, wound back the author's way when mirrored.
+  void AddCorners(const DecodedPrimitive& prim, const uint32_t i[3], const std::vector<glm::vec3>& p,
+                  const std::vector<glm::vec3>& nw, VertexTangents vt, bool mirrored) {
+    SceneTriangle t{p[i[0]], p[i[1]], p[i[2]], prim.material};
+    VertexNormals vn;
+    if (!nw.empty()) vn = {nw[i[0]], nw[i[1]], nw[i[2]]};
+    VertexColors vc;
+    const std::vector<glm::vec4>& c = prim.colors;
+    if (!c.empty()) vc = {c[i[0]], c[i[1]], c[i[2]]};
+    VertexUVs vu;
+    for (int set = 0; set < 2; ++set) {
+      const std::vector<glm::vec2>& uv = prim.uvs[set];
+      glm::vec2* out = set == 0 ? vu.set0 : vu.set1;
+      if (!uv.empty()) out[0] = uv[i[0]], out[1] = uv[i[1]], out[2] = uv[i[2]];
+    }
+    if (mirrored) {
+      std::swap(t.v1, t.v2);
+      std::swap(vt.t[1], vt.t[2]);
+      std::swap(vn.n1, vn.n2);
+      std::swap(vc.c1, vc.c2);
+      std::swap(vu.set0[1], vu.set0[2]);
+      std::swap(vu.set1[1], vu.set1[2]);
+    }
+    AddTriangle(t, vn, vc, !c.empty(), vu, vt);
   }
 
   // A triangle with any vertex normal that did not survive its transform is shaded flat:

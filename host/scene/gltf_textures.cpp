@@ -2,21 +2,12 @@
 
 #include <cmath>
 #include <map>
-#include <span>
 #include <utility>
 
-#include "image/texture_decode.h"
-#include "util/byte_size.h"
-#include "util/parallel.h"
+#include "scene/gltf_texture_images.h"
 
 namespace vkpt {
 namespace {
-
-// Host memory per texel of an image's level 0: the decoder's output and stb's working memory
-// (up to three times the output: texture_decode.h), the Scene's copy, and the renderer's store with its mip
-// levels (4/3 of level 0) four times over: the chains as built, the store, its staging
-// buffer and its device copy.
-constexpr uint64_t kBytesPerTexel = 16 + 4 + 4 * 6;
 
 // A material's use of a texture: which slot, and whether its RGB is colour (sRGB).
 struct Slot {
@@ -78,15 +69,6 @@ uint32_t SamplerBits(const GltfSource& src, int sampler) {
     case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return bits | shader::kTextureMipLinear;
     default: src.Fail(name + ".minFilter is " + std::to_string(s.minFilter) + ", not a glTF minification filter");
   }
-}
-
-// The encoded bytes of images[i]: its bufferView's, or what tinygltf read for its uri
-// (kept by the loader's image callback).
-std::span<const unsigned char> EncodedImage(const GltfSource& src, int image) {
-  const tinygltf::Image& im = src.m.images[image];
-  if (im.bufferView < 0) return im.image;
-  const tinygltf::BufferView& bv = src.m.bufferViews[im.bufferView];
-  return std::span<const unsigned char>(src.m.buffers[bv.buffer].data).subspan(bv.byteOffset, bv.byteLength);
 }
 
 class TextureReader {
@@ -218,12 +200,23 @@ class TextureReader {
   std::map<int, std::string> users_;                   // glTF image → the first textureInfo using it
 };
 
-std::string ImageName(const GltfSource& src, int image) {
-  std::string name = "images[" + std::to_string(image) + "]";
-  const tinygltf::Image& im = src.m.images[image];
-  if (!im.name.empty()) return name + " \"" + im.name + "\"";
-  if (!im.uri.empty() && !im.uri.starts_with("data:")) return name + " \"" + im.uri + "\"";
-  return name;
+// Every texture slot of materials[m], and its normal texture's scale.
+void ReadMaterialTextures(const GltfSource& src, uint32_t m, TextureReader& reader, Scene& scene) {
+  const tinygltf::Material& mat = src.m.materials[m];
+  reader.Read(m, kBaseColor, mat.pbrMetallicRoughness.baseColorTexture);
+  reader.Read(m, kMetallicRoughness, mat.pbrMetallicRoughness.metallicRoughnessTexture);
+  reader.Read(m, kEmissive, mat.emissiveTexture);
+  tinygltf::TextureInfo normal;  // a normalTextureInfo is a textureInfo with a scale
+  normal.index = mat.normalTexture.index;
+  normal.texCoord = mat.normalTexture.texCoord;
+  normal.extensions = mat.normalTexture.extensions;
+  reader.Read(m, kNormal, normal);
+  const double scale = mat.normalTexture.scale;
+  if (!std::isfinite(scale) || std::abs(scale) > 1e6)
+    src.Fail("materials[" + std::to_string(m) + "].normalTexture.scale is not a finite number of at most 1e6");
+  scene.materials[m].normalScale = float(scale);
+  for (const ExtensionSlot& e : kExtensionSlots)
+    reader.Read(m, e.slot, reader.ExtensionTexture(m, e.extension, e.field));
 }
 
 }  // namespace
@@ -242,66 +235,9 @@ bool UsesNormalMaps(const Scene& scene) {
 
 void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget& budget, Scene& scene) {
   TextureReader reader(src, scene);
-  for (uint32_t m = 0; m < src.m.materials.size(); ++m) {
-    const tinygltf::Material& mat = src.m.materials[m];
-    reader.Read(m, kBaseColor, mat.pbrMetallicRoughness.baseColorTexture);
-    reader.Read(m, kMetallicRoughness, mat.pbrMetallicRoughness.metallicRoughnessTexture);
-    reader.Read(m, kEmissive, mat.emissiveTexture);
-    tinygltf::TextureInfo normal;  // a normalTextureInfo is a textureInfo with a scale
-    normal.index = mat.normalTexture.index;
-    normal.texCoord = mat.normalTexture.texCoord;
-    normal.extensions = mat.normalTexture.extensions;
-    reader.Read(m, kNormal, normal);
-    const double scale = mat.normalTexture.scale;
-    if (!std::isfinite(scale) || std::abs(scale) > 1e6)
-      src.Fail("materials[" + std::to_string(m) + "].normalTexture.scale is not a finite number of at most 1e6");
-    scene.materials[m].normalScale = float(scale);
-    for (const ExtensionSlot& e : kExtensionSlots)
-      reader.Read(m, e.slot, reader.ExtensionTexture(m, e.extension, e.field));
-  }
+  for (uint32_t m = 0; m < src.m.materials.size(); ++m) ReadMaterialTextures(src, m, reader, scene);
   if (scene.textures.empty()) return;
-
-  // Every header is read, and the budgets charged, before the first image is decoded.
-  struct Job {
-    int image;
-    std::string name;  // "images[2] "wood.png" (used by materials[0] … baseColorTexture)"
-    TextureImageHeader header;
-  };
-  std::vector<Job> jobs;
-  std::map<int, uint32_t> index;  // glTF image → Scene::images
-  const uint64_t maxTexels = limits.maxTextureTexels ? limits.maxTextureTexels : kDefaultMaxTextureTexels;
-  uint64_t texels = 0;
-  for (const auto& [image, user] : reader.Users()) {
-    Job job{image, ImageName(src, image) + " (used by " + user + ")", {}};
-    try {
-      job.header = ReadTextureImageHeader(EncodedImage(src, image), src.m.images[image].mimeType);
-    } catch (const Error& e) {
-      src.Fail(job.name + " " + e.what());
-    }
-    const uint64_t n = uint64_t(job.header.width) * job.header.height;
-    texels += n;
-    if (texels > maxTexels)
-      src.Fail(job.name + " brings the scene's texture texels to " + std::to_string(texels) +
-               ", more than --max-texels " + std::to_string(maxTexels));
-    budget.Charge(n * kBytesPerTexel, job.name + " (" + std::to_string(job.header.width) + " × " +
-                                          std::to_string(job.header.height) + " texels)");
-    index[image] = uint32_t(jobs.size());
-    jobs.push_back(std::move(job));
-  }
-
-  scene.images.resize(jobs.size());
-  std::vector<std::string> errors(jobs.size());
-  ParallelFor(jobs.size(), ThreadCount(0), [&](size_t k) {
-    try {
-      Rgba8Image decoded = DecodeTextureImage(EncodedImage(src, jobs[k].image), jobs[k].header);
-      scene.images[k] = {ImageName(src, jobs[k].image), decoded.width, decoded.height, std::move(decoded.texels)};
-    } catch (const Error& e) {
-      errors[k] = jobs[k].name + " " + e.what();
-    }
-  });
-  for (const std::string& e : errors)
-    if (!e.empty()) src.Fail(e);
-  for (SceneTexture& t : scene.textures) t.image = index.at(int(t.image));
+  LoadTextureImages(src, reader.Users(), limits, budget, scene);
 }
 
 }  // namespace vkpt

@@ -2,66 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstring>
 
 #include "util/error.h"
+#include "vk/instance.h"
 #include "vk/vk_check.h"
 
 namespace vkpt::vk {
 namespace {
-
-constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-constexpr const char* kNoDeviceFix =
-    "install a Vulkan driver: on Debian, `apt-get install mesa-vulkan-drivers` gives lavapipe, "
-    "a software Vulkan device on the CPU";
-
-bool HasInstanceExtension(const char* name) {
-  uint32_t n = 0;
-  if (vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr) != VK_SUCCESS) return false;
-  std::vector<VkExtensionProperties> exts(n);
-  vkEnumerateInstanceExtensionProperties(nullptr, &n, exts.data());
-  return std::any_of(exts.begin(), exts.end(), [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
-}
-
-bool HasLayer(const char* name) {
-  uint32_t n = 0;
-  if (vkEnumerateInstanceLayerProperties(&n, nullptr) != VK_SUCCESS) return false;
-  std::vector<VkLayerProperties> layers(n);
-  vkEnumerateInstanceLayerProperties(&n, layers.data());
-  return std::any_of(layers.begin(), layers.end(), [&](const auto& l) { return std::strcmp(l.layerName, name) == 0; });
-}
-
-VkInstance CreateInstance(bool validation, bool debugUtils, const VkDebugUtilsMessengerCreateInfoEXT* messengerInfo) {
-  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-  app.pApplicationName = "vkpt";
-  app.pEngineName = "vkpt";
-  app.apiVersion = VK_API_VERSION_1_2;
-  std::vector<const char*> layers, extensions;
-  if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-  // Synchronization validation is off by default in the layer; 1.3.239 predates
-  // VK_EXT_layer_settings, so it is switched on through VkValidationFeaturesEXT.
-  VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
-  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
-  features.enabledValidationFeatureCount = 1;
-  features.pEnabledValidationFeatures = enables;
-  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  info.pApplicationInfo = &app;
-  if (validation) {
-    layers.push_back(kValidationLayer);
-    features.pNext = messengerInfo;  // also catches messages from instance creation
-    info.pNext = &features;
-  }
-  info.enabledLayerCount = uint32_t(layers.size());
-  info.ppEnabledLayerNames = layers.data();
-  info.enabledExtensionCount = uint32_t(extensions.size());
-  info.ppEnabledExtensionNames = extensions.data();
-  VkInstance instance = VK_NULL_HANDLE;
-  VkResult r = vkCreateInstance(&info, nullptr, &instance);
-  if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
-    throw Error(std::string("no Vulkan device found (vkCreateInstance: ") + ResultName(r) + "); " + kNoDeviceFix);
-  VKPT_VK_CHECK(r);
-  return instance;
-}
 
 std::vector<VkPhysicalDevice> PhysicalDevices(VkInstance instance) {
   uint32_t n = 0;
@@ -96,6 +43,72 @@ int TypeRank(VkPhysicalDeviceType t) {
     case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
     default: return 4;
   }
+}
+
+// The index into `infos` of the device --device `want` names ("": the best with what vkpt
+// needs, by type: discrete, integrated, virtual GPU, CPU); throws vkpt::Error when none
+// does, or the one named lacks a compute queue or Vulkan 1.2.
+uint32_t ChooseDevice(const std::vector<DeviceInfo>& infos, const std::string& want) {
+  std::optional<uint32_t> chosen;
+  if (want.empty()) {
+    for (const DeviceInfo& d : infos)
+      if (d.hasComputeQueue && d.apiVersion >= VK_API_VERSION_1_2 &&
+          (!chosen || TypeRank(d.type) < TypeRank(infos[*chosen].type)))
+        chosen = d.index;
+    if (!chosen) throw Error("no Vulkan 1.2 device with a compute queue; " + std::string(kNoDeviceFix));
+  } else if (std::all_of(want.begin(), want.end(), ::isdigit)) {
+    uint32_t i = uint32_t(std::stoul(want));
+    if (i >= infos.size())
+      throw Error("--device " + want + ": there are only " + std::to_string(infos.size()) +
+                  " Vulkan device(s) (see --list-devices)");
+    chosen = i;
+  } else {
+    for (const DeviceInfo& d : infos)
+      if (d.name.find(want) != std::string::npos) {
+        chosen = d.index;
+        break;
+      }
+    if (!chosen) throw Error("--device \"" + want + "\" matches no Vulkan device (see --list-devices)");
+  }
+  const DeviceInfo& info = infos[*chosen];
+  if (!info.hasComputeQueue) throw Error("Vulkan device \"" + info.name + "\" has no compute queue");
+  if (info.apiVersion < VK_API_VERSION_1_2)
+    throw Error("Vulkan device \"" + info.name + "\" does not support Vulkan 1.2");
+  return *chosen;
+}
+
+// The physical device --device `want` names (see ChooseDevice).
+VkPhysicalDevice PickDevice(VkInstance instance, const std::string& want) {
+  std::vector<VkPhysicalDevice> devices = PhysicalDevices(instance);
+  if (devices.empty()) throw Error(std::string("no Vulkan device found; ") + kNoDeviceFix);
+  std::vector<DeviceInfo> infos;
+  for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(Describe(devices[i], i));
+  return devices[ChooseDevice(infos, want)];
+}
+
+// The logical device, with one queue of `queueFamily`.
+VkDevice CreateDevice(VkPhysicalDevice physical, uint32_t queueFamily) {
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = queueFamily;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+  VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  deviceInfo.queueCreateInfoCount = 1;
+  deviceInfo.pQueueCreateInfos = &queueInfo;
+  VkDevice device = VK_NULL_HANDLE;
+  VKPT_VK_CHECK(vkCreateDevice(physical, &deviceInfo, nullptr, &device));
+  return device;
+}
+
+// The pool of the one-shot command buffers (Submit), each reset as it is freed.
+VkCommandPool CreateCommandPool(VkDevice device, uint32_t queueFamily) {
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  poolInfo.queueFamilyIndex = queueFamily;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VKPT_VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
+  return pool;
 }
 
 }  // namespace
@@ -141,78 +154,21 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::OnMessage(VkDebugUtilsMessageSeverityFla
 
 Context::Context(const ContextOptions& options) {
   try {
-    if (options.validation && !HasLayer(kValidationLayer))
-      throw Error(std::string("validation requested but ") + kValidationLayer +
-                  " is not installed (Debian: apt-get install vulkan-validationlayers)");
-    const bool debugUtils = HasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-    if (options.validation && !debugUtils) throw Error("validation needs VK_EXT_debug_utils, which the loader lacks");
-    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messengerInfo.messageSeverity =
-        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                                VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    messengerInfo.pfnUserCallback = &Context::OnMessage;
-    messengerInfo.pUserData = this;
+    const bool debugUtils = CheckDebugUtils(options.validation);
+    const VkDebugUtilsMessengerCreateInfoEXT messengerInfo = MessengerInfo(&Context::OnMessage, this);
     instance_ = CreateInstance(options.validation, debugUtils, &messengerInfo);
-    if (options.validation) {
-      auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-          vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-      if (!create) throw Error("vkCreateDebugUtilsMessengerEXT is not available");
-      VKPT_VK_CHECK(create(instance_, &messengerInfo, nullptr, &messenger_));
-    }
+    if (options.validation) messenger_ = CreateMessenger(instance_, messengerInfo);
     if (debugUtils)
       setName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
           vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
 
-    std::vector<VkPhysicalDevice> devices = PhysicalDevices(instance_);
-    if (devices.empty()) throw Error(std::string("no Vulkan device found; ") + kNoDeviceFix);
-    std::vector<DeviceInfo> infos;
-    for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(Describe(devices[i], i));
-    std::optional<uint32_t> chosen;
-    const std::string& want = options.device;
-    if (want.empty()) {
-      for (const DeviceInfo& d : infos)
-        if (d.hasComputeQueue && d.apiVersion >= VK_API_VERSION_1_2 &&
-            (!chosen || TypeRank(d.type) < TypeRank(infos[*chosen].type)))
-          chosen = d.index;
-      if (!chosen) throw Error("no Vulkan 1.2 device with a compute queue; " + std::string(kNoDeviceFix));
-    } else if (std::all_of(want.begin(), want.end(), ::isdigit)) {
-      uint32_t i = uint32_t(std::stoul(want));
-      if (i >= infos.size())
-        throw Error("--device " + want + ": there are only " + std::to_string(infos.size()) + " Vulkan device(s) (see --list-devices)");
-      chosen = i;
-    } else {
-      for (const DeviceInfo& d : infos)
-        if (d.name.find(want) != std::string::npos) {
-          chosen = d.index;
-          break;
-        }
-      if (!chosen) throw Error("--device \"" + want + "\" matches no Vulkan device (see --list-devices)");
-    }
-    const DeviceInfo& info = infos[*chosen];
-    if (!info.hasComputeQueue) throw Error("Vulkan device \"" + info.name + "\" has no compute queue");
-    if (info.apiVersion < VK_API_VERSION_1_2) throw Error("Vulkan device \"" + info.name + "\" does not support Vulkan 1.2");
-    physical_ = devices[*chosen];
+    physical_ = PickDevice(instance_, options.device);
     queueFamily_ = *ComputeQueueFamily(physical_);
     vkGetPhysicalDeviceProperties(physical_, &props_);
     vkGetPhysicalDeviceMemoryProperties(physical_, &memProps_);
-
-    float priority = 1.0f;
-    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    queueInfo.queueFamilyIndex = queueFamily_;
-    queueInfo.queueCount = 1;
-    queueInfo.pQueuePriorities = &priority;
-    VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    deviceInfo.queueCreateInfoCount = 1;
-    deviceInfo.pQueueCreateInfos = &queueInfo;
-    VKPT_VK_CHECK(vkCreateDevice(physical_, &deviceInfo, nullptr, &device_));
+    device_ = CreateDevice(physical_, queueFamily_);
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
-
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = queueFamily_;
-    VKPT_VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &pool_));
+    pool_ = CreateCommandPool(device_, queueFamily_);
   } catch (...) {
     Destroy();
     throw;
@@ -227,11 +183,7 @@ void Context::Destroy() {
     if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);
     vkDestroyDevice(device_, nullptr);
   }
-  if (messenger_) {
-    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-    if (destroy) destroy(instance_, messenger_, nullptr);
-  }
+  if (messenger_) DestroyMessenger(instance_, messenger_);
   if (instance_) vkDestroyInstance(instance_, nullptr);
   pool_ = VK_NULL_HANDLE;
   device_ = VK_NULL_HANDLE;
