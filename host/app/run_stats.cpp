@@ -25,6 +25,44 @@ JsonObject OptionsJson(const Options& o) {
   return j;
 }
 
+JsonObject SceneJson(const RunOutcome& run) {
+  char hash[32];
+  std::snprintf(hash, sizeof hash, "fnv1a64:%016" PRIx64, run.scene.contentHash);
+  JsonObject scene;
+  scene.Str("path", run.scene.path).Str("content_hash", hash).Int("triangles", run.scene.triangles.size());
+  scene.Int("degenerate_triangles", run.rs.degenerateTriangles).Int("materials", run.scene.materials.size());
+  scene.Int("lights", run.rs.lights.size()).Int("cameras", run.scene.cameras.size());
+  scene.Int("memory_counted", run.scene.memoryCounted).Int("memory_limit", run.scene.memoryLimit);
+  return scene;
+}
+
+JsonObject BvhJson(const BvhStats& b) {
+  JsonObject bvh;
+  bvh.Str("splits", b.spatialSplits ? "spatial" : "object").Int("nodes", b.nodes).Int("leaves", b.leaves);
+  bvh.Int("depth", b.depth).Int("references", b.references).Num("sah_cost", b.sahCost).Num("build_ms", b.buildMs);
+  return bvh;
+}
+
+JsonObject TimesJson(const RunTimes& t) {
+  JsonObject times;
+  times.Num("load", t.load).Num("environment", t.environment).Num("prepare", t.prepare).Num("upload", t.upload);
+  times.Num("render", t.render).Num("aov", t.aov).Num("denoise", t.denoise).Num("write", t.write).Num("total", t.total);
+  return times;
+}
+
+JsonObject MpiJson(const std::vector<RankShare>& shares, uint32_t chunkSpp) {
+  std::vector<std::string> ranks;
+  for (const RankShare& share : shares) {
+    JsonObject rank;
+    rank.Str("name", share.name).Int("chunks", share.chunks).Int("bytes_sent", share.bytesSent);
+    rank.Num("render_s", share.renderSeconds);
+    ranks.push_back(rank.Text());
+  }
+  JsonObject mpi;
+  mpi.Int("ranks", shares.size()).Int("chunk_spp", chunkSpp).Raw("per_rank", JsonArray(ranks));
+  return mpi;
+}
+
 }  // namespace
 
 std::string OptionsAsJson(const Options& o) { return OptionsJson(o).Text(); }
@@ -36,57 +74,25 @@ double SecondsSince(std::chrono::steady_clock::time_point t0) {
 std::string StatsJson(const Options& o, const RunOutcome& run) {
   const RenderedFrame& p = run.frame;
   const Image& image = p.image;
-  const uint64_t pixels = uint64_t(image.width) * image.height;
   const uint64_t samples = p.samples;
   std::vector<std::string> passes;
   for (uint32_t n : p.sppPerPass) passes.push_back(std::to_string(n));
   glm::dvec3 mean(0.0);
   for (const glm::vec3& px : image.pixels) mean += glm::dvec3(px);
-  mean /= double(pixels);
-
-  char hash[32];
-  std::snprintf(hash, sizeof hash, "fnv1a64:%016" PRIx64, run.scene.contentHash);
-  JsonObject scene;
-  scene.Str("path", run.scene.path).Str("content_hash", hash).Int("triangles", run.scene.triangles.size());
-  scene.Int("degenerate_triangles", run.rs.degenerateTriangles).Int("materials", run.scene.materials.size());
-  scene.Int("lights", run.rs.lights.size()).Int("cameras", run.scene.cameras.size());
-  scene.Int("memory_counted", run.scene.memoryCounted).Int("memory_limit", run.scene.memoryLimit);
-
-  const BvhStats& b = run.rs.bvhStats;
-  JsonObject bvh;
-  bvh.Str("splits", b.spatialSplits ? "spatial" : "object").Int("nodes", b.nodes).Int("leaves", b.leaves);
-  bvh.Int("depth", b.depth).Int("references", b.references).Num("sah_cost", b.sahCost).Num("build_ms", b.buildMs);
-
-  const RunTimes& t = run.times;
-  JsonObject times;
-  times.Num("load", t.load).Num("environment", t.environment).Num("prepare", t.prepare).Num("upload", t.upload);
-  times.Num("render", t.render).Num("aov", t.aov).Num("denoise", t.denoise).Num("write", t.write).Num("total", t.total);
+  mean /= double(uint64_t(image.width) * image.height);
 
   JsonObject j;
-  j.Str("vkpt_version", VKPT_VERSION).Obj("scene", scene).Str("device", p.engine).Obj("options", OptionsJson(o));
-  j.Int("seed", o.seed).Int("width", image.width).Int("height", image.height);
+  j.Str("vkpt_version", VKPT_VERSION).Obj("scene", SceneJson(run)).Str("device", p.engine);
+  j.Obj("options", OptionsJson(o)).Int("seed", o.seed).Int("width", image.width).Int("height", image.height);
   j.Int("spp", p.spp).Raw("spp_per_pass", JsonArray(passes)).Int("samples", samples);
   j.Str("stopped_by", StopReasonName(p.stoppedBy)).Num("estimated_rel_mse", p.estimatedRelMse);
   j.Int("active_pixels", p.activePixels).Int("checkpoints", p.checkpoints);
   const FrameSums& sums = p.sums;
-  j.Obj("times_s", times).Int("rays", sums.rays).Num("samples_per_s", double(samples) / p.seconds);
+  j.Obj("times_s", TimesJson(run.times)).Int("rays", sums.rays).Num("samples_per_s", double(samples) / p.seconds);
   j.Num("rays_per_s", double(sums.rays) / p.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));
-  j.Int("non_finite_samples", sums.nonFinite).Int("cut_short_samples", sums.cutShort).Obj("bvh", bvh);
-  j.Int("aov_samples", p.aovs.samples).Raw("files", Strings(run.files));
-  if (!p.ranks.empty()) {
-    std::vector<std::string> ranks;
-    for (const RankShare& share : p.ranks) {
-      JsonObject rank;
-      rank.Str("name", share.name)
-          .Int("chunks", share.chunks)
-          .Int("bytes_sent", share.bytesSent)
-          .Num("render_s", share.renderSeconds);
-      ranks.push_back(rank.Text());
-    }
-    JsonObject mpi;
-    mpi.Int("ranks", p.ranks.size()).Int("chunk_spp", o.chunkSpp).Raw("per_rank", JsonArray(ranks));
-    j.Obj("mpi", mpi);
-  }
+  j.Int("non_finite_samples", sums.nonFinite).Int("cut_short_samples", sums.cutShort);
+  j.Obj("bvh", BvhJson(run.rs.bvhStats)).Int("aov_samples", p.aovs.samples).Raw("files", Strings(run.files));
+  if (!p.ranks.empty()) j.Obj("mpi", MpiJson(p.ranks, o.chunkSpp));
   if (run.reference) {
     JsonObject ref;
     ref.Str("device", run.reference->engine).Num("render_s", run.reference->seconds);

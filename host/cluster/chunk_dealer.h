@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "cluster/chunk_message.h"
 #include "cluster/cluster.h"
 #include "render/film.h"
 
@@ -85,10 +86,5 @@ class ChunkDealer {
 
 // Every other rank: renders the chunks rank 0 deals it until rank 0 says there are none.
 void RenderDealtChunks(Cluster& cluster, const ChunkRenderer& render);
-
-// A chunk's sums as sent, with the seconds it took to render, and back: a 48-byte header
-// and 28 bytes per pixel when every sum is a float exactly (a GPU's chunk), else 52.
-std::vector<uint8_t> EncodeChunk(uint32_t chunk, const FrameSums& sums, double seconds);
-FrameSums DecodeChunk(const std::vector<uint8_t>& bytes, uint32_t* chunk, double* seconds);
 
 }  // namespace vkpt
