@@ -1,4 +1,4 @@
-// --stats FILE.json, run as a subprocess: the keys are exactly the README's schema table,
+// --stats FILE.json, run as a subprocess: the keys are exactly the schema table of docs/stats.md,
 // the values describe the run (the image's mean, the options, the rates), the scene hash
 // follows the content, and a failed run leaves no stats file.
 #include <gtest/gtest.h>
@@ -40,12 +40,12 @@ ProcessResult Render(const std::string& scene, const std::string& out, const std
 
 json ReadJson(const std::string& path) { return json::parse(test::ReadFile(path)); }
 
-// The keys of the README's "Stats as JSON" table: every `name` in a row's first cell.
+// The keys of docs/stats.md's "Stats as JSON" table: every `name` in a row's first cell.
 // `optional` receives those of rows marked "only".
 std::set<std::string> DocumentedKeys(std::set<std::string>* optional) {
-  const std::string readme = test::ReadFile(SourcePath("README.md"));
-  const size_t start = readme.find("### Stats as JSON");
-  EXPECT_NE(start, std::string::npos) << "README.md has no \"Stats as JSON\" section";
+  const std::string readme = test::ReadFile(SourcePath("docs/stats.md"));
+  const size_t start = readme.find("# Stats as JSON");
+  EXPECT_NE(start, std::string::npos) << "docs/stats.md has no \"Stats as JSON\" section";
   const size_t table = readme.find("| key |", start);
   const size_t end = readme.find("\n\n", table);
   std::set<std::string> keys;
@@ -81,7 +81,7 @@ TEST(Stats, KeysAreTheReadmeSchemaAndValuesDescribeTheRun) {
   const std::set<std::string> documented = DocumentedKeys(&optional);
   std::set<std::string> keys;
   CollectKeys(j, "", keys);
-  for (const std::string& k : keys) EXPECT_TRUE(documented.count(k)) << k << " is not in the README's table";
+  for (const std::string& k : keys) EXPECT_TRUE(documented.count(k)) << k << " is not in the table of docs/stats.md";
   for (const std::string& k : documented)
     EXPECT_TRUE(keys.count(k) || optional.count(k)) << k << " is documented but missing";
   EXPECT_GT(documented.size(), 40u);

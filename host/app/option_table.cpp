@@ -104,7 +104,7 @@ std::vector<OptionDef> SceneRows() {
           MaxTexelsValue()),
       Row({"--allow-external-uris"}, "", "let a glTF read files outside its own folder", "off",
           AllowExternalUrisValue()),
-      Row({"--stats"}, "FILE", "after the image, write the run as one JSON object (schema in the README)", "",
+      Row({"--stats"}, "FILE", "after the image, write the run as one JSON object (schema in docs/stats.md)", "",
           Text(&O::stats, "a file name")),
       Row({"-v", "--verbose"}, "", "print what was loaded, warnings, ignored glTF features and a line per pass", "",
           Flag(&O::verbose)),

@@ -22,8 +22,7 @@ SIGINT or SIGTERM during the render stops it after the current pass (about a sec
 and writes the image of the samples taken; a second one exits at once.
 
 Under mpirun (built with MPI: see --version), the processes share one frame by chunks
-and rank 0 writes the image, bit-identical to one process's (README, "Distributed
-rendering").
+and rank 0 writes the image, bit-identical to one process's (docs/mpi.md).
 
 Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error,
 3 Vulkan validation messages were reported, 4 --compare/--diff found a disagreement,

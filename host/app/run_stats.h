@@ -1,5 +1,5 @@
 // --stats FILE.json: one JSON object describing a render, for scripts and CI. The schema
-// is in the README ("Stats as JSON"); tests/test_cli.cpp checks it.
+// is docs/stats.md; tests/test_stats.cpp checks it.
 #pragma once
 
 #include <chrono>

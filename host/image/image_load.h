@@ -1,5 +1,5 @@
 // Reading environment maps: Radiance RGBE .hdr (stb_image) and OpenEXR .exr (tinyexr)
-// files as linear RGB float images. Both are untrusted input (README "Security"): only a
+// files as linear RGB float images. Both are untrusted input (docs/security.md): only a
 // regular file is opened, its size and the image's dimensions are checked from its header
 // before anything is decoded, and memory is charged before it is allocated.
 #pragma once

@@ -1,5 +1,5 @@
 // Decoding the images glTF textures use (PNG and JPEG) into RGBA8 texels. The bytes are
-// untrusted (README "Security"): the format comes from the signature, the header is read
+// untrusted (docs/security.md): the format comes from the signature, the header is read
 // and its dimensions checked before anything is decoded, and a truncated or corrupt image
 // is a vkpt::Error, never a crash, a hang or a success. Safe to call from several threads
 // at once (stb_image is compiled privately here and none of its global settings is used).

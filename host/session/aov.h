@@ -1,7 +1,7 @@
 // AOVs (arbitrary output variables, shaders/shared/aov.h): which ones there are, their
 // values per pixel from a render's sums, and how they are written beside the image.
 //
-// Conventions (README, "AOVs"): linear values, NaN-free, row 0 at the top.
+// Conventions (docs/aovs.md): linear values, NaN-free, row 0 at the top.
 //   albedo    RGB   linear base colour of the first non-specular hit (see aov.h)
 //   normal    XYZ   its world-space shading normal facing the camera, averaged (0: none)
 //   depth     Z     distance along the camera ray to the first hit (0: nothing hit)
