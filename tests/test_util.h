@@ -158,6 +158,12 @@ shader::FrameParams TestFrame(const RenderScene& rs, const Scene& s, uint32_t si
 // shared/texture.h's lookups read.
 RenderScene TexturesOnly(const Scene& s);
 
+// A Radiance (.hdr) file of w × h texels (w from 8 to 32767, so that stb reads it run-length
+// encoded), each scanline channel coded in runs and literal dumps: texel (x, y) is
+// RleHdrTexel(x, y) exactly. Every 64th texel of the first row is 2048 (a sun).
+std::string RleHdr(int width, int height);
+glm::vec3 RleHdrTexel(int x, int y);
+
 // How many pixels of `image` are within `tolerance` (relative) of `expected` in every channel.
 int PixelsNear(const Image& image, glm::vec3 expected, float tolerance);
 
