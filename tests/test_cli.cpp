@@ -308,8 +308,8 @@ TEST(Cli, PfmHasRequestedSizeAndFiniteMeanNearSummary) {
 
 TEST(Cli, MissingSideFollowsCameraAspectRatio) {
   // Duck's camera has aspectRatio 1.5.
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string scene = test::CorpusPath("valid/Duck/glTF/Duck.gltf");
-  if (!fs::exists(scene)) FAIL() << scene << " is missing (VKPT_CORPUS_DIR=" << VKPT_CORPUS_DIR << ")";
   const std::string out = TempPath("cli-aspect.pfm");
   struct Case {
     std::vector<std::string> size;
@@ -466,6 +466,7 @@ TEST(Cli, CompareReportsAgreementAndWritesHeatmap) {
 // --splits spatial on a CAD model (long thin triangles): more references than triangles,
 // and the CPU and Vulkan renders still agree.
 TEST(Cli, SpatialSplitsRenderAndAgree) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string out = TempPath("cli-spatial.pfm");
   ProcessResult r = RunVkpt({"--scene", test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"),
                              "--splits", "spatial", "--compare", "--width", "40", "--height", "40", "--spp", "4", "--out", out},
@@ -519,8 +520,8 @@ TEST(Cli, DiffTellsSameFromDifferentImages) {
 // Verbose report
 
 TEST(Cli, VerboseReportsTrianglesAndIgnoredFeatures) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string scene = test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf");
-  if (!fs::exists(scene)) FAIL() << scene << " is missing (VKPT_CORPUS_DIR=" << VKPT_CORPUS_DIR << ")";
   const std::string out = TempPath("cli-verbose.png");
   ProcessResult r =
       RunVkpt({"--scene", scene, "-v", "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
@@ -532,8 +533,8 @@ TEST(Cli, VerboseReportsTrianglesAndIgnoredFeatures) {
 }
 
 TEST(Cli, QuietByDefault) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string scene = test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf");
-  if (!fs::exists(scene)) FAIL() << scene << " is missing (VKPT_CORPUS_DIR=" << VKPT_CORPUS_DIR << ")";
   const std::string out = TempPath("cli-quiet.png");
   ProcessResult r = RunVkpt({"--scene", scene, "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();

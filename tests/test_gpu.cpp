@@ -191,6 +191,7 @@ TEST_F(GpuTest, TraversalMatchesCpuWithSpatialSplits) {
 }
 
 TEST_F(GpuTest, TraversalMatchesCpuOnLargeCorpusModel) {
+  VKPT_REQUIRE_SHARED_DATA();
   Scene s = LoadGltf(test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"));
   ASSERT_GE(s.triangles.size(), 100000u);
   RenderScene rs = PrepareRenderScene(s);
@@ -315,25 +316,31 @@ TEST_F(GpuTest, TexturedQuadShowsItsTexels) {
 // The triangles and texture coordinates split over two texel buffers each, after the
 // first triangle, the third, and half of them: the image is the one-buffer image, bit for
 // bit, for the Cornell box and a textured corpus model.
-TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImage) {
-  for (const std::string& path :
-       {test::SourcePath("scenes/cornell.gltf"), test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf")}) {
-    Scene s = LoadGltf(path);
-    RenderScene rs = PrepareRenderScene(s);
-    FrameParams p = Params(rs, s, 48, 40, 8, 3);
-    const Image one = vk::GpuRenderer(Gpu(), rs).Render(p).image;
-    int identical = 0;
-    for (uint32_t split : {1u, 3u, uint32_t(rs.triangles.size()) / 2}) {
-      const Image two = vk::GpuRenderer(Gpu(), rs, nullptr, 0, split * shader::kTexelsPerTriangle).Render(p).image;
-      const bool same = two.pixels == one.pixels && two.variance == one.variance;
-      EXPECT_TRUE(same) << path << ": " << split << " triangles in the first buffer";
-      identical += same;
-    }
-    std::printf(
-        "%s (%zu triangles, %zu with texture coordinates), arrays in two texel buffers: %d of 3 splits "
-        "render the same bytes\n",
-        path.c_str(), rs.triangles.size(), rs.uvs.size(), identical);
+void ExpectArraysInTwoBuffersRenderTheSameImage(vk::Context& gpu, const std::string& path) {
+  Scene s = LoadGltf(path);
+  RenderScene rs = PrepareRenderScene(s);
+  FrameParams p = Params(rs, s, 48, 40, 8, 3);
+  const Image one = vk::GpuRenderer(gpu, rs).Render(p).image;
+  int identical = 0;
+  for (uint32_t split : {1u, 3u, uint32_t(rs.triangles.size()) / 2}) {
+    const Image two = vk::GpuRenderer(gpu, rs, nullptr, 0, split * shader::kTexelsPerTriangle).Render(p).image;
+    const bool same = two.pixels == one.pixels && two.variance == one.variance;
+    EXPECT_TRUE(same) << path << ": " << split << " triangles in the first buffer";
+    identical += same;
   }
+  std::printf(
+      "%s (%zu triangles, %zu with texture coordinates), arrays in two texel buffers: %d of 3 splits "
+      "render the same bytes\n",
+      path.c_str(), rs.triangles.size(), rs.uvs.size(), identical);
+}
+
+TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImage) {
+  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), test::SourcePath("scenes/cornell.gltf"));
+}
+
+TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImageTextured) {
+  VKPT_REQUIRE_SHARED_DATA();
+  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf"));
 }
 
 // Path regeneration (pathtrace.comp) adds each invocation's samples in sample order, as
@@ -438,6 +445,7 @@ TEST_F(GpuTest, FurnaceCatchesBothMutants) {
 class GpuCorpus : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(GpuCorpus, RendersOnTheGpu) {
+  VKPT_REQUIRE_SHARED_DATA();
   Scene s = LoadGltf(test::CorpusPath("valid/" + GetParam()));
   RenderScene rs = PrepareRenderScene(s);
   FrameParams p = Params(rs, s, 24, 24, 2, 1);
@@ -455,6 +463,7 @@ TEST_P(GpuCorpus, RendersOnTheGpu) {
 std::vector<std::string> ValidModels() {
   std::vector<std::string> out;
   std::filesystem::path root = test::CorpusPath("valid");
+  if (test::SharedDataDir().empty()) return {};  // TraversalMatchesCpuOnLargeCorpusModel skips
   if (!std::filesystem::exists(root)) return {"(corpus missing: " + root.string() + ")"};
   for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
     std::string ext = e.path().extension().string();
@@ -464,6 +473,7 @@ std::vector<std::string> ValidModels() {
   return out;
 }
 
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(GpuCorpus);
 INSTANTIATE_TEST_SUITE_P(Valid, GpuCorpus, ::testing::ValuesIn(ValidModels()), [](const auto& info) {
   std::string n = info.param;
   for (char& c : n)
@@ -472,19 +482,19 @@ INSTANTIATE_TEST_SUITE_P(Valid, GpuCorpus, ::testing::ValuesIn(ValidModels()), [
 });
 
 // ---------------------------------------------------------------------------------------
-// The glTF PBR models of ../shared/gltf-pbr (its MANIFEST.md), read in place: each loads
+// The glTF PBR models of gltf-pbr/ in the test data (its MANIFEST.md), read in place: each loads
 // (with its textures, where it has any), lists what vkpt does not render yet, and
 // renders on both backends, lockstep with the CPU on the same seed and statistically with
 // an independent one, without a validation message.
 
 struct PbrModel {
-  std::string file;  // under ../shared/gltf-pbr
+  std::string file;  // under gltf-pbr/
   bool textured;     // MANIFEST.md lists images for it
 };
 
 void PrintTo(const PbrModel& m, std::ostream* os) { *os << m.file; }
 
-std::string PbrPath(const std::string& relative) { return test::CorpusPath("../gltf-pbr/" + relative); }
+std::string PbrPath(const std::string& relative) { return test::SharedData("gltf-pbr/" + relative); }
 
 // Object splits only: the BVH is not under test here, and the automatic choice, which
 // builds spatial splits too, takes 5.5 s instead of 1.2 on the 1 M-triangle sphere grid.
@@ -523,8 +533,9 @@ void ExpectBackendsAgree(const RenderScene& rs, FrameParams p, const std::string
 class GpuPbrCorpus : public GpuTest, public ::testing::WithParamInterface<PbrModel> {};
 
 TEST_P(GpuPbrCorpus, LoadsAndRendersAlikeOnBothBackends) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string path = PbrPath(GetParam().file);
-  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing (../shared/gltf-pbr beside the checkout)";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing";
   Scene s = LoadGltf(path);
   std::string ignored;
   for (const std::string& f : s.ignoredFeatures) ignored += (ignored.empty() ? "" : "; ") + f;
@@ -555,8 +566,9 @@ INSTANTIATE_TEST_SUITE_P(
 // The metal/roughness sphere grid (1.04 M triangles, one BVH for all three renders) under
 // the white background and under each of the two environment maps (as --env FILE).
 TEST_F(GpuTest, PbrSpheresUnderBackgroundAndBothEnvironmentsAgree) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string path = PbrPath("MetalRoughSpheresNoTextures/glTF-Binary/MetalRoughSpheresNoTextures.glb");
-  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing (../shared/gltf-pbr beside the checkout)";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing";
   Scene s = LoadGltf(path);
   std::printf("MetalRoughSpheresNoTextures: %zu triangles, %zu materials, %zu ignored features\n", s.triangles.size(),
               s.materials.size(), s.ignoredFeatures.size());

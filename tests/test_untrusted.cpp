@@ -276,6 +276,7 @@ TEST(Amplification, UnusedImageIsNotRead) {
 }
 
 TEST(Amplification, BudgetRefusalNamesTheLimit) {
+  VKPT_REQUIRE_SHARED_DATA();
   TempDir root;
   const std::string out = root.path + "/o.png";
   ProcessResult r = Render(test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"), out,

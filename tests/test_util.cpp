@@ -13,6 +13,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -25,7 +26,33 @@
 namespace vkpt::test {
 
 std::string SourcePath(const std::string& relative) { return std::string(VKPT_SOURCE_DIR) + "/" + relative; }
-std::string CorpusPath(const std::string& relative) { return std::string(VKPT_CORPUS_DIR) + "/" + relative; }
+
+std::string SharedDataDir() {
+  const char* env = std::getenv("VKPT_TEST_DATA");
+  const std::string dir = env && *env ? std::string(env) : SourcePath("../shared");
+  std::error_code ec;
+  return std::filesystem::is_directory(dir, ec) ? dir : "";
+}
+
+std::string SharedData(const std::string& relative) {
+  const std::string dir = SharedDataDir();
+  return (dir.empty() ? std::string("<no test data>") : dir) + "/" + relative;
+}
+
+std::string CorpusPath(const std::string& relative) { return SharedData("gltf-corpus/" + relative); }
+
+std::string SharedDataMissing() {
+  const char* env = std::getenv("VKPT_TEST_DATA");
+  const std::string where = env && *env ? "VKPT_TEST_DATA=" + std::string(env) + " is not a folder"
+                                        : "no ../shared beside the checkout and VKPT_TEST_DATA is not set";
+  return "needs the external test data (" + where +
+         "): set VKPT_TEST_DATA to a folder holding gltf-corpus/, gltf-pbr/ and gltf-ext/, or put it at ../shared";
+}
+
+bool SharedDataRequired() {
+  const char* env = std::getenv("VKPT_REQUIRE_TEST_DATA");
+  return env && *env && std::string(env) != "0";
+}
 std::string TempPath(const std::string& name) {
   return "/tmp/vkpt-test-" + std::to_string(::getpid()) + "-" + name;
 }

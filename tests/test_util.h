@@ -1,5 +1,5 @@
 // Shared test helpers: running the vkpt binary as a subprocess, statistics for Monte
-// Carlo tests, paths to the scenes and the corpus.
+// Carlo tests, paths to the scenes and to the external test data.
 #pragma once
 
 #include <cstdint>
@@ -28,7 +28,25 @@ constexpr double kTimeScale = VKPT_TIME_SCALE;
 constexpr uint32_t kSampleDivisor = VKPT_SAMPLE_DIVISOR;
 
 std::string SourcePath(const std::string& relative);  // <repo>/relative
-std::string CorpusPath(const std::string& relative);  // ../shared/gltf-corpus/relative
+
+// The external test data: a folder holding gltf-corpus/, gltf-pbr/ (its environments/
+// too) and gltf-ext/. It is $VKPT_TEST_DATA if that is set, else ../shared beside the
+// checkout; "" when that folder does not exist. A test that reads it begins with
+// VKPT_REQUIRE_SHARED_DATA(): without the folder the test skips with one line saying how
+// to get it (or fails, if $VKPT_REQUIRE_TEST_DATA is set, as CI sets it). With the folder,
+// a file missing from it fails the test that reads it, as any missing input does.
+std::string SharedDataDir();
+std::string SharedData(const std::string& relative);  // SharedDataDir()/relative
+std::string CorpusPath(const std::string& relative);  // SharedData("gltf-corpus/" + relative)
+std::string SharedDataMissing();                      // the line a test skips (or fails) with
+bool SharedDataRequired();                            // $VKPT_REQUIRE_TEST_DATA is set
+// A macro, not a function: GTEST_SKIP() and FAIL() end the test by returning from it.
+#define VKPT_REQUIRE_SHARED_DATA()                                                       \
+  do {                                                                                   \
+    if (!::vkpt::test::SharedDataDir().empty()) break;                                   \
+    if (::vkpt::test::SharedDataRequired()) FAIL() << ::vkpt::test::SharedDataMissing(); \
+    GTEST_SKIP() << ::vkpt::test::SharedDataMissing();                                   \
+  } while (0)
 std::string TempPath(const std::string& name);        // unique per test process
 std::string FreshTempDirectory(const std::string& name);           // TempPath(name), created empty
 std::vector<std::string> DirectoryListing(const std::string& dir);  // entry names, sorted
