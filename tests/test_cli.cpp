@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "gltf_builder.h"
 #include "image/image.h"
 #include "test_util.h"
 
@@ -307,9 +308,14 @@ TEST(Cli, PfmHasRequestedSizeAndFiniteMeanNearSummary) {
 }
 
 TEST(Cli, MissingSideFollowsCameraAspectRatio) {
-  // Duck's camera has aspectRatio 1.5.
-  VKPT_REQUIRE_SHARED_DATA();
-  const std::string scene = test::CorpusPath("valid/Duck/glTF/Duck.gltf");
+  // A triangle seen by a camera of aspectRatio 1.5 (as the corpus's Duck has).
+  test::GltfBuilder b = test::TriangleModel();
+  b.cameras.push_back(R"({"type":"perspective","perspective":{"yfov":0.8,"aspectRatio":1.5,"znear":0.1}})");
+  b.Node(R"({"children":[1,2]})");
+  b.Node(R"({"mesh":0})");
+  b.Node(R"({"camera":0,"translation":[0.3,0.3,3]})");
+  const test::TempFile file(b.Json());
+  const std::string scene = file.path;
   const std::string out = TempPath("cli-aspect.pfm");
   struct Case {
     std::vector<std::string> size;
@@ -532,9 +538,7 @@ TEST(Cli, VerboseReportsTrianglesAndIgnoredFeatures) {
   std::remove(out.c_str());
 }
 
-TEST(Cli, QuietByDefault) {
-  VKPT_REQUIRE_SHARED_DATA();
-  const std::string scene = test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf");
+void ExpectQuiet(const std::string& scene) {
   const std::string out = TempPath("cli-quiet.png");
   ProcessResult r = RunVkpt({"--scene", scene, "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
@@ -543,6 +547,13 @@ TEST(Cli, QuietByDefault) {
   // Nothing from vkpt itself on stderr (a Vulkan driver may print its own notices).
   EXPECT_FALSE(std::regex_search(r.err, std::regex("(^|\\n)vkpt:"))) << r.err;
   std::remove(out.c_str());
+}
+
+TEST(Cli, QuietByDefault) { ExpectQuiet(test::SourcePath("scenes/cornell.gltf")); }
+
+TEST(Cli, QuietByDefaultWithTextures) {
+  VKPT_REQUIRE_SHARED_DATA();
+  ExpectQuiet(test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf"));
 }
 
 }  // namespace

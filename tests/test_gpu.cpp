@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <random>
 
@@ -315,32 +316,36 @@ TEST_F(GpuTest, TexturedQuadShowsItsTexels) {
 
 // The triangles and texture coordinates split over two texel buffers each, after the
 // first triangle, the third, and half of them: the image is the one-buffer image, bit for
-// bit, for the Cornell box and a textured corpus model.
-void ExpectArraysInTwoBuffersRenderTheSameImage(vk::Context& gpu, const std::string& path) {
-  Scene s = LoadGltf(path);
+// bit, for the Cornell box, a textured square built in code and a textured corpus model.
+void ExpectArraysInTwoBuffersRenderTheSameImage(vk::Context& gpu, const Scene& s, const std::string& path) {
   RenderScene rs = PrepareRenderScene(s);
   FrameParams p = Params(rs, s, 48, 40, 8, 3);
   const Image one = vk::GpuRenderer(gpu, rs).Render(p).image;
-  int identical = 0;
+  int identical = 0, splits = 0;
   for (uint32_t split : {1u, 3u, uint32_t(rs.triangles.size()) / 2}) {
+    if (split >= rs.triangles.size()) continue;  // the two-triangle square: after the first only
+    ++splits;
     const Image two = vk::GpuRenderer(gpu, rs, nullptr, 0, split * shader::kTexelsPerTriangle).Render(p).image;
     const bool same = two.pixels == one.pixels && two.variance == one.variance;
     EXPECT_TRUE(same) << path << ": " << split << " triangles in the first buffer";
     identical += same;
   }
   std::printf(
-      "%s (%zu triangles, %zu with texture coordinates), arrays in two texel buffers: %d of 3 splits "
+      "%s (%zu triangles, %zu with texture coordinates), arrays in two texel buffers: %d of %d splits "
       "render the same bytes\n",
-      path.c_str(), rs.triangles.size(), rs.uvs.size(), identical);
+      path.c_str(), rs.triangles.size(), rs.uvs.size(), identical, splits);
 }
 
 TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImage) {
-  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), test::SourcePath("scenes/cornell.gltf"));
+  const std::string cornell = test::SourcePath("scenes/cornell.gltf");
+  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), LoadGltf(cornell), cornell);
+  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), test::TexturedQuadScene(), "the textured square");
 }
 
 TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImageTextured) {
   VKPT_REQUIRE_SHARED_DATA();
-  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf"));
+  const std::string path = test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf");
+  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), LoadGltf(path), path);
 }
 
 // Path regeneration (pathtrace.comp) adds each invocation's samples in sample order, as
@@ -562,6 +567,26 @@ INSTANTIATE_TEST_SUITE_P(
       std::string n = info.param.file.substr(0, info.param.file.find('/'));
       return n;
     });
+
+// A generated map (test::RleHdr: a row of suns at the top, runs and ramps elsewhere), read
+// as --env FILE reads it and turned 30°, lighting a Lambert square that fills the frame:
+// the environment's importance sampling on both backends, without the test data.
+TEST_F(GpuTest, GeneratedEnvironmentMapAgreesOnBothBackends) {
+  const test::TempFolder dir("gpu-env");
+  std::ofstream(dir / "map.hdr", std::ios::binary) << test::RleHdr(64, 32);
+  std::vector<std::string> warnings;
+  const Image image = ReadEnvironmentImage(
+      dir / "map.hdr", [](uint64_t, const std::string&) {}, &warnings);
+  const Scene s = test::VertexColorQuadScene(glm::vec3(0.8f));
+  RenderScene rs = PrepareRenderScene(s);
+  rs.environment = BuildEnvironmentMap(image.width, image.height, image.pixels);
+  AddEnvironmentLight(rs, 1.0f);
+  FrameParams p = Params(rs, s, 32, 32, 16, 1, 8);
+  SetEnvironmentParams(p, rs.environment, 30.0f, 1.0f);
+  EXPECT_EQ(test::PixelsNear(RenderCpu(rs, p).image, glm::vec3(0.0f), 0.0f), 0)
+      << "black pixels: the map lights nothing";
+  ExpectBackendsAgree(rs, p, "a Lambert square under a generated map");
+}
 
 // The metal/roughness sphere grid (1.04 M triangles, one BVH for all three renders) under
 // the white background and under each of the two environment maps (as --env FILE).
