@@ -13,6 +13,7 @@
 
 #include "gltf_builder.h"
 #include "image/image.h"
+#include "png_writer.h"
 #include "test_util.h"
 
 namespace vkpt {
@@ -535,6 +536,30 @@ TEST(Cli, VerboseReportsTrianglesAndIgnoredFeatures) {
   EXPECT_TRUE(std::regex_search(r.out, std::regex("triangles: 12\\b"))) << r.out;
   EXPECT_TRUE(std::regex_search(r.out, std::regex("textures: 1 from 1 images, 65536 texels"))) << r.out;
   EXPECT_NE(r.out.find("Mrays/s"), std::string::npos) << r.out;
+  std::remove(out.c_str());
+}
+
+// The same report for a textured triangle built in code (a 2 × 2 PNG in a bufferView).
+TEST(Cli, VerboseReportsTheTexturesOfAGeneratedModel) {
+  test::GltfBuilder b;
+  const int positions = b.Positions(test::kUnitTriangle);
+  const int uv = b.Accessor(b.View(test::Bytes(std::vector<float>{0, 0, 1, 0, 0, 1})), test::kFloat, 3, "VEC2");
+  b.meshes.push_back(R"({"primitives":[{"attributes":{"POSITION":)" + std::to_string(positions) +
+                     R"(,"TEXCOORD_0":)" + std::to_string(uv) + R"(},"material":0}]})");
+  b.materials.push_back(R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})");
+  const std::vector<unsigned char> png = test::MakePng(2, 2, 8, 2, std::vector<uint8_t>(12, 200));
+  b.images.push_back(R"({"bufferView":)" + std::to_string(b.View(std::string(png.begin(), png.end()))) +
+                     R"(,"mimeType":"image/png"})");
+  b.textures.push_back(R"({"source":0})");
+  b.Node(R"({"mesh":0})");
+  const test::TempFile file(b.Json());
+  const std::string out = TempPath("cli-verbose-generated.png");
+  ProcessResult r =
+      RunVkpt({"--scene", file.path, "-v", "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
+  ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("triangles: 1\\b"))) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("textures: 1 from 1 images, 4 texels"))) << r.out;
+  EXPECT_EQ(r.out.find("ignored: "), std::string::npos) << r.out;
   std::remove(out.c_str());
 }
 
