@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bench=build/vkpt-bench
-corpus=../shared/gltf-corpus/valid
+corpus=${VKPT_TEST_DATA:-../shared}/gltf-corpus/valid
 out=bench/README.md
 ref=bench/data/cornell-ref-16k.pfm
 rows=()

@@ -499,6 +499,7 @@ TEST(Bvh, TenMillionTrianglesKeepInvariantsAndMatchBruteForce) {
 }
 
 TEST(Bvh, TraversalMatchesBruteForceOnCorpusModel) {
+  VKPT_REQUIRE_SHARED_DATA();
   Scene scene = LoadGltf(test::CorpusPath("valid/Duck/glTF-Binary/Duck.glb"));
   RenderScene rs = PrepareRenderScene(scene);
   CheckInvariants(rs, scene.triangles, BvhBuildOptions{}.maxLeafSize);

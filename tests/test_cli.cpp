@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "gltf_builder.h"
 #include "image/image.h"
+#include "png_writer.h"
 #include "test_util.h"
 
 namespace vkpt {
@@ -307,9 +309,14 @@ TEST(Cli, PfmHasRequestedSizeAndFiniteMeanNearSummary) {
 }
 
 TEST(Cli, MissingSideFollowsCameraAspectRatio) {
-  // Duck's camera has aspectRatio 1.5.
-  const std::string scene = test::CorpusPath("valid/Duck/glTF/Duck.gltf");
-  if (!fs::exists(scene)) FAIL() << scene << " is missing (VKPT_CORPUS_DIR=" << VKPT_CORPUS_DIR << ")";
+  // A triangle seen by a camera of aspectRatio 1.5 (as the corpus's Duck has).
+  test::GltfBuilder b = test::TriangleModel();
+  b.cameras.push_back(R"({"type":"perspective","perspective":{"yfov":0.8,"aspectRatio":1.5,"znear":0.1}})");
+  b.Node(R"({"children":[1,2]})");
+  b.Node(R"({"mesh":0})");
+  b.Node(R"({"camera":0,"translation":[0.3,0.3,3]})");
+  const test::TempFile file(b.Json());
+  const std::string scene = file.path;
   const std::string out = TempPath("cli-aspect.pfm");
   struct Case {
     std::vector<std::string> size;
@@ -466,6 +473,7 @@ TEST(Cli, CompareReportsAgreementAndWritesHeatmap) {
 // --splits spatial on a CAD model (long thin triangles): more references than triangles,
 // and the CPU and Vulkan renders still agree.
 TEST(Cli, SpatialSplitsRenderAndAgree) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string out = TempPath("cli-spatial.pfm");
   ProcessResult r = RunVkpt({"--scene", test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"),
                              "--splits", "spatial", "--compare", "--width", "40", "--height", "40", "--spp", "4", "--out", out},
@@ -519,8 +527,8 @@ TEST(Cli, DiffTellsSameFromDifferentImages) {
 // Verbose report
 
 TEST(Cli, VerboseReportsTrianglesAndIgnoredFeatures) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string scene = test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf");
-  if (!fs::exists(scene)) FAIL() << scene << " is missing (VKPT_CORPUS_DIR=" << VKPT_CORPUS_DIR << ")";
   const std::string out = TempPath("cli-verbose.png");
   ProcessResult r =
       RunVkpt({"--scene", scene, "-v", "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
@@ -531,9 +539,31 @@ TEST(Cli, VerboseReportsTrianglesAndIgnoredFeatures) {
   std::remove(out.c_str());
 }
 
-TEST(Cli, QuietByDefault) {
-  const std::string scene = test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf");
-  if (!fs::exists(scene)) FAIL() << scene << " is missing (VKPT_CORPUS_DIR=" << VKPT_CORPUS_DIR << ")";
+// The same report for a textured triangle built in code (a 2 × 2 PNG in a bufferView).
+TEST(Cli, VerboseReportsTheTexturesOfAGeneratedModel) {
+  test::GltfBuilder b;
+  const int positions = b.Positions(test::kUnitTriangle);
+  const int uv = b.Accessor(b.View(test::Bytes(std::vector<float>{0, 0, 1, 0, 0, 1})), test::kFloat, 3, "VEC2");
+  b.meshes.push_back(R"({"primitives":[{"attributes":{"POSITION":)" + std::to_string(positions) +
+                     R"(,"TEXCOORD_0":)" + std::to_string(uv) + R"(},"material":0}]})");
+  b.materials.push_back(R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})");
+  const std::vector<unsigned char> png = test::MakePng(2, 2, 8, 2, std::vector<uint8_t>(12, 200));
+  b.images.push_back(R"({"bufferView":)" + std::to_string(b.View(std::string(png.begin(), png.end()))) +
+                     R"(,"mimeType":"image/png"})");
+  b.textures.push_back(R"({"source":0})");
+  b.Node(R"({"mesh":0})");
+  const test::TempFile file(b.Json());
+  const std::string out = TempPath("cli-verbose-generated.png");
+  ProcessResult r =
+      RunVkpt({"--scene", file.path, "-v", "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
+  ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("triangles: 1\\b"))) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("textures: 1 from 1 images, 4 texels"))) << r.out;
+  EXPECT_EQ(r.out.find("ignored: "), std::string::npos) << r.out;
+  std::remove(out.c_str());
+}
+
+void ExpectQuiet(const std::string& scene) {
   const std::string out = TempPath("cli-quiet.png");
   ProcessResult r = RunVkpt({"--scene", scene, "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
@@ -542,6 +572,13 @@ TEST(Cli, QuietByDefault) {
   // Nothing from vkpt itself on stderr (a Vulkan driver may print its own notices).
   EXPECT_FALSE(std::regex_search(r.err, std::regex("(^|\\n)vkpt:"))) << r.err;
   std::remove(out.c_str());
+}
+
+TEST(Cli, QuietByDefault) { ExpectQuiet(test::SourcePath("scenes/cornell.gltf")); }
+
+TEST(Cli, QuietByDefaultWithTextures) {
+  VKPT_REQUIRE_SHARED_DATA();
+  ExpectQuiet(test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf"));
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The shared glTF corpus (../shared/gltf-corpus, read in place): every valid model loads
+// The shared glTF corpus (gltf-corpus/ of the test data, test_util.h; read in place): every valid model loads
 // with the triangle count MANIFEST.md gives and renders; every invalid file makes the
 // binary exit 1 with a clear message and no output image.
 #include <gtest/gtest.h>
@@ -34,12 +34,6 @@ constexpr size_t kInvalidCases = 54;
 bool IsGltf(const fs::path& p) { return p.extension() == ".gltf" || p.extension() == ".glb"; }
 
 bool CorpusPresent() { return fs::is_directory(CorpusPath("valid")) && fs::is_directory(CorpusPath("invalid")); }
-
-std::string MissingCorpusMessage() {
-  return std::string("glTF corpus not found: VKPT_CORPUS_DIR=") + VKPT_CORPUS_DIR +
-         " has no valid/ and invalid/ (expected ../shared/gltf-corpus beside the checkout; configure with "
-         "-DVKPT_CORPUS_DIR=<dir>)";
-}
 
 std::string Trim(const std::string& s) {
   size_t b = s.find_first_not_of(" \t\r");
@@ -140,7 +134,8 @@ bool AllFinite(const Image& img) {
 // ---------------------------------------------------------------------------------------
 
 TEST(Corpus, CaseCountsMatchManifest) {
-  if (!CorpusPresent()) FAIL() << MissingCorpusMessage();
+  VKPT_REQUIRE_SHARED_DATA();
+  ASSERT_TRUE(CorpusPresent()) << CorpusPath("") << " has no valid/ and invalid/";
   std::vector<ValidModel> valid = DiscoverValid();
   std::vector<std::string> invalid = DiscoverInvalid();
   EXPECT_EQ(valid.size(), kValidModels);
@@ -170,6 +165,7 @@ TEST(Corpus, CaseCountsMatchManifest) {
 class CorpusValid : public ::testing::TestWithParam<ValidModel> {};
 
 TEST_P(CorpusValid, LoadsWithManifestTriangleCountAndRenders) {
+  VKPT_REQUIRE_SHARED_DATA();
   const ValidModel& m = GetParam();
   const std::string path = CorpusPath(m.dir + "/" + m.file);
 
@@ -208,6 +204,8 @@ TEST_P(CorpusValid, LoadsWithManifestTriangleCountAndRenders) {
   EXPECT_TRUE(AllFinite(img)) << "NaN/Inf in the rendered image of " << path;
 }
 
+// Without the test data there is no model to instantiate: CaseCountsMatchManifest skips.
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(CorpusValid);
 INSTANTIATE_TEST_SUITE_P(Corpus, CorpusValid, ::testing::ValuesIn(DiscoverValid()),
                          [](const ::testing::TestParamInfo<ValidModel>& info) { return info.param.name; });
 
@@ -217,6 +215,7 @@ INSTANTIATE_TEST_SUITE_P(Corpus, CorpusValid, ::testing::ValuesIn(DiscoverValid(
 class CorpusInvalid : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CorpusInvalid, ExitsWithErrorAndWritesNothing) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string path = CorpusPath("invalid/" + GetParam());
   const std::string out = TempPath("corpus-invalid-" + TestName(GetParam()) + ".pfm");
   std::remove(out.c_str());
@@ -234,16 +233,18 @@ TEST_P(CorpusInvalid, ExitsWithErrorAndWritesNothing) {
   std::cout << "  " << GetParam() << ": " << message << "\n";
 }
 
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(CorpusInvalid);
 INSTANTIATE_TEST_SUITE_P(Corpus, CorpusInvalid, ::testing::ValuesIn(DiscoverInvalid()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return TestName(info.param); });
 
 // ---------------------------------------------------------------------------------------
-// The glTF PBR models (../shared/gltf-pbr): test_gpu.cpp renders them on both backends;
+// The glTF PBR models (gltf-pbr/ of the test data): test_gpu.cpp renders them on both backends;
 // here the command line reports the textures of a textured one.
 
 TEST(CorpusPbr, VerboseListsTheTextures) {
-  const std::string path = CorpusPath("../gltf-pbr/EmissiveStrengthTest/glTF-Binary/EmissiveStrengthTest.glb");
-  ASSERT_TRUE(fs::exists(path)) << path << " is missing (../shared/gltf-pbr beside the checkout)";
+  VKPT_REQUIRE_SHARED_DATA();
+  const std::string path = test::SharedData("gltf-pbr/EmissiveStrengthTest/glTF-Binary/EmissiveStrengthTest.glb");
+  ASSERT_TRUE(fs::exists(path)) << path << " is missing";
   const std::string out = TempPath("corpus-pbr-verbose.pfm");
   test::ProcessResult r = RunVkpt(
       {"--scene", path, "--backend", "cpu", "--spp", "1", "--width", "16", "--height", "16", "-v", "--out", out}, 60.0);

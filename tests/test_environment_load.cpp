@@ -17,7 +17,7 @@
 namespace vkpt {
 namespace {
 
-const std::string kVenice = test::SourcePath("../shared/gltf-pbr/environments/venice_sunset_1k.hdr");
+const std::string kVenice = test::SharedData("gltf-pbr/environments/venice_sunset_1k.hdr");
 
 void WriteFile(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
@@ -46,6 +46,7 @@ std::string FlatHdr(int w, int h) {
 }
 
 TEST(EnvironmentLoad, ReadsTheRadianceMap) {
+  VKPT_REQUIRE_SHARED_DATA();
   std::vector<std::string> charged;
   std::vector<std::string> warnings;
   Image image = ReadEnvironmentImage(
@@ -70,8 +71,8 @@ TEST(EnvironmentLoad, SmallFlatFileDecodesExactly) {
 
 TEST(EnvironmentLoad, BadFilesAreNamedErrors) {
   const std::string dir = test::FreshTempDirectory("env-bad");
-  const std::string venice = test::ReadFile(kVenice);
-  WriteFile(dir + "/cut.hdr", venice.substr(0, venice.size() * 6 / 10));
+  const std::string rle = test::RleHdr(256, 128);
+  WriteFile(dir + "/cut.hdr", rle.substr(0, rle.size() * 6 / 10));
   WriteFile(dir + "/cutflat.hdr", FlatHdr(4, 2).substr(0, FlatHdr(4, 2).size() - 5));
   WriteFile(dir + "/garbage.hdr", std::string(5000, '\x5a'));
   WriteFile(dir + "/header.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 10 +X 20000\n" + std::string(64, '\0'));
@@ -126,24 +127,30 @@ TEST(EnvironmentLoad, ExrNegativesAreClampedAndNonFiniteRefused) {
 }
 
 TEST(EnvironmentLoad, MemoryIsChargedBeforeItIsSpent) {
-  for (uint64_t limit : {uint64_t(1) << 20, uint64_t(4) << 20}) {
-    MemoryBudget budget(limit, kVenice);
+  // 1024 × 512 texels: a 0.7 MB file decoding to 12 MB.
+  const std::string map = test::TempPath("env-budget.hdr");
+  WriteFile(map, test::RleHdr(1024, 512));
+  for (uint64_t limit : {uint64_t(256) << 10, uint64_t(4) << 20}) {
+    MemoryBudget budget(limit, map);
     std::vector<std::string> warnings;
     try {
       ReadEnvironmentImage(
-          kVenice, [&](uint64_t bytes, const std::string& what) { budget.Charge(bytes, what); }, &warnings);
-      ADD_FAILURE() << "a 1.4 MB file decoding to 12 MB fit in " << limit;
+          map, [&](uint64_t bytes, const std::string& what) { budget.Charge(bytes, what); }, &warnings);
+      ADD_FAILURE() << "a 0.7 MB file decoding to 12 MB fit in " << limit;
     } catch (const Error& e) {
       std::printf("%s\n", e.what());
       EXPECT_NE(std::string(e.what()).find(limit < (2 << 20) ? "the file needs" : "its decoded texels needs"),
                 std::string::npos);
     }
   }
+  std::remove(map.c_str());
 }
 
 TEST(EnvironmentCli, UsageErrorsAndMissingFiles) {
   const std::string scene = test::SourcePath("scenes/cornell.gltf"), out = test::TempPath("env-cli.png");
-  test::ProcessResult both = test::RunVkpt({"--scene", scene, "--env", kVenice, "--background", "1", "--out", out});
+  const std::string map = test::TempPath("env-cli.hdr");
+  WriteFile(map, test::RleHdr(64, 32));
+  test::ProcessResult both = test::RunVkpt({"--scene", scene, "--env", map, "--background", "1", "--out", out});
   EXPECT_TRUE(both.ExitedWith(2)) << both.Describe();
   EXPECT_NE(both.err.find("--env and --background"), std::string::npos) << both.err;
   test::ProcessResult orphan = test::RunVkpt({"--scene", scene, "--env-rotation", "90", "--out", out});
@@ -152,18 +159,22 @@ TEST(EnvironmentCli, UsageErrorsAndMissingFiles) {
   EXPECT_TRUE(missing.ExitedWith(1)) << missing.Describe();
   EXPECT_EQ(missing.err, "vkpt: error: /nonexistent/sky.hdr: does not exist\n");
   EXPECT_FALSE(std::filesystem::exists(out));
+  std::remove(map.c_str());
 }
 
 // The map uploaded and bound next to the scene: a render under the validation layer
 // (exit 3 on any message), and -v reporting the map.
 TEST(EnvironmentCli, GpuBindsTheMapWithoutValidationMessages) {
-  const std::string out = test::TempPath("env-gpu.png");
-  test::ProcessResult r = test::RunVkpt({"--scene", test::SourcePath("scenes/cornell.gltf"), "--env", kVenice,
+  const std::string out = test::TempPath("env-gpu.png"), map = test::TempPath("env-gpu.hdr");
+  WriteFile(map, test::RleHdr(1024, 512));
+  test::ProcessResult r = test::RunVkpt({"--scene", test::SourcePath("scenes/cornell.gltf"), "--env", map,
                                          "--env-rotation", "90", "--env-intensity", "0.5", "--backend", "vulkan",
                                          "--validation", "--spp", "2", "--width", "32", "--out", out, "-v"});
   EXPECT_TRUE(r.ExitedWith(0)) << r.Describe();
   EXPECT_NE(r.out.find("1024 × 512 texels, rotation 90°, intensity 0.5; distribution built in"), std::string::npos)
       << r.out;
+  std::remove(map.c_str());
+  std::remove(out.c_str());
 }
 
 }  // namespace

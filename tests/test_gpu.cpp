@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <random>
 #include <span>
@@ -195,6 +196,7 @@ TEST_F(GpuTest, TraversalMatchesCpuWithSpatialSplits) {
 }
 
 TEST_F(GpuTest, TraversalMatchesCpuOnLargeCorpusModel) {
+  VKPT_REQUIRE_SHARED_DATA();
   Scene s = LoadGltf(test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"));
   ASSERT_GE(s.triangles.size(), 100000u);
   RenderScene rs = PrepareRenderScene(s);
@@ -318,27 +320,37 @@ TEST_F(GpuTest, TexturedQuadShowsItsTexels) {
 
 // The triangles and texture coordinates split over two texel buffers each, after the
 // first triangle, the third, and half of them: the image is the one-buffer image, bit for
-// bit, for the Cornell box and a textured corpus model.
-TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImage) {
-  for (const std::string& path :
-       {test::SourcePath("scenes/cornell.gltf"), test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf")}) {
-    Scene s = LoadGltf(path);
-    RenderScene rs = PrepareRenderScene(s);
-    FrameParams p = Params(rs, s, 48, 40, 8, 3);
-    const Image one = vk::GpuRenderer(Gpu(), rs).Render(p).image;
-    int identical = 0;
-    for (uint32_t split : {1u, 3u, uint32_t(rs.triangles.size()) / 2}) {
-      const Image two =
-          test::GpuRendererWith(rs, {.maxTexelsPerBuffer = split * shader::kTexelsPerTriangle}).Render(p).image;
-      const bool same = two.pixels == one.pixels && two.variance == one.variance;
-      EXPECT_TRUE(same) << path << ": " << split << " triangles in the first buffer";
-      identical += same;
-    }
-    std::printf(
-        "%s (%zu triangles, %zu with texture coordinates), arrays in two texel buffers: %d of 3 splits "
-        "render the same bytes\n",
-        path.c_str(), rs.triangles.size(), rs.uvs.size(), identical);
+// bit, for the Cornell box, a textured square built in code and a textured corpus model.
+void ExpectArraysInTwoBuffersRenderTheSameImage(vk::Context& gpu, const Scene& s, const std::string& path) {
+  RenderScene rs = PrepareRenderScene(s);
+  FrameParams p = Params(rs, s, 48, 40, 8, 3);
+  const Image one = vk::GpuRenderer(gpu, rs).Render(p).image;
+  int identical = 0, splits = 0;
+  for (uint32_t split : {1u, 3u, uint32_t(rs.triangles.size()) / 2}) {
+    if (split >= rs.triangles.size()) continue;  // the two-triangle square: after the first only
+    ++splits;
+    const Image two =
+        test::GpuRendererWith(rs, {.maxTexelsPerBuffer = split * shader::kTexelsPerTriangle}).Render(p).image;
+    const bool same = two.pixels == one.pixels && two.variance == one.variance;
+    EXPECT_TRUE(same) << path << ": " << split << " triangles in the first buffer";
+    identical += same;
   }
+  std::printf(
+      "%s (%zu triangles, %zu with texture coordinates), arrays in two texel buffers: %d of %d splits "
+      "render the same bytes\n",
+      path.c_str(), rs.triangles.size(), rs.uvs.size(), identical, splits);
+}
+
+TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImage) {
+  const std::string cornell = test::SourcePath("scenes/cornell.gltf");
+  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), LoadGltf(cornell), cornell);
+  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), test::TexturedQuadScene(), "the textured square");
+}
+
+TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImageTextured) {
+  VKPT_REQUIRE_SHARED_DATA();
+  const std::string path = test::CorpusPath("valid/BoxTextured/glTF/BoxTextured.gltf");
+  ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), LoadGltf(path), path);
 }
 
 // Path regeneration (pathtrace.comp) adds each invocation's samples in sample order, as
@@ -439,6 +451,7 @@ TEST_F(GpuTest, FurnaceCatchesBothMutants) {
 class GpuCorpus : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(GpuCorpus, RendersOnTheGpu) {
+  VKPT_REQUIRE_SHARED_DATA();
   Scene s = LoadGltf(test::CorpusPath("valid/" + GetParam()));
   RenderScene rs = PrepareRenderScene(s);
   FrameParams p = Params(rs, s, 24, 24, 2, 1);
@@ -456,6 +469,7 @@ TEST_P(GpuCorpus, RendersOnTheGpu) {
 std::vector<std::string> ValidModels() {
   std::vector<std::string> out;
   std::filesystem::path root = test::CorpusPath("valid");
+  if (test::SharedDataDir().empty()) return {};  // TraversalMatchesCpuOnLargeCorpusModel skips
   if (!std::filesystem::exists(root)) return {"(corpus missing: " + root.string() + ")"};
   for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
     std::string ext = e.path().extension().string();
@@ -465,6 +479,7 @@ std::vector<std::string> ValidModels() {
   return out;
 }
 
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(GpuCorpus);
 INSTANTIATE_TEST_SUITE_P(Valid, GpuCorpus, ::testing::ValuesIn(ValidModels()), [](const auto& info) {
   std::string n = info.param;
   for (char& c : n)
@@ -473,19 +488,19 @@ INSTANTIATE_TEST_SUITE_P(Valid, GpuCorpus, ::testing::ValuesIn(ValidModels()), [
 });
 
 // ---------------------------------------------------------------------------------------
-// The glTF PBR models of ../shared/gltf-pbr (its MANIFEST.md), read in place: each loads
+// The glTF PBR models of gltf-pbr/ in the test data (its MANIFEST.md), read in place: each loads
 // (with its textures, where it has any), lists what vkpt does not render yet, and
 // renders on both backends, lockstep with the CPU on the same seed and statistically with
 // an independent one, without a validation message.
 
 struct PbrModel {
-  std::string file;  // under ../shared/gltf-pbr
+  std::string file;  // under gltf-pbr/
   bool textured;     // MANIFEST.md lists images for it
 };
 
 void PrintTo(const PbrModel& m, std::ostream* os) { *os << m.file; }
 
-std::string PbrPath(const std::string& relative) { return test::CorpusPath("../gltf-pbr/" + relative); }
+std::string PbrPath(const std::string& relative) { return test::SharedData("gltf-pbr/" + relative); }
 
 // Object splits only: the BVH is not under test here, and the automatic choice, which
 // builds spatial splits too, takes 5.5 s instead of 1.2 on the 1 M-triangle sphere grid.
@@ -524,8 +539,9 @@ void ExpectBackendsAgree(const RenderScene& rs, FrameParams p, const std::string
 class GpuPbrCorpus : public GpuTest, public ::testing::WithParamInterface<PbrModel> {};
 
 TEST_P(GpuPbrCorpus, LoadsAndRendersAlikeOnBothBackends) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string path = PbrPath(GetParam().file);
-  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing (../shared/gltf-pbr beside the checkout)";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing";
   Scene s = LoadGltf(path);
   std::string ignored;
   for (const std::string& f : s.ignoredFeatures) ignored += (ignored.empty() ? "" : "; ") + f;
@@ -553,11 +569,32 @@ INSTANTIATE_TEST_SUITE_P(
       return n;
     });
 
+// A generated map (test::RleHdr: a row of suns at the top, runs and ramps elsewhere), read
+// as --env FILE reads it and turned 30°, lighting a Lambert square that fills the frame:
+// the environment's importance sampling on both backends, without the test data.
+TEST_F(GpuTest, GeneratedEnvironmentMapAgreesOnBothBackends) {
+  const test::TempFolder dir("gpu-env");
+  std::ofstream(dir / "map.hdr", std::ios::binary) << test::RleHdr(64, 32);
+  std::vector<std::string> warnings;
+  const Image image = ReadEnvironmentImage(
+      dir / "map.hdr", [](uint64_t, const std::string&) {}, &warnings);
+  const Scene s = test::VertexColorQuadScene(glm::vec3(0.8f));
+  RenderScene rs = PrepareRenderScene(s);
+  rs.environment = BuildEnvironmentMap(image.width, image.height, image.pixels);
+  AddEnvironmentLight(rs, 1.0f);
+  FrameParams p = Params(rs, s, 32, 32, 16, 1, 8);
+  SetEnvironmentParams(p, rs.environment, 30.0f, 1.0f);
+  EXPECT_EQ(test::PixelsNear(RenderCpu(rs, p).image, glm::vec3(0.0f), 0.0f), 0)
+      << "black pixels: the map lights nothing";
+  ExpectBackendsAgree(rs, p, "a Lambert square under a generated map");
+}
+
 // The metal/roughness sphere grid (1.04 M triangles, one BVH for all three renders) under
 // the white background and under each of the two environment maps (as --env FILE).
 TEST_F(GpuTest, PbrSpheresUnderBackgroundAndBothEnvironmentsAgree) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string path = PbrPath("MetalRoughSpheresNoTextures/glTF-Binary/MetalRoughSpheresNoTextures.glb");
-  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing (../shared/gltf-pbr beside the checkout)";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing";
   Scene s = LoadGltf(path);
   std::printf("MetalRoughSpheresNoTextures: %zu triangles, %zu materials, %zu ignored features\n", s.triangles.size(),
               s.materials.size(), s.ignoredFeatures.size());

@@ -121,9 +121,9 @@ TEST(Lights, InvalidLightNodesAreNamed) {
 }
 
 TEST(Lights, LightsPunctualLampHasFivePointLights) {
-  // The Khronos sample model, kept beside the corpus.
-  const std::string path = CorpusPath("../gltf-pbr/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf");
-  if (!std::ifstream(path)) GTEST_SKIP() << path << " is not available";
+  // The Khronos sample model, in gltf-pbr/ of the test data.
+  VKPT_REQUIRE_SHARED_DATA();
+  const std::string path = test::SharedData("gltf-pbr/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf");
   Scene s = LoadGltf(path);
   int points = 0;
   for (const PunctualLight& l : s.lights) points += l.type == PunctualLight::Type::kPoint;

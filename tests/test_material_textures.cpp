@@ -282,13 +282,14 @@ TEST(MaterialTextures, UntexturedScenesHaveNoCoordinates) {
 // Bit for bit, every pixel its texel (the footprint of each lies inside one texel).
 // Vertices paired with the wrong coordinates (b1 and b2 swapped in InterpolatedUV) put
 // 3107 of 4096 pixels off, here and on the GPU (checked).
-// TextureCoordinateTest (../shared/gltf-corpus): four squares facing −Z, each showing a
+// TextureCoordinateTest (gltf-corpus/ of the test data): four squares facing −Z, each showing a
 // corner region of one image. Seen from −Z (+x to the left), the texture's (0, 0) must be
 // at the top left of the top-left square and v must grow downwards: probes on a 25 × 25 grid
 // in each square, by rays along +Z, must find the base colour factor times the image at the
 // coordinates this hand-made map gives (level 0), where a v or u flipped the wrong way
 // would read the image's other corner, its text and checkers elsewhere.
 TEST(MaterialTextures, TextureCoordinateTestShowsEachCornerUpright) {
+  VKPT_REQUIRE_SHARED_DATA();
   const std::string path = CorpusPath("valid/TextureCoordinateTest/glTF/TextureCoordinateTest.gltf");
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const RenderScene rs = PrepareRenderScene(LoadGltf(path));

@@ -93,6 +93,7 @@ struct Case {
 class MpiIdentity : public ::testing::TestWithParam<Case> {};
 
 TEST_P(MpiIdentity, SameImageBytesForOneTwoAndThreeRanks) {
+  if (GetParam().scene == &kBoxTextured) VKPT_REQUIRE_SHARED_DATA();
   const test::TempFolder dir("mpi-identity");
   const auto [backend, scene] = GetParam();
   ProcessResult one = test::RunVkpt(Frame(*scene, backend, dir / "one.pfm"));

@@ -136,7 +136,7 @@ TEST(Stats, KeysAreTheReadmeSchemaAndValuesDescribeTheRun) {
 TEST(Stats, ContentHashFollowsTheScene) {
   const std::string out = TempPath("stats-hash.png");
   std::vector<std::string> hashes;
-  for (const std::string& scene : {kCornell, kCornell, test::CorpusPath("valid/Box/glTF/Box.gltf")}) {
+  for (const std::string& scene : {kCornell, kCornell, test::SourcePath("scenes/furnace.gltf")}) {
     const std::string stats = TempPath("stats-hash-" + std::to_string(hashes.size()) + ".json");
     ProcessResult r = Render(scene, out, stats, {"--backend", "cpu"});
     ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();

@@ -1,6 +1,6 @@
 // MikkTSpace tangents (scene/tangent_space.h): exact frames on flat quads, mirrored uvs
 // kept apart, welding, the contract on random and degenerate meshes, and agreement with the
-// TANGENT attributes of real files (../shared, read in place).
+// TANGENT attributes of real files (the external test data, read in place).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -284,7 +284,7 @@ Agreement CompareWithFile(const std::string& path) {
 }
 
 struct SuppliedFile {
-  const char* path;   // relative to ../shared/gltf-corpus
+  const char* path;   // in the test data (test_util.h)
   double p95Degrees;  // the bound on the 95th percentile of the angle
 };
 
@@ -304,14 +304,15 @@ struct SuppliedFile {
 // texture, so their tangents are unused and follow no convention.
 TEST(TangentSpace, AgreesWithSuppliedTangents) {
   const SuppliedFile files[] = {
-      {"../gltf-pbr/NormalTangentMirrorTest/glTF-Binary/NormalTangentMirrorTest.glb", 0.5},
-      {"../gltf-pbr/AlphaBlendModeTest/glTF-Binary/AlphaBlendModeTest.glb", 0.5},
-      {"../gltf-pbr/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf", 0.5},
-      {"valid/Avocado/glTF/Avocado.gltf", 3.0},
+      {"gltf-pbr/NormalTangentMirrorTest/glTF-Binary/NormalTangentMirrorTest.glb", 0.5},
+      {"gltf-pbr/AlphaBlendModeTest/glTF-Binary/AlphaBlendModeTest.glb", 0.5},
+      {"gltf-pbr/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf", 0.5},
+      {"gltf-corpus/valid/Avocado/glTF/Avocado.gltf", 3.0},
   };
+  VKPT_REQUIRE_SHARED_DATA();
   for (const SuppliedFile& f : files) {
-    const std::string path = test::CorpusPath(f.path);
-    ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing (../shared beside the checkout)";
+    const std::string path = test::SharedData(f.path);
+    ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing";
     const Agreement a = CompareWithFile(path);
     ASSERT_GT(a.degrees.size(), 0u) << path;
     std::printf("%s: %zu triangle corners, angle median %.3f° p95 %.3f° p99 %.3f° max %.3f°, signs agree %.2f %%\n",

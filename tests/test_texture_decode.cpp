@@ -154,10 +154,11 @@ TEST(TextureDecode, ProgressiveJpegEqualsItsBaseline) {
   EXPECT_EQ(progressive.texels, Decode(FileBytes(kFixtures + "quadrants-baseline.jpg")).texels);
 }
 
-// Real files of the corpus (../shared): palette PNGs of 1 and 8 bits, RGBA, a 2048 × 2048
+// Real files of the test data (test_util.h): palette PNGs of 1 and 8 bits, RGBA, a 2048 × 2048
 // baseline JPEG.
 TEST(TextureDecode, CorpusImages) {
-  const std::string pbr = test::SourcePath("../shared/gltf-pbr/");
+  VKPT_REQUIRE_SHARED_DATA();
+  const std::string pbr = test::SharedData("gltf-pbr/");
   const struct {
     std::string path;
     uint32_t width, height, channels;
@@ -169,7 +170,7 @@ TEST(TextureDecode, CorpusImages) {
   };
   for (const auto& file : files) {
     SCOPED_TRACE(file.path);
-    ASSERT_TRUE(std::filesystem::exists(file.path)) << "missing: the corpus is ../shared beside the checkout";
+    ASSERT_TRUE(std::filesystem::exists(file.path)) << "missing";
     const Bytes bytes = FileBytes(file.path);
     const TextureImageHeader header = ReadTextureImageHeader(bytes, "");
     EXPECT_EQ(header.width, file.width);

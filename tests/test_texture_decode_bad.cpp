@@ -135,7 +135,8 @@ TEST(TextureDecode, TruncatedJpegAtEveryByte) {
 }
 
 TEST(TextureDecode, TruncatedCorpusJpeg) {
-  const Bytes jpeg = FileBytes(test::SourcePath("../shared/gltf-pbr/LightsPunctualLamp/glTF/material0_emissive.jpeg"));
+  VKPT_REQUIRE_SHARED_DATA();
+  const Bytes jpeg = FileBytes(test::SharedData("gltf-pbr/LightsPunctualLamp/glTF/material0_emissive.jpeg"));
   ASSERT_GT(jpeg.size(), 1000u);
   const TextureImageHeader header = ReadTextureImageHeader(jpeg, "");
   for (size_t cut : {jpeg.size() / 2, jpeg.size() - 2, jpeg.size() - 1}) {
@@ -166,11 +167,13 @@ void CorruptEveryByte(const Bytes& original) {
   EXPECT_GT(refused, 0u);
 }
 
-TEST(TextureDecode, CorruptPngBytes) {
-  CorruptEveryByte(SmallPng());
-  // Real deflate streams: a palette image, and RGBA.
+TEST(TextureDecode, CorruptPngBytes) { CorruptEveryByte(SmallPng()); }
+
+// Real deflate streams: a palette image, and RGBA.
+TEST(TextureDecode, CorruptCorpusPngBytes) {
+  VKPT_REQUIRE_SHARED_DATA();
   CorruptEveryByte(FileBytes(test::CorpusPath("valid/BoxTexturedNonPowerOfTwo/glTF/CesiumLogoFlat.png")));
-  CorruptEveryByte(FileBytes(test::SourcePath("../shared/gltf-pbr/TextureTransformTest/glTF/Arrow.png")));
+  CorruptEveryByte(FileBytes(test::SharedData("gltf-pbr/TextureTransformTest/glTF/Arrow.png")));
 }
 
 TEST(TextureDecode, CorruptJpegBytes) {
@@ -188,8 +191,10 @@ TEST(TextureDecode, MalformedHeaders) {
     return png;
   }();
   EXPECT_EQ(HeaderError(noIhdr), "is corrupt (PNG: its first chunk is not a 13-byte IHDR)");
-  EXPECT_EQ(HeaderError(FileBytes(test::CorpusPath("invalid/invalid_image_data.jpg"))),
-            "is corrupt (JPEG: a segment at byte 2 declares a length below 2)");
+  // The corpus's invalid_image_data.jpg, all 16 bytes of it: SOI, then 0xFF and zeros.
+  Bytes zeros(16, 0);
+  zeros[0] = 0xff, zeros[1] = 0xd8, zeros[2] = 0xff;
+  EXPECT_EQ(HeaderError(zeros), "is corrupt (JPEG: a segment at byte 2 declares a length below 2)");
 
   const Bytes jpeg = FileBytes(kFixtures + "quadrants-baseline.jpg");
   const size_t sof = Find(jpeg, {0xff, 0xc0});

@@ -275,7 +275,15 @@ TEST(Amplification, UnusedImageIsNotRead) {
   EXPECT_LT(r.peakRssKiB, kSmallProcessKiB);
 }
 
+TEST(Amplification, VerboseReportsTheBudget) {
+  TempDir root;
+  ProcessResult ok = Render(test::SourcePath("scenes/cornell.gltf"), root.path + "/o.png", {"--max-memory", "200M", "-v"});
+  EXPECT_TRUE(ok.ExitedWith(0)) << ok.Describe();
+  EXPECT_NE(ok.out.find("of --max-memory 200 MiB"), std::string::npos) << ok.out;
+}
+
 TEST(Amplification, BudgetRefusalNamesTheLimit) {
+  VKPT_REQUIRE_SHARED_DATA();
   TempDir root;
   const std::string out = root.path + "/o.png";
   ProcessResult r = Render(test::CorpusPath("valid/2CylinderEngine/glTF-Binary/2CylinderEngine.glb"), out,

@@ -12,8 +12,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -26,7 +28,33 @@
 namespace vkpt::test {
 
 std::string SourcePath(const std::string& relative) { return std::string(VKPT_SOURCE_DIR) + "/" + relative; }
-std::string CorpusPath(const std::string& relative) { return std::string(VKPT_CORPUS_DIR) + "/" + relative; }
+
+std::string SharedDataDir() {
+  const char* env = std::getenv("VKPT_TEST_DATA");
+  const std::string dir = env && *env ? std::string(env) : SourcePath("../shared");
+  std::error_code ec;
+  return std::filesystem::is_directory(dir, ec) ? dir : "";
+}
+
+std::string SharedData(const std::string& relative) {
+  const std::string dir = SharedDataDir();
+  return (dir.empty() ? std::string("<no test data>") : dir) + "/" + relative;
+}
+
+std::string CorpusPath(const std::string& relative) { return SharedData("gltf-corpus/" + relative); }
+
+std::string SharedDataMissing() {
+  const char* env = std::getenv("VKPT_TEST_DATA");
+  const std::string where = env && *env ? "VKPT_TEST_DATA=" + std::string(env) + " is not a folder"
+                                        : "no ../shared beside the checkout and VKPT_TEST_DATA is not set";
+  return "needs the external test data (" + where +
+         "): set VKPT_TEST_DATA to a folder holding gltf-corpus/, gltf-pbr/ and gltf-ext/, or put it at ../shared";
+}
+
+bool SharedDataRequired() {
+  const char* env = std::getenv("VKPT_REQUIRE_TEST_DATA");
+  return env && *env && std::string(env) != "0";
+}
 std::string TempPath(const std::string& name) {
   return "/tmp/vkpt-test-" + std::to_string(::getpid()) + "-" + name;
 }
@@ -436,6 +464,53 @@ RenderedFrame RenderUnderBudget(FrameRenderer& frame, const RenderBudget& budget
   SessionSettings settings;
   settings.budget = budget;
   return RenderSession(source, settings);
+}
+
+namespace {
+
+// RLE-HDR texel (x, y) as RGBE bytes: runs of 8 in red, a literal ramp in green, blue
+// constant, the exponent changing by row; the sun a bright texel in the first row.
+std::array<uint8_t, 4> RleHdrRgbe(int x, int y) {
+  if (y == 0 && x % 64 == 0) return {128, 128, 128, 128 + 12};  // 0.5 · 2^12 = 2048
+  return {uint8_t(64 + (x / 8 % 4) * 32), uint8_t(128 + (x * 7 + y * 13) % 128), 128, uint8_t(129 + y % 3)};
+}
+
+}  // namespace
+
+glm::vec3 RleHdrTexel(int x, int y) {
+  const std::array<uint8_t, 4> c = RleHdrRgbe(x, y);
+  const float scale = std::ldexp(1.0f, int(c[3]) - 136);  // stb: mantissa · 2^(e − 128 − 8)
+  return glm::vec3(c[0], c[1], c[2]) * scale;
+}
+
+std::string RleHdr(int width, int height) {
+  std::string s =
+      "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
+  std::vector<uint8_t> v(static_cast<size_t>(width));
+  for (int y = 0; y < height; ++y) {
+    s += {char(2), char(2), char(width >> 8), char(width & 0xff)};
+    for (int k = 0; k < 4; ++k) {
+      for (int x = 0; x < width; ++x) v[x] = RleHdrRgbe(x, y)[k];
+      auto runAt = [&](int i) {
+        int r = 1;
+        while (i + r < width && r < 127 && v[i + r] == v[i]) ++r;
+        return r;
+      };
+      for (int i = 0; i < width;) {
+        if (const int r = runAt(i); r >= 3) {
+          s += {char(128 + r), char(v[i])};
+          i += r;
+          continue;
+        }
+        int j = i;
+        while (j < width && j - i < 128 && runAt(j) < 3) ++j;
+        s += char(j - i);
+        for (int t = i; t < j; ++t) s += char(v[t]);
+        i = j;
+      }
+    }
+  }
+  return s;
 }
 
 }  // namespace vkpt::test

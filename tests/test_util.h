@@ -1,5 +1,5 @@
 // Shared test helpers: running the vkpt binary as a subprocess, statistics for Monte
-// Carlo tests, paths to the scenes and the corpus.
+// Carlo tests, paths to the scenes and to the external test data.
 #pragma once
 
 #include <cstdint>
@@ -30,7 +30,25 @@ constexpr double kTimeScale = VKPT_TIME_SCALE;
 constexpr uint32_t kSampleDivisor = VKPT_SAMPLE_DIVISOR;
 
 std::string SourcePath(const std::string& relative);  // <repo>/relative
-std::string CorpusPath(const std::string& relative);  // ../shared/gltf-corpus/relative
+
+// The external test data: a folder holding gltf-corpus/, gltf-pbr/ (its environments/
+// too) and gltf-ext/. It is $VKPT_TEST_DATA if that is set, else ../shared beside the
+// checkout; "" when that folder does not exist. A test that reads it begins with
+// VKPT_REQUIRE_SHARED_DATA(): without the folder the test skips with one line saying how
+// to get it (or fails, if $VKPT_REQUIRE_TEST_DATA is set, as CI sets it). With the folder,
+// a file missing from it fails the test that reads it, as any missing input does.
+std::string SharedDataDir();
+std::string SharedData(const std::string& relative);  // SharedDataDir()/relative
+std::string CorpusPath(const std::string& relative);  // SharedData("gltf-corpus/" + relative)
+std::string SharedDataMissing();                      // the line a test skips (or fails) with
+bool SharedDataRequired();                            // $VKPT_REQUIRE_TEST_DATA is set
+// A macro, not a function: GTEST_SKIP() and FAIL() end the test by returning from it.
+#define VKPT_REQUIRE_SHARED_DATA()                                                       \
+  do {                                                                                   \
+    if (!::vkpt::test::SharedDataDir().empty()) break;                                   \
+    if (::vkpt::test::SharedDataRequired()) FAIL() << ::vkpt::test::SharedDataMissing(); \
+    GTEST_SKIP() << ::vkpt::test::SharedDataMissing();                                   \
+  } while (0)
 std::string TempPath(const std::string& name);        // unique per test process
 std::string FreshTempDirectory(const std::string& name);           // TempPath(name), created empty
 std::vector<std::string> DirectoryListing(const std::string& dir);  // entry names, sorted
@@ -159,6 +177,12 @@ shader::FrameParams TestFrame(const RenderScene& rs, const Scene& s, uint32_t si
 // A RenderScene with the textures of `s` (TextureStore) and nothing else: what
 // shared/texture.h's lookups read.
 RenderScene TexturesOnly(const Scene& s);
+
+// A Radiance (.hdr) file of w × h texels (w from 8 to 32767, so that stb reads it run-length
+// encoded), each scanline channel coded in runs and literal dumps: texel (x, y) is
+// RleHdrTexel(x, y) exactly. Every 64th texel of the first row is 2048 (a sun).
+std::string RleHdr(int width, int height);
+glm::vec3 RleHdrTexel(int x, int y);
 
 // How many pixels of `image` are within `tolerance` (relative) of `expected` in every channel.
 int PixelsNear(const Image& image, glm::vec3 expected, float tolerance);

@@ -9,6 +9,7 @@
 
 // Only the Radiance decoder, with internal linkage: Debian's tinygltf links its own
 // stb_image, and vkpt reads no other format through it.
+#include "image/stb_source.h"
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #define STBI_ONLY_HDR
@@ -17,12 +18,14 @@
 #include <stb_image.h>
 #include <tinyexr.h>
 
-#include "image/stb_source.h"
 #include "util/error.h"
 #include "util/regular_file.h"
 
 namespace vkpt {
 namespace {
+
+static_assert(sizeof(stbi__context::buffer_start) == StbSource::kRefillSize);
+constexpr stbi_io_callbacks kStbCallbacks{&StbSource::Read, &StbSource::Skip, &StbSource::Eof};
 
 // The signatures, checked before the rest of a file is read: stb_image accepts either
 // Radiance header line; every OpenEXR file begins with its magic number.
@@ -45,21 +48,28 @@ void CheckSize(const std::string& path, int64_t width, int64_t height) {
 }
 
 Image DecodeHdr(const std::string& path, const std::vector<unsigned char>& bytes, const MemoryCharge& charge) {
-  const stbi_io_callbacks* io = &StbSource::kCallbacks;
   int width = 0, height = 0, channels = 0;
+  StbHeap heap;
   StbSource header{bytes};
-  if (!stbi_info_from_callbacks(io, &header, &width, &height, &channels))
-    throw Error(path + ": not a Radiance HDR file (" + stbi_failure_reason() + ")");
+  try {
+    if (!stbi_info_from_callbacks(&kStbCallbacks, &header, &width, &height, &channels))
+      throw Error(path + ": not a Radiance HDR file (" + stbi_failure_reason() + ")");
+  } catch (const StbEndOfData&) {
+    throw Error(path + ": the file is truncated (it ends inside the header)");
+  }
   CheckSize(path, width, height);
   // stb's float RGB, then our Image.
   charge(uint64_t(width) * uint64_t(height) * 2 * sizeof(glm::vec3), "its decoded texels");
   StbSource body{bytes};
-  std::unique_ptr<float, void (*)(void*)> rgb(stbi_loadf_from_callbacks(io, &body, &width, &height, &channels, 3),
-                                              stbi_image_free);
-  if (body.ranOut) throw Error(path + ": the file is truncated (it ends inside the pixel data)");
+  float* rgb = nullptr;  // freed with the heap
+  try {
+    rgb = stbi_loadf_from_callbacks(&kStbCallbacks, &body, &width, &height, &channels, 3);
+  } catch (const StbEndOfData&) {
+    throw Error(path + ": the file is truncated (it ends inside the pixel data)");
+  }
   if (!rgb) throw Error(path + ": cannot decode the Radiance HDR data (" + stbi_failure_reason() + ")");
   Image image{uint32_t(width), uint32_t(height)};
-  std::copy_n(rgb.get(), image.pixels.size() * 3, &image.pixels[0].x);
+  std::copy_n(rgb, image.pixels.size() * 3, &image.pixels[0].x);
   return image;
 }
 

@@ -8,6 +8,7 @@
 
 // Only the PNG and JPEG decoders, with internal linkage: Debian's tinygltf links its own
 // stb_image, and image_load.cpp has another private copy for Radiance files.
+#include "image/stb_source.h"
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #define STBI_ONLY_PNG
@@ -16,7 +17,6 @@
 #define STBI_MAX_DIMENSIONS 16384
 #include <stb_image.h>
 
-#include "image/stb_source.h"
 #include "util/error.h"
 
 static_assert(STBI_MAX_DIMENSIONS == vkpt::kMaxTextureSide);
@@ -28,6 +28,9 @@ static_assert(STBI_MAX_DIMENSIONS == vkpt::kMaxTextureSide);
 
 namespace vkpt {
 namespace {
+
+static_assert(sizeof(stbi__context::buffer_start) == StbSource::kRefillSize);
+constexpr stbi_io_callbacks kStbCallbacks{&StbSource::Read, &StbSource::Skip, &StbSource::Eof};
 
 constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
@@ -194,14 +197,11 @@ TextureImageHeader ReadJpegHeader(std::span<const unsigned char> b) {
   }
 }
 
-// stb's pixels, freed with its own allocator.
+// stb's pixels, or what ended its decode: they must be the image the header declared.
 template <typename T>
-using StbPixels = std::unique_ptr<T, void (*)(void*)>;
-
-template <typename T>
-void CheckDecoded(const StbPixels<T>& pixels, const StbSource& source, const TextureImageHeader& header, int w, int h) {
-  // Past the end stb saw filler bytes: whatever it made of them is not the image.
-  if (source.ranOut) Truncated(header.format + ": its data ends before the image does");
+void CheckDecoded(const T* pixels, bool endOfData, const TextureImageHeader& header, int w, int h) {
+  // stb asked for bytes past the end: whatever it had made of the rest is not the image.
+  if (endOfData) Truncated(header.format + ": its data ends before the image does");
   // stb cannot tell a zlib stream or scan cut short inside complete chunks from a corrupt one.
   if (!pixels) {
     const char* reason = stbi_failure_reason();
@@ -239,23 +239,32 @@ Rgba8Image DecodeTextureImage(std::span<const unsigned char> bytes, const Textur
     throw Error("is a " + std::to_string(actual.width) + " × " + std::to_string(actual.height) + " " + actual.format +
                 ", not the " + std::to_string(header.width) + " × " + std::to_string(header.height) + " " +
                 header.format + " its header said");
-  // Zeros past the end: they end stb's JPEG marker search, where 0xFF would not.
-  StbSource source{bytes, '\0'};
+  StbSource source{bytes};
+  StbHeap heap;  // frees stb's pixels, and what it held when the reader ended its decode
   Rgba8Image image{header.width, header.height, {}};
   int w = 0, h = 0, channels = 0;
+  bool endOfData = false;
   stbi__g_failure_reason = nullptr;  // so that a failure without a reason shows none, not an old one
   if (header.sixteenBit) {
-    StbPixels<stbi_us> pixels(stbi_load_16_from_callbacks(&StbSource::kCallbacks, &source, &w, &h, &channels, 4),
-                              stbi_image_free);
-    CheckDecoded(pixels, source, header, w, h);
+    stbi_us* pixels = nullptr;
+    try {
+      pixels = stbi_load_16_from_callbacks(&kStbCallbacks, &source, &w, &h, &channels, 4);
+    } catch (const StbEndOfData&) {
+      endOfData = true;
+    }
+    CheckDecoded(pixels, endOfData, header, w, h);
     image.texels.resize(size_t(w) * size_t(h) * 4);
     for (size_t i = 0; i < image.texels.size(); ++i)
-      image.texels[i] = uint8_t((uint32_t(pixels.get()[i]) * 255 + 32767) / 65535);
+      image.texels[i] = uint8_t((uint32_t(pixels[i]) * 255 + 32767) / 65535);
   } else {
-    StbPixels<stbi_uc> pixels(stbi_load_from_callbacks(&StbSource::kCallbacks, &source, &w, &h, &channels, 4),
-                              stbi_image_free);
-    CheckDecoded(pixels, source, header, w, h);
-    image.texels.assign(pixels.get(), pixels.get() + size_t(w) * size_t(h) * 4);
+    stbi_uc* pixels = nullptr;
+    try {
+      pixels = stbi_load_from_callbacks(&kStbCallbacks, &source, &w, &h, &channels, 4);
+    } catch (const StbEndOfData&) {
+      endOfData = true;
+    }
+    CheckDecoded(pixels, endOfData, header, w, h);
+    image.texels.assign(pixels, pixels + size_t(w) * size_t(h) * 4);
   }
   return image;
 }

@@ -2,8 +2,9 @@
 # Runs the loader fuzzer for a fixed time; CI's fuzz smoke run (.ci/run) and longer
 # local runs use it alike.
 #   usage: tests/fuzz/run.sh [SECONDS=90] [BUILD_DIR=build-fuzz]
-# Seeds: every .gltf/.glb of the shared corpus (../shared/gltf-corpus, read in place),
-# the PBR feature models under 4 MB (../shared/gltf-pbr: textures, alpha, material
+# Seeds: every .gltf/.glb of the glTF corpus (gltf-corpus/ of the external test data,
+# $VKPT_TEST_DATA or ../shared, read in place), the PBR feature models under 4 MB
+# (gltf-pbr/ there: textures, alpha, material
 # extensions) and scenes/*.gltf; the corpus the run grows goes to a scratch directory
 # outside the repository. Any finding (crash, sanitizer report, exception other than vkpt::Error,
 # an input slower than 5 s, over 1 GiB in one allocation or 2 GiB resident) fails the
@@ -13,8 +14,9 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-90}
 build=${2:-build-fuzz}
-corpus=${VKPT_CORPUS_DIR:-../shared/gltf-corpus}
-pbr=$corpus/../gltf-pbr
+data=${VKPT_TEST_DATA:-../shared}
+corpus=$data/gltf-corpus
+pbr=$data/gltf-pbr
 fuzzer="$build/fuzz_loader"
 [ -x "$fuzzer" ] || { echo "fuzz: $fuzzer not built (README: Sanitizers and fuzzing)" >&2; exit 1; }
 [ -d "$corpus/valid" ] && [ -d "$corpus/invalid" ] || { echo "fuzz: no glTF corpus at $corpus" >&2; exit 1; }
