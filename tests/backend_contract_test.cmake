@@ -12,7 +12,7 @@ set(contract_file "shaders/shared/backend_contract.h")
 set(cpp_estimator shaders/shared/cpp_prelude.h host/render/scene_access.h host/cpu/cpu_path.h)
 set(glsl_estimator shaders/shared/glsl_prelude.h shaders/scene_constants.glsl shaders/scene_fetch.glsl
     shaders/traverse.glsl)
-set(cpp_denoiser shaders/shared/cpp_prelude.h host/image/denoise.cpp)
+set(cpp_denoiser shaders/shared/cpp_prelude.h host/render/denoise.cpp)
 set(glsl_denoiser shaders/shared/glsl_prelude.h shaders/denoise.comp)
 # Other files that define contract names for the shared headers (a kernel's own
 # settings, the CPU's second instantiation): checked for unlisted names only.

@@ -10,7 +10,7 @@
 // The backends:
 //   C++ estimator   shared/cpp_prelude.h, host/render/scene_access.h, host/cpu/cpu_path.h
 //   GLSL estimator  shared/glsl_prelude.h, scene_constants.glsl, scene_fetch.glsl, traverse.glsl
-//   C++ denoiser    shared/cpp_prelude.h, host/image/denoise.cpp
+//   C++ denoiser    shared/cpp_prelude.h, host/render/denoise.cpp
 //   GLSL denoiser   shared/glsl_prelude.h, denoise.comp
 // Besides the names below, both languages provide GLSL's types and built-ins that the
 // headers use (vec2…uvec4, uint, dot, normalize, clamp, floatBitsToUint, …): GLSL has
