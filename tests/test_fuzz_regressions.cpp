@@ -1,5 +1,5 @@
 // Every input the loader's fuzzer (tests/fuzz/) ever found crashing, hanging or
-// over-allocating is kept in tests/fuzz/regressions/ and replayed here in-process, the
+// over-allocating is kept in tests/fuzz/regressions/loader/ and replayed here in-process, the
 // way the fuzz target runs it (tests/fuzz/fuzz_input.h): LoadGltf must return a Scene or
 // throw vkpt::Error, within a time and a memory limit. A crash ends the test process and
 // so fails the test; in the sanitizer build (VKPT_SANITIZE) any memory error does too.
@@ -45,7 +45,7 @@ void PrintTo(const Regression& r, std::ostream* os) { *os << fs::path(r.path).fi
 
 std::vector<Regression> DiscoverRegressions() {
   std::vector<Regression> out;
-  for (const fs::directory_entry& e : fs::directory_iterator(test::SourcePath("tests/fuzz/regressions"))) {
+  for (const fs::directory_entry& e : fs::directory_iterator(test::SourcePath("tests/fuzz/regressions/loader"))) {
     if (!e.is_regular_file() || e.path().filename() == "README.md") continue;
     std::string name = e.path().filename().string();
     for (char& c : name)

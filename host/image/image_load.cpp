@@ -1,6 +1,7 @@
 #include "image/image_load.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -73,14 +74,33 @@ Image DecodeHdr(const std::string& path, const std::vector<unsigned char>& bytes
   return image;
 }
 
+// tinyexr's header and image, freed however DecodeExr leaves (tinyexr's own
+// LoadEXRFromMemory leaks both when the data is refused after the header).
+struct ExrHeader : EXRHeader {
+  ExrHeader() { InitEXRHeader(this); }
+  ~ExrHeader() { FreeEXRHeader(this); }  // also frees what a failed parse left allocated
+  ExrHeader(const ExrHeader&) = delete;
+  ExrHeader& operator=(const ExrHeader&) = delete;
+};
+struct ExrImage : EXRImage {
+  bool owned = true;  // LoadEXRImageFromMemory frees the image itself when it fails
+  ExrImage() { InitEXRImage(this); }
+  ~ExrImage() {
+    if (owned) FreeEXRImage(this);
+  }
+  ExrImage(const ExrImage&) = delete;
+  ExrImage& operator=(const ExrImage&) = delete;
+};
+
+// The R, G and B channels (or the one channel of a grey image, three times), read as
+// 32-bit float: what tinyexr's LoadEXRFromMemory picks, without its RGBA copy.
 Image DecodeExr(const std::string& path, const std::vector<unsigned char>& bytes, const MemoryCharge& charge) {
   EXRVersion version;
   if (ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size()) != TINYEXR_SUCCESS)
     throw Error(path + ": not an OpenEXR file");
   if (version.multipart || version.non_image)
     throw Error(path + ": multi-part and deep OpenEXR files are not supported");
-  EXRHeader header;
-  InitEXRHeader(&header);
+  ExrHeader header;
   const char* err = nullptr;
   auto fail = [&](const std::string& what) {
     std::string detail = err ? err : "";
@@ -93,21 +113,54 @@ Image DecodeExr(const std::string& path, const std::vector<unsigned char>& bytes
     fail("cannot read the OpenEXR header");
   const int64_t width = int64_t(header.data_window.max_x) - header.data_window.min_x + 1;
   const int64_t height = int64_t(header.data_window.max_y) - header.data_window.min_y + 1;
-  const uint64_t channels = uint64_t(std::max(header.num_channels, 0));
-  FreeEXRHeader(&header);
   CheckSize(path, width, height);
-  // tinyexr's float plane per channel, its RGBA copy, then our Image.
-  charge(uint64_t(width * height) * (channels * sizeof(float) + 4 * sizeof(float) + sizeof(glm::vec3)),
-         "its decoded texels");
-  float* raw = nullptr;
-  int w = 0, h = 0;
-  if (LoadEXRFromMemory(&raw, &w, &h, bytes.data(), bytes.size(), &err) != TINYEXR_SUCCESS)
+  std::array<int, 3> rgb{-1, -1, -1};
+  for (int c = 0; c < header.num_channels; ++c) {
+    const std::string name = header.channels[c].name;
+    for (int k = 0; k < 3; ++k)
+      if (name == std::string(1, "RGB"[k])) rgb[k] = c;
+  }
+  if (header.num_channels == 1) rgb = {0, 0, 0};
+  if (rgb[0] < 0 || rgb[1] < 0 || rgb[2] < 0) throw Error(path + ": the OpenEXR image has no R, G and B channels");
+  for (int c = 0; c < header.num_channels; ++c) {
+    if (header.pixel_types[c] == TINYEXR_PIXELTYPE_UINT)
+      throw Error(path + ": channel " + header.channels[c].name + " holds integers; an environment map needs floats");
+    header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+  }
+  // tinyexr's float plane per channel (tiles may round it up a little), then our Image.
+  const uint64_t channels = uint64_t(header.num_channels);
+  charge(uint64_t(width * height) * (channels * sizeof(float) + sizeof(glm::vec3)), "its decoded texels");
+  ExrImage exr;
+  if (LoadEXRImageFromMemory(&exr, &header, bytes.data(), bytes.size(), &err) != TINYEXR_SUCCESS) {
+    exr.owned = false;
     fail("cannot decode the OpenEXR data");
-  std::unique_ptr<float, void (*)(void*)> rgba(raw, std::free);
-  if (w != width || h != height) throw Error(path + ": the OpenEXR data window does not match its pixels");
-  Image image{uint32_t(w), uint32_t(h)};
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    image.pixels[i] = glm::vec3(rgba.get()[4 * i], rgba.get()[4 * i + 1], rgba.get()[4 * i + 2]);
+  }
+  if (exr.width != width || exr.height != height || exr.num_channels != header.num_channels)
+    throw Error(path + ": the OpenEXR data window does not match its pixels");
+  Image image{uint32_t(width), uint32_t(height)};
+  // w × h texels at (x0, y0) from planes of rows `stride` floats apart.
+  auto copy = [&](unsigned char** planes, int64_t x0, int64_t y0, int w, int h, int stride) {
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        if (x0 + x < 0 || y0 + y < 0 || x0 + x >= width || y0 + y >= height) continue;  // past the image's edge
+        glm::vec3& p = image.At(uint32_t(x0 + x), uint32_t(y0 + y));
+        for (int k = 0; k < 3; ++k) p[k] = reinterpret_cast<const float*>(planes[rgb[k]])[size_t(y) * stride + x];
+      }
+  };
+  if (header.tiled) {
+    if (!exr.tiles) throw Error(path + ": the OpenEXR image has no tiles");
+    for (int t = 0; t < exr.num_tiles; ++t) {
+      const EXRTile& tile = exr.tiles[t];
+      if (tile.level_x != 0 || tile.level_y != 0) continue;  // a smaller mip or rip level
+      if (tile.width > header.tile_size_x || tile.height > header.tile_size_y)
+        throw Error(path + ": an OpenEXR tile is larger than the tile size");
+      copy(tile.images, int64_t(tile.offset_x) * header.tile_size_x, int64_t(tile.offset_y) * header.tile_size_y,
+           tile.width, tile.height, header.tile_size_x);
+    }
+  } else {
+    if (!exr.images) throw Error(path + ": the OpenEXR image has no pixels");
+    copy(exr.images, 0, 0, int(width), int(height), int(width));
+  }
   return image;
 }
 

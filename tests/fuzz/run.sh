@@ -1,57 +1,117 @@
 #!/usr/bin/env bash
-# Runs the loader fuzzer for a fixed time; CI's fuzz smoke run (.ci/run) and longer
-# local runs use it alike.
+# Runs the fuzz targets (tests/fuzz/CMakeLists.txt lists them) for a fixed time; CI's
+# fuzz smoke run (.ci/run) and longer local runs use it alike.
 #   usage: tests/fuzz/run.sh [SECONDS=90] [BUILD_DIR=build-fuzz]
-# Seeds: every .gltf/.glb of the glTF corpus (gltf-corpus/ of the external test data,
-# $VKPT_TEST_DATA or ../shared, read in place), the PBR feature models under 4 MB
-# (gltf-pbr/ there: textures, alpha, material
-# extensions) and scenes/*.gltf; the corpus the run grows goes to a scratch directory
-# outside the repository. Any finding (crash, sanitizer report, exception other than vkpt::Error,
-# an input slower than 5 s, over 1 GiB in one allocation or 2 GiB resident) fails the
-# run: the input is kept in the scratch directory, to be added to
-# tests/fuzz/regressions/ (see the README there). Prints executions and coverage.
+#            every target, SECONDS split among them in equal shares (at least 1 s each)
+#          tests/fuzz/run.sh --all SECONDS [BUILD_DIR=build-fuzz]
+#            every target for SECONDS each
+#          tests/fuzz/run.sh --only TARGET SECONDS [BUILD_DIR=build-fuzz]
+#            one target (loader, env, texture, pfm or options)
+# Seeds, read in place from the external test data ($VKPT_TEST_DATA or ../shared) and
+# never copied into the repository:
+#   loader   every .gltf/.glb of gltf-corpus/, the PBR feature models under 4 MB
+#            (gltf-pbr/: textures, alpha, material extensions) and scenes/*.gltf
+#   env      gltf-pbr/environments/*.hdr, and small .hdr/.exr files fuzz_seeds writes
+#   texture  the PNG and JPEG files under 64 KB of gltf-pbr/ and gltf-corpus/, and small
+#            ones fuzz_seeds writes in each pixel layout
+#   pfm      small little- and big-endian PFM files fuzz_seeds writes
+#   options  the command lines of tests/fuzz/options.seeds, NUL-separated
+# Generated seeds and the corpus each run grows go to a scratch directory outside the
+# repository. Any finding (crash, sanitizer report, exception other than the target's
+# documented error type, an input slower than 5 s, over 1 GiB in one allocation or 2 GiB
+# resident) fails the run once every target has run: the input is kept in the scratch
+# directory, to be added to tests/fuzz/regressions/<target>/ (see the README there).
+# Prints one line per target: "fuzz: <target>: executions N (R/s), coverage …".
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+targets=(loader env texture pfm options)
+mode=split
+case "${1:-}" in
+  --all) mode=all; shift ;;
+  --only) targets=("${2:?--only needs a target}"); shift 2 ;;
+esac
 seconds=${1:-90}
 build=${2:-build-fuzz}
 data=${VKPT_TEST_DATA:-../shared}
 corpus=$data/gltf-corpus
 pbr=$data/gltf-pbr
-fuzzer="$build/fuzz_loader"
-[ -x "$fuzzer" ] || { echo "fuzz: $fuzzer not built (README: Sanitizers and fuzzing)" >&2; exit 1; }
+if [ "$mode" = split ]; then
+  each=$((seconds / ${#targets[@]}))
+  [ "$each" -ge 1 ] || each=1
+else
+  each=$seconds
+fi
+for t in "${targets[@]}" seeds; do
+  [ -x "$build/fuzz_$t" ] || { echo "fuzz: $build/fuzz_$t not built (README: Sanitizers and fuzzing)" >&2; exit 1; }
+done
 [ -d "$corpus/valid" ] && [ -d "$corpus/invalid" ] || { echo "fuzz: no glTF corpus at $corpus" >&2; exit 1; }
 
+# Leaks inside the libraries vkpt does not build, and only those, are not findings.
+export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/vkpt-fuzz-run-XXXXXX")
-mkdir "$scratch/corpus" "$scratch/findings"
-# libFuzzer takes single seed files as a comma-separated list.
-{
-  find "$corpus/valid" "$corpus/invalid" scenes -type f \( -name '*.gltf' -o -name '*.glb' \)
-  if [ -d "$pbr" ]; then find "$pbr" -type f \( -name '*.gltf' -o -name '*.glb' \) -size -4M; fi
-} | sort > "$scratch/seeds"
-if grep -q , "$scratch/seeds"; then echo "fuzz: a seed path contains a comma" >&2; exit 1; fi
-echo "fuzz: $(wc -l < "$scratch/seeds") seed files, ${seconds} s, scratch $scratch"
-paste -sd, "$scratch/seeds" > "$scratch/seeds.csv"
+"$build/fuzz_seeds" "$scratch/generated"
+mkdir "$scratch/generated/options"
+n=0
+while IFS= read -r line; do
+  [ -n "$line" ] || continue
+  n=$((n + 1))
+  printf '%s' "$line" | tr ' ' '\0' > "$scratch/generated/options/$n"
+done < tests/fuzz/options.seeds
 
-status=0
-"$fuzzer" "$scratch/corpus" -seed_inputs=@"$scratch/seeds.csv" -dict=tests/fuzz/gltf.dict \
-  -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 -malloc_limit_mb=1024 \
-  -artifact_prefix="$scratch/findings/" -print_final_stats=1 \
-  < /dev/null > "$scratch/fuzz.log" 2>&1 || status=$?
+# Seed files of one target, a path a line.
+seeds_of() {
+  case "$1" in
+    loader)
+      find "$corpus/valid" "$corpus/invalid" scenes -type f \( -name '*.gltf' -o -name '*.glb' \)
+      if [ -d "$pbr" ]; then find "$pbr" -type f \( -name '*.gltf' -o -name '*.glb' \) -size -4M; fi ;;
+    env)
+      if [ -d "$pbr/environments" ]; then find "$pbr/environments" -type f -name '*.hdr'; fi
+      find "$scratch/generated/env" -type f ;;
+    texture)
+      find "$pbr" "$corpus" -type f \( -iname '*.png' -o -iname '*.jpg' -o -iname '*.jpeg' \) -size -64k 2> /dev/null || true
+      find "$scratch/generated/texture" -type f ;;
+    *) find "$scratch/generated/$1" -type f ;;
+  esac
+}
 
-execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$scratch/fuzz.log" | tail -1)
-last=$(grep -E '^#[0-9]+.* cov: ' "$scratch/fuzz.log" | tail -1 || true)
-cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<< "$last")
-ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<< "$last")
-corp=$(sed -n 's/.* corp: \([0-9]*\/[0-9a-zA-Z]*\).*/\1/p' <<< "$last")
-rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$scratch/fuzz.log" | tail -1)
-rss=$(sed -n 's/^stat::peak_rss_mb: *//p' "$scratch/fuzz.log" | tail -1)
-echo "fuzz: executions ${execs:-?} (${rate:-?}/s), coverage cov ${cov:-?} ft ${ft:-?}, corpus ${corp:-?}, peak RSS ${rss:-?} MB"
+failed=()
+for t in "${targets[@]}"; do
+  dir=$scratch/$t
+  mkdir "$dir" "$dir/corpus" "$dir/findings"
+  seeds_of "$t" | sort > "$dir/seeds"
+  if grep -q , "$dir/seeds"; then echo "fuzz: $t: a seed path contains a comma" >&2; exit 1; fi
+  # libFuzzer takes single seed files as a comma-separated list.
+  paste -sd, "$dir/seeds" > "$dir/seeds.csv"
+  dict=()
+  [ "$t" = loader ] && dict=(-dict=tests/fuzz/gltf.dict)
+  echo "fuzz: $t: $(wc -l < "$dir/seeds") seed files, ${each} s, scratch $dir"
+  status=0
+  "$build/fuzz_$t" "$dir/corpus" -seed_inputs=@"$dir/seeds.csv" "${dict[@]}" \
+    -max_total_time="$each" -timeout=5 -rss_limit_mb=2048 -malloc_limit_mb=1024 \
+    -artifact_prefix="$dir/findings/" -print_final_stats=1 \
+    < /dev/null > "$dir/fuzz.log" 2>&1 || status=$?
 
-if [ "$status" -ne 0 ] || [ -n "$(ls -A "$scratch/findings")" ]; then
-  tail -n 60 "$scratch/fuzz.log" >&2
-  echo "fuzz: FINDING (exit status $status); the input is kept:" >&2
-  ls -l "$scratch/findings" >&2
-  echo "fuzz: fix the loader, then copy the input to tests/fuzz/regressions/ (see its README.md)" >&2
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$dir/fuzz.log" | tail -1)
+  last=$(grep -E '^#[0-9]+.* cov: ' "$dir/fuzz.log" | tail -1 || true)
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<< "$last")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<< "$last")
+  corp=$(sed -n 's/.* corp: \([0-9]*\/[0-9a-zA-Z]*\).*/\1/p' <<< "$last")
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$dir/fuzz.log" | tail -1)
+  rss=$(sed -n 's/^stat::peak_rss_mb: *//p' "$dir/fuzz.log" | tail -1)
+  echo "fuzz: $t: executions ${execs:-?} (${rate:-?}/s), coverage cov ${cov:-?} ft ${ft:-?}," \
+       "corpus ${corp:-?}, peak RSS ${rss:-?} MB"
+
+  if [ "$status" -ne 0 ] || [ -n "$(ls -A "$dir/findings")" ]; then
+    tail -n 60 "$dir/fuzz.log" >&2
+    echo "fuzz: $t: FINDING (exit status $status); the input is kept:" >&2
+    ls -l "$dir/findings" >&2
+    failed+=("$t")
+  fi
+done
+
+if [ "${#failed[@]}" -ne 0 ]; then
+  echo "fuzz: findings from ${failed[*]}: fix the code, then copy each input to" \
+       "tests/fuzz/regressions/<target>/ (see its README.md); scratch $scratch kept" >&2
   exit 1
 fi
 rm -rf "$scratch"
