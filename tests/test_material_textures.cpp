@@ -14,6 +14,7 @@
 #include "cpu/path_tracer.h"
 #include "gltf_builder.h"
 #include "png_writer.h"
+#include "render/material_packing.h"
 #include "render/render_scene.h"
 #include "render/scene_access.h"
 #include "render/texture_store.h"
@@ -68,8 +69,9 @@ TEST(MaterialTextures, BaseColorTextureWithItsSamplerAndCoordinates) {
   EXPECT_EQ(s.images[0].width, 2u);
   EXPECT_EQ(s.images[0].rgba,
             (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 128}));
-  EXPECT_NE(s.materials[0].flags & kMaterialTextured, 0u);
-  EXPECT_EQ(s.materials.back().flags & kMaterialTextured, 0u);  // glTF's default material
+  const std::vector<shader::Material> packed = PackMaterials(s);
+  EXPECT_NE(packed[0].flags & kMaterialTextured, 0u);
+  EXPECT_EQ(packed.back().flags & kMaterialTextured, 0u);  // glTF's default material
   const TextureRef& r = Ref(s, 0, kSlotBaseColor);
   EXPECT_EQ(r.texture, 0u);
   EXPECT_EQ(r.texCoord, 1u);
@@ -95,7 +97,7 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   for (uint32_t slot = 0; slot < kTextureSlots; ++slot)
     rs.textureRefs.push_back({colour[slot] ? 1u : 0u, 0, 1, 0, 0, 0, 1, 0});
   rs.uvs.push_back({});
-  Material m{};
+  shader::Material m{};
   m.baseColor = m.emission = m.specularColor = glm::vec3(1.0f);
   m.metallic = m.roughness = m.transmission = m.specular = 1.0f;
   m.flags = kMaterialTextured | kMaterialExtensionTextured;
@@ -111,7 +113,7 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   EXPECT_EQ(m.specular, data(204));     // A
   EXPECT_EQ(m.specularColor, srgb);
   // Without kMaterialExtensionTextured the extensions' slots are not read.
-  Material plain{};
+  shader::Material plain{};
   plain.transmission = plain.specular = 1.0f;
   plain.specularColor = glm::vec3(1.0f);
   plain.flags = kMaterialTextured;
@@ -129,7 +131,7 @@ TEST(MaterialTextures, ExtensionTexturesFillTheirSlots) {
       R"("extensions":{"KHR_texture_transform":{"offset":[0.5,0]}}}},)"
       R"("KHR_materials_volume":{"thicknessFactor":1,"thicknessTexture":{"index":0}}}})"));
   using namespace shader;
-  EXPECT_NE(s.materials[0].flags & kMaterialExtensionTextured, 0u);
+  EXPECT_NE(PackMaterials(s)[0].flags & kMaterialExtensionTextured, 0u);
   EXPECT_EQ(Ref(s, 0, kSlotTransmission).texCoord, 1u);
   EXPECT_EQ(Ref(s, 0, kSlotSpecular).texture, Ref(s, 0, kSlotTransmission).texture);  // both data
   EXPECT_EQ(s.textures[Ref(s, 0, kSlotTransmission).texture].sampler & kTextureSrgb, 0u);

@@ -37,7 +37,6 @@ Scene LitSquare(glm::vec3 toLight, const glm::u8vec3* texel, glm::vec4 tangent, 
   light.intensity = glm::vec3(1.0f);
   s.lights.push_back(light);
   if (texel) {
-    s.materials[0].flags |= shader::kMaterialTextured;
     s.materials[0].normalScale = scale;
     s.images.push_back({"normal", 1, 1, {texel->r, texel->g, texel->b, 255}});
     s.textures.push_back({0, 0u});

@@ -304,7 +304,7 @@ Material ClearGlass(glm::vec3 tint, glm::vec3 attenuation, float ior) {
   m.ior = ior;
   m.transmission = 1.0f;
   m.attenuation = attenuation;
-  m.flags = shader::kMaterialVolume;
+  m.volume = true;
   return m;
 }
 
@@ -373,7 +373,7 @@ glm::u8vec4 TexturedQuadTexel(int x, int y) {
 Scene TexturedQuadScene() {
   Material m{};
   m.baseColor = glm::vec3(1.0f);
-  m.flags = shader::kMaterialUnlit | shader::kMaterialTextured;
+  m.unlit = true;  // textured by textureRefs below
   const glm::vec3 a(-1, -1, 0), b(1, -1, 0), c(1, 1, 0), d(-1, 1, 0);
   Scene s = MakeScene({{a, b, c, 0}, {a, c, d, 0}}, {m});
   // u from left to right, v from top to bottom (the image's rows).

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "render/light_table.h"
+#include "render/material_packing.h"
 #include "render/octahedral.h"
 #include "render/texture_store.h"
 #include "shared/bsdf.h"
@@ -205,7 +206,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   rs.nodes = std::move(bvh.nodes);
   rs.nodeCopies = bvh.copies;
   rs.bvhStats = bvh.stats;
-  rs.materials = scene.materials;
+  rs.materials = PackMaterials(scene);
   rs.triangles = LeafOrderTriangles(scene, bvh.primOrder, in.kept);
   if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
   AddTextures(scene, options.threads, rs);  // before the light table, which reads emissive textures

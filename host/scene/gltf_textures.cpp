@@ -97,8 +97,6 @@ class TextureReader {
     if (scene_.textureRefs.empty())
       scene_.textureRefs.assign(scene_.materials.size() * shader::kTextureSlots, Unused());
     scene_.textureRefs[m * shader::kTextureSlots + slot.slot] = ref;
-    scene_.materials[m].flags |= shader::kMaterialTextured;
-    if (slot.slot >= shader::kSlotTransmission) scene_.materials[m].flags |= shader::kMaterialExtensionTextured;
   }
 
   // The textureInfo `field` of materials[m]'s extension `extension` (index −1: none).

@@ -14,8 +14,7 @@
 namespace vkpt {
 
 // Fills scene.textureRefs, textures and images (nothing when no material has a texture)
-// and sets kMaterialTextured on the materials that have one. `scene.materials` must be
-// loaded, in glTF order.
+// and each material's normalScale. `scene.materials` must be loaded, in glTF order.
 void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget& budget, Scene& scene);
 
 // Whether some material of the loaded scene has a normal texture (and so its triangles

@@ -9,12 +9,11 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/material.h"
 #include "shared/layout.h"
 #include "util/bounds.h"
 
 namespace vkpt {
-
-using shader::Material;
 
 // World-space triangle; (v1 - v0) × (v2 - v0) is the front-face normal (counter-clockwise
 // winding, already corrected for mirroring transforms).
