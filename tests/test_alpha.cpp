@@ -65,15 +65,14 @@ Scene OccluderScene(const Material& occluder) {
 // bottom right, 128 elsewhere. With alphaCutoff 0.5, 127/255 is cut and 128/255 kept.
 Scene MaskedOccluderScene() {
   Material m = Lambert(0.0f);
-  m.alphaMode = AlphaMode::kMask;  // textured by textureRefs below
+  m.alphaMode = AlphaMode::kMask;
   m.alphaCutoff = 0.5f;
   Scene s = OccluderScene(m);
   auto uv = [](glm::vec3 p) { return glm::vec2(0.5f * (p.x + 1.0f), 0.5f * (1.0f - p.y)); };
   for (const SceneTriangle& t : s.triangles) s.uvs.push_back({{uv(t.v0), uv(t.v1), uv(t.v2)}, {}});
   s.images.push_back({"mask", 2, 2, {0, 0, 0, 127, 0, 0, 0, 128, 0, 0, 0, 128, 0, 0, 0, 127}});
   s.textures.push_back({0, shader::kTextureSrgb});
-  s.textureRefs.assign(2 * shader::kTextureSlots, {shader::kInvalidIndex, 0, 1, 0, 0, 0, 1, 0});
-  s.textureRefs[shader::kTextureSlots + shader::kSlotBaseColor].texture = 0;
+  s.materials[1].baseColorTexture.texture = 0;
   return s;
 }
 

@@ -53,8 +53,9 @@ GltfBuilder TexturedTriangle(const std::string& material, const std::vector<unsi
   return b;
 }
 
-const shader::TextureRef& Ref(const Scene& s, uint32_t material, uint32_t slot) {
-  return s.textureRefs.at(material * shader::kTextureSlots + slot);
+// Slot `slot` of the material as the shaders read it.
+shader::TextureRef Ref(const Scene& s, uint32_t material, uint32_t slot) {
+  return PackMaterials(s).textureRefs.at(material * shader::kTextureSlots + slot);
 }
 
 TEST(MaterialTextures, BaseColorTextureWithItsSamplerAndCoordinates) {
@@ -69,7 +70,7 @@ TEST(MaterialTextures, BaseColorTextureWithItsSamplerAndCoordinates) {
   EXPECT_EQ(s.images[0].width, 2u);
   EXPECT_EQ(s.images[0].rgba,
             (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 128}));
-  const std::vector<shader::Material> packed = PackMaterials(s);
+  const std::vector<shader::Material> packed = PackMaterials(s).materials;
   EXPECT_NE(packed[0].flags & kMaterialTextured, 0u);
   EXPECT_EQ(packed.back().flags & kMaterialTextured, 0u);  // glTF's default material
   const TextureRef& r = Ref(s, 0, kSlotBaseColor);
@@ -131,7 +132,7 @@ TEST(MaterialTextures, ExtensionTexturesFillTheirSlots) {
       R"("extensions":{"KHR_texture_transform":{"offset":[0.5,0]}}}},)"
       R"("KHR_materials_volume":{"thicknessFactor":1,"thicknessTexture":{"index":0}}}})"));
   using namespace shader;
-  EXPECT_NE(PackMaterials(s)[0].flags & kMaterialExtensionTextured, 0u);
+  EXPECT_NE(PackMaterials(s).materials[0].flags & kMaterialExtensionTextured, 0u);
   EXPECT_EQ(Ref(s, 0, kSlotTransmission).texCoord, 1u);
   EXPECT_EQ(Ref(s, 0, kSlotSpecular).texture, Ref(s, 0, kSlotTransmission).texture);  // both data
   EXPECT_EQ(s.textures[Ref(s, 0, kSlotTransmission).texture].sampler & kTextureSrgb, 0u);
@@ -277,7 +278,7 @@ TEST(MaterialTextures, UntexturedScenesHaveNoCoordinates) {
   GltfBuilder b = TexturedTriangle(R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1]}})");
   Scene s = Load(b);
   EXPECT_TRUE(s.uvs.empty());
-  EXPECT_TRUE(s.textureRefs.empty());
+  EXPECT_FALSE(HasMaterialTextures(s));
   EXPECT_TRUE(s.images.empty());
 }
 

@@ -373,7 +373,7 @@ glm::u8vec4 TexturedQuadTexel(int x, int y) {
 Scene TexturedQuadScene() {
   Material m{};
   m.baseColor = glm::vec3(1.0f);
-  m.unlit = true;  // textured by textureRefs below
+  m.unlit = true;
   const glm::vec3 a(-1, -1, 0), b(1, -1, 0), c(1, 1, 0), d(-1, 1, 0);
   Scene s = MakeScene({{a, b, c, 0}, {a, c, d, 0}}, {m});
   // u from left to right, v from top to bottom (the image's rows).
@@ -388,8 +388,7 @@ Scene TexturedQuadScene() {
   s.images.push_back(im);
   s.textures.push_back({0, shader::kTextureSrgb | shader::kWrapClampToEdge << shader::kTextureWrapSShift |
                                shader::kWrapClampToEdge << shader::kTextureWrapTShift});
-  s.textureRefs.assign(shader::kTextureSlots, {shader::kInvalidIndex, 0, 1, 0, 0, 0, 1, 0});
-  s.textureRefs[shader::kSlotBaseColor].texture = 0;
+  s.materials[0].baseColorTexture.texture = 0;
   s.cameras.push_back(OrthographicAlongMinusZ(2.0f, 1.0f));
   return s;
 }

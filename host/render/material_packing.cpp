@@ -3,6 +3,22 @@
 namespace vkpt {
 namespace {
 
+// A material's textures in the order of the shader's slots (kSlotBaseColor …).
+struct SlotTexture {
+  uint32_t slot;
+  MaterialTexture Material::*texture;
+};
+const SlotTexture kSlots[] = {
+    {shader::kSlotBaseColor, &Material::baseColorTexture},
+    {shader::kSlotMetallicRoughness, &Material::metallicRoughnessTexture},
+    {shader::kSlotEmissive, &Material::emissiveTexture},
+    {shader::kSlotNormal, &Material::normalTexture},
+    {shader::kSlotTransmission, &Material::transmissionTexture},
+    {shader::kSlotSpecular, &Material::specularTexture},
+    {shader::kSlotSpecularColor, &Material::specularColorTexture},
+};
+static_assert(sizeof kSlots / sizeof kSlots[0] == shader::kTextureSlots);
+
 uint32_t AlphaBits(AlphaMode mode) {
   switch (mode) {
     case AlphaMode::kMask: return shader::kMaterialAlphaMask;
@@ -14,19 +30,19 @@ uint32_t AlphaBits(AlphaMode mode) {
 // kMaterialTextured when some slot names a texture, and kMaterialExtensionTextured when
 // one of the extensions' slots does: the shaders skip the texture fetches (and the
 // extensions' slots) of the materials without.
-uint32_t TextureBits(const shader::TextureRef* textures) {
+uint32_t TextureBits(const Material& m) {
   uint32_t bits = 0u;
-  for (uint32_t slot = 0; textures && slot < shader::kTextureSlots; ++slot) {
-    if (textures[slot].texture == shader::kInvalidIndex) continue;
+  for (const SlotTexture& s : kSlots) {
+    if (!(m.*s.texture).Present()) continue;
     bits |= shader::kMaterialTextured;
-    if (slot >= shader::kSlotTransmission) bits |= shader::kMaterialExtensionTextured;
+    if (s.slot >= shader::kSlotTransmission) bits |= shader::kMaterialExtensionTextured;
   }
   return bits;
 }
 
 }  // namespace
 
-shader::Material PackMaterial(const Material& m, const shader::TextureRef* textures) {
+shader::Material PackMaterial(const Material& m) {
   shader::Material g{};  // the padding words stay 0
   g.baseColor = m.baseColor;
   g.metallic = m.metallic;
@@ -41,18 +57,25 @@ shader::Material PackMaterial(const Material& m, const shader::TextureRef* textu
   g.alpha = m.alpha;
   g.alphaCutoff = m.alphaCutoff;
   g.flags = (m.doubleSided ? shader::kMaterialDoubleSided : 0u) | (m.unlit ? shader::kMaterialUnlit : 0u) |
-            (m.volume ? shader::kMaterialVolume : 0u) | AlphaBits(m.alphaMode) | TextureBits(textures);
+            (m.volume ? shader::kMaterialVolume : 0u) | AlphaBits(m.alphaMode) | TextureBits(m);
   return g;
 }
 
-std::vector<shader::Material> PackMaterials(const Scene& scene) {
-  std::vector<shader::Material> packed;
-  packed.reserve(scene.materials.size());
-  for (size_t i = 0; i < scene.materials.size(); ++i) {
-    const shader::TextureRef* textures =
-        scene.textureRefs.empty() ? nullptr : &scene.textureRefs.at(i * shader::kTextureSlots);
-    packed.push_back(PackMaterial(scene.materials[i], textures));
+void PackTextureRefs(const Material& m, std::vector<shader::TextureRef>& refs) {
+  for (const SlotTexture& s : kSlots) {
+    const MaterialTexture& t = m.*s.texture;
+    refs.push_back({t.Present() ? t.texture : shader::kInvalidIndex, t.texCoord, t.transformU.x, t.transformU.y,
+                    t.transformU.z, t.transformV.x, t.transformV.y, t.transformV.z});
   }
+}
+
+PackedMaterials PackMaterials(const Scene& scene) {
+  PackedMaterials packed;
+  packed.materials.reserve(scene.materials.size());
+  for (const Material& m : scene.materials) packed.materials.push_back(PackMaterial(m));
+  if (!HasMaterialTextures(scene)) return packed;  // the shaders then read no slots at all
+  packed.textureRefs.reserve(scene.materials.size() * shader::kTextureSlots);
+  for (const Material& m : scene.materials) PackTextureRefs(m, packed.textureRefs);
   return packed;
 }
 

@@ -1,6 +1,6 @@
-// Scene materials (scene/material.h) in the GPU's std430 layout, shader::Material
-// (shaders/shared/layout.h), which both renderers read: the glTF switches become flag
-// bits, and whether the material has textures is worked out from its texture slots.
+// Scene materials (scene/material.h) in the GPU's std430 layout (shaders/shared/layout.h),
+// which both renderers read: shader::Material with the glTF switches as flag bits, and
+// the materials' textures as kTextureSlots shader::TextureRefs each.
 #pragma once
 
 #include <vector>
@@ -10,11 +10,17 @@
 
 namespace vkpt {
 
-// One material; `textures` are its kTextureSlots TextureRefs, or null when the scene
-// has no textures.
-shader::Material PackMaterial(const Material& m, const shader::TextureRef* textures);
+struct PackedMaterials {
+  std::vector<shader::Material> materials;      // one per Scene material, in order
+  std::vector<shader::TextureRef> textureRefs;  // kTextureSlots per material; empty when none has a texture
+};
 
-// Every material of the scene, in order.
-std::vector<shader::Material> PackMaterials(const Scene& scene);
+// One material; kMaterialTextured and kMaterialExtensionTextured follow from its textures.
+shader::Material PackMaterial(const Material& m);
+
+// Its textures, in slot order (kSlotBaseColor …), appended to `refs`.
+void PackTextureRefs(const Material& m, std::vector<shader::TextureRef>& refs);
+
+PackedMaterials PackMaterials(const Scene& scene);
 
 }  // namespace vkpt

@@ -9,16 +9,17 @@
 namespace vkpt {
 namespace {
 
-// A material's use of a texture: which slot, and whether its RGB is colour (sRGB).
+// A material's use of a texture: which of its textures, and whether its RGB is colour (sRGB).
 struct Slot {
-  uint32_t slot;
+  MaterialTexture Material::*texture;
   const char* field;
   bool srgb;
 };
-const Slot kBaseColor{shader::kSlotBaseColor, "pbrMetallicRoughness.baseColorTexture", true};
-const Slot kMetallicRoughness{shader::kSlotMetallicRoughness, "pbrMetallicRoughness.metallicRoughnessTexture", false};
-const Slot kEmissive{shader::kSlotEmissive, "emissiveTexture", true};
-const Slot kNormal{shader::kSlotNormal, "normalTexture", false};
+const Slot kBaseColor{&Material::baseColorTexture, "pbrMetallicRoughness.baseColorTexture", true};
+const Slot kMetallicRoughness{&Material::metallicRoughnessTexture, "pbrMetallicRoughness.metallicRoughnessTexture",
+                              false};
+const Slot kEmissive{&Material::emissiveTexture, "emissiveTexture", true};
+const Slot kNormal{&Material::normalTexture, "normalTexture", false};
 // The material extensions' textures vkpt applies, and where each is read from.
 struct ExtensionSlot {
   Slot slot;
@@ -26,13 +27,13 @@ struct ExtensionSlot {
   const char* field;
 };
 const ExtensionSlot kExtensionSlots[] = {
-    {{shader::kSlotTransmission, "extensions.KHR_materials_transmission.transmissionTexture", false},
+    {{&Material::transmissionTexture, "extensions.KHR_materials_transmission.transmissionTexture", false},
      "KHR_materials_transmission",
      "transmissionTexture"},
-    {{shader::kSlotSpecular, "extensions.KHR_materials_specular.specularTexture", false},
+    {{&Material::specularTexture, "extensions.KHR_materials_specular.specularTexture", false},
      "KHR_materials_specular",
      "specularTexture"},
-    {{shader::kSlotSpecularColor, "extensions.KHR_materials_specular.specularColorTexture", true},
+    {{&Material::specularColorTexture, "extensions.KHR_materials_specular.specularColorTexture", true},
      "KHR_materials_specular",
      "specularColorTexture"},
 };
@@ -87,16 +88,14 @@ class TextureReader {
                                 "] has no PNG or JPEG source; the factor is used alone");
       return;
     }
-    shader::TextureRef ref = Transform(info, what);
+    MaterialTexture ref = Transform(info, what);
     if (ref.texCoord > 1) {
       scene_.warnings.push_back(what + " reads TEXCOORD_" + std::to_string(ref.texCoord) +
                                 "; vkpt reads TEXCOORD_0 and TEXCOORD_1, so the factor is used alone");
       return;
     }
     ref.texture = TextureIndex(info.index, slot.srgb, what);
-    if (scene_.textureRefs.empty())
-      scene_.textureRefs.assign(scene_.materials.size() * shader::kTextureSlots, Unused());
-    scene_.textureRefs[m * shader::kTextureSlots + slot.slot] = ref;
+    scene_.materials[m].*slot.texture = ref;
   }
 
   // The textureInfo `field` of materials[m]'s extension `extension` (index −1: none).
@@ -128,8 +127,6 @@ class TextureReader {
   const std::map<int, std::string>& Users() const { return users_; }
 
  private:
-  static shader::TextureRef Unused() { return {shader::kInvalidIndex, 0u, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f}; }
-
   std::string MaterialName(uint32_t m) const {
     std::string name = "materials[" + std::to_string(m) + "]";
     const std::string& own = src_.m.materials[m].name;
@@ -140,8 +137,8 @@ class TextureReader {
   // T · R · S of the extension's specification, R turning the UVs by `rotation`
   // counter-clockwise as seen with v pointing down (the image's rows), the direction
   // TextureTransformTest checks; the identity without it.
-  shader::TextureRef Transform(const tinygltf::TextureInfo& info, const std::string& what) const {
-    shader::TextureRef ref = Unused();
+  MaterialTexture Transform(const tinygltf::TextureInfo& info, const std::string& what) const {
+    MaterialTexture ref;
     ref.texCoord = uint32_t(std::max(info.texCoord, 0));
     auto ext = info.extensions.find("KHR_texture_transform");
     if (ext == info.extensions.end()) return ref;
@@ -157,14 +154,11 @@ class TextureReader {
       ref.texCoord = uint32_t(tc.GetNumberAsInt());
     }
     const double c = std::cos(rotation), s = std::sin(rotation);
-    ref.m00 = float(c * scale[0]);
-    ref.m01 = float(s * scale[1]);
-    ref.m02 = float(offset[0]);
-    ref.m10 = float(-s * scale[0]);
-    ref.m11 = float(c * scale[1]);
-    ref.m12 = float(offset[1]);
-    for (float x : {ref.m00, ref.m01, ref.m02, ref.m10, ref.m11, ref.m12})
-      if (!std::isfinite(x)) src_.Fail(name + " makes a transform that is not finite in single precision");
+    ref.transformU = glm::vec3(float(c * scale[0]), float(s * scale[1]), float(offset[0]));
+    ref.transformV = glm::vec3(float(-s * scale[0]), float(c * scale[1]), float(offset[1]));
+    for (int i = 0; i < 3; ++i)
+      if (!std::isfinite(ref.transformU[i]) || !std::isfinite(ref.transformV[i]))
+        src_.Fail(name + " makes a transform that is not finite in single precision");
     return ref;
   }
 
@@ -226,8 +220,8 @@ bool IsAppliedExtensionTexture(const std::string& extension, const std::string& 
 }
 
 bool UsesNormalMaps(const Scene& scene) {
-  for (size_t i = shader::kSlotNormal; i < scene.textureRefs.size(); i += shader::kTextureSlots)
-    if (scene.textureRefs[i].texture != shader::kInvalidIndex) return true;
+  for (const Material& m : scene.materials)
+    if (m.normalTexture.Present()) return true;
   return false;
 }
 

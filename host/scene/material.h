@@ -4,6 +4,8 @@
 // (render/material_packing.h); nothing here knows it.
 #pragma once
 
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 namespace vkpt {
@@ -13,6 +15,18 @@ enum class AlphaMode {
   kOpaque,  // alpha is ignored
   kMask,    // the surface is present where alpha >= alphaCutoff
   kBlend,   // the surface is present with probability alpha
+};
+
+// A material's use of a texture (glTF textureInfo): which of Scene::textures, which
+// TEXCOORD set, and KHR_texture_transform as a 2×3 matrix, the texture read at
+// (dot(transformU, (u, v, 1)), dot(transformV, (u, v, 1))). Default: no texture.
+struct MaterialTexture {
+  static constexpr uint32_t kNone = 0xFFFFFFFFu;
+  uint32_t texture = kNone;  // into Scene::textures
+  uint32_t texCoord = 0;     // 0 or 1: vkpt reads TEXCOORD_0 and TEXCOORD_1
+  glm::vec3 transformU{1.0f, 0.0f, 0.0f};
+  glm::vec3 transformV{0.0f, 1.0f, 0.0f};
+  bool Present() const { return texture != kNone; }
 };
 
 // Value-initialised (Material{}), every number is 0: a black, non-emitting diffuse
@@ -38,6 +52,23 @@ struct Material {
   float alphaCutoff = 0.0f;  // kMask: the cut between absent and present
   bool doubleSided = false;
   bool unlit = false;  // KHR_materials_unlit: shows baseColor, reflects nothing
+
+  // The textures that scale the factors above (shared/material_textures.h says how).
+  MaterialTexture baseColorTexture;          // RGB × baseColor, A × alpha (sRGB)
+  MaterialTexture metallicRoughnessTexture;  // G × roughness, B × metallic
+  MaterialTexture emissiveTexture;           // RGB × emission (sRGB)
+  MaterialTexture normalTexture;             // tangent-space normal, scaled by normalScale
+  MaterialTexture transmissionTexture;       // R × transmission
+  MaterialTexture specularTexture;           // A × specular
+  MaterialTexture specularColorTexture;      // RGB × specularColor (sRGB)
+
+  // Whether some texture above is present.
+  bool Textured() const {
+    for (const MaterialTexture* t : {&baseColorTexture, &metallicRoughnessTexture, &emissiveTexture, &normalTexture,
+                                     &transmissionTexture, &specularTexture, &specularColorTexture})
+      if (t->Present()) return true;
+    return false;
+  }
 };
 
 }  // namespace vkpt

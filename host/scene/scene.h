@@ -100,9 +100,7 @@ struct Scene {
   // Parallel to `triangles`, or empty when no material has a normal texture.
   std::vector<VertexTangents> tangents;
   std::vector<Material> materials;
-  // shader::kTextureSlots per material, or empty when no material has a texture.
-  std::vector<shader::TextureRef> textureRefs;
-  std::vector<SceneTexture> textures;  // what TextureRef::texture indexes
+  std::vector<SceneTexture> textures;  // what MaterialTexture::texture indexes
   std::vector<TextureImage> images;
   std::vector<std::string> materialNames;
   std::vector<Camera> cameras;  // in scene-graph order; --camera N picks one
@@ -118,6 +116,13 @@ struct Scene {
   // The loader's memory budget (--max-memory) and what it counted for this scene.
   uint64_t memoryLimit = 0, memoryCounted = 0;
 };
+
+// Whether some material has a texture (and so every triangle has texture coordinates).
+inline bool HasMaterialTextures(const Scene& scene) {
+  for (const Material& m : scene.materials)
+    if (m.Textured()) return true;
+  return false;
+}
 
 // A camera framing the whole scene, for files that define none: looks along −Z at the
 // centre of the bounds from far enough that the bounding sphere fits the view.
