@@ -64,9 +64,9 @@ TEST(MaterialTextures, BaseColorTextureWithItsSamplerAndCoordinates) {
   ASSERT_EQ(s.textures.size(), 1u);
   ASSERT_EQ(s.images.size(), 1u);
   using namespace shader;
-  EXPECT_EQ(s.textures[0].sampler, kTextureSrgb | kWrapClampToEdge << kTextureWrapSShift |
-                                       kWrapMirroredRepeat << kTextureWrapTShift | kTextureMinLinear |
-                                       kTextureMipNearest);
+  EXPECT_EQ(PackSampler(s.textures[0]), kTextureSrgb | kWrapClampToEdge << kTextureWrapSShift |
+                                            kWrapMirroredRepeat << kTextureWrapTShift | kTextureMinLinear |
+                                            kTextureMipNearest);
   EXPECT_EQ(s.images[0].width, 2u);
   EXPECT_EQ(s.images[0].rgba,
             (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 128}));
@@ -92,7 +92,7 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   using namespace shader;
   Scene s;
   s.images.push_back({"texel", 1, 1, {51, 102, 153, 204}});
-  s.textures = {{0, 0u}, {0, kTextureSrgb}};
+  s.textures = {TextureWithMode(0, 0u), TextureWithMode(0, kTextureSrgb)};
   RenderScene rs = TexturesOnly(s);
   const bool colour[kTextureSlots] = {true, false, true, false, false, false, true};
   for (uint32_t slot = 0; slot < kTextureSlots; ++slot)
@@ -135,8 +135,8 @@ TEST(MaterialTextures, ExtensionTexturesFillTheirSlots) {
   EXPECT_NE(PackMaterials(s).materials[0].flags & kMaterialExtensionTextured, 0u);
   EXPECT_EQ(Ref(s, 0, kSlotTransmission).texCoord, 1u);
   EXPECT_EQ(Ref(s, 0, kSlotSpecular).texture, Ref(s, 0, kSlotTransmission).texture);  // both data
-  EXPECT_EQ(s.textures[Ref(s, 0, kSlotTransmission).texture].sampler & kTextureSrgb, 0u);
-  EXPECT_NE(s.textures[Ref(s, 0, kSlotSpecularColor).texture].sampler & kTextureSrgb, 0u);
+  EXPECT_FALSE(s.textures[Ref(s, 0, kSlotTransmission).texture].srgb);
+  EXPECT_TRUE(s.textures[Ref(s, 0, kSlotSpecularColor).texture].srgb);
   EXPECT_EQ(Ref(s, 0, kSlotSpecularColor).m02, 0.5f);
   EXPECT_EQ(Ref(s, 0, kSlotBaseColor).texture, kInvalidIndex);
   std::string ignored;
@@ -161,7 +161,7 @@ TEST(MaterialTextures, NoSamplerMeansRepeatAndTrilinear) {
   Scene s = Load(TexturedTriangle(R"({"emissiveTexture":{"index":0}})"));
   ASSERT_EQ(s.textures.size(), 1u);
   using namespace shader;
-  EXPECT_EQ(s.textures[0].sampler, kTextureSrgb | kTextureMagLinear | kTextureMinLinear | kTextureMipLinear);
+  EXPECT_EQ(PackSampler(s.textures[0]), kTextureSrgb | kTextureMagLinear | kTextureMinLinear | kTextureMipLinear);
   EXPECT_EQ(Ref(s, 0, kSlotEmissive).texture, 0u);
 }
 
@@ -171,8 +171,8 @@ TEST(MaterialTextures, ColourAndDataUsesOfOneImage) {
       R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0},"metallicRoughnessTexture":{"index":0}}})"));
   ASSERT_EQ(s.textures.size(), 2u);
   EXPECT_EQ(s.images.size(), 1u);
-  EXPECT_NE(s.textures[Ref(s, 0, shader::kSlotBaseColor).texture].sampler & shader::kTextureSrgb, 0u);
-  EXPECT_EQ(s.textures[Ref(s, 0, shader::kSlotMetallicRoughness).texture].sampler & shader::kTextureSrgb, 0u);
+  EXPECT_TRUE(s.textures[Ref(s, 0, shader::kSlotBaseColor).texture].srgb);
+  EXPECT_FALSE(s.textures[Ref(s, 0, shader::kSlotMetallicRoughness).texture].srgb);
   EXPECT_EQ(s.textures[0].image, s.textures[1].image);
 }
 

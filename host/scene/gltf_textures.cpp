@@ -38,36 +38,43 @@ const ExtensionSlot kExtensionSlots[] = {
      "specularColorTexture"},
 };
 
-uint32_t WrapMode(int gl, const std::string& what, const GltfSource& src) {
+using Wrap = TextureSampler::Wrap;
+using Mip = TextureSampler::Mip;
+
+Wrap WrapMode(int gl, const std::string& what, const GltfSource& src) {
   switch (gl) {
-    case TINYGLTF_TEXTURE_WRAP_REPEAT: return shader::kWrapRepeat;
-    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return shader::kWrapClampToEdge;
-    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return shader::kWrapMirroredRepeat;
+    case TINYGLTF_TEXTURE_WRAP_REPEAT: return Wrap::kRepeat;
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::kClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::kMirroredRepeat;
     default: src.Fail(what + " is " + std::to_string(gl) + ", not a glTF wrap mode");
   }
 }
 
-// A sampler's modes as shader::Texture sampler bits. Without a sampler, or a filter,
-// glTF leaves the choice to the renderer: repeat, and trilinear filtering.
-uint32_t SamplerBits(const GltfSource& src, int sampler) {
-  if (sampler < 0) return shader::kTextureMagLinear | shader::kTextureMinLinear | shader::kTextureMipLinear;
+// A sampler's modes. Without a sampler, or a filter, glTF leaves the choice to the
+// renderer: TextureSampler's defaults.
+TextureSampler ReadSampler(const GltfSource& src, int sampler) {
+  TextureSampler out;
+  if (sampler < 0) return out;
   const tinygltf::Sampler& s = src.m.samplers[sampler];
   const std::string name = "samplers[" + std::to_string(sampler) + "]";
-  uint32_t bits = WrapMode(s.wrapS, name + ".wrapS", src) << shader::kTextureWrapSShift |
-                  WrapMode(s.wrapT, name + ".wrapT", src) << shader::kTextureWrapTShift;
-  if (s.magFilter == -1 || s.magFilter == TINYGLTF_TEXTURE_FILTER_LINEAR) bits |= shader::kTextureMagLinear;
-  else if (s.magFilter != TINYGLTF_TEXTURE_FILTER_NEAREST)
+  out.wrapS = WrapMode(s.wrapS, name + ".wrapS", src);
+  out.wrapT = WrapMode(s.wrapT, name + ".wrapT", src);
+  if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.magLinear = false;
+  else if (s.magFilter != -1 && s.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
     src.Fail(name + ".magFilter is " + std::to_string(s.magFilter) + ", not NEAREST (9728) or LINEAR (9729)");
+  auto min = [&](bool linear, Mip mip) {
+    out.minLinear = linear;
+    out.mip = mip;
+    return out;
+  };
   switch (s.minFilter) {
     case -1:
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
-      return bits | shader::kTextureMinLinear | shader::kTextureMipLinear;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST: return bits;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR: return bits | shader::kTextureMinLinear;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return bits | shader::kTextureMipNearest;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
-      return bits | shader::kTextureMinLinear | shader::kTextureMipNearest;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return bits | shader::kTextureMipLinear;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: return min(true, Mip::kLinear);
+    case TINYGLTF_TEXTURE_FILTER_NEAREST: return min(false, Mip::kNone);
+    case TINYGLTF_TEXTURE_FILTER_LINEAR: return min(true, Mip::kNone);
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return min(false, Mip::kNearest);
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: return min(true, Mip::kNearest);
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return min(false, Mip::kLinear);
     default: src.Fail(name + ".minFilter is " + std::to_string(s.minFilter) + ", not a glTF minification filter");
   }
 }
@@ -179,8 +186,7 @@ class TextureReader {
     auto [it, added] = textures_.try_emplace({gltfTexture, srgb}, uint32_t(scene_.textures.size()));
     if (added) {
       const tinygltf::Texture& tex = src_.m.textures[gltfTexture];
-      scene_.textures.push_back(
-          {uint32_t(tex.source), SamplerBits(src_, tex.sampler) | (srgb ? shader::kTextureSrgb : 0u)});
+      scene_.textures.push_back({uint32_t(tex.source), ReadSampler(src_, tex.sampler), srgb});
       users_.try_emplace(tex.source, what);
     }
     return it->second;

@@ -10,7 +10,6 @@
 #include <glm/glm.hpp>
 
 #include "scene/material.h"
-#include "shared/layout.h"
 #include "util/bounds.h"
 
 namespace vkpt {
@@ -54,12 +53,24 @@ struct TextureImage {
   std::vector<uint8_t> rgba;
 };
 
-// A glTF texture as the materials use it: its image, its sampler as shader::Texture
-// sampler bits (wrap modes, filters; the level count is the renderer's) and whether its
-// RGB is sRGB-encoded colour. A glTF texture used both as colour and as data becomes two.
+// A glTF sampler (§3.8.3): wrap modes and filters. The defaults are what glTF leaves to
+// the renderer when a texture has no sampler, or a sampler no filter: repeat, trilinear.
+struct TextureSampler {
+  enum class Wrap { kRepeat, kClampToEdge, kMirroredRepeat };
+  // minFilter's choice between mip levels: none (level 0 only), the nearest, or a blend of two.
+  enum class Mip { kNone, kNearest, kLinear };
+  Wrap wrapS = Wrap::kRepeat, wrapT = Wrap::kRepeat;
+  bool magLinear = true;  // magFilter LINEAR; false: NEAREST
+  bool minLinear = true;  // minFilter within a level LINEAR; false: NEAREST
+  Mip mip = Mip::kLinear;
+};
+
+// A glTF texture as the materials use it: its image, its sampler and whether its RGB is
+// sRGB-encoded colour. A glTF texture used both as colour and as data becomes two.
 struct SceneTexture {
   uint32_t image = 0;  // into Scene::images
-  uint32_t sampler = 0;
+  TextureSampler sampler;
+  bool srgb = false;
 };
 
 struct Camera {
