@@ -62,19 +62,19 @@ TextureSampler ReadSampler(const GltfSource& src, int sampler) {
   if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.magLinear = false;
   else if (s.magFilter != -1 && s.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
     src.Fail(name + ".magFilter is " + std::to_string(s.magFilter) + ", not NEAREST (9728) or LINEAR (9729)");
-  auto min = [&](bool linear, Mip mip) {
+  auto minify = [&](bool linear, Mip mip) {
     out.minLinear = linear;
     out.mip = mip;
     return out;
   };
   switch (s.minFilter) {
     case -1:
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: return min(true, Mip::kLinear);
-    case TINYGLTF_TEXTURE_FILTER_NEAREST: return min(false, Mip::kNone);
-    case TINYGLTF_TEXTURE_FILTER_LINEAR: return min(true, Mip::kNone);
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return min(false, Mip::kNearest);
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: return min(true, Mip::kNearest);
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return min(false, Mip::kLinear);
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: return minify(true, Mip::kLinear);
+    case TINYGLTF_TEXTURE_FILTER_NEAREST: return minify(false, Mip::kNone);
+    case TINYGLTF_TEXTURE_FILTER_LINEAR: return minify(true, Mip::kNone);
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return minify(false, Mip::kNearest);
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: return minify(true, Mip::kNearest);
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return minify(false, Mip::kLinear);
     default: src.Fail(name + ".minFilter is " + std::to_string(s.minFilter) + ", not a glTF minification filter");
   }
 }
