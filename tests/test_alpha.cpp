@@ -65,22 +65,21 @@ Scene OccluderScene(const Material& occluder) {
 // bottom right, 128 elsewhere. With alphaCutoff 0.5, 127/255 is cut and 128/255 kept.
 Scene MaskedOccluderScene() {
   Material m = Lambert(0.0f);
-  m.flags = shader::kMaterialAlphaMask | shader::kMaterialTextured;
+  m.alphaMode = AlphaMode::kMask;
   m.alphaCutoff = 0.5f;
   Scene s = OccluderScene(m);
   auto uv = [](glm::vec3 p) { return glm::vec2(0.5f * (p.x + 1.0f), 0.5f * (1.0f - p.y)); };
   for (const SceneTriangle& t : s.triangles) s.uvs.push_back({{uv(t.v0), uv(t.v1), uv(t.v2)}, {}});
   s.images.push_back({"mask", 2, 2, {0, 0, 0, 127, 0, 0, 0, 128, 0, 0, 0, 128, 0, 0, 0, 127}});
-  s.textures.push_back({0, shader::kTextureSrgb});
-  s.textureRefs.assign(2 * shader::kTextureSlots, {shader::kInvalidIndex, 0, 1, 0, 0, 0, 1, 0});
-  s.textureRefs[shader::kTextureSlots + shader::kSlotBaseColor].texture = 0;
+  s.textures.push_back(TextureWithMode(0, shader::kTextureSrgb));
+  s.materials[1].baseColorTexture.texture = 0;
   return s;
 }
 
 // The occluder BLEND with α = 0.3: baseColorFactor's 0.6 times COLOR_0's 0.5.
 Scene BlendedOccluderScene() {
   Material m = Lambert(0.0f);
-  m.flags = shader::kMaterialAlphaBlend;
+  m.alphaMode = AlphaMode::kBlend;
   m.alpha = 0.6f;
   Scene s = OccluderScene(m);
   const glm::vec4 half(1.0f, 1.0f, 1.0f, 0.5f);
@@ -139,7 +138,7 @@ Scene EmitterScene(bool blended) {
   Material emitter = Lambert(0.0f);
   emitter.emission = glm::vec3(blended ? 1.0f : 0.4f);
   if (blended) {
-    emitter.flags = shader::kMaterialAlphaBlend;
+    emitter.alphaMode = AlphaMode::kBlend;
     emitter.alpha = 0.4f;
   }
   std::vector<SceneTriangle> tris;
@@ -189,11 +188,11 @@ TEST_F(AlphaGpu, MaskAndBlendRenderAsOnTheCpu) {
       differing += glm::any(glm::greaterThan(glm::abs(g.pixels[i] - c.pixels[i]), glm::vec3(1e-5 * kLitFloor)));
     const ImageComparison cmp = CompareImages(c, g);
     std::printf("%s occluder: %d of %zu pixels differ beyond rounding; %s\n",
-                s.materials[1].flags & shader::kMaterialAlphaMask ? "MASK" : "BLEND", differing, g.pixels.size(),
+                s.materials[1].alphaMode == AlphaMode::kMask ? "MASK" : "BLEND", differing, g.pixels.size(),
                 cmp.Summary().c_str());
     EXPECT_EQ(differing, 0);
     EXPECT_TRUE(cmp.lockstepAgree);
-    if (s.materials[1].flags & shader::kMaterialAlphaMask) {
+    if (s.materials[1].alphaMode == AlphaMode::kMask) {
       EXPECT_EQ(PixelsOffMask(g), 0);
     }
   }

@@ -20,6 +20,7 @@ namespace vkpt {
 namespace {
 
 using namespace shader;
+using shader::Material;  // the GPU layout the BSDF reads, not the Scene's
 
 Material MakeMaterial(vec3 baseColor, float metallic, float roughness, float specular, float ior,
                       vec3 specularColor = vec3(1.0f)) {

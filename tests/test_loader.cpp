@@ -419,13 +419,13 @@ TEST(Loader, MaterialFactors) {
   const Material& plain = s.materials[s.triangles[0].material];
   EXPECT_TRUE(Near(plain.baseColor, {0.2f, 0.4f, 0.6f}));
   EXPECT_TRUE(Near(plain.emission, {0, 0, 0}));
-  EXPECT_EQ(plain.flags & shader::kMaterialDoubleSided, 0u);
+  EXPECT_FALSE(plain.doubleSided);
   EXPECT_EQ(s.materialNames[s.triangles[0].material], "plain");
 
   const Material& glow = s.materials[s.triangles[1].material];
   EXPECT_TRUE(Near(glow.emission, {4.0f, 2.0f, 1.0f})) << "emissiveFactor × emissiveStrength";
   EXPECT_TRUE(Near(glow.baseColor, {1, 1, 1}));  // baseColorFactor defaults to white
-  EXPECT_NE(glow.flags & shader::kMaterialDoubleSided, 0u);
+  EXPECT_TRUE(glow.doubleSided);
 
   // No material: glTF's default material, white and non-emissive.
   EXPECT_NE(s.triangles[2].material, s.triangles[0].material);
@@ -433,7 +433,7 @@ TEST(Loader, MaterialFactors) {
   const Material& def = s.materials[s.triangles[2].material];
   EXPECT_TRUE(Near(def.baseColor, {1, 1, 1}));
   EXPECT_TRUE(Near(def.emission, {0, 0, 0}));
-  EXPECT_EQ(def.flags & shader::kMaterialDoubleSided, 0u);
+  EXPECT_FALSE(def.doubleSided);
 }
 
 TEST(Loader, EmissiveStrengthWithoutFactorStaysBlack) {
@@ -465,11 +465,11 @@ TEST(Loader, TransmissionAndVolume) {
   ASSERT_EQ(s.triangles.size(), 2u);
   const Material& thin = s.materials[s.triangles[0].material];
   EXPECT_FLOAT_EQ(thin.transmission, 0.75f);
-  EXPECT_EQ(thin.flags & shader::kMaterialVolume, 0u) << "no thickness: a thin wall";
+  EXPECT_FALSE(thin.volume) << "no thickness: a thin wall";
   EXPECT_TRUE(Near(thin.attenuation, {0, 0, 0}));
   const Material& glass = s.materials[s.triangles[1].material];
   EXPECT_FLOAT_EQ(glass.transmission, 1.0f);
-  EXPECT_NE(glass.flags & shader::kMaterialVolume, 0u);
+  EXPECT_TRUE(glass.volume);
   EXPECT_TRUE(Near(glass.attenuation, {std::log(2.0f) / 2.0f, 0.0f, std::log(4.0f) / 2.0f}));
   EXPECT_TRUE(s.ignoredFeatures.empty()) << s.ignoredFeatures[0];
 }

@@ -14,6 +14,7 @@
 #include "cpu/path_tracer.h"
 #include "gltf_builder.h"
 #include "png_writer.h"
+#include "render/material_packing.h"
 #include "render/render_scene.h"
 #include "render/scene_access.h"
 #include "render/texture_store.h"
@@ -52,8 +53,9 @@ GltfBuilder TexturedTriangle(const std::string& material, const std::vector<unsi
   return b;
 }
 
-const shader::TextureRef& Ref(const Scene& s, uint32_t material, uint32_t slot) {
-  return s.textureRefs.at(material * shader::kTextureSlots + slot);
+// Slot `slot` of the material as the shaders read it.
+shader::TextureRef Ref(const Scene& s, uint32_t material, uint32_t slot) {
+  return PackMaterials(s).textureRefs.at(material * shader::kTextureSlots + slot);
 }
 
 TEST(MaterialTextures, BaseColorTextureWithItsSamplerAndCoordinates) {
@@ -62,14 +64,15 @@ TEST(MaterialTextures, BaseColorTextureWithItsSamplerAndCoordinates) {
   ASSERT_EQ(s.textures.size(), 1u);
   ASSERT_EQ(s.images.size(), 1u);
   using namespace shader;
-  EXPECT_EQ(s.textures[0].sampler, kTextureSrgb | kWrapClampToEdge << kTextureWrapSShift |
-                                       kWrapMirroredRepeat << kTextureWrapTShift | kTextureMinLinear |
-                                       kTextureMipNearest);
+  EXPECT_EQ(PackSampler(s.textures[0]), kTextureSrgb | kWrapClampToEdge << kTextureWrapSShift |
+                                            kWrapMirroredRepeat << kTextureWrapTShift | kTextureMinLinear |
+                                            kTextureMipNearest);
   EXPECT_EQ(s.images[0].width, 2u);
   EXPECT_EQ(s.images[0].rgba,
             (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 128}));
-  EXPECT_NE(s.materials[0].flags & kMaterialTextured, 0u);
-  EXPECT_EQ(s.materials.back().flags & kMaterialTextured, 0u);  // glTF's default material
+  const std::vector<shader::Material> packed = PackMaterials(s).materials;
+  EXPECT_NE(packed[0].flags & kMaterialTextured, 0u);
+  EXPECT_EQ(packed.back().flags & kMaterialTextured, 0u);  // glTF's default material
   const TextureRef& r = Ref(s, 0, kSlotBaseColor);
   EXPECT_EQ(r.texture, 0u);
   EXPECT_EQ(r.texCoord, 1u);
@@ -89,13 +92,13 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   using namespace shader;
   Scene s;
   s.images.push_back({"texel", 1, 1, {51, 102, 153, 204}});
-  s.textures = {{0, 0u}, {0, kTextureSrgb}};
+  s.textures = {TextureWithMode(0, 0u), TextureWithMode(0, kTextureSrgb)};
   RenderScene rs = TexturesOnly(s);
   const bool colour[kTextureSlots] = {true, false, true, false, false, false, true};
   for (uint32_t slot = 0; slot < kTextureSlots; ++slot)
     rs.textureRefs.push_back({colour[slot] ? 1u : 0u, 0, 1, 0, 0, 0, 1, 0});
   rs.uvs.push_back({});
-  Material m{};
+  shader::Material m{};
   m.baseColor = m.emission = m.specularColor = glm::vec3(1.0f);
   m.metallic = m.roughness = m.transmission = m.specular = 1.0f;
   m.flags = kMaterialTextured | kMaterialExtensionTextured;
@@ -111,7 +114,7 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   EXPECT_EQ(m.specular, data(204));     // A
   EXPECT_EQ(m.specularColor, srgb);
   // Without kMaterialExtensionTextured the extensions' slots are not read.
-  Material plain{};
+  shader::Material plain{};
   plain.transmission = plain.specular = 1.0f;
   plain.specularColor = glm::vec3(1.0f);
   plain.flags = kMaterialTextured;
@@ -129,11 +132,11 @@ TEST(MaterialTextures, ExtensionTexturesFillTheirSlots) {
       R"("extensions":{"KHR_texture_transform":{"offset":[0.5,0]}}}},)"
       R"("KHR_materials_volume":{"thicknessFactor":1,"thicknessTexture":{"index":0}}}})"));
   using namespace shader;
-  EXPECT_NE(s.materials[0].flags & kMaterialExtensionTextured, 0u);
+  EXPECT_NE(PackMaterials(s).materials[0].flags & kMaterialExtensionTextured, 0u);
   EXPECT_EQ(Ref(s, 0, kSlotTransmission).texCoord, 1u);
   EXPECT_EQ(Ref(s, 0, kSlotSpecular).texture, Ref(s, 0, kSlotTransmission).texture);  // both data
-  EXPECT_EQ(s.textures[Ref(s, 0, kSlotTransmission).texture].sampler & kTextureSrgb, 0u);
-  EXPECT_NE(s.textures[Ref(s, 0, kSlotSpecularColor).texture].sampler & kTextureSrgb, 0u);
+  EXPECT_FALSE(s.textures[Ref(s, 0, kSlotTransmission).texture].srgb);
+  EXPECT_TRUE(s.textures[Ref(s, 0, kSlotSpecularColor).texture].srgb);
   EXPECT_EQ(Ref(s, 0, kSlotSpecularColor).m02, 0.5f);
   EXPECT_EQ(Ref(s, 0, kSlotBaseColor).texture, kInvalidIndex);
   std::string ignored;
@@ -158,7 +161,7 @@ TEST(MaterialTextures, NoSamplerMeansRepeatAndTrilinear) {
   Scene s = Load(TexturedTriangle(R"({"emissiveTexture":{"index":0}})"));
   ASSERT_EQ(s.textures.size(), 1u);
   using namespace shader;
-  EXPECT_EQ(s.textures[0].sampler, kTextureSrgb | kTextureMagLinear | kTextureMinLinear | kTextureMipLinear);
+  EXPECT_EQ(PackSampler(s.textures[0]), kTextureSrgb | kTextureMagLinear | kTextureMinLinear | kTextureMipLinear);
   EXPECT_EQ(Ref(s, 0, kSlotEmissive).texture, 0u);
 }
 
@@ -168,8 +171,8 @@ TEST(MaterialTextures, ColourAndDataUsesOfOneImage) {
       R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0},"metallicRoughnessTexture":{"index":0}}})"));
   ASSERT_EQ(s.textures.size(), 2u);
   EXPECT_EQ(s.images.size(), 1u);
-  EXPECT_NE(s.textures[Ref(s, 0, shader::kSlotBaseColor).texture].sampler & shader::kTextureSrgb, 0u);
-  EXPECT_EQ(s.textures[Ref(s, 0, shader::kSlotMetallicRoughness).texture].sampler & shader::kTextureSrgb, 0u);
+  EXPECT_TRUE(s.textures[Ref(s, 0, shader::kSlotBaseColor).texture].srgb);
+  EXPECT_FALSE(s.textures[Ref(s, 0, shader::kSlotMetallicRoughness).texture].srgb);
   EXPECT_EQ(s.textures[0].image, s.textures[1].image);
 }
 
@@ -275,7 +278,7 @@ TEST(MaterialTextures, UntexturedScenesHaveNoCoordinates) {
   GltfBuilder b = TexturedTriangle(R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1]}})");
   Scene s = Load(b);
   EXPECT_TRUE(s.uvs.empty());
-  EXPECT_TRUE(s.textureRefs.empty());
+  EXPECT_FALSE(HasMaterialTextures(s));
   EXPECT_TRUE(s.images.empty());
 }
 

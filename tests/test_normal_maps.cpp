@@ -37,12 +37,10 @@ Scene LitSquare(glm::vec3 toLight, const glm::u8vec3* texel, glm::vec4 tangent, 
   light.intensity = glm::vec3(1.0f);
   s.lights.push_back(light);
   if (texel) {
-    s.materials[0].flags |= shader::kMaterialTextured;
     s.materials[0].normalScale = scale;
     s.images.push_back({"normal", 1, 1, {texel->r, texel->g, texel->b, 255}});
-    s.textures.push_back({0, 0u});
-    s.textureRefs.assign(shader::kTextureSlots, {shader::kInvalidIndex, 0, 1, 0, 0, 0, 1, 0});
-    s.textureRefs[shader::kSlotNormal].texture = 0;
+    s.textures.push_back(test::TextureWithMode(0, 0u));
+    s.materials[0].normalTexture.texture = 0;
     s.uvs.assign(2, VertexUVs{});
     s.tangents.assign(2, VertexTangents{{tangent, tangent, tangent}});
   }

@@ -83,7 +83,7 @@ Scene MipQuadScene() {
   im.rgba.resize(64 * 64 * 4);
   std::mt19937 rng(5);
   for (uint8_t& b : im.rgba) b = uint8_t(rng());
-  s.textures[0].sampler = shader::kTextureMipNearest;
+  s.textures[0] = test::TextureWithMode(0, shader::kTextureMipNearest);
   return s;
 }
 

@@ -101,13 +101,13 @@ TEST(Sampling, TriangleSamplingIsUniformInArea) {
 // table's pmf is exactly what the CDF search realises.
 TEST(Sampling, LightSelectionFollowsPower) {
   std::vector<SceneTriangle> tris;
-  std::vector<Material> mats;
+  std::vector<vkpt::Material> mats;
   std::mt19937 rng(4);
   std::uniform_real_distribution<float> u(0.1f, 2.0f);
   for (int i = 0; i < 40; ++i) {
-    Material m{};
+    vkpt::Material m{};
     m.emission = i % 5 == 0 ? glm::vec3(0.0f) : glm::vec3(u(rng), u(rng), u(rng));
-    m.flags = i % 3 == 0 ? kMaterialDoubleSided : 0u;
+    m.doubleSided = i % 3 == 0;
     mats.push_back(m);
     float s = u(rng);
     glm::vec3 o(float(i) * 3.0f, 0.0f, 0.0f);
@@ -118,7 +118,7 @@ TEST(Sampling, LightSelectionFollowsPower) {
   double total = 0.0;
   std::vector<double> power;
   for (const Light& l : rs.lights) {
-    const Material& m = rs.materials[rs.triangles[l.triangle].material];
+    const shader::Material& m = rs.materials[rs.triangles[l.triangle].material];
     double w = l.extent * Luminance(m.emission) * ((m.flags & kMaterialDoubleSided) ? 2.0 : 1.0);
     power.push_back(w);
     total += w;

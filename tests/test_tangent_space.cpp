@@ -260,8 +260,8 @@ Agreement CompareWithFile(const std::string& path) {
   std::vector<glm::vec4> supplied;
   for (size_t i = 0; i < scene.triangles.size(); ++i) {
     const SceneTriangle& t = scene.triangles[i];
-    const shader::TextureRef& ref = scene.textureRefs[t.material * shader::kTextureSlots + shader::kSlotNormal];
-    if (ref.texture == shader::kInvalidIndex || scene.normals.empty() || !scene.normals[i].Present()) continue;
+    const MaterialTexture& ref = scene.materials[t.material].normalTexture;
+    if (!ref.Present() || scene.normals.empty() || !scene.normals[i].Present()) continue;
     const VertexNormals& n = scene.normals[i];
     positions.insert(positions.end(), {t.v0, t.v1, t.v2});
     normals.insert(normals.end(), {n.n0, n.n1, n.n2});

@@ -24,7 +24,7 @@ constexpr uint32_t kLinearFilters = shader::kTextureMagLinear | shader::kTexture
 RenderScene OneTexture(uint32_t w, uint32_t h, const std::vector<uint8_t>& bytes, uint32_t mode) {
   Scene s;
   s.images.push_back({"test", w, h, bytes});
-  s.textures.push_back({0, mode});
+  s.textures.push_back(test::TextureWithMode(0, mode));
   return test::TexturesOnly(s);
 }
 

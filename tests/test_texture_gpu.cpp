@@ -54,7 +54,8 @@ RenderScene AllKindsOfTextures(std::mt19937& rng) {
         for (uint32_t min : minFilters) {
           const uint32_t srgb = rng() % 2 ? kTextureSrgb : 0u;
           const uint32_t image = uint32_t(rng() % s.images.size());
-          s.textures.push_back({image, wrapS << kTextureWrapSShift | wrapT << kTextureWrapTShift | mag | min | srgb});
+          s.textures.push_back(test::TextureWithMode(
+              image, wrapS << kTextureWrapSShift | wrapT << kTextureWrapTShift | mag | min | srgb));
         }
   return test::TexturesOnly(s);
 }

@@ -332,7 +332,7 @@ Material ClearGlass(glm::vec3 tint, glm::vec3 attenuation, float ior) {
   m.ior = ior;
   m.transmission = 1.0f;
   m.attenuation = attenuation;
-  m.flags = shader::kMaterialVolume;
+  m.volume = true;
   return m;
 }
 
@@ -401,7 +401,7 @@ glm::u8vec4 TexturedQuadTexel(int x, int y) {
 Scene TexturedQuadScene() {
   Material m{};
   m.baseColor = glm::vec3(1.0f);
-  m.flags = shader::kMaterialUnlit | shader::kMaterialTextured;
+  m.unlit = true;
   const glm::vec3 a(-1, -1, 0), b(1, -1, 0), c(1, 1, 0), d(-1, 1, 0);
   Scene s = MakeScene({{a, b, c, 0}, {a, c, d, 0}}, {m});
   // u from left to right, v from top to bottom (the image's rows).
@@ -414,10 +414,10 @@ Scene TexturedQuadScene() {
       im.rgba.insert(im.rgba.end(), {t.r, t.g, t.b, t.a});
     }
   s.images.push_back(im);
-  s.textures.push_back({0, shader::kTextureSrgb | shader::kWrapClampToEdge << shader::kTextureWrapSShift |
-                               shader::kWrapClampToEdge << shader::kTextureWrapTShift});
-  s.textureRefs.assign(shader::kTextureSlots, {shader::kInvalidIndex, 0, 1, 0, 0, 0, 1, 0});
-  s.textureRefs[shader::kSlotBaseColor].texture = 0;
+  s.textures.push_back(TextureWithMode(0, shader::kTextureSrgb |
+                                              shader::kWrapClampToEdge << shader::kTextureWrapSShift |
+                                              shader::kWrapClampToEdge << shader::kTextureWrapTShift));
+  s.materials[0].baseColorTexture.texture = 0;
   s.cameras.push_back(OrthographicAlongMinusZ(2.0f, 1.0f));
   return s;
 }
@@ -441,6 +441,23 @@ shader::FrameParams TestFrame(const RenderScene& rs, const Scene& s, uint32_t si
   p.maxDepth = depth;
   p.rrDepth = depth;
   return p;
+}
+
+SceneTexture TextureWithMode(uint32_t image, uint32_t mode) {
+  using Wrap = TextureSampler::Wrap;
+  const Wrap wraps[3] = {Wrap::kRepeat, Wrap::kClampToEdge, Wrap::kMirroredRepeat};
+  SceneTexture t;
+  t.image = image;
+  t.sampler.wrapS = wraps[(mode >> shader::kTextureWrapSShift) & 3u];
+  t.sampler.wrapT = wraps[(mode >> shader::kTextureWrapTShift) & 3u];
+  t.sampler.magLinear = (mode & shader::kTextureMagLinear) != 0u;
+  t.sampler.minLinear = (mode & shader::kTextureMinLinear) != 0u;
+  t.sampler.mip = (mode & shader::kTextureMipNearest)  ? TextureSampler::Mip::kNearest
+                  : (mode & shader::kTextureMipLinear) ? TextureSampler::Mip::kLinear
+                                                       : TextureSampler::Mip::kNone;
+  t.srgb = (mode & shader::kTextureSrgb) != 0u;
+  EXPECT_EQ(PackSampler(t), mode) << "not a sampler's mode bits";
+  return t;
 }
 
 RenderScene TexturesOnly(const Scene& s) {

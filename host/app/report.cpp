@@ -15,9 +15,9 @@ namespace {
 // " alpha MASK (cutoff c)", " alpha BLEND", or nothing for OPAQUE; with the factor's alpha.
 std::string AlphaNote(const Material& m) {
   char note[64] = "";
-  if (m.flags & shader::kMaterialAlphaMask)
+  if (m.alphaMode == AlphaMode::kMask)
     std::snprintf(note, sizeof note, " alpha MASK %.3g (cutoff %.3g)", m.alpha, m.alphaCutoff);
-  else if (m.flags & shader::kMaterialAlphaBlend) std::snprintf(note, sizeof note, " alpha BLEND %.3g", m.alpha);
+  else if (m.alphaMode == AlphaMode::kBlend) std::snprintf(note, sizeof note, " alpha BLEND %.3g", m.alpha);
   return note;
 }
 
@@ -89,9 +89,8 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
         "  material %zu \"%s\": baseColor (%.4g, %.4g, %.4g) metallic %.3g roughness %.3g specular %.3g ior %.3g "
         "transmission %.3g%s emission (%.6g, %.6g, %.6g)%s%s%s\n",
         i, scene.materialNames[i].c_str(), m.baseColor.x, m.baseColor.y, m.baseColor.z, m.metallic, m.roughness,
-        m.specular, m.ior, m.transmission, (m.flags & shader::kMaterialVolume) ? " (volume)" : "", m.emission.x,
-        m.emission.y, m.emission.z, (m.flags & shader::kMaterialDoubleSided) ? " double-sided" : "",
-        (m.flags & shader::kMaterialUnlit) ? " unlit" : "", AlphaNote(m).c_str());
+        m.specular, m.ior, m.transmission, m.volume ? " (volume)" : "", m.emission.x, m.emission.y, m.emission.z,
+        m.doubleSided ? " double-sided" : "", m.unlit ? " unlit" : "", AlphaNote(m).c_str());
   }
   if (!scene.colors.empty()) std::printf("  vertex colours (COLOR_0): multiply the base colour\n");
   if (!scene.textures.empty()) {

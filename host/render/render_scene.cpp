@@ -1,8 +1,10 @@
 #include "render/render_scene.h"
 
 #include <cmath>
+#include <utility>
 
 #include "render/light_table.h"
+#include "render/material_packing.h"
 #include "render/octahedral.h"
 #include "render/texture_store.h"
 #include "shared/bsdf.h"
@@ -140,16 +142,16 @@ std::vector<shader::TriangleColors> PackVertexColors(const Scene& scene) {
   return packed;
 }
 
-// The scene's texture coordinates and textures, when some material has one.
+// The scene's texture coordinates and textures, when some material has one (rs.textureRefs
+// is packed).
 void AddTextures(const Scene& scene, unsigned threads, RenderScene& rs) {
-  if (scene.textureRefs.empty()) return;
+  if (rs.textureRefs.empty()) return;
   if (scene.uvs.size() != scene.triangles.size())
     throw Error(scene.path + ": " + std::to_string(scene.uvs.size()) + " texture coordinate triples for " +
                 std::to_string(scene.triangles.size()) + " triangles");
   rs.uvs.reserve(scene.uvs.size());
   for (const VertexUVs& u : scene.uvs)
     rs.uvs.push_back({u.set0[0], u.set0[1], u.set0[2], u.set1[0], u.set1[1], u.set1[2]});
-  rs.textureRefs = scene.textureRefs;
   if (!scene.tangents.empty() && scene.tangents.size() != scene.triangles.size())
     throw Error(scene.path + ": " + std::to_string(scene.tangents.size()) + " tangent triples for " +
                 std::to_string(scene.triangles.size()) + " triangles");
@@ -205,7 +207,9 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   rs.nodes = std::move(bvh.nodes);
   rs.nodeCopies = bvh.copies;
   rs.bvhStats = bvh.stats;
-  rs.materials = scene.materials;
+  PackedMaterials packed = PackMaterials(scene);
+  rs.materials = std::move(packed.materials);
+  rs.textureRefs = std::move(packed.textureRefs);
   rs.triangles = LeafOrderTriangles(scene, bvh.primOrder, in.kept);
   if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
   AddTextures(scene, options.threads, rs);  // before the light table, which reads emissive textures

@@ -130,13 +130,30 @@ std::vector<std::vector<uint32_t>> MipChain(const TextureImage& image, bool srgb
   return levels;
 }
 
+uint32_t PackSampler(const SceneTexture& texture) {
+  auto wrap = [](TextureSampler::Wrap w) {
+    switch (w) {
+      case TextureSampler::Wrap::kClampToEdge: return shader::kWrapClampToEdge;
+      case TextureSampler::Wrap::kMirroredRepeat: return shader::kWrapMirroredRepeat;
+      default: return shader::kWrapRepeat;
+    }
+  };
+  const TextureSampler& s = texture.sampler;
+  uint32_t bits = wrap(s.wrapS) << shader::kTextureWrapSShift | wrap(s.wrapT) << shader::kTextureWrapTShift;
+  if (s.magLinear) bits |= shader::kTextureMagLinear;
+  if (s.minLinear) bits |= shader::kTextureMinLinear;
+  if (s.mip == TextureSampler::Mip::kNearest) bits |= shader::kTextureMipNearest;
+  if (s.mip == TextureSampler::Mip::kLinear) bits |= shader::kTextureMipLinear;
+  return texture.srgb ? bits | shader::kTextureSrgb : bits;
+}
+
 TextureStore BuildTextureStore(const Scene& scene, unsigned threads) {
   TextureStore store;
   // One chain per image and colour space, however many samplers use it.
   std::map<std::pair<uint32_t, bool>, size_t> chainOf;
   std::vector<std::pair<uint32_t, bool>> chains;
   for (const SceneTexture& t : scene.textures) {
-    const std::pair<uint32_t, bool> key{t.image, (t.sampler & shader::kTextureSrgb) != 0u};
+    const std::pair<uint32_t, bool> key{t.image, t.srgb};
     if (chainOf.try_emplace(key, chains.size()).second) chains.push_back(key);
   }
   std::vector<std::vector<std::vector<uint32_t>>> built(chains.size());
@@ -165,10 +182,10 @@ TextureStore BuildTextureStore(const Scene& scene, unsigned threads) {
     }
   }
   for (const SceneTexture& t : scene.textures) {
-    const size_t k = chainOf.at({t.image, (t.sampler & shader::kTextureSrgb) != 0u});
+    const size_t k = chainOf.at({t.image, t.srgb});
     const TextureImage& im = scene.images[t.image];
     store.textures.push_back(
-        {offsets[k], im.width, im.height, t.sampler | uint32_t(built[k].size()) << shader::kTextureLevelShift});
+        {offsets[k], im.width, im.height, PackSampler(t) | uint32_t(built[k].size()) << shader::kTextureLevelShift});
   }
   return store;
 }

@@ -21,6 +21,10 @@ struct TextureStore {
 // colour is decoded first and encoded again), then rounded to bytes.
 TextureStore BuildTextureStore(const Scene& scene, unsigned threads);
 
+// The texture's sampler as shader::Texture mode bits (wrap modes, filters, kTextureSrgb);
+// the level count is BuildTextureStore's to add.
+uint32_t PackSampler(const SceneTexture& texture);
+
 // The mip levels of one image: level 0 as given, then down to 1 × 1; RGBA8 words.
 std::vector<std::vector<uint32_t>> MipChain(const TextureImage& image, bool srgb);
 

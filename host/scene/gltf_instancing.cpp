@@ -17,7 +17,12 @@ class Instancer {
  public:
   Instancer(const GltfSource& src, const std::vector<int>& parents,
             const std::vector<std::vector<DecodedPrimitive>>& meshes, Scene& scene)
-      : src_(src), parents_(parents), meshes_(meshes), scene_(scene), withTangents_(UsesNormalMaps(scene)) {}
+      : src_(src),
+        parents_(parents),
+        meshes_(meshes),
+        scene_(scene),
+        withUVs_(HasMaterialTextures(scene)),
+        withTangents_(UsesNormalMaps(scene)) {}
 
   void Run() {
     for (size_t s = 0; s < src_.m.scenes.size(); ++s)
@@ -202,7 +207,7 @@ class Instancer {
     AppendParallel(scene_.normals, vn, vn.Present());
     AppendParallel(scene_.colors, vc, hasColors);
     // Every triangle of a textured scene, whether or not its primitive has coordinates.
-    AppendParallel(scene_.uvs, vu, !scene_.textureRefs.empty());
+    AppendParallel(scene_.uvs, vu, withUVs_);
     AppendParallel(scene_.tangents, vt, withTangents_);
     scene_.bounds.Extend(t.v0);
     scene_.bounds.Extend(t.v1);
@@ -232,6 +237,7 @@ class Instancer {
   const std::vector<int>& parents_;
   const std::vector<std::vector<DecodedPrimitive>>& meshes_;
   Scene& scene_;
+  const bool withUVs_;       // some material has a texture
   const bool withTangents_;  // some material has a normal texture
 };
 

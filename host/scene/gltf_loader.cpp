@@ -153,7 +153,7 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, Scene& scene, M
   CheckTexturesAndMaterials(src);
   const uint32_t defaultMaterial = LoadMaterials(src, scene);
   LoadTextures(src, limits, budget, scene);
-  const bool textured = !scene.textureRefs.empty(), normalMapped = UsesNormalMaps(scene);
+  const bool textured = HasMaterialTextures(scene), normalMapped = UsesNormalMaps(scene);
   const std::vector<int> parents = CheckNodeGraph(src);
   ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), textured, normalMapped, budget);
   std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
@@ -162,9 +162,8 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, Scene& scene, M
   for (std::vector<DecodedPrimitive>& mesh : meshes)
     for (DecodedPrimitive& prim : mesh) {
       if (!normalMapped) break;
-      const shader::TextureRef& ref = scene.textureRefs[prim.material * shader::kTextureSlots + shader::kSlotNormal];
-      if (ref.texture != shader::kInvalidIndex && GenerateMissingTangents(prim, ref.texCoord))
-        ++scene.generatedTangentPrimitives;
+      const MaterialTexture& ref = scene.materials[prim.material].normalTexture;
+      if (ref.Present() && GenerateMissingTangents(prim, ref.texCoord)) ++scene.generatedTangentPrimitives;
     }
   CheckCameras(src);
   CheckLights(src);

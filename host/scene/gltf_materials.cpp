@@ -34,33 +34,33 @@ class MaterialReader {
     mat.ior = float(ior);
     mat.transmission = float(Unit(ExtensionNumber("KHR_materials_transmission", "transmissionFactor", 0.0),
                                   "KHR_materials_transmission.transmissionFactor"));
-    mat.flags = (in_.doubleSided ? shader::kMaterialDoubleSided : 0u) |
-                (in_.extensions.count("KHR_materials_unlit") ? shader::kMaterialUnlit : 0u) | ReadVolume(mat) |
-                ReadAlpha(mat);
+    mat.doubleSided = in_.doubleSided;
+    mat.unlit = in_.extensions.count("KHR_materials_unlit") != 0;
+    ReadVolume(mat);
+    ReadAlpha(mat);
     return mat;
   }
 
  private:
   // glTF §3.9.4 alpha coverage: baseColorFactor's alpha and the mode and cutoff that say
-  // how it is used. Returns kMaterialAlphaMask, kMaterialAlphaBlend or 0 (OPAQUE: alpha
-  // is ignored).
-  uint32_t ReadAlpha(Material& mat) const {
+  // how it is used.
+  void ReadAlpha(Material& mat) const {
     const double alpha =
         in_.pbrMetallicRoughness.baseColorFactor.size() == 4 ? in_.pbrMetallicRoughness.baseColorFactor[3] : 1.0;
     if (!(alpha >= 0.0 && alpha <= 1.0)) Fail("pbrMetallicRoughness.baseColorFactor[3] is not in [0, 1]");
     if (!(in_.alphaCutoff >= 0.0 && std::isfinite(in_.alphaCutoff))) Fail("alphaCutoff must be a finite number >= 0");
     mat.alpha = float(alpha);
     mat.alphaCutoff = float(in_.alphaCutoff);
-    if (in_.alphaMode == "OPAQUE") return 0u;
-    if (in_.alphaMode == "MASK") return shader::kMaterialAlphaMask;
-    if (in_.alphaMode == "BLEND") return shader::kMaterialAlphaBlend;
-    Fail("alphaMode \"" + in_.alphaMode + "\" is not OPAQUE, MASK or BLEND");
+    if (in_.alphaMode == "OPAQUE") mat.alphaMode = AlphaMode::kOpaque;
+    else if (in_.alphaMode == "MASK") mat.alphaMode = AlphaMode::kMask;
+    else if (in_.alphaMode == "BLEND") mat.alphaMode = AlphaMode::kBlend;
+    else Fail("alphaMode \"" + in_.alphaMode + "\" is not OPAQUE, MASK or BLEND");
   }
 
   // KHR_materials_volume: a thickness > 0 makes the transmissive surface the boundary of
   // a volume (rays refract, and attenuate inside by Beer–Lambert); without it the surface
-  // is thin-walled. Returns kMaterialVolume or 0 and sets mat.attenuation.
-  uint32_t ReadVolume(Material& mat) const {
+  // is thin-walled. Sets mat.volume and mat.attenuation.
+  void ReadVolume(Material& mat) const {
     mat.attenuation = glm::vec3(0.0f);
     const double thickness = ExtensionNumber("KHR_materials_volume", "thicknessFactor", 0.0);
     if (thickness < 0.0) Fail("KHR_materials_volume.thicknessFactor must be >= 0");
@@ -73,7 +73,7 @@ class MaterialReader {
     // A colour channel of 0 absorbs everything: the largest finite σ keeps the buffers free of inf.
     for (int i = 0; i < 3; ++i)
       mat.attenuation[i] = color[i] > 0.0f ? float(std::min(-std::log(double(color[i])) / distance, 3.0e38)) : 3.0e38f;
-    return thickness > 0.0 ? shader::kMaterialVolume : 0u;
+    mat.volume = thickness > 0.0;
   }
 
   [[noreturn]] void Fail(const std::string& what) const { src_.Fail(name_ + "." + what); }

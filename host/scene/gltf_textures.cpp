@@ -9,16 +9,17 @@
 namespace vkpt {
 namespace {
 
-// A material's use of a texture: which slot, and whether its RGB is colour (sRGB).
+// A material's use of a texture: which of its textures, and whether its RGB is colour (sRGB).
 struct Slot {
-  uint32_t slot;
+  MaterialTexture Material::*texture;
   const char* field;
   bool srgb;
 };
-const Slot kBaseColor{shader::kSlotBaseColor, "pbrMetallicRoughness.baseColorTexture", true};
-const Slot kMetallicRoughness{shader::kSlotMetallicRoughness, "pbrMetallicRoughness.metallicRoughnessTexture", false};
-const Slot kEmissive{shader::kSlotEmissive, "emissiveTexture", true};
-const Slot kNormal{shader::kSlotNormal, "normalTexture", false};
+const Slot kBaseColor{&Material::baseColorTexture, "pbrMetallicRoughness.baseColorTexture", true};
+const Slot kMetallicRoughness{&Material::metallicRoughnessTexture, "pbrMetallicRoughness.metallicRoughnessTexture",
+                              false};
+const Slot kEmissive{&Material::emissiveTexture, "emissiveTexture", true};
+const Slot kNormal{&Material::normalTexture, "normalTexture", false};
 // The material extensions' textures vkpt applies, and where each is read from.
 struct ExtensionSlot {
   Slot slot;
@@ -26,47 +27,54 @@ struct ExtensionSlot {
   const char* field;
 };
 const ExtensionSlot kExtensionSlots[] = {
-    {{shader::kSlotTransmission, "extensions.KHR_materials_transmission.transmissionTexture", false},
+    {{&Material::transmissionTexture, "extensions.KHR_materials_transmission.transmissionTexture", false},
      "KHR_materials_transmission",
      "transmissionTexture"},
-    {{shader::kSlotSpecular, "extensions.KHR_materials_specular.specularTexture", false},
+    {{&Material::specularTexture, "extensions.KHR_materials_specular.specularTexture", false},
      "KHR_materials_specular",
      "specularTexture"},
-    {{shader::kSlotSpecularColor, "extensions.KHR_materials_specular.specularColorTexture", true},
+    {{&Material::specularColorTexture, "extensions.KHR_materials_specular.specularColorTexture", true},
      "KHR_materials_specular",
      "specularColorTexture"},
 };
 
-uint32_t WrapMode(int gl, const std::string& what, const GltfSource& src) {
+using Wrap = TextureSampler::Wrap;
+using Mip = TextureSampler::Mip;
+
+Wrap WrapMode(int gl, const std::string& what, const GltfSource& src) {
   switch (gl) {
-    case TINYGLTF_TEXTURE_WRAP_REPEAT: return shader::kWrapRepeat;
-    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return shader::kWrapClampToEdge;
-    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return shader::kWrapMirroredRepeat;
+    case TINYGLTF_TEXTURE_WRAP_REPEAT: return Wrap::kRepeat;
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::kClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::kMirroredRepeat;
     default: src.Fail(what + " is " + std::to_string(gl) + ", not a glTF wrap mode");
   }
 }
 
-// A sampler's modes as shader::Texture sampler bits. Without a sampler, or a filter,
-// glTF leaves the choice to the renderer: repeat, and trilinear filtering.
-uint32_t SamplerBits(const GltfSource& src, int sampler) {
-  if (sampler < 0) return shader::kTextureMagLinear | shader::kTextureMinLinear | shader::kTextureMipLinear;
+// A sampler's modes. Without a sampler, or a filter, glTF leaves the choice to the
+// renderer: TextureSampler's defaults.
+TextureSampler ReadSampler(const GltfSource& src, int sampler) {
+  TextureSampler out;
+  if (sampler < 0) return out;
   const tinygltf::Sampler& s = src.m.samplers[sampler];
   const std::string name = "samplers[" + std::to_string(sampler) + "]";
-  uint32_t bits = WrapMode(s.wrapS, name + ".wrapS", src) << shader::kTextureWrapSShift |
-                  WrapMode(s.wrapT, name + ".wrapT", src) << shader::kTextureWrapTShift;
-  if (s.magFilter == -1 || s.magFilter == TINYGLTF_TEXTURE_FILTER_LINEAR) bits |= shader::kTextureMagLinear;
-  else if (s.magFilter != TINYGLTF_TEXTURE_FILTER_NEAREST)
+  out.wrapS = WrapMode(s.wrapS, name + ".wrapS", src);
+  out.wrapT = WrapMode(s.wrapT, name + ".wrapT", src);
+  if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.magLinear = false;
+  else if (s.magFilter != -1 && s.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
     src.Fail(name + ".magFilter is " + std::to_string(s.magFilter) + ", not NEAREST (9728) or LINEAR (9729)");
+  auto minify = [&](bool linear, Mip mip) {
+    out.minLinear = linear;
+    out.mip = mip;
+    return out;
+  };
   switch (s.minFilter) {
     case -1:
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
-      return bits | shader::kTextureMinLinear | shader::kTextureMipLinear;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST: return bits;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR: return bits | shader::kTextureMinLinear;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return bits | shader::kTextureMipNearest;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
-      return bits | shader::kTextureMinLinear | shader::kTextureMipNearest;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return bits | shader::kTextureMipLinear;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: return minify(true, Mip::kLinear);
+    case TINYGLTF_TEXTURE_FILTER_NEAREST: return minify(false, Mip::kNone);
+    case TINYGLTF_TEXTURE_FILTER_LINEAR: return minify(true, Mip::kNone);
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return minify(false, Mip::kNearest);
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: return minify(true, Mip::kNearest);
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return minify(false, Mip::kLinear);
     default: src.Fail(name + ".minFilter is " + std::to_string(s.minFilter) + ", not a glTF minification filter");
   }
 }
@@ -87,18 +95,14 @@ class TextureReader {
                                 "] has no PNG or JPEG source; the factor is used alone");
       return;
     }
-    shader::TextureRef ref = Transform(info, what);
+    MaterialTexture ref = Transform(info, what);
     if (ref.texCoord > 1) {
       scene_.warnings.push_back(what + " reads TEXCOORD_" + std::to_string(ref.texCoord) +
                                 "; vkpt reads TEXCOORD_0 and TEXCOORD_1, so the factor is used alone");
       return;
     }
     ref.texture = TextureIndex(info.index, slot.srgb, what);
-    if (scene_.textureRefs.empty())
-      scene_.textureRefs.assign(scene_.materials.size() * shader::kTextureSlots, Unused());
-    scene_.textureRefs[m * shader::kTextureSlots + slot.slot] = ref;
-    scene_.materials[m].flags |= shader::kMaterialTextured;
-    if (slot.slot >= shader::kSlotTransmission) scene_.materials[m].flags |= shader::kMaterialExtensionTextured;
+    scene_.materials[m].*slot.texture = ref;
   }
 
   // The textureInfo `field` of materials[m]'s extension `extension` (index −1: none).
@@ -130,8 +134,6 @@ class TextureReader {
   const std::map<int, std::string>& Users() const { return users_; }
 
  private:
-  static shader::TextureRef Unused() { return {shader::kInvalidIndex, 0u, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f}; }
-
   std::string MaterialName(uint32_t m) const {
     std::string name = "materials[" + std::to_string(m) + "]";
     const std::string& own = src_.m.materials[m].name;
@@ -142,8 +144,8 @@ class TextureReader {
   // T · R · S of the extension's specification, R turning the UVs by `rotation`
   // counter-clockwise as seen with v pointing down (the image's rows), the direction
   // TextureTransformTest checks; the identity without it.
-  shader::TextureRef Transform(const tinygltf::TextureInfo& info, const std::string& what) const {
-    shader::TextureRef ref = Unused();
+  MaterialTexture Transform(const tinygltf::TextureInfo& info, const std::string& what) const {
+    MaterialTexture ref;
     ref.texCoord = uint32_t(std::max(info.texCoord, 0));
     auto ext = info.extensions.find("KHR_texture_transform");
     if (ext == info.extensions.end()) return ref;
@@ -159,14 +161,11 @@ class TextureReader {
       ref.texCoord = uint32_t(tc.GetNumberAsInt());
     }
     const double c = std::cos(rotation), s = std::sin(rotation);
-    ref.m00 = float(c * scale[0]);
-    ref.m01 = float(s * scale[1]);
-    ref.m02 = float(offset[0]);
-    ref.m10 = float(-s * scale[0]);
-    ref.m11 = float(c * scale[1]);
-    ref.m12 = float(offset[1]);
-    for (float x : {ref.m00, ref.m01, ref.m02, ref.m10, ref.m11, ref.m12})
-      if (!std::isfinite(x)) src_.Fail(name + " makes a transform that is not finite in single precision");
+    ref.transformU = glm::vec3(float(c * scale[0]), float(s * scale[1]), float(offset[0]));
+    ref.transformV = glm::vec3(float(-s * scale[0]), float(c * scale[1]), float(offset[1]));
+    for (int i = 0; i < 3; ++i)
+      if (!std::isfinite(ref.transformU[i]) || !std::isfinite(ref.transformV[i]))
+        src_.Fail(name + " makes a transform that is not finite in single precision");
     return ref;
   }
 
@@ -187,8 +186,7 @@ class TextureReader {
     auto [it, added] = textures_.try_emplace({gltfTexture, srgb}, uint32_t(scene_.textures.size()));
     if (added) {
       const tinygltf::Texture& tex = src_.m.textures[gltfTexture];
-      scene_.textures.push_back(
-          {uint32_t(tex.source), SamplerBits(src_, tex.sampler) | (srgb ? shader::kTextureSrgb : 0u)});
+      scene_.textures.push_back({uint32_t(tex.source), ReadSampler(src_, tex.sampler), srgb});
       users_.try_emplace(tex.source, what);
     }
     return it->second;
@@ -228,8 +226,8 @@ bool IsAppliedExtensionTexture(const std::string& extension, const std::string& 
 }
 
 bool UsesNormalMaps(const Scene& scene) {
-  for (size_t i = shader::kSlotNormal; i < scene.textureRefs.size(); i += shader::kTextureSlots)
-    if (scene.textureRefs[i].texture != shader::kInvalidIndex) return true;
+  for (const Material& m : scene.materials)
+    if (m.normalTexture.Present()) return true;
   return false;
 }
 

@@ -1,5 +1,5 @@
 // glTF textures (spec §3.8) as the materials use them: each textureInfo becomes a
-// shader::TextureRef (texture, TEXCOORD set, KHR_texture_transform), each texture a
+// MaterialTexture (texture, TEXCOORD set, KHR_texture_transform), each texture a
 // SceneTexture with its sampler, each image they need is decoded once. Images are
 // untrusted: their size is checked from the header and counted against the texel and
 // memory budgets before anything is decoded.
@@ -13,9 +13,8 @@
 
 namespace vkpt {
 
-// Fills scene.textureRefs, textures and images (nothing when no material has a texture)
-// and sets kMaterialTextured on the materials that have one. `scene.materials` must be
-// loaded, in glTF order.
+// Fills the materials' textures and normalScale, and scene.textures and images (nothing
+// when no material has a texture). `scene.materials` must be loaded, in glTF order.
 void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget& budget, Scene& scene);
 
 // Whether some material of the loaded scene has a normal texture (and so its triangles

@@ -9,12 +9,10 @@
 
 #include <glm/glm.hpp>
 
-#include "shared/layout.h"
+#include "scene/material.h"
 #include "util/bounds.h"
 
 namespace vkpt {
-
-using shader::Material;
 
 // World-space triangle; (v1 - v0) × (v2 - v0) is the front-face normal (counter-clockwise
 // winding, already corrected for mirroring transforms).
@@ -55,12 +53,24 @@ struct TextureImage {
   std::vector<uint8_t> rgba;
 };
 
-// A glTF texture as the materials use it: its image, its sampler as shader::Texture
-// sampler bits (wrap modes, filters; the level count is the renderer's) and whether its
-// RGB is sRGB-encoded colour. A glTF texture used both as colour and as data becomes two.
+// A glTF sampler (§3.8.3): wrap modes and filters. The defaults are what glTF leaves to
+// the renderer when a texture has no sampler, or a sampler no filter: repeat, trilinear.
+struct TextureSampler {
+  enum class Wrap { kRepeat, kClampToEdge, kMirroredRepeat };
+  // minFilter's choice between mip levels: none (level 0 only), the nearest, or a blend of two.
+  enum class Mip { kNone, kNearest, kLinear };
+  Wrap wrapS = Wrap::kRepeat, wrapT = Wrap::kRepeat;
+  bool magLinear = true;  // magFilter LINEAR; false: NEAREST
+  bool minLinear = true;  // minFilter within a level LINEAR; false: NEAREST
+  Mip mip = Mip::kLinear;
+};
+
+// A glTF texture as the materials use it: its image, its sampler and whether its RGB is
+// sRGB-encoded colour. A glTF texture used both as colour and as data becomes two.
 struct SceneTexture {
   uint32_t image = 0;  // into Scene::images
-  uint32_t sampler = 0;
+  TextureSampler sampler;
+  bool srgb = false;
 };
 
 struct Camera {
@@ -101,9 +111,7 @@ struct Scene {
   // Parallel to `triangles`, or empty when no material has a normal texture.
   std::vector<VertexTangents> tangents;
   std::vector<Material> materials;
-  // shader::kTextureSlots per material, or empty when no material has a texture.
-  std::vector<shader::TextureRef> textureRefs;
-  std::vector<SceneTexture> textures;  // what TextureRef::texture indexes
+  std::vector<SceneTexture> textures;  // what MaterialTexture::texture indexes
   std::vector<TextureImage> images;
   std::vector<std::string> materialNames;
   std::vector<Camera> cameras;  // in scene-graph order; --camera N picks one
@@ -119,6 +127,13 @@ struct Scene {
   // The loader's memory budget (--max-memory) and what it counted for this scene.
   uint64_t memoryLimit = 0, memoryCounted = 0;
 };
+
+// Whether some material has a texture (and so every triangle has texture coordinates).
+inline bool HasMaterialTextures(const Scene& scene) {
+  for (const Material& m : scene.materials)
+    if (m.Textured()) return true;
+  return false;
+}
 
 // A camera framing the whole scene, for files that define none: looks along −Z at the
 // centre of the bounds from far enough that the bounding sphere fits the view.

@@ -3,7 +3,7 @@
 // All structs follow std430 rules and are built only from 4-byte scalars and
 // (vec3, 4-byte scalar) pairs, so the C++ layout (glm::vec3 = 12 bytes, align 4)
 // equals the GLSL one (vec3 aligned to 16). Never put a vec3 after a vec3: GLSL
-// would insert 4 bytes of padding that C++ does not. host/scene/gpu_layout.cpp
+// would insert 4 bytes of padding that C++ does not. host/render/gpu_layout.cpp
 // static_asserts every size and offset below.
 #ifndef VKPT_LAYOUT_H
 #define VKPT_LAYOUT_H

@@ -1,0 +1,74 @@
+// A glTF material (spec §3.9 and the KHR_materials_* extensions vkpt renders) as the
+// physics reads it: factors in the units shared/bsdf.h uses, with the glTF switches as
+// plain values. How the GPU stores it (std430 padding, flag bits) is render/'s business
+// (render/material_packing.h); nothing here knows it.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace vkpt {
+
+// glTF §3.9.4 alphaMode: how the base colour's alpha covers the surface (shared/alpha.h).
+enum class AlphaMode {
+  kOpaque,  // alpha is ignored
+  kMask,    // the surface is present where alpha >= alphaCutoff
+  kBlend,   // the surface is present with probability alpha
+};
+
+// A material's use of a texture (glTF textureInfo): which of Scene::textures, which
+// TEXCOORD set, and KHR_texture_transform as a 2×3 matrix, the texture read at
+// (dot(transformU, (u, v, 1)), dot(transformV, (u, v, 1))). Default: no texture.
+struct MaterialTexture {
+  static constexpr uint32_t kNone = 0xFFFFFFFFu;
+  uint32_t texture = kNone;  // into Scene::textures
+  uint32_t texCoord = 0;     // 0 or 1: vkpt reads TEXCOORD_0 and TEXCOORD_1
+  glm::vec3 transformU{1.0f, 0.0f, 0.0f};
+  glm::vec3 transformV{0.0f, 1.0f, 0.0f};
+  bool Present() const { return texture != kNone; }
+};
+
+// Value-initialised (Material{}), every number is 0: a black, non-emitting diffuse
+// surface without a specular layer, opaque and one-sided. The loader sets every field
+// (glTF's defaults where the file says nothing); tests set the few they need.
+struct Material {
+  glm::vec3 baseColor{0.0f};  // baseColorFactor's RGB
+  float alpha = 0.0f;         // baseColorFactor's alpha
+  float metallic = 0.0f;
+  float roughness = 0.0f;
+  glm::vec3 emission{0.0f};       // emitted radiance Le = emissiveFactor × emissiveStrength
+  float specular = 0.0f;          // KHR_materials_specular: scales F0 and F90 (0: no specular layer)
+  glm::vec3 specularColor{0.0f};  // KHR_materials_specular: tints the dielectric F0
+  float ior = 0.0f;               // KHR_materials_ior (1.5 when absent; 0: Fresnel is 1)
+  float transmission = 0.0f;      // KHR_materials_transmission: the transmissive share of the dielectric base
+  // KHR_materials_volume: thickness > 0 makes the surface bound a volume (rays refract,
+  // and attenuate inside by σ = −ln(attenuationColor) / attenuationDistance per unit
+  // length); false: a thin wall. `attenuation` is σ whether or not `volume` is set.
+  bool volume = false;
+  glm::vec3 attenuation{0.0f};
+  float normalScale = 0.0f;  // normalTexture.scale: scales the tangent-space normal's x and y
+  AlphaMode alphaMode = AlphaMode::kOpaque;
+  float alphaCutoff = 0.0f;  // kMask: the cut between absent and present
+  bool doubleSided = false;
+  bool unlit = false;  // KHR_materials_unlit: shows baseColor, reflects nothing
+
+  // The textures that scale the factors above (shared/material_textures.h says how).
+  MaterialTexture baseColorTexture;          // RGB × baseColor, A × alpha (sRGB)
+  MaterialTexture metallicRoughnessTexture;  // G × roughness, B × metallic
+  MaterialTexture emissiveTexture;           // RGB × emission (sRGB)
+  MaterialTexture normalTexture;             // tangent-space normal, scaled by normalScale
+  MaterialTexture transmissionTexture;       // R × transmission
+  MaterialTexture specularTexture;           // A × specular
+  MaterialTexture specularColorTexture;      // RGB × specularColor (sRGB)
+
+  // Whether some texture above is present.
+  bool Textured() const {
+    for (const MaterialTexture* t : {&baseColorTexture, &metallicRoughnessTexture, &emissiveTexture, &normalTexture,
+                                     &transmissionTexture, &specularTexture, &specularColorTexture})
+      if (t->Present()) return true;
+    return false;
+  }
+};
+
+}  // namespace vkpt
