@@ -544,8 +544,8 @@ TEST(Cli, VerboseReportsTheTexturesOfAGeneratedModel) {
   test::GltfBuilder b;
   const int positions = b.Positions(test::kUnitTriangle);
   const int uv = b.Accessor(b.View(test::Bytes(std::vector<float>{0, 0, 1, 0, 0, 1})), test::kFloat, 3, "VEC2");
-  b.meshes.push_back(R"({"primitives":[{"attributes":{"POSITION":)" + std::to_string(positions) +
-                     R"(,"TEXCOORD_0":)" + std::to_string(uv) + R"(},"material":0}]})");
+  b.meshes.push_back(R"({"primitives":[{"attributes":{"POSITION":)" + std::to_string(positions) + R"(,"TEXCOORD_0":)" +
+                     std::to_string(uv) + R"(},"material":0}]})");
   b.materials.push_back(R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})");
   const std::vector<unsigned char> png = test::MakePng(2, 2, 8, 2, std::vector<uint8_t>(12, 200));
   b.images.push_back(R"({"bufferView":)" + std::to_string(b.View(std::string(png.begin(), png.end()))) +

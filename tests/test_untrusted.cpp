@@ -277,7 +277,8 @@ TEST(Amplification, UnusedImageIsNotRead) {
 
 TEST(Amplification, VerboseReportsTheBudget) {
   TempDir root;
-  ProcessResult ok = Render(test::SourcePath("scenes/cornell.gltf"), root.path + "/o.png", {"--max-memory", "200M", "-v"});
+  ProcessResult ok =
+      Render(test::SourcePath("scenes/cornell.gltf"), root.path + "/o.png", {"--max-memory", "200M", "-v"});
   EXPECT_TRUE(ok.ExitedWith(0)) << ok.Describe();
   EXPECT_NE(ok.out.find("of --max-memory 200 MiB"), std::string::npos) << ok.out;
 }

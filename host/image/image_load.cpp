@@ -92,48 +92,59 @@ struct ExrImage : EXRImage {
   ExrImage& operator=(const ExrImage&) = delete;
 };
 
-// The R, G and B channels (or the one channel of a grey image, three times), read as
-// 32-bit float: what tinyexr's LoadEXRFromMemory picks, without its RGBA copy.
-Image DecodeExr(const std::string& path, const std::vector<unsigned char>& bytes, const MemoryCharge& charge) {
+[[noreturn]] void FailExr(const std::string& path, const std::string& what, const char* err) {
+  std::string detail = err ? err : "";
+  detail.erase(detail.find_last_not_of(" \n") + 1);  // tinyexr ends its messages with a newline
+  std::string message = path + ": " + what + (detail.empty() ? "" : " (tinyexr: " + detail + ")");
+  FreeEXRErrorMessage(err);
+  throw Error(message);
+}
+
+// The header of a single-part OpenEXR file, every channel requested as 32-bit float; its
+// R, G and B channels (or the one channel of a grey image, three times) go to *rgb.
+void ReadExrHeader(const std::string& path, const std::vector<unsigned char>& bytes, ExrHeader& header,
+                   std::array<int, 3>* rgb) {
   EXRVersion version;
   if (ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size()) != TINYEXR_SUCCESS)
     throw Error(path + ": not an OpenEXR file");
   if (version.multipart || version.non_image)
     throw Error(path + ": multi-part and deep OpenEXR files are not supported");
-  ExrHeader header;
   const char* err = nullptr;
-  auto fail = [&](const std::string& what) {
-    std::string detail = err ? err : "";
-    detail.erase(detail.find_last_not_of(" \n") + 1);  // tinyexr ends its messages with a newline
-    std::string message = path + ": " + what + (detail.empty() ? "" : " (tinyexr: " + detail + ")");
-    FreeEXRErrorMessage(err);
-    throw Error(message);
-  };
   if (ParseEXRHeaderFromMemory(&header, &version, bytes.data(), bytes.size(), &err) != TINYEXR_SUCCESS)
-    fail("cannot read the OpenEXR header");
-  const int64_t width = int64_t(header.data_window.max_x) - header.data_window.min_x + 1;
-  const int64_t height = int64_t(header.data_window.max_y) - header.data_window.min_y + 1;
-  CheckSize(path, width, height);
-  std::array<int, 3> rgb{-1, -1, -1};
+    FailExr(path, "cannot read the OpenEXR header", err);
+  *rgb = {-1, -1, -1};
   for (int c = 0; c < header.num_channels; ++c) {
     const std::string name = header.channels[c].name;
     for (int k = 0; k < 3; ++k)
-      if (name == std::string(1, "RGB"[k])) rgb[k] = c;
+      if (name == std::string(1, "RGB"[k])) (*rgb)[k] = c;
   }
-  if (header.num_channels == 1) rgb = {0, 0, 0};
-  if (rgb[0] < 0 || rgb[1] < 0 || rgb[2] < 0) throw Error(path + ": the OpenEXR image has no R, G and B channels");
+  if (header.num_channels == 1) *rgb = {0, 0, 0};
+  if ((*rgb)[0] < 0 || (*rgb)[1] < 0 || (*rgb)[2] < 0)
+    throw Error(path + ": the OpenEXR image has no R, G and B channels");
   for (int c = 0; c < header.num_channels; ++c) {
     if (header.pixel_types[c] == TINYEXR_PIXELTYPE_UINT)
       throw Error(path + ": channel " + header.channels[c].name + " holds integers; an environment map needs floats");
     header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
   }
+}
+
+// The R, G and B channels of an OpenEXR file as 32-bit float: what tinyexr's
+// LoadEXRFromMemory picks, without its RGBA copy.
+Image DecodeExr(const std::string& path, const std::vector<unsigned char>& bytes, const MemoryCharge& charge) {
+  ExrHeader header;
+  std::array<int, 3> rgb;
+  ReadExrHeader(path, bytes, header, &rgb);
+  const int64_t width = int64_t(header.data_window.max_x) - header.data_window.min_x + 1;
+  const int64_t height = int64_t(header.data_window.max_y) - header.data_window.min_y + 1;
+  CheckSize(path, width, height);
   // tinyexr's float plane per channel (tiles may round it up a little), then our Image.
   const uint64_t channels = uint64_t(header.num_channels);
   charge(uint64_t(width * height) * (channels * sizeof(float) + sizeof(glm::vec3)), "its decoded texels");
   ExrImage exr;
+  const char* err = nullptr;
   if (LoadEXRImageFromMemory(&exr, &header, bytes.data(), bytes.size(), &err) != TINYEXR_SUCCESS) {
     exr.owned = false;
-    fail("cannot decode the OpenEXR data");
+    FailExr(path, "cannot decode the OpenEXR data", err);
   }
   if (exr.width != width || exr.height != height || exr.num_channels != header.num_channels)
     throw Error(path + ": the OpenEXR data window does not match its pixels");
