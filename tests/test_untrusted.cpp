@@ -362,8 +362,9 @@ TEST(Messages, BufferFileOfTheWrongSizeIsNamed) {
                              {"buffers[0].uri \"short.bin\" holds 24 bytes, but buffers[0].byteLength says 36"}));
 }
 
-// Under `ulimit -v` an allocation fails before the budget is reached: the message says
-// memory ran out, not that the file is broken. (ASan reserves terabytes of address space
+// Under `ulimit -v` with a --max-memory above it (by default the budget is half the
+// limit, tests/test_frame_memory.cpp) an allocation fails before the budget is reached:
+// the message says memory ran out, not that the file is broken. (ASan reserves terabytes of address space
 // for its shadow memory, so an address-space limit cannot apply to its builds.)
 TEST(Messages, ProcessMemoryLimitIsReportedAsMemory) {
 #if defined(__SANITIZE_ADDRESS__)
@@ -377,9 +378,11 @@ TEST(Messages, ProcessMemoryLimitIsReportedAsMemory) {
   WriteFile(nodes, json + "]}");
   MakeSparseFile(sparse, "{", off_t(200) << 20);
   const test::ChildLimits limits{.addressSpace = uint64_t(150) << 20};
-  ProcessResult parse = RunVkpt({"--scene", nodes, "--out", out, "--backend", "cpu"}, 20.0, "", {}, limits);
+  ProcessResult parse =
+      RunVkpt({"--scene", nodes, "--out", out, "--backend", "cpu", "--max-memory", "64G"}, 20.0, "", {}, limits);
   EXPECT_TRUE(RefusedQuickly(parse, out, {nodes + ": ran out of memory while loading"}, 10.0));
-  ProcessResult read = RunVkpt({"--scene", sparse, "--out", out, "--backend", "cpu"}, 20.0, "", {}, limits);
+  ProcessResult read =
+      RunVkpt({"--scene", sparse, "--out", out, "--backend", "cpu", "--max-memory", "64G"}, 20.0, "", {}, limits);
   EXPECT_TRUE(RefusedQuickly(read, out, {sparse + ": not enough memory to read the file (200 MiB)"}));
   EXPECT_EQ(parse.err.find("JSON"), std::string::npos);
 }

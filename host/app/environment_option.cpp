@@ -8,7 +8,8 @@
 
 namespace vkpt {
 
-EnvironmentMap LoadEnvironment(const Options& o, const Scene& scene) {
+EnvironmentMap LoadEnvironment(const Options& o, const Scene& scene, uint64_t* counted) {
+  *counted = 0;
   if (o.env.empty()) return {};
   MemoryBudget budget(scene.memoryLimit, o.env);
   budget.Charge(scene.memoryCounted, "the scene " + scene.path);
@@ -24,6 +25,7 @@ EnvironmentMap LoadEnvironment(const Options& o, const Scene& scene) {
         "memory: %s counted with the scene\n",
         o.env.c_str(), env.width, env.height, o.envRotation, o.envIntensity, env.buildMs,
         FormatBytes(budget.Used()).c_str());
+  *counted = budget.Used() - scene.memoryCounted;
   return env;
 }
 

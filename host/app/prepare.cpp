@@ -11,8 +11,11 @@
 #include "image/image.h"
 #include "render/light_table.h"
 #include "scene/gltf_loader.h"
+#include "scene/load_limits.h"
+#include "session/aov.h"
 #include "shared/sampling.h"
 #include "util/atomic_write.h"
+#include "util/byte_size.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -104,16 +107,42 @@ shader::FrameParams FrameFromOptions(const RenderScene& rs, const Camera& cam, g
   return params;
 }
 
+// The frame's memory (session/frame_memory.h) on top of the scene's and the map's,
+// against --max-memory, before the device or the film allocates any of it.
+void CountFrameMemory(Prepared& p, const Options& o, glm::uvec2 size, uint64_t envBytes, uint32_t ranks) {
+  FrameShape shape;
+  shape.width = size.x;
+  shape.height = size.y;
+  shape.gpu = p.ctx != nullptr;
+  // A discrete GPU's buffers are its own; any other device's live in this process's memory.
+  shape.deviceInHost = !p.ctx || p.ctx->Properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
+  shape.compare = o.compare;
+  shape.ranks = ranks;
+  shape.aovPass = o.denoise || std::any_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass);
+  shape.aovChannels = AovChannels(o.aovs);
+  shape.denoise = o.denoise;
+  shape.exrOutput = FormatFromPath(o.out) == ImageFormat::Exr;
+  p.frameParts = FrameMemoryParts(shape);
+  p.frameMemory = BytesPerPixel(p.frameParts) * size.x * size.y;
+  MemoryBudget budget(p.scene.memoryLimit, o.out);
+  budget.Charge(p.scene.memoryCounted + envBytes, "the scene and environment");
+  budget.Charge(
+      p.frameMemory,
+      "a " + std::to_string(size.x) + " × " + std::to_string(size.y) + " image (" + DescribeParts(p.frameParts) + ")",
+      "lower --width and --height, or raise --max-memory");
+}
+
 }  // namespace
 
-Prepared Prepare(const Options& o, bool report) {
+Prepared Prepare(const Options& o, bool report, uint32_t ranks) {
   Prepared p;
   CheckOutputPath(o.out);  // fail before a long render, not after
   if (!o.stats.empty()) CheckWritablePath(o.stats, "a stats");
   PhaseTimer phase;
   p.scene = LoadGltf(o.scene, o.load);
   phase.Lap(p.times.load);
-  EnvironmentMap env = LoadEnvironment(o, p.scene);
+  uint64_t envBytes = 0;
+  EnvironmentMap env = LoadEnvironment(o, p.scene, &envBytes);
   phase.Lap(p.times.environment);
   uint32_t camIndex = 0;
   const Camera cam = ChooseCamera(p.scene, o, &camIndex);
@@ -121,10 +150,15 @@ Prepared Prepare(const Options& o, bool report) {
   // The device before the scene's arrays: without one (auto backend) the CPU renders, and
   // only then does the scene need the CPU's BVH layout.
   p.ctx = OpenVulkan(o);
+  CountFrameMemory(p, o, size, envBytes, ranks);
   phase.Restart();
   p.rs = PrepareForRender(p.scene, o, p.ctx != nullptr, std::move(env));
   phase.Lap(p.times.prepare);
-  if (report && o.verbose) PrintLoadReport(p.scene, p.rs, cam, camIndex);
+  if (report && o.verbose) {
+    PrintLoadReport(p.scene, p.rs, cam, camIndex);
+    std::printf("  memory: %s counted for the %u × %u image (%s)\n", FormatBytes(p.frameMemory).c_str(), size.x, size.y,
+                DescribeParts(p.frameParts).c_str());
+  }
   p.params = FrameFromOptions(p.rs, cam, size, o, report);
   return p;
 }

@@ -50,6 +50,10 @@ SessionSettings SettingsFromOptions(const Options& o, const RenderBackend& backe
 SessionHooks HooksFromOptions(const Options& o) {
   SessionHooks hooks;
   hooks.progress = ProgressLine();
+  hooks.warning = [](const std::string& line) {
+    EndProgressLine();
+    std::fprintf(stderr, "vkpt: warning: %s\n", line.c_str());
+  };
   // Flushed line by line: a script reading a pipe sees each pass as it ends.
   if (o.verbose)
     hooks.report = [](const std::string& line) {
@@ -113,7 +117,8 @@ int Finish(const Options& o, Prepared& p, const RenderedFrame& frame, const Rend
   }
   if (!o.stats.empty()) {
     times.total = SecondsSince(p.start);
-    const std::string json = StatsJson(o, {p.scene, p.rs, frame, reference, times, validationMessages, status, files});
+    const std::string json =
+        StatsJson(o, {p.scene, p.rs, frame, reference, times, validationMessages, status, files, p.frameMemory});
     WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
   }
   return status;
@@ -213,7 +218,7 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
   std::string message;
   int status = Attempt(
       [&] {
-        p = Prepare(o, cluster.Rank() == 0);
+        p = Prepare(o, cluster.Rank() == 0, cluster.Rank() == 0 ? cluster.Size() : 1);
         backend = std::make_unique<RenderBackend>(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
       },
       &message);

@@ -84,9 +84,11 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   JsonObject j;
   j.Str("vkpt_version", VKPT_VERSION).Obj("scene", SceneJson(run)).Str("device", p.engine);
   j.Obj("options", OptionsJson(o)).Int("seed", o.seed).Int("width", image.width).Int("height", image.height);
+  j.Int("frame_memory_counted", run.frameMemory);
   j.Int("spp", p.spp).Raw("spp_per_pass", JsonArray(passes)).Int("samples", samples);
   j.Str("stopped_by", StopReasonName(p.stoppedBy)).Num("estimated_rel_mse", p.estimatedRelMse);
   j.Int("active_pixels", p.activePixels).Int("checkpoints", p.checkpoints);
+  j.Int("checkpoint_failures", p.checkpointFailures);
   const FrameSums& sums = p.sums;
   j.Obj("times_s", TimesJson(run.times)).Int("rays", sums.rays).Num("samples_per_s", double(samples) / p.seconds);
   j.Num("rays_per_s", double(sums.rays) / p.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));

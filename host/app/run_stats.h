@@ -52,6 +52,7 @@ struct RunOutcome {
   uint32_t validationMessages = 0;
   int exitStatus = 0;
   std::vector<std::string> files;  // the image files written, --out first
+  uint64_t frameMemory = 0;        // bytes counted for the frame (session/frame_memory.h)
 };
 
 std::string StatsJson(const Options& o, const RunOutcome& run);

@@ -80,7 +80,7 @@ class CpuFrame final : public FrameRenderer {
     sums_.nonFinite += nonFinite.load();
   }
 
-  FrameSums Sums() override { return sums_; }
+  void AddSumsTo(FrameSums& into) override { AddChunk(into, sums_); }
   void Clear() override {
     sums_.pixels.assign(sums_.pixels.size(), PixelSums{});
     sums_.rays = sums_.nonFinite = sums_.cutShort = 0;

@@ -63,6 +63,15 @@ struct FrameSums {
   uint64_t cutShort = 0;
 };
 
+// Adds a chunk's sums to the frame's: every pixel's Σf, Σf² and count, and the counters
+// (an empty frame takes the chunk's size). Chunks must be added in chunk order for the
+// result to be the one every render makes (session/chunked_frame.h).
+void AddChunk(FrameSums& frame, const FrameSums& chunk);
+
+// Before sums of a width × height frame are added to `frame`: an empty one takes that
+// size (zero sums); one of another size is an error.
+void SizeToAdd(FrameSums& frame, uint32_t width, uint32_t height);
+
 // The image of the sums: every pixel through a Film.
 Image ResolveFilm(const FrameSums& sums);
 
@@ -107,7 +116,14 @@ class FrameRenderer {
   // fraction of the pass now and then, on the calling thread.
   virtual void AddSamples(uint32_t begin, uint32_t count, std::span<const uint8_t> active,
                           const std::function<void(double)>& progress) = 0;
-  virtual FrameSums Sums() = 0;  // the sums so far (Vulkan: read back)
+  // Adds the sums so far (Vulkan: read back) to `into` as AddChunk adds a chunk's: an empty `into` takes this frame's
+  // size. No copy of the frame is made.
+  virtual void AddSumsTo(FrameSums& into) = 0;
+  FrameSums Sums() {
+    FrameSums sums;
+    AddSumsTo(sums);
+    return sums;
+  }
   // Zeroes the sums and counters: the next samples start new sums (a chunk's, chunked_frame.h).
   virtual void Clear() = 0;
   // The AOVs of samples [0, samples) of every pixel, the camera rays of the render's

@@ -22,7 +22,8 @@ struct LoadLimits {
 // lavapipe's (2^27 RGBA32UI texels of four RGBA8 texels each).
 constexpr uint64_t kDefaultMaxTextureTexels = uint64_t(1) << 28;
 
-// Half of the memory this process may have: physical RAM, or a smaller cgroup limit.
+// Half of the memory this process may have: physical RAM, or a smaller cgroup limit or
+// address-space limit (ulimit -v).
 // Half, because the renderer's own arrays (image sums, device copies) come on top of
 // what the scene is charged for.
 uint64_t DefaultMaxMemory();
@@ -34,8 +35,10 @@ class MemoryBudget {
   MemoryBudget(uint64_t limit, std::string file) : limit_(limit), file_(std::move(file)) {}
 
   // Adds `bytes` for `what` ("accessors[3] (268435455 × VEC3)"); throws vkpt::Error
-  // naming the file, `what`, the figure and the limit when the total passes the limit.
-  void Charge(uint64_t bytes, const std::string& what);
+  // naming the file, `what`, the figure, the limit and `advice` when the total passes the
+  // limit.
+  void Charge(uint64_t bytes, const std::string& what,
+              const std::string& advice = "raise --max-memory if the scene is genuine");
 
   uint64_t Used() const { return used_; }
   uint64_t Limit() const { return limit_; }

@@ -106,6 +106,12 @@ std::optional<Aov> AovFromName(std::string_view name) {
 
 bool NeedsAovPass(Aov aov) { return aov != Aov::kVariance && aov != Aov::kSpp; }
 
+uint32_t AovChannels(const std::vector<Aov>& aovs) {
+  uint32_t n = 0;
+  for (Aov aov : aovs) n += uint32_t(Suffixes(aov).size());
+  return n;
+}
+
 std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums& aovSums, const FrameSums& sums,
                                   const Image& image) {
   const size_t pixels = size_t(image.width) * image.height;

@@ -32,6 +32,9 @@ std::optional<Aov> AovFromName(std::string_view name);
 // come from the render's own sums.
 bool NeedsAovPass(Aov aov);
 
+// Float channels of these AOVs' layers (3 for albedo, 1 for depth, …).
+uint32_t AovChannels(const std::vector<Aov>& aovs);
+
 // One AOV of the image: `channels` values per pixel, interleaved, named in EXR as
 // "<name>.<channel suffix>".
 struct AovLayer {

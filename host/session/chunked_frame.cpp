@@ -6,23 +6,6 @@
 
 namespace vkpt {
 
-void AddChunk(FrameSums& frame, const FrameSums& chunk) {
-  if (frame.pixels.empty()) {
-    frame.width = chunk.width;
-    frame.height = chunk.height;
-    frame.pixels.resize(chunk.pixels.size());
-  }
-  if (frame.pixels.size() != chunk.pixels.size()) throw Error("a chunk's size differs from its frame's");
-  for (size_t i = 0; i < frame.pixels.size(); ++i) {
-    frame.pixels[i].sum += chunk.pixels[i].sum;
-    frame.pixels[i].sumOfSquares += chunk.pixels[i].sumOfSquares;
-    frame.pixels[i].samples += chunk.pixels[i].samples;
-  }
-  frame.rays += chunk.rays;
-  frame.nonFinite += chunk.nonFinite;
-  frame.cutShort += chunk.cutShort;
-}
-
 ChunkedFrame::ChunkedFrame(FrameRenderer& inner, uint32_t chunkSpp) : inner_(inner), chunkSpp_(chunkSpp) {
   if (chunkSpp_ == 0) throw Error("a chunk needs at least one sample per pixel");
 }
@@ -40,7 +23,7 @@ void ChunkedFrame::AddSamples(uint32_t begin, uint32_t count, std::span<const ui
     open_ = true;
     added += piece;
     if ((first + piece) % chunkSpp_ == 0) {
-      AddChunk(closed_, inner_.Sums());
+      inner_.AddSumsTo(closed_);
       inner_.Clear();
       open_ = false;
     }
@@ -48,10 +31,13 @@ void ChunkedFrame::AddSamples(uint32_t begin, uint32_t count, std::span<const ui
   done_ += count;
 }
 
-FrameSums ChunkedFrame::Sums() {
-  FrameSums sums = closed_;
-  if (open_ || sums.pixels.empty()) AddChunk(sums, inner_.Sums());
-  return sums;
+void ChunkedFrame::AddSumsTo(FrameSums& into) {
+  if (closed_.pixels.empty()) {
+    inner_.AddSumsTo(into);
+    return;
+  }
+  AddChunk(into, closed_);
+  if (open_) inner_.AddSumsTo(into);
 }
 
 void ChunkedFrame::Clear() {

@@ -17,13 +17,9 @@ namespace vkpt {
 // Samples per pixel per chunk unless --chunk says otherwise.
 constexpr uint32_t kDefaultChunkSpp = 16;
 
-// Adds a chunk's sums to the frame's: every pixel's Σf, Σf² and count, and the counters.
-// Chunks must be added in chunk order for the result to be the one every render makes.
-void AddChunk(FrameSums& frame, const FrameSums& chunk);
-
 // A FrameRenderer that renders through `inner` (which must outlive it) chunk by chunk: a
 // pass is cut at chunk boundaries, and at each one the inner frame's sums are added to
-// the frame's and cleared. Sums() is the closed chunks' sums with the open chunk's added last.
+// the frame's and cleared. AddSumsTo adds the closed chunks' sums, then the open chunk's.
 class ChunkedFrame final : public FrameRenderer {
  public:
   ChunkedFrame(FrameRenderer& inner, uint32_t chunkSpp);
@@ -31,7 +27,7 @@ class ChunkedFrame final : public FrameRenderer {
   // Passes must follow each other: `begin` is the samples taken so far.
   void AddSamples(uint32_t begin, uint32_t count, std::span<const uint8_t> active,
                   const std::function<void(double)>& progress) override;
-  FrameSums Sums() override;
+  void AddSumsTo(FrameSums& into) override;
   void Clear() override;
   AovSums RenderAovs(uint32_t samples) override { return inner_.RenderAovs(samples); }
   std::string Engine() const override { return inner_.Engine(); }

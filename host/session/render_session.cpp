@@ -7,6 +7,7 @@
 
 #include "image/image.h"
 #include "session/noise_estimate.h"
+#include "util/error.h"
 #include "util/graceful_stop.h"
 
 namespace vkpt {
@@ -62,8 +63,7 @@ class FrameLoop {
 
   // At a decision point: the noise, the pixels that go on, and perhaps the end.
   std::string Judge() {
-    sums_ = source_.Sums();
-    fresh_ = true;
+    TakeSums();
     const Decision d = Decide(budget_, sums_, active_);
     noise_ = d.noise;
     activePixels_ = d.activePixels;
@@ -75,13 +75,28 @@ class FrameLoop {
     if (budget_.checkpointSeconds <= 0.0 || settings_.checkpointPath.empty() ||
         Since(start_) - lastCheckpoint_ < budget_.checkpointSeconds)
       return;
-    if (!fresh_) sums_ = source_.Sums();
-    fresh_ = true;
-    WriteImage(ResolveFilm(sums_), settings_.checkpointPath, settings_.exposure);
-    ++checkpoints_;
+    TakeSums();
     lastCheckpoint_ = Since(start_);
+    // A checkpoint that cannot be written (a full disk) leaves the last one in place; the
+    // render goes on, and the final write will fail, or succeed, on its own.
+    try {
+      WriteImage(ResolveFilm(sums_), settings_.checkpointPath, settings_.exposure);
+    } catch (const Error& e) {
+      if (++checkpointFailures_ == 1 && hooks_.warning)
+        hooks_.warning(std::string("a checkpoint could not be written, the render goes on: ") + e.what());
+      return;
+    }
+    ++checkpoints_;
     if (hooks_.report)
       hooks_.report("checkpoint: " + settings_.checkpointPath + " at " + std::to_string(done_) + " spp");
+  }
+
+  // sums_ = every sample taken; the old copy is freed first (one frame of sums, not two).
+  void TakeSums() {
+    if (fresh_) return;
+    sums_ = FrameSums{};
+    sums_ = source_.Sums();
+    fresh_ = true;
   }
 
   std::string PassLine(uint32_t n) const {
@@ -95,7 +110,8 @@ class FrameLoop {
 
   RenderedFrame Result() {
     RenderedFrame r;
-    r.sums = fresh_ ? std::move(sums_) : source_.Sums();
+    TakeSums();
+    r.sums = std::move(sums_);
     r.ranks = source_.Finish();
     r.stoppedBy = *stoppedBy_;
     r.signal = GracefulStop::Signal();
@@ -108,6 +124,7 @@ class FrameLoop {
     r.samples = TotalSamples(r.sums);
     r.activePixels = active_.empty() ? r.sums.pixels.size() : activePixels_;
     r.checkpoints = checkpoints_;
+    r.checkpointFailures = checkpointFailures_;
     return r;
   }
 
@@ -127,6 +144,7 @@ class FrameLoop {
   FrameSums sums_;
   bool fresh_ = false;  // sums_ holds every sample taken
   uint32_t checkpoints_ = 0;
+  uint32_t checkpointFailures_ = 0;
   double lastCheckpoint_ = 0.0;
 };
 

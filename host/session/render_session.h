@@ -32,13 +32,14 @@ struct RenderedFrame {
   uint32_t spp = 0;      // samples per pixel of the passes (adaptive: the most any pixel has)
   uint64_t samples = 0;  // every pixel's samples added up
   StopReason stoppedBy = StopReason::kSpp;
-  int signal = 0;                // kSignal: which one
-  double estimatedRelMse = 0.0;  // of the final sums (session/noise_estimate.h)
-  uint64_t activePixels = 0;     // adaptive: pixels still taking samples at the end
-  uint32_t checkpoints = 0;      // images written during the render
-  std::string engine;            // the source's, at the end
-  std::vector<RankShare> ranks;  // an MPI job's ranks (empty for one process)
-  double seconds = 0.0;          // the loop, checkpoints included
+  int signal = 0;                   // kSignal: which one
+  double estimatedRelMse = 0.0;     // of the final sums (session/noise_estimate.h)
+  uint64_t activePixels = 0;        // adaptive: pixels still taking samples at the end
+  uint32_t checkpoints = 0;         // images written during the render
+  uint32_t checkpointFailures = 0;  // checkpoints that could not be written (the render went on)
+  std::string engine;               // the source's, at the end
+  std::vector<RankShare> ranks;     // an MPI job's ranks (empty for one process)
+  double seconds = 0.0;             // the loop, checkpoints included
   double aovSeconds = 0.0;
   double denoiseSeconds = 0.0;
 };
@@ -55,8 +56,9 @@ struct SessionSettings {
 };
 
 struct SessionHooks {
-  std::function<void(double)> progress;            // finished fraction, now and then
-  std::function<void(const std::string&)> report;  // a line per pass and checkpoint (-v)
+  std::function<void(double)> progress;             // finished fraction, now and then
+  std::function<void(const std::string&)> report;   // a line per pass and checkpoint (-v)
+  std::function<void(const std::string&)> warning;  // the first checkpoint that could not be written
 };
 
 RenderedFrame RenderSession(SampleSource& source, const SessionSettings& settings, const SessionHooks& hooks = {});

@@ -109,23 +109,22 @@ class GpuFrame final : public FrameRenderer {
     DispatchSamples(ctx_, *pipeline_, b_, frame_, begin, count, options_, state_, progress);
   }
 
-  FrameSums Sums() override {
+  void AddSumsTo(FrameSums& into) override {
     ctx_.Submit([&](VkCommandBuffer cb) {
       CopyToHost(cb, {{&b_.accum, &b_.accumHost}, {&b_.counters, &b_.countersHost}});
     });
     const auto* sums = static_cast<const glm::vec4*>(b_.accumHost.Mapped());
     const auto* count = static_cast<const glm::uvec4*>(b_.countersHost.Mapped());
-    FrameSums f;
-    f.width = frame_.width;
-    f.height = frame_.height;
-    f.pixels.resize(size_t(f.width) * f.height);
-    for (size_t i = 0; i < f.pixels.size(); ++i) {
-      f.pixels[i] = {glm::dvec3(glm::vec3(sums[2 * i])), glm::dvec3(glm::vec3(sums[2 * i + 1])), count[i].w};
-      f.rays += count[i].x;
-      f.nonFinite += count[i].y;
-      f.cutShort += count[i].z;
+    SizeToAdd(into, frame_.width, frame_.height);
+    for (size_t i = 0; i < into.pixels.size(); ++i) {
+      PixelSums& p = into.pixels[i];
+      p.sum += glm::dvec3(glm::vec3(sums[2 * i]));
+      p.sumOfSquares += glm::dvec3(glm::vec3(sums[2 * i + 1]));
+      p.samples += count[i].w;
+      into.rays += count[i].x;
+      into.nonFinite += count[i].y;
+      into.cutShort += count[i].z;
     }
-    return f;
   }
 
   void Clear() override { ClearSums(ctx_, b_); }
