@@ -1,10 +1,21 @@
 // WriteFileAtomically: the bytes arrive exactly, replace an existing file, and a failure
-// names the file and the OS error and leaves no temporary file.
+// names the file and the OS error and leaves no temporary file; a writer killed at any
+// moment (SIGKILL) leaves the previous file or the new one, whole, and no temporary.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <random>
+#include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "test_util.h"
@@ -55,6 +66,81 @@ TEST(AtomicWrite, FailedRenameRemovesTheTemporary) {
   }
   EXPECT_EQ(DirectoryListing(dir), std::vector<std::string>{"out.bin"}) << "the temporary file was left behind";
   fs::remove_all(dir);
+}
+
+using Writer = void (*)(const std::string& path, std::span<const uint8_t> bytes);
+
+// The mutant: the file written in place, as fopen("wb") and fwrite do.
+void WriteInPlace(const std::string& path, std::span<const uint8_t> bytes) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) std::abort();
+  for (size_t done = 0; done < bytes.size(); done += 1 << 16)
+    std::fwrite(bytes.data() + done, 1, std::min<size_t>(1 << 16, bytes.size() - done), f);
+  std::fclose(f);
+}
+
+// Whether files in `dir` can be created without a name (Linux's O_TMPFILE, which ext4,
+// xfs, btrfs and tmpfs have; WriteFileAtomically falls back to a named temporary).
+bool UnnamedFilesWork(const std::string& dir) {
+  const int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (fd < 0) return false;
+  ::close(fd);
+  return true;
+}
+
+struct KillOutcome {
+  int torn = 0;               // kills after which the file was neither version, whole
+  int leftovers = 0;          // kills after which another file was in the folder
+  bool unnamedFiles = false;  // UnnamedFilesWork in that folder
+};
+
+// `kills` times: a child process writes two 4 MiB versions of a file in turn, without
+// end, and is killed by SIGKILL 10–100 ms after it starts (a random moment of some write:
+// the child does nothing else). After each kill the folder is inspected and cleaned of
+// anything but the file, which the next child overwrites.
+KillOutcome KillWhileWriting(Writer write, int kills) {
+  const std::string dir = FreshTempDirectory("atomic-kill");
+  const std::string path = dir + "/image.bin";
+  std::vector<uint8_t> versions[2];
+  for (int v = 0; v < 2; ++v) {
+    versions[v].resize(4 << 20);
+    for (size_t i = 0; i < versions[v].size(); ++i) versions[v][i] = uint8_t(i * (v ? 13 : 7) + (i >> 12));
+  }
+  std::mt19937 random(2026);
+  KillOutcome outcome;
+  outcome.unnamedFiles = UnnamedFilesWork(dir);
+  for (int k = 0; k < kills; ++k) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+      for (int v = 0;; v ^= 1) write(path, versions[v]);
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(std::uniform_int_distribution(10000, 100000)(random)));
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+    if (fs::exists(path)) {
+      const std::string bytes = test::ReadFile(path);
+      const bool whole = bytes == std::string(versions[0].begin(), versions[0].end()) ||
+                         bytes == std::string(versions[1].begin(), versions[1].end());
+      outcome.torn += !whole;
+    }
+    bool other = false;
+    for (const std::string& name : DirectoryListing(dir))
+      if (name != "image.bin") other = fs::remove(dir + "/" + name);
+    outcome.leftovers += other;
+  }
+  fs::remove_all(dir);
+  return outcome;
+}
+
+TEST(AtomicWrite, KilledAtRandomMomentsLeavesAWholeFileAndNoTemporary) {
+  const KillOutcome atomic = KillWhileWriting(WriteFileAtomically, 20);
+  EXPECT_EQ(atomic.torn, 0) << "of 20 kills";
+  if (atomic.unnamedFiles) EXPECT_EQ(atomic.leftovers, 0) << "of 20 kills";
+  else
+    std::printf("  the temporary folder has no O_TMPFILE: %d of 20 kills left a named temporary\n", atomic.leftovers);
+  // The harness has teeth: the same kills tear a file written in place.
+  const KillOutcome inPlace = KillWhileWriting(WriteInPlace, 20);
+  EXPECT_GE(inPlace.torn, 10) << "of 20 kills";
 }
 
 }  // namespace

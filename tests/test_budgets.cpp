@@ -7,6 +7,7 @@
 
 #include <signal.h>
 
+#include <random>
 #include <string>
 #include <vector>
 
@@ -130,6 +131,25 @@ TEST(Signals, CheckpointLeavesACompleteImageDuringTheRender) {
   EXPECT_EQ(dir.Listing(), std::vector<std::string>{"image.pfm"});
   const Image image = ReadPfm(dir / "image.pfm");
   EXPECT_EQ(image.width, 64u);
+}
+
+// SIGKILL at 20 random moments of a render that rewrites its checkpoint after every pass:
+// each time --out holds one whole image (util/atomic_write.h; tests/test_atomic_write.cpp
+// kills the writer itself mid-write) and nothing else.
+TEST(Signals, KilledAtRandomMomentsLeavesAWholeCheckpoint) {
+  std::mt19937 random(29);
+  for (int k = 0; k < 20; ++k) {
+    const test::TempFolder dir("budget-checkpoint-kill");
+    const double delay = std::uniform_real_distribution(0.0, 0.5)(random);
+    std::vector<std::string> args =
+        CornellArgs("cpu", 128, {"--time", "600", "-v", "--checkpoint", "0.001", "--out", dir / "image.pfm"});
+    ProcessResult r =
+        RunVkpt(args, 120.0, "", {}, {}, {.after = "checkpoint:", .signals = {SIGKILL}, .delaySeconds = delay});
+    ASSERT_EQ(r.signal, SIGKILL) << r.Describe();
+    ASSERT_EQ(dir.Listing(), std::vector<std::string>{"image.pfm"}) << "kill " << k << " after " << delay << " s";
+    const Image image = ReadPfm(dir / "image.pfm");  // throws unless whole
+    EXPECT_EQ(image.width * image.height, 128u * 128u);
+  }
 }
 
 TEST(Signals, CheckpointsAreCountedInTheStats) {

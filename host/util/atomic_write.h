@@ -8,9 +8,12 @@
 namespace vkpt {
 
 // Writes `bytes` to a new temporary file beside `path` (same directory, so the rename is
-// atomic), checks every write, fsyncs, closes and renames it over `path`. On any failure
-// the temporary is removed, `path` is left as it was, and vkpt::Error names `path` and
-// the OS error. SIGINT/SIGTERM meanwhile also remove the temporary (TempFileGuard).
+// atomic), checks every write, fsyncs, closes and renames it over `path`: any reader, and
+// any number of processes writing the same path, see one complete file or the one before.
+// On any failure the temporary is removed, `path` is left as it was, and vkpt::Error
+// names `path` and the OS error. SIGINT/SIGTERM meanwhile also remove the temporary
+// (TempFileGuard); SIGKILL leaves none either where the file system has O_TMPFILE (ext4,
+// xfs, btrfs, tmpfs): the temporary has no name until it is complete.
 void WriteFileAtomically(const std::string& path, std::span<const uint8_t> bytes);
 
 // Throws vkpt::Error unless WriteFileAtomically(path, …) could succeed as far as can be
