@@ -90,6 +90,12 @@ Image ReadPfm(const std::string& path) {
         u = __builtin_bswap32(u);
         std::memcpy(&p[c], &u, 4);
       }
+  // A radiance image holds finite values (vkpt writes no others); NaN or infinity would
+  // turn every statistic of --diff into NaN.
+  for (size_t i = 0; i < img.pixels.size(); ++i)
+    if (!std::isfinite(img.pixels[i].x) || !std::isfinite(img.pixels[i].y) || !std::isfinite(img.pixels[i].z))
+      throw Error(path + ": pixel (" + std::to_string(i % img.width) + ", " + std::to_string(i / img.width) +
+                  ") is not a finite number (NaN or infinity)");
   return img;
 }
 

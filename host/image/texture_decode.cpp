@@ -166,10 +166,22 @@ TextureImageHeader ReadJpegFrame(std::span<const unsigned char> b, unsigned mark
   return header;
 }
 
+// Each 8 × 8 block of a full-resolution component takes at least one bit of image data
+// (its DC coefficient's Huffman code; a 1-bit code is the shortest, and a progressive AC
+// scan's end-of-band run adds nothing), so image data too short for the blocks the frame
+// declares is refused before stb allocates the image and fills it in from nothing.
+void CheckScanBytes(const TextureImageHeader& header, uint64_t scanBytes) {
+  const uint64_t blocks = uint64_t((header.width + 7) / 8) * ((header.height + 7) / 8);
+  if (scanBytes * 8 < blocks)
+    Corrupt("JPEG: " + std::to_string(scanBytes) + " bytes of image data cannot hold " + std::to_string(header.width) +
+            " × " + std::to_string(header.height) + " pixels");
+}
+
 // Walks a JPEG's segments and scans from SOI to EOI: one frame header, before any scan;
-// Huffman tables stb can hold; nothing cut short.
+// Huffman tables stb can hold; image data enough for the frame; nothing cut short.
 TextureImageHeader ReadJpegHeader(std::span<const unsigned char> b) {
   std::optional<TextureImageHeader> header;
+  uint64_t scanBytes = 0;
   for (size_t at = 2;;) {
     if (at >= b.size()) Truncated("JPEG: it ends at byte " + std::to_string(b.size()) + ", before its end marker");
     if (b[at] != 0xff) Corrupt("JPEG: no marker at byte " + std::to_string(at));
@@ -178,6 +190,7 @@ TextureImageHeader ReadJpegHeader(std::span<const unsigned char> b) {
     const unsigned marker = b[at++];
     if (marker == 0xd9) {
       if (!header) Corrupt("JPEG: it has no frame header");
+      CheckScanBytes(*header, scanBytes);
       return *header;
     }
     if (marker == 0xd8 || marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) continue;  // no length
@@ -193,7 +206,13 @@ TextureImageHeader ReadJpegHeader(std::span<const unsigned char> b) {
       header = ReadJpegFrame(b, marker, at, length);
     }
     if (marker == 0xda && !header) Corrupt("JPEG: its image data comes before a frame header");
-    at = marker == 0xda ? SkipScanData(b, at + length) : at + length;
+    if (marker == 0xda) {
+      const size_t end = SkipScanData(b, at + length);
+      scanBytes += end - (at + length);
+      at = end;
+    } else {
+      at += length;
+    }
   }
 }
 
