@@ -3,12 +3,10 @@
 // expected outcome; anything else is a finding (fuzz_target.h).
 #include <cstdint>
 
-#include "fuzz_target.h"
-#include "image/image.h"
-#include "util/error.h"
+#include "fuzz_bodies.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  vkpt::fuzz::TempInput input(vkpt::fuzz::ScratchDir("vkpt-fuzz-pfm") + "/image.pfm", vkpt::fuzz::AsText(data, size));
-  vkpt::fuzz::ExpectOnly<vkpt::Error>("fuzz_pfm", "vkpt::Error", [&] { vkpt::ReadPfm(input.path()); });
+  vkpt::fuzz::ExpectOnly<vkpt::Error>("fuzz_pfm", "vkpt::Error",
+                                      [&] { vkpt::fuzz::RunPfm(vkpt::fuzz::AsText(data, size)); });
   return 0;
 }
