@@ -9,6 +9,8 @@
 #include <fstream>
 #include <limits>
 
+#include <tinyexr.h>
+
 #include "image/image_load.h"
 #include "scene/load_limits.h"
 #include "test_util.h"
@@ -124,6 +126,36 @@ TEST(EnvironmentLoad, ExrNegativesAreClampedAndNonFiniteRefused) {
   image.At(2, 1).y = std::numeric_limits<float>::infinity();
   WriteImage(image, dir + "/map.exr");
   EXPECT_NE(LoadError(dir + "/map.exr").find("texel (2, 1) is not finite"), std::string::npos);
+}
+
+// An EXR whose R, G and B hold 32-bit integers (an ID map, not radiance): refused by name.
+TEST(EnvironmentLoad, ExrIntegerChannelsAreRefused) {
+  const std::string dir = test::FreshTempDirectory("env-exr-uint");
+  std::vector<uint32_t> plane(4 * 2, 7u);
+  unsigned char* planes[3] = {reinterpret_cast<unsigned char*>(plane.data()),
+                              reinterpret_cast<unsigned char*>(plane.data()),
+                              reinterpret_cast<unsigned char*>(plane.data())};
+  EXRChannelInfo channels[3] = {};
+  for (int c = 0; c < 3; ++c) channels[c].name[0] = "BGR"[c];
+  int types[3] = {TINYEXR_PIXELTYPE_UINT, TINYEXR_PIXELTYPE_UINT, TINYEXR_PIXELTYPE_UINT};
+  EXRHeader header;
+  InitEXRHeader(&header);
+  header.num_channels = 3;
+  header.channels = channels;
+  header.pixel_types = types;
+  header.requested_pixel_types = types;
+  EXRImage image;
+  InitEXRImage(&image);
+  image.num_channels = 3;
+  image.width = 4;
+  image.height = 2;
+  image.images = planes;
+  const char* err = nullptr;
+  ASSERT_EQ(SaveEXRImageToFile(&image, &header, (dir + "/ids.exr").c_str(), &err), TINYEXR_SUCCESS) << err;
+  EXPECT_NE(LoadError(dir + "/ids.exr").find("ids.exr: channel B holds integers; an environment map needs floats"),
+            std::string::npos)
+      << LoadError(dir + "/ids.exr");
+  std::filesystem::remove_all(dir);
 }
 
 TEST(EnvironmentLoad, MemoryIsChargedBeforeItIsSpent) {
