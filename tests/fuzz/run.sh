@@ -103,6 +103,15 @@ for t in "${targets[@]}"; do
 
   if [ "$status" -ne 0 ] || [ -n "$(ls -A "$dir/findings")" ]; then
     tail -n 60 "$dir/fuzz.log" >&2
+    # -timeout is wall-clock time: a loaded machine can make any input slow. Timed alone,
+    # an input far within the limit was the machine's (regressions/README.md).
+    for f in "$dir"/findings/timeout-*; do
+      [ -e "$f" ] || continue
+      start=$EPOCHREALTIME
+      "$build/fuzz_$t" -runs=1 "$f" > /dev/null 2>&1 || true
+      echo "fuzz: $t: $(basename "$f") replays alone in" \
+           "$(awk -v a="$start" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.2f", b - a }') s" >&2
+    done
     echo "fuzz: $t: FINDING (exit status $status); the input is kept:" >&2
     ls -l "$dir/findings" >&2
     failed+=("$t")
