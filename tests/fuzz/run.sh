@@ -7,6 +7,9 @@
 #            every target for SECONDS each
 #          tests/fuzz/run.sh --only TARGET SECONDS [BUILD_DIR=build-fuzz]
 #            one target (loader, env, texture, pfm or options)
+# $VKPT_FUZZ_TIMEOUT (default 5) is the seconds an input may take: libFuzzer measures
+# wall-clock time, so a long run on a machine busy with other work may raise it (a hang
+# still ends the run; CI keeps 5).
 # Seeds, read in place from the external test data ($VKPT_TEST_DATA or ../shared) and
 # never copied into the repository:
 #   loader   every .gltf/.glb of gltf-corpus/, the PBR feature models under 4 MB
@@ -18,7 +21,7 @@
 #   options  the command lines of tests/fuzz/options.seeds, NUL-separated
 # Generated seeds and the corpus each run grows go to a scratch directory outside the
 # repository. Any finding (crash, sanitizer report, exception other than the target's
-# documented error type, an input slower than 5 s, over 1 GiB in one allocation or 2 GiB
+# documented error type, an input slower than $VKPT_FUZZ_TIMEOUT, over 1 GiB in one allocation or 2 GiB
 # resident) fails the run once every target has run: the input is kept in the scratch
 # directory, to be added to tests/fuzz/regressions/<target>/ (see the README there).
 # Prints one line per target: "fuzz: <target>: executions N (R/s), coverage …".
@@ -87,7 +90,7 @@ for t in "${targets[@]}"; do
   echo "fuzz: $t: $(wc -l < "$dir/seeds") seed files, ${each} s, scratch $dir"
   status=0
   "$build/fuzz_$t" "$dir/corpus" -seed_inputs=@"$dir/seeds.csv" "${dict[@]}" \
-    -max_total_time="$each" -timeout=5 -rss_limit_mb=2048 -malloc_limit_mb=1024 \
+    -max_total_time="$each" -timeout="${VKPT_FUZZ_TIMEOUT:-5}" -rss_limit_mb=2048 -malloc_limit_mb=1024 \
     -artifact_prefix="$dir/findings/" -print_final_stats=1 \
     < /dev/null > "$dir/fuzz.log" 2>&1 || status=$?
 
