@@ -324,6 +324,14 @@ TEST(Bsdf, SampleWeightIsFCosOverPdf) {
   EXPECT_EQ(bad, 0);
 }
 
+// The BSDF without the rough dielectric's compensation, which scales its lobes by
+// 1 / E(μo) and so is not reciprocal by design (bsdf.h): what must be reciprocal.
+Bsdf Uncompensated(const Material& m, vec3 wo, bool frontFace) {
+  Bsdf b = PrepareBsdf(m, wo, frontFace);
+  b.glassScale = 1.0f;
+  return b;
+}
+
 TEST(Bsdf, EvalIsReciprocalFiniteNonNegative) {
   Uniform u(8);
   int bad = 0;
@@ -333,8 +341,8 @@ TEST(Bsdf, EvalIsReciprocalFiniteNonNegative) {
     const Material m = RandomMaterial(u);
     const vec3 wo = u.Hemisphere(), wi = u.Hemisphere();
     const bool frontFace = u() < 0.7f;
-    const vec3 f = EvalBsdf(PrepareBsdf(m, wo, frontFace), wo, wi);
-    const vec3 g = EvalBsdf(PrepareBsdf(m, wi, frontFace), wi, wo);
+    const vec3 f = EvalBsdf(Uncompensated(m, wo, frontFace), wo, wi);
+    const vec3 g = EvalBsdf(Uncompensated(m, wi, frontFace), wi, wo);
     bool ok = Finite(f) && Finite(g) && f.x >= 0.0f && f.y >= 0.0f && f.z >= 0.0f && Close(f, g, 1e-4f, 1e-6f);
     for (int c = 0; c < 3; ++c)
       worst = std::max(worst, std::abs(double(f[c]) - g[c]) / std::max({1e-6, double(f[c]), double(g[c])}));
@@ -350,7 +358,7 @@ TEST(Bsdf, EvalIsReciprocalFiniteNonNegative) {
 
 // Across a volume's boundary the radiance BTDF obeys f(ωo, ωi) / ηo² = f(ωi, ωo) / ηi²;
 // the reverse evaluation happens in the frame of the other side (z and y negated, a
-// rotation), from inside. A thin wall is symmetric.
+// rotation), from inside. A thin wall is symmetric. (Without the compensation, as above.)
 TEST(Bsdf, TransmissionIsReciprocalUpToEtaSquared) {
   Uniform u(10);
   int bad = 0, nonzero = 0;
@@ -364,8 +372,8 @@ TEST(Bsdf, TransmissionIsReciprocalUpToEtaSquared) {
     const vec3 wi = -u.Hemisphere();  // below: transmitted
     const bool frontFace = u() < 0.5f;
     const vec3 wo2(wi.x, -wi.y, -wi.z), wi2(wo.x, -wo.y, -wo.z);
-    const vec3 f = EvalBsdf(PrepareBsdf(m, wo, frontFace), wo, wi);
-    const vec3 g = EvalBsdf(PrepareBsdf(m, wo2, !frontFace), wo2, wi2);
+    const vec3 f = EvalBsdf(Uncompensated(m, wo, frontFace), wo, wi);
+    const vec3 g = EvalBsdf(Uncompensated(m, wo2, !frontFace), wo2, wi2);
     // ηo / ηi: the index on ωo's side over the one on ωi's.
     const float etaO = frontFace ? 1.0f : m.ior, etaI = frontFace ? m.ior : 1.0f;
     const float scale = volume ? (etaI * etaI) / (etaO * etaO) : 1.0f;
@@ -524,10 +532,9 @@ TEST(BsdfFurnace, MixtureConservesEnergy) {
   }
 }
 
-// White transmissive surfaces (base 1, specular 1, ior 1.5): the energy reflected plus
-// transmitted never exceeds what arrives, and near-smooth surfaces lose nothing. Rough
-// ones lose what single scattering loses (no multiple-scattering term for f_t): the
-// table is the measurement the BSDF's header refers to.
+// White transmissive surfaces (base 1, specular 1, ior 1.5) by SampleBsdf, the renderers'
+// sampler: reflected plus transmitted energy is 1 within 0.5 % (plus 3 standard errors)
+// at every roughness, from either side of a volume and through a thin wall.
 TEST(BsdfFurnace, TransmissionConservesEnergy) {
   struct Case {
     const char* name;
@@ -536,7 +543,7 @@ TEST(BsdfFurnace, TransmissionConservesEnergy) {
   const Case cases[] = {{"glass, entering", true, true}, {"glass, leaving", true, false}, {"thin wall", false, true}};
   const float roughnesses[] = {0.0f, 0.1f, 0.3f, 0.6f, 1.0f};
   const float mus[] = {0.1f, 0.5f, 1.0f};
-  std::printf("white transmissive furnace: reflected + eta^2 transmitted, must be <= 1 + 3 se, >= 0.99 at r <= 0.1:\n");
+  std::printf("white transmissive furnace: reflected + eta^2 transmitted, must be 1 +- (0.005 + 3 se):\n");
   uint32_t seed = 500;
   for (const Case& c : cases)
     for (float r : roughnesses) {
@@ -545,13 +552,72 @@ TEST(BsdfFurnace, TransmissionConservesEnergy) {
         const Material m = Transmissive(MakeMaterial(vec3(1.0f), 0.0f, r, 1.0f, 1.5f), 1.0f, c.volume);
         const Albedo a = EstimateAlbedo(m, mu, seed++, 320, c.frontFace);
         std::printf("  mu %.1f: %.4f +- %.4f", mu, a.mean.y, a.stderr_.y);
-        EXPECT_LE(a.mean.y, 1.0 + 3.0 * a.stderr_.y + 1e-4) << c.name << " creates energy at r " << r << ", mu " << mu;
-        if (r <= 0.1f) {
-          EXPECT_GE(a.mean.y, 0.99) << c.name << " loses energy at r " << r << ", mu " << mu;
-        }
+        EXPECT_NEAR(a.mean.y, 1.0, 0.005 + 3.0 * a.stderr_.y) << c.name << " at r " << r << ", mu " << mu;
       }
       std::printf("\n");
     }
+}
+
+// The albedo of a white rough dielectric's two lobes at cos θo = mu, each integrated over
+// its own visible-normal samples on a 64 × 512 grid (u2 dense near 1, where the normals
+// tilt most): reflection f cos / pdf above, etap² f |cos| / pdf below. Deterministic; a
+// few parts in 10⁴ (the weights jump where total internal reflection begins).
+double LobeSumAlbedo(const Material& m, float mu, bool frontFace, float* glassScale) {
+  const vec3 wo = Outgoing(mu);
+  const Bsdf b = PrepareBsdf(m, wo, frontFace);
+  *glassScale = b.glassScale;
+  double sum = 0.0;
+  const int nPhi = 64, nTail = 512;
+  for (int i = 0; i < nPhi; ++i)
+    for (int j = 0; j < nTail; ++j) {
+      const double x = (j + 0.5) / nTail, jacobian = 4.0 * std::pow(1.0 - x, 3.0);
+      const vec3 h = SampleGgxVisibleNormal(wo, b.alpha, (float(i) + 0.5f) / nPhi, float(1.0 - std::pow(1.0 - x, 4.0)));
+      const vec3 reflected = 2.0f * dot(wo, h) * h - wo;
+      if (reflected.z > 0.0f) {
+        const float pdf = GgxReflectionPdf(wo, reflected, b.alpha);
+        if (pdf > 0.0f) sum += jacobian * EvalBsdf(b, wo, reflected).y * reflected.z / pdf;
+      }
+      const vec3 refracted = Refract(wo, h, b.etap);
+      if (refracted.z < 0.0f) {
+        const float pdf = GgxRefractionPdf(wo, refracted, h, b.etap, b.alpha);
+        if (pdf > 0.0f) sum += jacobian * EvalBsdf(b, wo, refracted).y * -refracted.z / pdf * double(b.etap) * b.etap;
+      }
+    }
+  return sum / (double(nPhi) * nTail);
+}
+
+// The compensated rough dielectric (bsdf.h: its lobes over their albedo from the table)
+// returns 1 within 0.5 % over 64 cosines (16 in a sanitizer build) × both sides ×
+// roughness 0.05–1 × ior 1.1, 1.5 and 2.4 — values between the table's grid points, so
+// its interpolation is judged.
+TEST(BsdfFurnace, RoughDielectricAlbedoIsOneEverywhere) {
+  const float iors[] = {1.1f, 1.5f, 2.4f};
+  const float roughnesses[] = {0.05f, 0.1f, 0.3f, 0.6f, 1.0f};
+  const int cosines = 64 / int(test::kSampleDivisor);
+  std::printf("rough dielectric albedo over %d cosines (0.02..1), compensated [uncompensated], must be 1 +- 0.005:\n",
+              cosines);
+  double worst = 0.0;
+  for (float ior : iors)
+    for (bool entering : {true, false}) {
+      std::printf("  ior %.1f %-8s", ior, entering ? "entering" : "leaving");
+      for (float r : roughnesses) {
+        double lo = 2.0, hi = 0.0, rawLo = 2.0, rawHi = 0.0;
+        for (int k = 0; k < cosines; ++k) {
+          const float mu = 0.02f + 0.98f * float(k) / float(cosines - 1);
+          float scale = 1.0f;
+          const double e = LobeSumAlbedo(Transmissive(MakeMaterial(vec3(1.0f), 0.0f, r, 1.0f, ior), 1.0f, true), mu,
+                                         entering, &scale);
+          lo = std::min(lo, e), hi = std::max(hi, e);
+          rawLo = std::min(rawLo, e / scale), rawHi = std::max(rawHi, e / scale);
+          worst = std::max(worst, std::abs(e - 1.0));
+          EXPECT_NEAR(e, 1.0, 0.005) << "ior " << ior << (entering ? " entering" : " leaving") << ", roughness " << r
+                                     << ", mu " << mu;
+        }
+        std::printf(" | r %.2f %.3f..%.3f [%.2f..%.2f]", r, lo, hi, rawLo, rawHi);
+      }
+      std::printf("\n");
+    }
+  std::printf("  largest |albedo - 1| = %.4f (limit 0.005)\n", worst);
 }
 
 // ---------------------------------------------------------------------------------------

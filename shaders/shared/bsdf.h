@@ -4,8 +4,8 @@
 //
 //   f = (1 − m) · dielectric + m · metal, m = metallic, T = transmission
 //   metal      = Fm(ωo·h) f_ss + Fms_m f_ms                       Fm: Schlick, F0 = baseColor
-//   dielectric = Fd(ωo·h) f_ss + Fms_d f_ms + (1 − T) baseColor/π · c(μo) c(μi)
-//                + T baseColor (1 − Fd(ωo·m)) f_t                  (ωi below the surface)
+//   dielectric = (1 − T) [Fd(ωo·h) f_ss + Fms_d f_ms + baseColor/π · c(μo) c(μi)]
+//                + T [Fd(ωo·h) f_ss + baseColor (1 − Fd(ωo·m)) f_t] / E_glass(μo)   (f_t: ωi below)
 //   Fd: Schlick with F0 = min(((ior − 1)/(ior + 1))² specularColor, 1) · specular and F90 = specular
 //
 // KHR_materials_transmission replaces the share T of the diffuse base by the rough
@@ -28,8 +28,14 @@
 //    Conty 2017) is reciprocal and makes dielectric + diffuse sum to one for a white base.
 //    A is scalar (the largest channel of F0), so no channel exceeds one.
 // Lambert is the special case specular = 0, metallic = 0, T = 0 (A = 0, f = baseColor/π).
-// The transmission lobe has no multiple-scattering term: a rough transmissive surface
-// loses the energy f_t's single scattering loses (measured in tests/test_bsdf.cpp).
+//  * The transmissive share T (KHR_materials_transmission) is a rough dielectric whose
+//    reflection Fd f_ss and transmission (1 − Fd) f_t are divided by their albedo at μo
+//    (Turquin 2019, "Practical multiple scattering compensation for microfacet models",
+//    as Blender 4 compensates glass): from a table over (μ, roughness, ior) for each side
+//    of a volume's boundary (ggx_albedo.h, made by the same code), and E(μo) of the GGX
+//    lobe for a thin wall, whose two lobes integrate to exactly that. A white rough
+//    dielectric then returns what it receives from either side; f_ms covers the opaque
+//    share alone. The scaling depends on μo only, so f is not reciprocal there.
 //
 // Sampling: one lobe chosen by its estimated albedo — the visible normals of GGX (Dupuy &
 // Benyoub 2023) reflected or refracted, or the cosine hemisphere for diffuse and f_ms together — and the sample
@@ -37,6 +43,7 @@
 // evaluates the same code whichever lobe it picked.
 #ifndef VKPT_BSDF_H
 #define VKPT_BSDF_H
+#include "fresnel.h"
 #include "ggx_albedo.h"
 #include "layout.h"
 #include "microfacet.h"
@@ -60,7 +67,7 @@ struct Bsdf {
   float metallic;
   vec3 f0;        // dielectric Schlick F0 (metals use baseColor)
   float f90;      // dielectric Schlick F90 (= specular)
-  vec3 msWeight;  // (1 − m) Fms_d + m Fms_m: weight of f_ms
+  vec3 msWeight;  // (1 − m − transmission) Fms_d + m Fms_m: weight of f_ms
   float alpha;
   float albedoO;     // E(μo)
   float couplingO;   // c(μo) for the diffuse base (0 for metals)
@@ -71,6 +78,7 @@ struct Bsdf {
   float couplingMs;
   float couplingNorm;   // 1 / sqrt(1 − A_avg)
   float transmission;   // (1 − m) T: weight of the transmission lobe
+  float glassScale;     // 1 / the rough dielectric's albedo at μo (1 without transmission)
   float pTransmission;  // probability of sampling it
   float etap;           // η beyond the surface / η on ωo's side; 1: thin wall (or no transmission)
   bool lambert;         // no specular layer, not metallic, opaque: f = baseColor/π, cosine sampling
@@ -81,25 +89,6 @@ struct BsdfSample {
   float pdf;    // solid-angle density of the mixture; 0: no sample (below the surface)
   vec3 weight;  // f · cos θi / pdf
 };
-
-VKPT_FN vec3 SchlickFresnel(vec3 f0, vec3 f90, float cosTheta) {
-  float m = clamp(1.0f - cosTheta, 0.0f, 1.0f);
-  float m2 = m * m;
-  return f0 + (f90 - f0) * (m2 * m2 * m);
-}
-
-// Fd for a microfacet at cosine cosTheta to ωo, on a boundary of relative index etap:
-// from the denser side (etap < 1) Schlick's approximation holds at the refracted cosine
-// (Schlick 1994 is written for the side of the smaller index), and F = 1 past the
-// critical angle.
-VKPT_FN vec3 DielectricFresnel(vec3 f0, float f90, float cosTheta, float etap) {
-  if (etap < 1.0f) {
-    float sin2T = (1.0f - cosTheta * cosTheta) / (etap * etap);
-    if (sin2T >= 1.0f) return vec3(1.0f);
-    cosTheta = sqrt(1.0f - sin2T);
-  }
-  return SchlickFresnel(f0, vec3(f90), cosTheta);
-}
 
 // Kulla & Conty's Fresnel weight of the multiple-scattering lobe for Schlick F0, F90.
 VKPT_FN vec3 MultipleScatteringFresnel(vec3 f0, vec3 f90, float eAvg) {
@@ -122,6 +111,7 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace) {
   b.transmission = 0.0f;
   b.pTransmission = 0.0f;
   b.etap = 1.0f;
+  b.glassScale = 1.0f;
   if (b.lambert) return b;
   b.transmission = (1.0f - mat.metallic) * mat.transmission;
   // A volume of ior 1 (or the ior-0 mirror) bends nothing: it is rendered as a thin wall.
@@ -138,7 +128,11 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace) {
   b.invMsNorm = kInvPi / max(1.0f - eAvg.x, 1e-6f);
   vec3 fmsD = MultipleScatteringFresnel(b.f0, vec3(b.f90), eAvg.x);
   vec3 fmsM = MultipleScatteringFresnel(b.baseColor, vec3(1.0f), eAvg.x);
-  b.msWeight = mix(fmsD, fmsM, b.metallic);
+  b.msWeight = mix(fmsD, fmsM, b.metallic) - b.transmission * fmsD;
+  if (b.transmission > 0.0f) {
+    float eGlass = b.etap == 1.0f ? e.x : GlassAlbedo(mu, b.alpha, mat.ior, b.etap > 1.0f);
+    b.glassScale = 1.0f / max(eGlass, 1e-3f);
+  }
 
   // The dielectric layer's scalar albedo A(μ) = F0s (E − E5) + F90 E5 + Fms_s (1 − E).
   float f0s = MaxComponent(b.f0);
@@ -153,35 +147,39 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace) {
 
   // Lobe choice by estimated albedo at μo: the GGX lobe's is exact (F0 (E − E5) + F90 E5);
   // the cosine lobe carries f_ms and the diffuse base; transmission ≈ (1 − Fd(μo)) E.
-  // Inside a volume, Fd(μo) (1 past the critical angle) estimates both sides' shares.
+  // Inside a volume, Fd(μo) (1 past the critical angle) estimates both sides' shares,
+  // kept below 1 − α/2: microfacets tilted towards ωo transmit past the macroscopic
+  // critical angle, and a lobe that is never chosen would leave their light out (bias).
   vec3 specD = b.f0 * (e.x - e.y) + vec3(b.f90 * e.y);
   float fresnelO = f0s;
   if (b.etap < 1.0f) {
-    fresnelO = MaxComponent(DielectricFresnel(b.f0, b.f90, mu, b.etap));
+    fresnelO = min(MaxComponent(DielectricFresnel(b.f0, b.f90, mu, b.etap)), 1.0f - 0.5f * b.alpha);
     specD = vec3(fresnelO * e.x);
   }
   vec3 specM = b.baseColor * (e.x - e.y) + vec3(e.y);
   float wSpec = Luminance(mix(specD, specM, b.metallic));
   vec3 cosLobe = b.msWeight * (1.0f - e.x) + b.baseColor * (b.couplingO * b.couplingNorm);
   float wCos = Luminance(cosLobe);
-  float wTrans = b.transmission * Luminance(b.baseColor) * (1.0f - fresnelO) * e.x;
+  float wTrans = b.transmission * b.glassScale * Luminance(b.baseColor) * (1.0f - fresnelO) * e.x;
   float total = wSpec + wCos + wTrans;
   b.pSpecular = total > 0.0f ? wSpec / total : 0.5f;
   b.pTransmission = total > 0.0f ? wTrans / total : 0.0f;
   return b;
 }
 
-// The transmission lobe T baseColor (1 − Fd) f_t for ωi below the surface (wi.z < 0).
+// The transmission lobe T baseColor (1 − Fd) f_t / E_glass(μo) for ωi below the surface
+// (wi.z < 0).
 VKPT_FN vec3 EvalTransmission(Bsdf b, vec3 wo, vec3 wi) {
+  float weight = b.transmission * b.glassScale;
   if (b.etap == 1.0f) {
     vec3 h = normalize(wo + MirrorThroughSurface(wi));
     vec3 f = vec3(1.0f) - DielectricFresnel(b.f0, b.f90, dot(wo, h), 1.0f);
-    return (b.transmission * GgxD(h, b.alpha) * GgxVisibility(wo.z, -wi.z, b.alpha)) * f * b.baseColor;
+    return (weight * GgxD(h, b.alpha) * GgxVisibility(wo.z, -wi.z, b.alpha)) * f * b.baseColor;
   }
   vec3 m = RefractionHalfVector(wo, wi, b.etap);
   if (m.z == 0.0f) return vec3(0.0f);
   vec3 f = vec3(1.0f) - DielectricFresnel(b.f0, b.f90, dot(wo, m), b.etap);
-  return (b.transmission * GgxRefraction(wo, wi, m, b.etap, b.alpha)) * f * b.baseColor;
+  return (weight * GgxRefraction(wo, wi, m, b.etap, b.alpha)) * f * b.baseColor;
 }
 
 // f(ωo, ωi), without the cosine; 0 unless ωo is above the surface, and for ωi below it
@@ -192,8 +190,10 @@ VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
   if (b.lambert) return b.baseColor * kInvPi;
   vec3 h = normalize(wo + wi);
   float cosOH = dot(wo, h);
-  vec3 fresnel =
-      mix(DielectricFresnel(b.f0, b.f90, cosOH, b.etap), SchlickFresnel(b.baseColor, vec3(1.0f), cosOH), b.metallic);
+  vec3 fd = DielectricFresnel(b.f0, b.f90, cosOH, b.etap);
+  // The transmissive share's reflection is scaled with its transmission (+0 when opaque).
+  vec3 fresnel = mix(fd, SchlickFresnel(b.baseColor, vec3(1.0f), cosOH), b.metallic) +
+                 fd * (b.transmission * (b.glassScale - 1.0f));
   vec3 f = fresnel * (GgxD(h, b.alpha) * GgxVisibility(wo.z, wi.z, b.alpha));
   vec2 ei = GgxAlbedo(wi.z, b.alpha);
   f += b.msWeight * ((1.0f - b.albedoO) * (1.0f - ei.x) * b.invMsNorm);

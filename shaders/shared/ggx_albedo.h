@@ -10,6 +10,12 @@
 // hemispherical averages 2∫ E(μ) μ dμ and 2∫ E5(μ) μ dμ of the *interpolated* rows, so
 // that the compensation lobe built from them integrates to exactly what E lacks.
 //
+// After them, the rough dielectric's albedo (bsdf.h's reflection and transmission lobes
+// with specular 1: Fd f_ss + etap² (1 − Fd) f_t) as pairs (E entering, E leaving), on a
+// grid of kGlassAlbedoIors values of z = sqrt((ior − 1)/(ior + 1)) (up to
+// kGlassAlbedoMaxIor), kGlassAlbedoCosines of sqrt(cos θ) and kGlassAlbedoRoughnesses of
+// sqrt(roughness) (denser near 0, where the albedo at grazing angles falls fastest).
+//
 // VKPT_GGX_ALBEDO_PAIR(k) reads pair k. C++ reads the compiled-in array; a shader reads
 // the same numbers from a texel buffer the host fills from it (lavapipe compiles a
 // shader with an 8,320-float constant array for minutes).
@@ -21,7 +27,10 @@
 #ifdef __cplusplus
 #include "ggx_albedo_table.h"
 static_assert(sizeof(vkpt::shader::kGgxAlbedo) ==
-              2 * sizeof(float) * (vkpt::shader::kGgxAlbedoSize + 1) * vkpt::shader::kGgxAlbedoSize);
+              2 * sizeof(float) *
+                  ((vkpt::shader::kGgxAlbedoSize + 1) * vkpt::shader::kGgxAlbedoSize +
+                   vkpt::shader::kGlassAlbedoIors * vkpt::shader::kGlassAlbedoCosines *
+                       vkpt::shader::kGlassAlbedoRoughnesses));
 #define VKPT_GGX_ALBEDO_PAIR(k) vec2(kGgxAlbedo[2u * (k)], kGgxAlbedo[2u * (k) + 1u])
 #endif
 
@@ -56,6 +65,30 @@ VKPT_FN vec2 GgxAverageAlbedo(float alpha) {
   vec2 a0 = VKPT_GGX_ALBEDO_PAIR(k0);
   vec2 a1 = VKPT_GGX_ALBEDO_PAIR(k0 + 1u);
   return mix(a0, a1, fy);
+}
+
+// The rough dielectric's albedo at cos θ = mu for this alpha and ior, from outside the
+// volume (`entering`) or inside it: trilinear in (z, sqrt(μ), sqrt(roughness)).
+VKPT_FN float GlassAlbedo(float mu, float alpha, float ior, bool entering) {
+  float zMax = sqrt((kGlassAlbedoMaxIor - 1.0f) / (kGlassAlbedoMaxIor + 1.0f));
+  float z = clamp(sqrt(max(ior - 1.0f, 0.0f) / (ior + 1.0f)) / zMax, 0.0f, 1.0f) * float(kGlassAlbedoIors - 1u);
+  float x = sqrt(clamp(mu, 0.0f, 1.0f)) * float(kGlassAlbedoCosines - 1u);
+  float y = sqrt(clamp(sqrt(alpha), 0.0f, 1.0f)) * float(kGlassAlbedoRoughnesses - 1u);
+  uint z0 = uint(clamp(int(z), 0, int(kGlassAlbedoIors) - 2));
+  uint x0 = uint(clamp(int(x), 0, int(kGlassAlbedoCosines) - 2));
+  uint y0 = uint(clamp(int(y), 0, int(kGlassAlbedoRoughnesses) - 2));
+  float fz = z - float(z0);
+  float fx = x - float(x0);
+  float fy = y - float(y0);
+  uint r = kGlassAlbedoRoughnesses;
+  uint k000 = kGgxAlbedoSize * (kGgxAlbedoSize + 1u) + (z0 * kGlassAlbedoCosines + x0) * r + y0;
+  uint k100 = k000 + kGlassAlbedoCosines * r;
+  vec2 e0 = mix(mix(VKPT_GGX_ALBEDO_PAIR(k000), VKPT_GGX_ALBEDO_PAIR(k000 + 1u), fy),
+                mix(VKPT_GGX_ALBEDO_PAIR(k000 + r), VKPT_GGX_ALBEDO_PAIR(k000 + r + 1u), fy), fx);
+  vec2 e1 = mix(mix(VKPT_GGX_ALBEDO_PAIR(k100), VKPT_GGX_ALBEDO_PAIR(k100 + 1u), fy),
+                mix(VKPT_GGX_ALBEDO_PAIR(k100 + r), VKPT_GGX_ALBEDO_PAIR(k100 + r + 1u), fy), fx);
+  vec2 e = mix(e0, e1, fz);
+  return entering ? e.x : e.y;
 }
 
 VKPT_END_NAMESPACE

@@ -64,6 +64,12 @@ const uint kBindingEnvDistribution = 12u;  // W·H + H floats, 4 per texel: kEnv
 
 // Grid points per axis of the GGX albedo table (shared/ggx_albedo.h).
 const uint kGgxAlbedoSize = 64u;
+// Grid points of the rough dielectric's albedo table that follows it: of the ior (from 1
+// to kGlassAlbedoMaxIor), of cos θ and of roughness.
+const uint kGlassAlbedoIors = 48u;
+const uint kGlassAlbedoCosines = 32u;
+const uint kGlassAlbedoRoughnesses = 48u;
+const float kGlassAlbedoMaxIor = 3.0f;
 
 // lavapipe ends a shader once its SIMD group has run 65535 loop passes in total
 // (traverse.glsl); pathtrace.comp keeps clear of it by a margin for the small loops not
