@@ -14,11 +14,11 @@
 namespace vkpt {
 namespace {
 
+const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
+
 using nlohmann::json;
 using test::ProcessResult;
 using test::RunVkpt;
-
-const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
 
 class FrameMemory : public ::testing::TestWithParam<const char*> {};
 
