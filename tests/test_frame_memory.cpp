@@ -74,9 +74,10 @@ Measured Render(const std::string& backend, uint32_t size, const std::vector<std
 }
 
 // The peak resident memory grows with the image by no more than the count grows, and by
-// at least a third of it (a count far above what is held would refuse renders that fit;
-// lavapipe's device memory is not all resident).
-// Measured between 512² and 1024² pixels, so the process's fixed memory cancels (and
+// at least a quarter of it (a count far above what is held would refuse renders that
+// fit; on lavapipe part of the frame fits under the peak its shader compiler left, and
+// its device memory is not all resident: 2.9× was measured).
+// Measured between 384² and 768² pixels, so the process's fixed memory cancels (and
 // the peak of lavapipe's shader compiler, which the frame of a small image fits under); per configuration: plain,
 // checkpoints over closed chunks, every AOV with the denoiser into one EXR.
 TEST_P(FrameMemory, CountCoversWhatARenderHolds) {
@@ -91,10 +92,10 @@ TEST_P(FrameMemory, CountCoversWhatARenderHolds) {
   for (const auto& [extra, ext] : configs) {
     std::string what = ext;
     for (const std::string& a : extra) what += " " + a;
-    const Measured small = Render(GetParam(), 512, extra, ext), large = Render(GetParam(), 1024, extra, ext);
+    const Measured small = Render(GetParam(), 384, extra, ext), large = Render(GetParam(), 768, extra, ext);
     const double held = large.peak - small.peak, counted = large.counted - small.counted;
     EXPECT_LE(held, counted) << what << ": the render held more than was counted";
-    EXPECT_GE(held, counted / 3) << what << ": counted more than three times what the render held";
+    EXPECT_GE(held, counted / 4) << what << ": counted more than four times what the render held";
     std::printf("  %s: held %.1f MB, counted %.1f MB\n", what.c_str(), held / 1e6, counted / 1e6);
   }
 }
