@@ -1,6 +1,6 @@
 // Directional albedo of the GGX lobe (microfacet.h), for energy compensation in bsdf.h.
 //
-// kGgxAlbedo (ggx_albedo_table.h, written by scripts/make_ggx_albedo_table.cpp) holds,
+// kGgxAlbedo (ggx_albedo_table.h; its numbers written by scripts/make_ggx_albedo_table.cpp) holds,
 // on a kGgxAlbedoSize² grid over sqrt(cos θ) ∈ [0,1] (rows: E changes fastest at grazing
 // angles) and roughness = sqrt(α) ∈ [0,1] (columns), the pair
 //   E(μ)  = ∫ f cos θi dωi              the lobe's albedo with F = 1, and
@@ -26,11 +26,6 @@
 
 #ifdef __cplusplus
 #include "ggx_albedo_table.h"
-static_assert(sizeof(vkpt::shader::kGgxAlbedo) ==
-              2 * sizeof(float) *
-                  ((vkpt::shader::kGgxAlbedoSize + 1) * vkpt::shader::kGgxAlbedoSize +
-                   vkpt::shader::kGlassAlbedoIors * vkpt::shader::kGlassAlbedoCosines *
-                       vkpt::shader::kGlassAlbedoRoughnesses));
 #define VKPT_GGX_ALBEDO_PAIR(k) vec2(kGgxAlbedo[2u * (k)], kGgxAlbedo[2u * (k) + 1u])
 #endif
 
