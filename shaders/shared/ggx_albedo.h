@@ -1,8 +1,8 @@
 // Directional albedo of the GGX lobe (microfacet.h), for energy compensation in bsdf.h.
 //
-// kGgxAlbedo (ggx_albedo_table.h; its numbers written by scripts/make_ggx_albedo_table.cpp) holds,
-// on a kGgxAlbedoSize² grid over sqrt(cos θ) ∈ [0,1] (rows: E changes fastest at grazing
-// angles) and roughness = sqrt(α) ∈ [0,1] (columns), the pair
+// kGgxAlbedo (ggx_albedo_table.h; scripts/make_ggx_albedo_table.cpp writes its numbers)
+// holds, on a kGgxAlbedoSize² grid over sqrt(cos θ) ∈ [0,1] (rows: E changes fastest at
+// grazing angles) and roughness = sqrt(α) ∈ [0,1] (columns), the pair
 //   E(μ)  = ∫ f cos θi dωi              the lobe's albedo with F = 1, and
 //   E5(μ) = ∫ (1 − ωo·h)⁵ f cos θi dωi   its Schlick weight,
 // so that the albedo of the lobe under Schlick's Fresnel F0 + (F90 − F0)(1 − ωo·h)⁵ is
