@@ -12,8 +12,10 @@ namespace vkpt {
 // any number of processes writing the same path, see one complete file or the one before.
 // On any failure the temporary is removed, `path` is left as it was, and vkpt::Error
 // names `path` and the OS error. SIGINT/SIGTERM meanwhile also remove the temporary
-// (TempFileGuard); SIGKILL leaves none either where the file system has O_TMPFILE (ext4,
-// xfs, btrfs, tmpfs): the temporary has no name until it is complete.
+// (TempFileGuard). SIGKILL leaves the previous file or the new one, whole; the temporary
+// it may leave (where the file system has O_TMPFILE — ext4, xfs, btrfs, tmpfs — only if
+// the kill falls between naming the complete file and renaming it) is removed by the
+// next write of `path` from any process, which can tell it was abandoned by its lock.
 void WriteFileAtomically(const std::string& path, std::span<const uint8_t> bytes);
 
 // Throws vkpt::Error unless WriteFileAtomically(path, …) could succeed as far as can be
