@@ -47,6 +47,9 @@ layout(constant_id = 11) const uint kSceneHasTwoTriangleBuffers = 0u;
 // 1 when the texture coordinates need two texel buffers: see scene_fetch.glsl.
 layout(constant_id = 12) const uint kSceneHasTwoUvBuffers = 0u;
 #define VKPT_TWO_UV_BUFFERS (kSceneHasTwoUvBuffers != 0u)
+// 0 when no triangle's material has a clear coat: see shared/clearcoat.h.
+layout(constant_id = 13) const uint kSceneHasClearcoat = 1u;
+#define VKPT_CLEARCOAT (kSceneHasClearcoat != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

@@ -107,9 +107,9 @@ Material FetchMaterial(uint m) {
   mat.normalScale = uintBitsToFloat(e.z);
   mat.alpha = uintBitsToFloat(e.w);
   mat.alphaCutoff = uintBitsToFloat(f.x);
-  mat.pad0 = f.y;
-  mat.pad1 = f.z;
-  mat.pad2 = f.w;
+  mat.clearcoat = uintBitsToFloat(f.y);
+  mat.clearcoatRoughness = uintBitsToFloat(f.z);
+  mat.clearcoatNormalScale = uintBitsToFloat(f.w);
   return mat;
 }
 

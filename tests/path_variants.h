@@ -27,5 +27,7 @@ RenderResult RenderMutantPointNoInverseSquare(const RenderScene& scene, const sh
 RenderResult RenderMutantDirectionalExtraCosine(const RenderScene& scene, const shader::FrameParams& params);
 // Mutant of triangle lights (lights.h): a light sample's emission without the emissive texture.
 RenderResult RenderMutantLightSampleWithoutTexture(const RenderScene& scene, const shader::FrameParams& params);
+// And a light sample's emission not dimmed by the emitter's clear coat.
+RenderResult RenderMutantLightSampleWithoutCoat(const RenderScene& scene, const shader::FrameParams& params);
 
 }  // namespace vkpt::test

@@ -494,8 +494,9 @@ INSTANTIATE_TEST_SUITE_P(Valid, GpuCorpus, ::testing::ValuesIn(ValidModels()), [
 // an independent one, without a validation message.
 
 struct PbrModel {
-  std::string file;  // under gltf-pbr/
-  bool textured;     // MANIFEST.md lists images for it
+  std::string file;                     // under `collection`
+  bool textured;                        // MANIFEST.md lists images for it
+  std::string collection = "gltf-pbr";  // a folder of the external test data
 };
 
 void PrintTo(const PbrModel& m, std::ostream* os) { *os << m.file; }
@@ -540,7 +541,7 @@ class GpuPbrCorpus : public GpuTest, public ::testing::WithParamInterface<PbrMod
 
 TEST_P(GpuPbrCorpus, LoadsAndRendersAlikeOnBothBackends) {
   VKPT_REQUIRE_SHARED_DATA();
-  const std::string path = PbrPath(GetParam().file);
+  const std::string path = test::SharedData(GetParam().collection + "/" + GetParam().file);
   ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing";
   Scene s = LoadGltf(path);
   std::string ignored;
@@ -563,11 +564,26 @@ INSTANTIATE_TEST_SUITE_P(
                       PbrModel{"TextureTransformTest/glTF/TextureTransformTest.gltf", true},
                       PbrModel{"TextureLinearInterpolationTest/glTF-Binary/TextureLinearInterpolationTest.glb", true},
                       PbrModel{"NormalTangentMirrorTest/glTF-Binary/NormalTangentMirrorTest.glb", true},
-                      PbrModel{"AlphaBlendModeTest/glTF-Binary/AlphaBlendModeTest.glb", true}),
+                      PbrModel{"AlphaBlendModeTest/glTF-Binary/AlphaBlendModeTest.glb", true},
+                      PbrModel{"ClearCoatTest/glTF-Binary/ClearCoatTest.glb", true, "gltf-ext"},
+                      PbrModel{"ClearcoatWicker/glTF-Binary/ClearcoatWicker.glb", true, "gltf-ext"}),
     [](const auto& info) {
       std::string n = info.param.file.substr(0, info.param.file.find('/'));
       return n;
     });
+
+// The Cornell box with a clear coat on every material (rough on the walls, smooth on the
+// boxes, half on the light, which dims its emission): the coat lobe, its sampling and the
+// dimmed emission in lockstep on both backends, and in statistics with other seeds.
+TEST_F(GpuTest, ClearcoatedCornellAgreesOnBothBackends) {
+  Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  for (size_t m = 0; m < s.materials.size(); ++m) {
+    s.materials[m].clearcoat = m % 2 ? 1.0f : 0.5f;
+    s.materials[m].clearcoatRoughness = m % 3 ? 0.4f : 0.05f;
+  }
+  RenderScene rs = PrepareRenderScene(s);
+  ExpectBackendsAgree(rs, Params(rs, s, 48, 48, 16, 1, 8), "clear-coated Cornell box");
+}
 
 // A generated map (test::RleHdr: a row of suns at the top, runs and ramps elsewhere), read
 // as --env FILE reads it and turned 30°, lighting a Lambert square that fills the frame:

@@ -94,13 +94,13 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   s.images.push_back({"texel", 1, 1, {51, 102, 153, 204}});
   s.textures = {TextureWithMode(0, 0u), TextureWithMode(0, kTextureSrgb)};
   RenderScene rs = TexturesOnly(s);
-  const bool colour[kTextureSlots] = {true, false, true, false, false, false, true};
+  const bool colour[kTextureSlots] = {true, false, true, false, false, false, true, false, false, false};
   for (uint32_t slot = 0; slot < kTextureSlots; ++slot)
     rs.textureRefs.push_back({colour[slot] ? 1u : 0u, 0, 1, 0, 0, 0, 1, 0});
   rs.uvs.push_back({});
   shader::Material m{};
   m.baseColor = m.emission = m.specularColor = glm::vec3(1.0f);
-  m.metallic = m.roughness = m.transmission = m.specular = 1.0f;
+  m.metallic = m.roughness = m.transmission = m.specular = m.clearcoat = m.clearcoatRoughness = 1.0f;
   m.flags = kMaterialTextured | kMaterialExtensionTextured;
   ApplyMaterialTextures(rs, m, 0, rs.uvs[0], 0.25f, 0.25f, kLevelZero);
   const std::vector<float> table = TexelDecodeTable();
@@ -113,6 +113,8 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   EXPECT_EQ(m.transmission, data(51));  // R
   EXPECT_EQ(m.specular, data(204));     // A
   EXPECT_EQ(m.specularColor, srgb);
+  EXPECT_EQ(m.clearcoat, data(51));            // R
+  EXPECT_EQ(m.clearcoatRoughness, data(102));  // G
   // Without kMaterialExtensionTextured the extensions' slots are not read.
   shader::Material plain{};
   plain.transmission = plain.specular = 1.0f;
@@ -144,6 +146,50 @@ TEST(MaterialTextures, ExtensionTexturesFillTheirSlots) {
   EXPECT_NE(ignored.find("KHR_materials_volume.thicknessTexture"), std::string::npos) << ignored;
   EXPECT_EQ(ignored.find("transmissionTexture"), std::string::npos) << ignored;
   EXPECT_EQ(ignored.find("specularTexture"), std::string::npos) << ignored;
+}
+
+// KHR_materials_clearcoat: its factors, its three textures in their slots (data, not
+// colour), its normal texture's scale and the tangents it needs; the extension is neither
+// ignored nor refused when required.
+TEST(MaterialTextures, ClearcoatFactorsAndTexturesAreRead) {
+  GltfBuilder b = TexturedTriangle(
+      R"({"extensions":{"KHR_materials_clearcoat":{"clearcoatFactor":0.7,"clearcoatRoughnessFactor":0.2,)"
+      R"("clearcoatTexture":{"index":0},"clearcoatRoughnessTexture":{"index":0,"texCoord":1},)"
+      R"("clearcoatNormalTexture":{"index":0,"scale":0.5}}}})");
+  b.extensionsUsed = b.extensionsRequired = {"KHR_materials_clearcoat"};
+  Scene s = Load(b);
+  using namespace shader;
+  const vkpt::Material& m = s.materials[0];
+  EXPECT_FLOAT_EQ(m.clearcoat, 0.7f);
+  EXPECT_FLOAT_EQ(m.clearcoatRoughness, 0.2f);
+  EXPECT_FLOAT_EQ(m.clearcoatNormalScale, 0.5f);
+  EXPECT_EQ(Ref(s, 0, kSlotClearcoatRoughness).texCoord, 1u);
+  for (uint32_t slot : {kSlotClearcoat, kSlotClearcoatRoughness, kSlotClearcoatNormal}) {
+    ASSERT_NE(Ref(s, 0, slot).texture, kInvalidIndex) << slot;
+    EXPECT_FALSE(s.textures[Ref(s, 0, slot).texture].srgb) << slot;
+  }
+  const shader::Material packed = PackMaterials(s).materials[0];
+  EXPECT_EQ(packed.clearcoat, 0.7f);
+  EXPECT_EQ(packed.clearcoatNormalScale, 0.5f);
+  EXPECT_NE(packed.flags & kMaterialExtensionTextured, 0u);
+  EXPECT_FALSE(PrepareRenderScene(s).tangents.empty()) << "the coat's normal texture needs tangents";
+  for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("clearcoat"), std::string::npos) << f;
+  // Absent, the coat is off and its normal texture's scale is 1.
+  const vkpt::Material plain = Load(TexturedTriangle("{}")).materials[0];
+  EXPECT_EQ(plain.clearcoat, 0.0f);
+  EXPECT_EQ(plain.clearcoatNormalScale, 1.0f);
+}
+
+TEST(MaterialTextures, ClearcoatFactorsOutOfRangeAreNamed) {
+  for (const char* bad : {R"("clearcoatFactor":1.5)", R"("clearcoatRoughnessFactor":-0.1)",
+                          R"("clearcoatNormalTexture":{"index":0,"scale":"big"})"}) {
+    try {
+      Load(TexturedTriangle(std::string(R"({"extensions":{"KHR_materials_clearcoat":{)") + bad + "}}}"));
+      ADD_FAILURE() << bad << " loaded";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("materials[0].KHR_materials_clearcoat."), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(MaterialTextures, ExtensionTextureIndicesAreChecked) {

@@ -218,6 +218,34 @@ TEST(Mis, MutantLightSampleWithoutTextureIsCaught) {
   EXPECT_GT(CompareEstimators(e, kMutantSpp / 2, GlossyPlaneUnderTexturedLight).failures, 0);
 }
 
+// A clear-coated plane (coat roughness as given, over a rough red dielectric) under a
+// clear-coated light: the coat lobe's pdf, and the coat dimming the emission where light
+// sampling picks a point as where a ray hits, must give the same image every way.
+Scene CoatedPlaneUnderCoatedLight(double roughness) {
+  GltfBuilder b = PlaneAndQuadLightModel(
+      R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.3,0.2,1],"metallicFactor":0,"roughnessFactor":0.5},)"
+      R"("extensions":{"KHR_materials_clearcoat":{"clearcoatFactor":1,"clearcoatRoughnessFactor":)" +
+          Num(roughness) + "}}}",
+      1.5f, {"KHR_materials_clearcoat"});
+  b.materials[1].insert(b.materials[1].find("\"KHR_materials_emissive_strength\""),
+                        R"("KHR_materials_clearcoat":{"clearcoatFactor":1},)");
+  return Load(b);
+}
+
+TEST(Mis, ClearcoatAgreesAtThreeRoughnesses) {
+  Verdict v = CompareEstimators(Estimators{}, kSpp, CoatedPlaneUnderCoatedLight);
+  EXPECT_EQ(v.failures, 0);
+}
+
+// Light samples that take the coated emitter's emission undimmed.
+TEST(Mis, MutantLightSampleWithoutCoatIsCaught) {
+  Estimators e;
+  e.lightOnly = RenderMutantLightSampleWithoutCoat;
+  e.mis = RenderMutantLightSampleWithoutCoat;
+  e.name = "mutant: light samples ignore the emitter's clear coat";
+  EXPECT_GT(CompareEstimators(e, kMutantSpp, CoatedPlaneUnderCoatedLight).failures, 0);
+}
+
 // Both strategies counted in full: the light's reflection twice.
 TEST(Mis, MutantWeightOneIsCaught) {
   Estimators e;

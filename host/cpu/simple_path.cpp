@@ -32,6 +32,7 @@
 #undef VKPT_VERTEX_COLORS
 #define VKPT_VERTEX_COLORS false
 #define VKPT_VOLUMES false
+#define VKPT_CLEARCOAT false
 #undef VKPT_TEXTURES
 #define VKPT_TEXTURES false
 #undef VKPT_NORMAL_MAPS

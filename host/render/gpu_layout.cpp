@@ -26,6 +26,7 @@ static_assert(offsetof(Material, attenuation) == 48 && offsetof(Material, ior) =
 static_assert(offsetof(Material, transmission) == 64 && offsetof(Material, flags) == 68);
 static_assert(offsetof(Material, normalScale) == 72 && offsetof(Material, alpha) == 76);
 static_assert(offsetof(Material, alphaCutoff) == 80);
+static_assert(offsetof(Material, clearcoatNormalScale) == 92);
 
 static_assert(sizeof(Light) == 64);
 static_assert(offsetof(Light, position) == 0 && offsetof(Light, triangle) == 12);

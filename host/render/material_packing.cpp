@@ -16,6 +16,9 @@ const SlotTexture kSlots[] = {
     {shader::kSlotTransmission, &Material::transmissionTexture},
     {shader::kSlotSpecular, &Material::specularTexture},
     {shader::kSlotSpecularColor, &Material::specularColorTexture},
+    {shader::kSlotClearcoat, &Material::clearcoatTexture},
+    {shader::kSlotClearcoatRoughness, &Material::clearcoatRoughnessTexture},
+    {shader::kSlotClearcoatNormal, &Material::clearcoatNormalTexture},
 };
 static_assert(sizeof kSlots / sizeof kSlots[0] == shader::kTextureSlots);
 
@@ -56,6 +59,9 @@ shader::Material PackMaterial(const Material& m) {
   g.normalScale = m.normalScale;
   g.alpha = m.alpha;
   g.alphaCutoff = m.alphaCutoff;
+  g.clearcoat = m.clearcoat;
+  g.clearcoatRoughness = m.clearcoatRoughness;
+  g.clearcoatNormalScale = m.clearcoatNormalScale;
   g.flags = (m.doubleSided ? shader::kMaterialDoubleSided : 0u) | (m.unlit ? shader::kMaterialUnlit : 0u) |
             (m.volume ? shader::kMaterialVolume : 0u) | AlphaBits(m.alphaMode) | TextureBits(m);
   return g;

@@ -186,6 +186,10 @@ bool UsesVolumeMaterial(const RenderScene& scene) {
   return SomeTriangleUses(scene, [](const shader::Material& m) { return (m.flags & shader::kMaterialVolume) != 0u; });
 }
 
+bool UsesClearcoat(const RenderScene& scene) {
+  return SomeTriangleUses(scene, [](const shader::Material& m) { return m.clearcoat > 0.0f; });
+}
+
 bool HasLightSources(const RenderScene& scene) {
   for (const shader::Light& l : scene.lights) {
     if (l.type != shader::kLightTriangle && l.type != shader::kLightTwoSidedTriangle) return true;

@@ -55,6 +55,8 @@ bool IsDegenerate(const SceneTriangle& t);
 bool UsesGlossyMaterial(const RenderScene& scene);
 // Likewise, whether some triangle's material bounds a volume (kMaterialVolume).
 bool UsesVolumeMaterial(const RenderScene& scene);
+// And whether some triangle's material has a clear coat (KHR_materials_clearcoat).
+bool UsesClearcoat(const RenderScene& scene);
 
 // Whether the scene has lights meant to light it: punctual lights, or emissive triangles
 // whose emission is not painted by an emissive texture (a texture paints screens, dials

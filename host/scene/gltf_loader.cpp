@@ -106,15 +106,11 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
 
 // Extensions whose every property vkpt renders.
 bool IsRenderedExtension(const std::string& ext) {
-  static const char* const kRendered[] = {"KHR_materials_emissive_strength",
-                                          "KHR_materials_ior",
-                                          "KHR_materials_specular",
-                                          "KHR_materials_transmission",
-                                          "KHR_materials_volume",
-                                          "KHR_materials_unlit",
-                                          "KHR_lights_punctual",
-                                          "KHR_mesh_quantization",
-                                          "KHR_texture_transform"};
+  static const char* const kRendered[] = {"KHR_materials_clearcoat",    "KHR_materials_emissive_strength",
+                                          "KHR_materials_ior",          "KHR_materials_specular",
+                                          "KHR_materials_transmission", "KHR_materials_volume",
+                                          "KHR_materials_unlit",        "KHR_lights_punctual",
+                                          "KHR_mesh_quantization",      "KHR_texture_transform"};
   return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
 }
 
@@ -162,7 +158,9 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, Scene& scene, M
   for (std::vector<DecodedPrimitive>& mesh : meshes)
     for (DecodedPrimitive& prim : mesh) {
       if (!normalMapped) break;
-      const MaterialTexture& ref = scene.materials[prim.material].normalTexture;
+      // The tangents follow the base's normal texture's TEXCOORD, else the coat's.
+      const Material& mat = scene.materials[prim.material];
+      const MaterialTexture& ref = mat.normalTexture.Present() ? mat.normalTexture : mat.clearcoatNormalTexture;
       if (ref.Present() && GenerateMissingTangents(prim, ref.texCoord)) ++scene.generatedTangentPrimitives;
     }
   CheckCameras(src);

@@ -34,6 +34,7 @@ class MaterialReader {
     mat.ior = float(ior);
     mat.transmission = float(Unit(ExtensionNumber("KHR_materials_transmission", "transmissionFactor", 0.0),
                                   "KHR_materials_transmission.transmissionFactor"));
+    ReadClearcoat(mat);
     mat.doubleSided = in_.doubleSided;
     mat.unlit = in_.extensions.count("KHR_materials_unlit") != 0;
     ReadVolume(mat);
@@ -74,6 +75,23 @@ class MaterialReader {
     for (int i = 0; i < 3; ++i)
       mat.attenuation[i] = color[i] > 0.0f ? float(std::min(-std::log(double(color[i])) / distance, 3.0e38)) : 3.0e38f;
     mat.volume = thickness > 0.0;
+  }
+
+  // KHR_materials_clearcoat's factors and its normal texture's scale (its textures are
+  // gltf_textures.cpp's).
+  void ReadClearcoat(Material& mat) const {
+    const char* ext = "KHR_materials_clearcoat";
+    mat.clearcoat =
+        float(Unit(ExtensionNumber(ext, "clearcoatFactor", 0.0), "KHR_materials_clearcoat.clearcoatFactor"));
+    mat.clearcoatRoughness = float(Unit(ExtensionNumber(ext, "clearcoatRoughnessFactor", 0.0),
+                                        "KHR_materials_clearcoat.clearcoatRoughnessFactor"));
+    mat.clearcoatNormalScale = 1.0f;
+    const tinygltf::Value* normal = ExtensionField(ext, "clearcoatNormalTexture");
+    if (!normal || !normal->IsObject() || !normal->Has("scale")) return;
+    const tinygltf::Value& scale = normal->Get("scale");
+    if (!scale.IsNumber() || !(std::abs(scale.GetNumberAsDouble()) <= 1e6))
+      Fail("KHR_materials_clearcoat.clearcoatNormalTexture.scale is not a finite number of at most 1e6");
+    mat.clearcoatNormalScale = float(scale.GetNumberAsDouble());
   }
 
   [[noreturn]] void Fail(const std::string& what) const { src_.Fail(name_ + "." + what); }

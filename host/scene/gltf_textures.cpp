@@ -36,6 +36,15 @@ const ExtensionSlot kExtensionSlots[] = {
     {{&Material::specularColorTexture, "extensions.KHR_materials_specular.specularColorTexture", true},
      "KHR_materials_specular",
      "specularColorTexture"},
+    {{&Material::clearcoatTexture, "extensions.KHR_materials_clearcoat.clearcoatTexture", false},
+     "KHR_materials_clearcoat",
+     "clearcoatTexture"},
+    {{&Material::clearcoatRoughnessTexture, "extensions.KHR_materials_clearcoat.clearcoatRoughnessTexture", false},
+     "KHR_materials_clearcoat",
+     "clearcoatRoughnessTexture"},
+    {{&Material::clearcoatNormalTexture, "extensions.KHR_materials_clearcoat.clearcoatNormalTexture", false},
+     "KHR_materials_clearcoat",
+     "clearcoatNormalTexture"},
 };
 
 using Wrap = TextureSampler::Wrap;
@@ -227,7 +236,7 @@ bool IsAppliedExtensionTexture(const std::string& extension, const std::string& 
 
 bool UsesNormalMaps(const Scene& scene) {
   for (const Material& m : scene.materials)
-    if (m.normalTexture.Present()) return true;
+    if (m.normalTexture.Present() || m.clearcoatNormalTexture.Present()) return true;
   return false;
 }
 

@@ -52,6 +52,10 @@ struct Material {
   float alphaCutoff = 0.0f;  // kMask: the cut between absent and present
   bool doubleSided = false;
   bool unlit = false;  // KHR_materials_unlit: shows baseColor, reflects nothing
+  // KHR_materials_clearcoat: a clear GGX layer over the rest (shared/clearcoat.h).
+  float clearcoat = 0.0f;  // 0: no coat
+  float clearcoatRoughness = 0.0f;
+  float clearcoatNormalScale = 0.0f;  // clearcoatNormalTexture.scale
 
   // The textures that scale the factors above (shared/material_textures.h says how).
   MaterialTexture baseColorTexture;          // RGB × baseColor, A × alpha (sRGB)
@@ -61,11 +65,15 @@ struct Material {
   MaterialTexture transmissionTexture;       // R × transmission
   MaterialTexture specularTexture;           // A × specular
   MaterialTexture specularColorTexture;      // RGB × specularColor (sRGB)
+  MaterialTexture clearcoatTexture;          // R × clearcoat
+  MaterialTexture clearcoatRoughnessTexture;  // G × clearcoatRoughness
+  MaterialTexture clearcoatNormalTexture;     // the coat's tangent-space normal, scaled by clearcoatNormalScale
 
   // Whether some texture above is present.
   bool Textured() const {
     for (const MaterialTexture* t : {&baseColorTexture, &metallicRoughnessTexture, &emissiveTexture, &normalTexture,
-                                     &transmissionTexture, &specularTexture, &specularColorTexture})
+                                     &transmissionTexture, &specularTexture, &specularColorTexture, &clearcoatTexture,
+                                     &clearcoatRoughnessTexture, &clearcoatNormalTexture})
       if (t->Present()) return true;
     return false;
   }

@@ -63,6 +63,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
                       [](const shader::TriangleShading& s) { return (s.flags & shader::kShadingHasNormals) != 0; })),
       hasVertexColors_(!scene.vertexColors.empty()),
       hasVolumes_(UsesVolumeMaterial(scene)),
+      hasClearcoat_(UsesClearcoat(scene)),
       hasTextures_(!scene.textureRefs.empty()),
       hasNormalMaps_(!scene.tangents.empty()),
       hasAlpha_(scene.alphaTested),
@@ -108,7 +109,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           hasExtensionTextures_ ? 1u : 0u,
           texels_.twoBuffers ? 1u : 0u,
           triangles_.twoBuffers ? 1u : 0u,
-          uvs_.twoBuffers ? 1u : 0u};
+          uvs_.twoBuffers ? 1u : 0u,
+          hasClearcoat_ ? 1u : 0u};
 }
 
 std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams& frame,

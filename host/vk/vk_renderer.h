@@ -91,6 +91,7 @@ class GpuRenderer {
   bool hasSmoothNormals_;            // some triangle has vertex normals
   bool hasVertexColors_;             // some triangle has COLOR_0
   bool hasVolumes_;                  // some triangle's material bounds a volume
+  bool hasClearcoat_;                // some triangle's material has a clear coat
   bool hasTextures_;                 // some material has a texture
   bool hasNormalMaps_;               // some material has a normal texture
   bool hasAlpha_;                    // some triangle's material is alpha MASK or BLEND

@@ -82,7 +82,7 @@ VKPT_FN AovSample TraceAovSample(VKPT_SCENE_PARAM FrameParams params, uint px, u
       a.position = sh.p;
     }
     vec3 wo = WorldToFrame(sh.frame, -s.ray.dir);
-    Bsdf bsdf = PrepareBsdf(sh.material, wo, sh.frontFace);
+    Bsdf bsdf = PrepareBsdf(sh.material, wo, sh.frontFace, WorldToFrame(sh.frame, sh.coatNormal));
     if ((sh.material.flags & kMaterialUnlit) != 0u || !IsAovSpecular(bsdf)) {
       a.albedo = weight * sh.material.baseColor;
       a.normal = sh.frame.n;

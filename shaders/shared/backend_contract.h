@@ -57,6 +57,7 @@
 //   [capability] VKPT_NORMAL_MAPS       shading_frame.h: some material has a normal texture
 //   [capability] VKPT_ALPHA             alpha.h: some material is alpha MASK or BLEND
 //   [capability] VKPT_EXTENSION_TEXTURES  material_textures.h: textures of material extensions
+//   [capability] VKPT_CLEARCOAT         clearcoat.h: some material has a clear coat
 //   [capability] VKPT_GGX_ALBEDO_PAIR(k)  ggx_albedo.h: pair k of the GGX albedo table
 //   [denoise] VKPT_DENOISE_PARAM        denoise.h: the images as a leading parameter declaration
 //   [denoise] VKPT_DENOISE_ARG          the matching leading argument

@@ -37,12 +37,17 @@
 //    dielectric then returns what it receives from either side; f_ms covers the opaque
 //    share alone. The scaling depends on μo only, so f is not reciprocal there.
 //
+// KHR_materials_clearcoat (clearcoat.h) lays a GGX coat lobe over all of this, the base
+// weighted by 1 − c A_c(μo).
+//
 // Sampling: one lobe chosen by its estimated albedo — the visible normals of GGX (Dupuy &
-// Benyoub 2023) reflected or refracted, or the cosine hemisphere for diffuse and f_ms together — and the sample
+// Benyoub 2023) reflected or refracted, the coat's visible normals, or the cosine
+// hemisphere for diffuse and f_ms together — and the sample
 // weighted by the mixture pdf of both (one-sample MIS, Veach 1997 §9.2.4), so each lane
 // evaluates the same code whichever lobe it picked.
 #ifndef VKPT_BSDF_H
 #define VKPT_BSDF_H
+#include "clearcoat.h"
 #include "fresnel.h"
 #include "ggx_albedo.h"
 #include "layout.h"
@@ -81,6 +86,11 @@ struct Bsdf {
   float glassScale;     // 1 / the rough dielectric's albedo at μo (1 without transmission)
   float pTransmission;  // probability of sampling it
   float etap;           // η beyond the surface / η on ωo's side; 1: thin wall (or no transmission)
+  float coat;           // KHR_materials_clearcoat's factor c (0: no coat)
+  float coatAlpha;
+  vec3 coatNormal;      // in this frame
+  float coatBaseScale;  // 1 − c A_c(μo): the weight of everything under the coat
+  float pCoat;          // probability of sampling the coat lobe
   bool lambert;         // no specular layer, not metallic, opaque: f = baseColor/π, cosine sampling
 };
 
@@ -96,14 +106,66 @@ VKPT_FN vec3 MultipleScatteringFresnel(vec3 f0, vec3 f90, float eAvg) {
   return fAvg * fAvg * eAvg / (vec3(1.0f) - fAvg * (1.0f - eAvg));
 }
 
-// True for the Lambert special case (specular = 0, metallic = 0, transmission = 0), where
-// the full evaluation below would compute baseColor/π at many times the cost.
+// True for the Lambert special case (specular = 0, metallic = 0, transmission = 0, no
+// coat), where the full evaluation below would compute baseColor/π at many times the cost.
 VKPT_FN bool IsLambertian(Material mat) {
-  return mat.specular == 0.0f && mat.metallic == 0.0f && mat.transmission == 0.0f;
+  return mat.specular == 0.0f && mat.metallic == 0.0f && mat.transmission == 0.0f && mat.clearcoat == 0.0f;
 }
 
-// `frontFace`: ωo lies on the side the surface's winding faces (outside a volume).
-VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace) {
+// The diffuse base's weights c(μ) (the coupling above): the dielectric layer's scalar
+// albedo A(μ) = F0s (E − E5) + F90 E5 + Fms_s (1 − E), with E (e at μo, eAvg averaged)
+// from the GGX table and the dielectric's Fms `fmsD`.
+VKPT_FN void PrepareCoupling(VKPT_INOUT(Bsdf) b, vec2 e, vec2 eAvg, vec3 fmsD) {
+  float f0s = MaxComponent(b.f0);
+  float fmsS = MaxComponent(fmsD);
+  b.couplingF0 = f0s - fmsS;
+  b.couplingE5 = b.f90 - f0s;
+  b.couplingMs = fmsS;
+  float aAvg = b.couplingF0 * eAvg.x + b.couplingE5 * eAvg.y + b.couplingMs;
+  b.couplingNorm = inversesqrt(max(1.0f - aAvg, 1e-6f));
+  float aO = b.couplingF0 * e.x + b.couplingE5 * e.y + b.couplingMs;
+  b.couplingO = (1.0f - b.metallic - b.transmission) * max(1.0f - aO, 0.0f) * b.couplingNorm;
+}
+
+// Lobe choice by estimated albedo at μo (e: the GGX table's (E, E5) there): the GGX
+// lobe's is exact (F0 (E − E5) + F90 E5); the cosine lobe carries f_ms and the diffuse
+// base; transmission ≈ (1 − Fd(μo)) E; the coat's is exact (c A_c), and it scales the
+// others by what it leaves them. Inside a volume, Fd(μo) (1 past the critical angle)
+// estimates both sides' shares, kept below 1 − α/2: microfacets tilted towards ωo
+// transmit past the macroscopic critical angle, and a lobe that is never chosen would
+// leave their light out (bias). Sets the coat's fields too.
+VKPT_FN void ChooseLobes(VKPT_INOUT(Bsdf) b, Material mat, vec3 wo, vec2 e) {
+  float mu = max(wo.z, 0.0f);
+  vec3 specD = b.f0 * (e.x - e.y) + vec3(b.f90 * e.y);
+  float fresnelO = MaxComponent(b.f0);
+  if (b.etap < 1.0f) {
+    fresnelO = min(MaxComponent(DielectricFresnel(b.f0, b.f90, mu, b.etap)), 1.0f - 0.5f * b.alpha);
+    specD = vec3(fresnelO * e.x);
+  }
+  vec3 specM = b.baseColor * (e.x - e.y) + vec3(e.y);
+  float wSpec = Luminance(mix(specD, specM, b.metallic));
+  vec3 cosLobe = b.msWeight * (1.0f - e.x) + b.baseColor * (b.couplingO * b.couplingNorm);
+  float wCos = Luminance(cosLobe);
+  float wTrans = b.transmission * b.glassScale * Luminance(b.baseColor) * (1.0f - fresnelO) * e.x;
+  float wCoat = 0.0f;
+  if (VKPT_CLEARCOAT && mat.clearcoat > 0.0f) {
+    b.coat = mat.clearcoat;
+    b.coatAlpha = GgxAlpha(mat.clearcoatRoughness);
+    wCoat = b.coat * CoatAlbedo(max(dot(wo, b.coatNormal), 0.0f), b.coatAlpha);
+    b.coatBaseScale = 1.0f - wCoat;
+    wSpec *= b.coatBaseScale;
+    wCos *= b.coatBaseScale;
+    wTrans *= b.coatBaseScale;
+  }
+  float total = wSpec + wCos + wTrans + wCoat;
+  b.pSpecular = total > 0.0f ? wSpec / total : 0.5f;
+  b.pTransmission = total > 0.0f ? wTrans / total : 0.0f;
+  b.pCoat = total > 0.0f ? wCoat / total : 0.0f;
+}
+
+// `frontFace`: ωo lies on the side the surface's winding faces (outside a volume);
+// `coatNormal`: the clear coat's normal in the shading frame (clearcoat.h).
+VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace, vec3 coatNormal) {
   Bsdf b;
   b.baseColor = mat.baseColor;
   b.metallic = mat.metallic;
@@ -112,6 +174,11 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace) {
   b.pTransmission = 0.0f;
   b.etap = 1.0f;
   b.glassScale = 1.0f;
+  b.coat = 0.0f;
+  b.coatAlpha = 1.0f;
+  b.coatNormal = coatNormal;
+  b.coatBaseScale = 1.0f;
+  b.pCoat = 0.0f;
   if (b.lambert) return b;
   b.transmission = (1.0f - mat.metallic) * mat.transmission;
   // A volume of ior 1 (or the ior-0 mirror) bends nothing: it is rendered as a thin wall.
@@ -133,37 +200,8 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace) {
     float eGlass = b.etap == 1.0f ? e.x : GlassAlbedo(mu, b.alpha, mat.ior, b.etap > 1.0f);
     b.glassScale = 1.0f / max(eGlass, 1e-3f);
   }
-
-  // The dielectric layer's scalar albedo A(μ) = F0s (E − E5) + F90 E5 + Fms_s (1 − E).
-  float f0s = MaxComponent(b.f0);
-  float fmsS = MaxComponent(fmsD);
-  b.couplingF0 = f0s - fmsS;
-  b.couplingE5 = b.f90 - f0s;
-  b.couplingMs = fmsS;
-  float aAvg = b.couplingF0 * eAvg.x + b.couplingE5 * eAvg.y + b.couplingMs;
-  b.couplingNorm = inversesqrt(max(1.0f - aAvg, 1e-6f));
-  float aO = b.couplingF0 * e.x + b.couplingE5 * e.y + b.couplingMs;
-  b.couplingO = (1.0f - b.metallic - b.transmission) * max(1.0f - aO, 0.0f) * b.couplingNorm;
-
-  // Lobe choice by estimated albedo at μo: the GGX lobe's is exact (F0 (E − E5) + F90 E5);
-  // the cosine lobe carries f_ms and the diffuse base; transmission ≈ (1 − Fd(μo)) E.
-  // Inside a volume, Fd(μo) (1 past the critical angle) estimates both sides' shares,
-  // kept below 1 − α/2: microfacets tilted towards ωo transmit past the macroscopic
-  // critical angle, and a lobe that is never chosen would leave their light out (bias).
-  vec3 specD = b.f0 * (e.x - e.y) + vec3(b.f90 * e.y);
-  float fresnelO = f0s;
-  if (b.etap < 1.0f) {
-    fresnelO = min(MaxComponent(DielectricFresnel(b.f0, b.f90, mu, b.etap)), 1.0f - 0.5f * b.alpha);
-    specD = vec3(fresnelO * e.x);
-  }
-  vec3 specM = b.baseColor * (e.x - e.y) + vec3(e.y);
-  float wSpec = Luminance(mix(specD, specM, b.metallic));
-  vec3 cosLobe = b.msWeight * (1.0f - e.x) + b.baseColor * (b.couplingO * b.couplingNorm);
-  float wCos = Luminance(cosLobe);
-  float wTrans = b.transmission * b.glassScale * Luminance(b.baseColor) * (1.0f - fresnelO) * e.x;
-  float total = wSpec + wCos + wTrans;
-  b.pSpecular = total > 0.0f ? wSpec / total : 0.5f;
-  b.pTransmission = total > 0.0f ? wTrans / total : 0.0f;
+  PrepareCoupling(b, e, eAvg, fmsD);
+  ChooseLobes(b, mat, wo, e);
   return b;
 }
 
@@ -182,12 +220,9 @@ VKPT_FN vec3 EvalTransmission(Bsdf b, vec3 wo, vec3 wi) {
   return (weight * GgxRefraction(wo, wi, m, b.etap, b.alpha)) * f * b.baseColor;
 }
 
-// f(ωo, ωi), without the cosine; 0 unless ωo is above the surface, and for ωi below it
-// unless the material transmits.
-VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
-  if (wo.z <= 0.0f || wi.z == 0.0f) return vec3(0.0f);
+// f of everything under the coat, for ωo above the surface.
+VKPT_FN vec3 EvalBase(Bsdf b, vec3 wo, vec3 wi) {
   if (wi.z < 0.0f) return b.transmission > 0.0f ? EvalTransmission(b, wo, wi) : vec3(0.0f);
-  if (b.lambert) return b.baseColor * kInvPi;
   vec3 h = normalize(wo + wi);
   float cosOH = dot(wo, h);
   vec3 fd = DielectricFresnel(b.f0, b.f90, cosOH, b.etap);
@@ -203,6 +238,17 @@ VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
   return f;
 }
 
+// f(ωo, ωi), without the cosine; 0 unless ωo is above the surface, and for ωi below it
+// unless the material transmits.
+VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
+  if (wo.z <= 0.0f || wi.z == 0.0f) return vec3(0.0f);
+  if (b.lambert) return wi.z > 0.0f ? b.baseColor * kInvPi : vec3(0.0f);
+  vec3 f = EvalBase(b, wo, wi);
+  if (VKPT_CLEARCOAT && b.coat > 0.0f)
+    f = b.coatBaseScale * f + vec3(b.coat * EvalCoat(b.coatNormal, b.coatAlpha, wo, wi));
+  return f;
+}
+
 VKPT_FN float TransmissionPdf(Bsdf b, vec3 wo, vec3 wi) {
   if (b.etap == 1.0f) return GgxReflectionPdf(wo, MirrorThroughSurface(wi), b.alpha);
   vec3 m = RefractionHalfVector(wo, wi, b.etap);
@@ -213,8 +259,10 @@ VKPT_FN float BsdfPdf(Bsdf b, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z == 0.0f) return 0.0f;
   if (wi.z < 0.0f) return b.pTransmission > 0.0f ? b.pTransmission * TransmissionPdf(b, wo, wi) : 0.0f;
   if (b.lambert) return CosineHemispherePdf(wi.z);
-  return b.pSpecular * GgxReflectionPdf(wo, wi, b.alpha) +
-         (1.0f - b.pSpecular - b.pTransmission) * CosineHemispherePdf(wi.z);
+  float pdf = b.pSpecular * GgxReflectionPdf(wo, wi, b.alpha) +
+              (1.0f - b.pSpecular - b.pTransmission - b.pCoat) * CosineHemispherePdf(wi.z);
+  if (VKPT_CLEARCOAT && b.pCoat > 0.0f) pdf += b.pCoat * CoatPdf(b.coatNormal, b.coatAlpha, wo, wi);
+  return pdf;
 }
 
 // u.x picks the lobe, (u.y, u.z) the direction within it (stratified over the pixel's
@@ -236,7 +284,9 @@ VKPT_FN BsdfSample SampleBsdf(Bsdf b, vec3 wo, vec3 u) {
   // the pdf of a side counts only the lobes that sample it.
   if (specular.z <= 0.0f) specular = vec3(0.0f);
   if (transmitted.z >= 0.0f) transmitted = vec3(0.0f);
-  s.wi = u.x < b.pSpecular ? specular : (u.x < b.pSpecular + b.pTransmission ? transmitted : diffuse);
+  vec3 coated = VKPT_CLEARCOAT && b.pCoat > 0.0f ? SampleCoat(b.coatNormal, b.coatAlpha, wo, u.y, u.z) : vec3(0.0f);
+  float pBase = b.pSpecular + b.pTransmission;
+  s.wi = u.x < b.pSpecular ? specular : (u.x < pBase ? transmitted : (u.x < pBase + b.pCoat ? coated : diffuse));
   s.pdf = BsdfPdf(b, wo, s.wi);
   s.weight = s.pdf > 0.0f ? EvalBsdf(b, wo, s.wi) * (abs(s.wi.z) / s.pdf) : vec3(0.0f);
   return s;

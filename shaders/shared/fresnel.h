@@ -26,6 +26,17 @@ VKPT_FN vec3 DielectricFresnel(vec3 f0, float f90, float cosTheta, float etap) {
   return SchlickFresnel(f0, vec3(f90), cosTheta);
 }
 
+// KHR_materials_clearcoat's coat (clearcoat.h) is a dielectric of ior 1.5: F0 =
+// ((1.5 − 1) / (1.5 + 1))² = 0.04 and F90 = 1.
+const float kCoatF0 = 0.04f;
+
+VKPT_FN float CoatFresnel(float cosTheta) { return SchlickFresnel(vec3(kCoatF0), vec3(1.0f), cosTheta).x; }
+
+// The share of an emitter's radiance that leaves through its coat (factor c) at cos θ
+// from its normal: 1 − c F_c(cos θ), as the extension dims emission. Both strategies of
+// MIS take cos θ from the emitter's geometric normal (shading_frame.h, lights.h).
+VKPT_FN float CoatTransmittance(float coat, float cosTheta) { return 1.0f - coat * CoatFresnel(abs(cosTheta)); }
+
 VKPT_END_NAMESPACE
 
 #endif

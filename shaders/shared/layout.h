@@ -130,9 +130,9 @@ struct Material {
   float normalScale;   // normalTexture.scale: scales the tangent-space normal's x and y
   float alpha;         // baseColorFactor's alpha
   float alphaCutoff;   // MASK: the surface is present where its alpha is >= alphaCutoff
-  uint pad0;
-  uint pad1;
-  uint pad2;
+  float clearcoat;     // KHR_materials_clearcoat: the coat's factor (0: no coat)
+  float clearcoatRoughness;
+  float clearcoatNormalScale;  // clearcoatNormalTexture.scale
 };
 
 const uint kShadingHasNormals = 1u;
@@ -231,7 +231,10 @@ const uint kSlotNormal = 3u;             // tangent-space normal (shared/normal_
 const uint kSlotTransmission = 4u;       // R × transmission (KHR_materials_transmission)
 const uint kSlotSpecular = 5u;           // A × specular (KHR_materials_specular)
 const uint kSlotSpecularColor = 6u;      // RGB × specularColor (KHR_materials_specular)
-const uint kTextureSlots = 7u;
+const uint kSlotClearcoat = 7u;          // R × clearcoat (KHR_materials_clearcoat)
+const uint kSlotClearcoatRoughness = 8u;  // G × clearcoatRoughness
+const uint kSlotClearcoatNormal = 9u;     // the coat's tangent-space normal
+const uint kTextureSlots = 10u;
 
 // Light types (shared/lights.h).
 const uint kLightTriangle = 0u;          // emits from its front face

@@ -11,13 +11,14 @@
 // Scene access (backend_contract.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i),
 // environment.h's VKPT_ENV_TEXEL(i), VKPT_ENV_CDF(i), and material_textures.h's.
 //
-// The punctual falloffs and the emitter's cosine and texture below are seams of the
-// estimator (path.h): a test build may replace them.
+// The punctual falloffs and the emitter's cosine, texture and clear coat below are seams
+// of the estimator (path.h): a test build may replace them.
 #ifndef VKPT_LIGHTS_H
 #define VKPT_LIGHTS_H
 #include "alpha.h"
 #include "environment.h"
 #include "estimator.h"
+#include "fresnel.h"
 #include "intersect.h"
 #include "layout.h"
 #include "material_textures.h"
@@ -114,6 +115,34 @@ VKPT_FN vec3 EmissionTextureAt(VKPT_SCENE_PARAM Material mat, uint material, uin
 }
 #endif
 
+// The share of the emission at barycentrics b of source triangle `sourceIndex` (material
+// `mat`, index `material`) that leaves through the material's clear coat at cos θ' =
+// cosLight, as a ray hitting that point finds it (shading_frame.h). A seam.
+#ifndef EmitterCoatTransmittance
+VKPT_FN float EmitterCoatTransmittance(VKPT_SCENE_PARAM Material mat, uint material, uint sourceIndex, vec2 b,
+                                       float cosLight) {
+  return CoatTransmittance(EmitterCoat(VKPT_SCENE_ARG mat.clearcoat, mat.flags, material, sourceIndex, b.x, b.y),
+                           cosLight);
+}
+#endif
+
+// The radiance of triangle light `l` (triangle `tri`) at barycentrics b towards cos θ' =
+// cosLight, as a ray hitting that point would find it (shading_frame.h), so that both
+// strategies of multiple importance sampling estimate the same integrand: its emissive
+// texture, its clear coat's dimming, and, where alpha leaves part of the emitter out, its
+// coverage (a ray finds that part with that probability).
+VKPT_FN vec3 EmissionAt(VKPT_SCENE_PARAM Light l, Triangle tri, vec2 b, float cosLight) {
+  vec3 radiance = l.radiance;
+  if (VKPT_TEXTURES || VKPT_ALPHA || VKPT_CLEARCOAT) {
+    Material mat = VKPT_MATERIAL(tri.material);
+    if (VKPT_TEXTURES) radiance *= EmissionTextureAt(VKPT_SCENE_ARG mat, tri.material, tri.sourceIndex, b);
+    if (VKPT_ALPHA) radiance *= Coverage(VKPT_SCENE_ARG mat, tri.material, tri.sourceIndex, b.x, b.y);
+    if (VKPT_CLEARCOAT && mat.clearcoat > 0.0f)
+      radiance *= EmitterCoatTransmittance(VKPT_SCENE_ARG mat, tri.material, tri.sourceIndex, b, cosLight);
+  }
+  return radiance;
+}
+
 // Samples a light for the shading point p, whose rays leave from `origin` (p offset along
 // the geometric normal on the side the path arrived from; path.h moves a shadow ray that
 // goes through the surface to the other side), with u ∈ [0,1)²: u.x picks the
@@ -142,16 +171,7 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
     ls.wi = d / dist;
     float cosLight = EmitterCosine(l, ls.wi);
     ls.pdf = TriangleLightPdf(l, dist, cosLight);
-    ls.radiance = l.radiance;
-    // The emission at x, as a ray hitting x would find it (shading_frame.h), so that both
-    // strategies of multiple importance sampling estimate the same integrand.
-    // Where alpha leaves part of the emitter out, a ray finds that part with probability
-    // (its coverage), so the sample counts its emission times that.
-    if (VKPT_TEXTURES || VKPT_ALPHA) {
-      Material mat = VKPT_MATERIAL(tri.material);
-      if (VKPT_TEXTURES) ls.radiance *= EmissionTextureAt(VKPT_SCENE_ARG mat, tri.material, tri.sourceIndex, b);
-      if (VKPT_ALPHA) ls.radiance *= Coverage(VKPT_SCENE_ARG mat, tri.material, tri.sourceIndex, b.x, b.y);
-    }
+    ls.radiance = EmissionAt(VKPT_SCENE_ARG l, tri, b, cosLight);
     // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
     // unnormalised direction: the emitter itself then lies beyond tMax.
     ls.shadowRay.dir = OffsetRayOrigin(x, dot(nl, p - x) > 0.0f ? nl : -nl) - origin;

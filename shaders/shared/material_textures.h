@@ -3,7 +3,8 @@
 // the roughness and metallic factors, the emissive texture the emissive factor; and the
 // material extensions' textures their factors: KHR_materials_transmission's R channel
 // the transmission, KHR_materials_specular's A channel the specular factor and its colour
-// texture the specular colour.
+// texture the specular colour, KHR_materials_clearcoat's R and G channels the coat's
+// factor and roughness (its normal texture is shading_frame.h's).
 //
 // Scene access, as in texture.h, plus
 //   VKPT_TEXTURE_REF(i)  TextureRef i: slot s of material m is i = m · kTextureSlots + s
@@ -25,6 +26,10 @@
 // kSlotTransmission on (kMaterialExtensionTextured).
 #ifndef VKPT_EXTENSION_TEXTURES
 #define VKPT_EXTENSION_TEXTURES true
+#endif
+// And clearcoat.h's VKPT_CLEARCOAT (not included here: path.h's seams must come first).
+#ifndef VKPT_CLEARCOAT
+#define VKPT_CLEARCOAT true
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -64,6 +69,10 @@ VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, ui
     mat.transmission *= SampleSlot(VKPT_SCENE_ARG material, kSlotTransmission, uvs, b1, b2, footprint).r;
     mat.specular *= SampleSlot(VKPT_SCENE_ARG material, kSlotSpecular, uvs, b1, b2, footprint).a;
     mat.specularColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotSpecularColor, uvs, b1, b2, footprint));
+    if (VKPT_CLEARCOAT && mat.clearcoat > 0.0f) {
+      mat.clearcoat *= SampleSlot(VKPT_SCENE_ARG material, kSlotClearcoat, uvs, b1, b2, footprint).r;
+      mat.clearcoatRoughness *= SampleSlot(VKPT_SCENE_ARG material, kSlotClearcoatRoughness, uvs, b1, b2, footprint).g;
+    }
   }
 }
 
@@ -71,6 +80,16 @@ VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, ui
 // (b1, b2) of scene triangle `sourceIndex` differs from its material's emissive factor.
 VKPT_FN vec3 EmissiveTexture(VKPT_SCENE_PARAM uint material, uint sourceIndex, float b1, float b2) {
   return vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotEmissive, VKPT_UVS_OF(sourceIndex), b1, b2, kLevelZero));
+}
+
+// The clear coat factor over an emitter (factor `coat`, material flags `flags`) at (b1, b2)
+// of scene triangle `sourceIndex`, read at level 0 as the emission is, so that both MIS
+// strategies dim the same emission (fresnel.h's CoatTransmittance).
+VKPT_FN float EmitterCoat(VKPT_SCENE_PARAM float coat, uint flags, uint material, uint sourceIndex, float b1,
+                          float b2) {
+  if (VKPT_TEXTURES && VKPT_EXTENSION_TEXTURES && coat > 0.0f && (flags & kMaterialExtensionTextured) != 0u)
+    coat *= SampleSlot(VKPT_SCENE_ARG material, kSlotClearcoat, VKPT_UVS_OF(sourceIndex), b1, b2, kLevelZero).r;
+  return coat;
 }
 
 VKPT_END_NAMESPACE

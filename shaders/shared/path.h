@@ -227,7 +227,7 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   if (bounce >= params.maxDepth) return false;
 
   vec3 wo = WorldToFrame(sh.frame, -s.ray.dir);
-  Bsdf bsdf = PrepareBsdf(sh.material, wo, sh.frontFace);
+  Bsdf bsdf = PrepareBsdf(sh.material, wo, sh.frontFace, WorldToFrame(sh.frame, sh.coatNormal));
   vec3 origin = OffsetRayOrigin(sh.p, sh.ng);  // of the shadow ray and a reflected continuation
   if (VKPT_LIGHT_TYPES != 0u && params.lightCount > 0u)
     SampleDirectLight(VKPT_SCENE_ARG params, s, sh, origin, bsdf, wo, bounce);

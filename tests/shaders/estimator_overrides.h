@@ -18,6 +18,8 @@
 //   VKPT_MUTANT_NO_LIGHT_COSINE          a light sample forgets cos θ' at the emitter
 //   VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_TEXTURE  the emissive factor taken for the emission at
 //                                        a sampled point, its texture ignored
+//   VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_COAT  a sampled point's emission not dimmed by its
+//                                        clear coat
 // and mutants of the punctual lights, which tests/test_light_transport.cpp's closed
 // forms must reject:
 //   VKPT_MUTANT_SPOT_FALLOFF_LINEAR      the cone's falloff not squared
@@ -104,6 +106,15 @@ VKPT_FN float EmitterCosineOne(Light l, vec3 wi) {
 VKPT_FN vec3 EmissionTextureIgnored(VKPT_SCENE_PARAM Material mat, uint material, uint sourceIndex, vec2 b) {
   (void)scene, (void)mat, (void)material, (void)sourceIndex, (void)b;
   return vec3(1.0f);
+}
+#endif
+
+#ifdef VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_COAT
+#define EmitterCoatTransmittance EmitterCoatIgnored
+VKPT_FN float EmitterCoatIgnored(VKPT_SCENE_PARAM Material mat, uint material, uint sourceIndex, vec2 b,
+                                 float cosLight) {
+  (void)scene, (void)mat, (void)material, (void)sourceIndex, (void)b, (void)cosLight;
+  return 1.0f;
 }
 #endif
 
