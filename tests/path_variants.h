@@ -29,5 +29,7 @@ RenderResult RenderMutantDirectionalExtraCosine(const RenderScene& scene, const 
 RenderResult RenderMutantLightSampleWithoutTexture(const RenderScene& scene, const shader::FrameParams& params);
 // And a light sample's emission not dimmed by the emitter's clear coat.
 RenderResult RenderMutantLightSampleWithoutCoat(const RenderScene& scene, const shader::FrameParams& params);
+// Mutant of texture filtering (path.h): every texture at its ray cone's level everywhere.
+RenderResult RenderMutantTexturesFilteredEverywhere(const RenderScene& scene, const shader::FrameParams& params);
 
 }  // namespace vkpt::test

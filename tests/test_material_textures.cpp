@@ -102,7 +102,7 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   m.baseColor = m.emission = m.specularColor = glm::vec3(1.0f);
   m.metallic = m.roughness = m.transmission = m.specular = m.clearcoat = m.clearcoatRoughness = 1.0f;
   m.flags = kMaterialTextured | kMaterialExtensionTextured;
-  ApplyMaterialTextures(rs, m, 0, rs.uvs[0], 0.25f, 0.25f, kLevelZero);
+  ApplyMaterialTextures(rs, m, 0, rs.uvs[0], 0.25f, 0.25f, vec2(kLevelZero));
   const std::vector<float> table = TexelDecodeTable();
   const glm::vec3 srgb(table[51], table[102], table[153]);
   auto data = [&](int byte) { return table[kTexelDecodeLinear + byte]; };
@@ -120,7 +120,7 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   plain.transmission = plain.specular = 1.0f;
   plain.specularColor = glm::vec3(1.0f);
   plain.flags = kMaterialTextured;
-  ApplyMaterialTextures(rs, plain, 0, rs.uvs[0], 0.25f, 0.25f, kLevelZero);
+  ApplyMaterialTextures(rs, plain, 0, rs.uvs[0], 0.25f, 0.25f, vec2(kLevelZero));
   EXPECT_EQ(plain.transmission, 1.0f);
   EXPECT_EQ(plain.specular, 1.0f);
 }
@@ -359,7 +359,7 @@ TEST(MaterialTextures, TextureCoordinateTestShowsEachCornerUpright) {
         const shader::Ray ray{glm::vec3(sq.left - dx, sq.top - dy, -5.0f), glm::vec3(0, 0, 1)};
         const Hit hit = IntersectClosest(rs, ray.origin, ray.dir, shader::kInfinity);
         ASSERT_GE(hit.t, 0.0f);
-        const shader::SurfaceHit sh = shader::MakeSurfaceHit(rs, ray, hit, 0.0f);
+        const shader::SurfaceHit sh = shader::MakeSurfaceHit(rs, ray, hit, glm::vec2(0.0f));
         const glm::vec2 uv = sq.uv + 0.4f * glm::vec2(dx, dy);  // the squares are 1 wide, their regions 0.4
         const glm::vec3 factor = rs.materials[rs.triangles[hit.triangle].material].baseColor;
         const glm::vec3 expected = factor * glm::vec3(shader::SampleTexture(rs, rs.textures[0], uv, 0.0f));

@@ -1,6 +1,8 @@
 // Ray cones (shared/ray_cone.h): the camera's cone, the level a footprint picks, the
-// curvature of vertex normals, and in a render on both backends: an unlit quad 16 pixels
-// wide whose texture is 64 texels wide reads level 2, the level whose texels are its pixels.
+// curvature of vertex normals; which lookups a cone filters (path.h's TextureCones): an
+// unlit quad 16 pixels wide whose texture is 64 texels wide reads level 2, the level whose
+// texels are its pixels, where a later vertex's colour lookup would, and level 0 where
+// the camera sees it (both backends render it as --texture-lod none does, bit for bit).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "cpu/cpu_path.h"
 #include "cpu/path_tracer.h"
 #include "gpu_test.h"
 #include "render/render_scene.h"
@@ -100,31 +103,67 @@ int PixelsOffLevelTwo(const RenderScene& rs, const Image& img) {
   return off;
 }
 
-TEST(RayCones, QuadReadsTheLevelItsPixelsCover) {
+// What the camera sees is read at level 0 with ray cones too: the render equals the one
+// of --texture-lod none, whose pixels average the 4 × 4 random texels under them.
+TEST(RayCones, CameraHitsReadLevelZero) {
   Scene s = MipQuadScene();
   RenderScene rs = PrepareRenderScene(s);
   shader::FrameParams p = TestFrame(rs, s, 16, 2, 3, 1);
   p.background = glm::vec3(0.0f);
   ASSERT_EQ(p.textureLod, 1u);
-  const int cones = PixelsOffLevelTwo(rs, RenderCpu(rs, p).image);
-  p.textureLod = 0;  // --texture-lod none: level 0, 4 × 4 random texels under each pixel
-  const int none = PixelsOffLevelTwo(rs, RenderCpu(rs, p).image);
-  std::printf("pixels off their level-2 texel: %d with ray cones, %d with level 0 (of 256)\n", cones, none);
-  EXPECT_EQ(cones, 0);
-  EXPECT_GT(none, 200);
+  const Image cones = RenderCpu(rs, p).image;
+  p.textureLod = 0;
+  const Image none = RenderCpu(rs, p).image;
+  const int off = PixelsOffLevelTwo(rs, cones);
+  std::printf("camera hits with ray cones: %d of 256 pixels off their level-2 texel (level 0 read)\n", off);
+  EXPECT_TRUE(cones.pixels == none.pixels);
+  EXPECT_GT(off, 200);
+}
+
+// A later vertex reads its colour textures at its cone's level and its data textures and
+// normal maps at level 0: MakeSurfaceHit on the quad with the cone of a pixel (2/16 wide)
+// for colour gives the level-2 texel, and that cone for data leaves the colour at level 0.
+TEST(RayCones, LaterVerticesFilterColourOnly) {
+  shader::FrameParams p{};
+  p.textureLod = 1u;
+  EXPECT_EQ(shader::TextureCones(p, 0u, 0.5f), glm::vec2(0.0f));
+  EXPECT_EQ(shader::TextureCones(p, 1u, 0.5f), glm::vec2(0.5f, 0.0f));
+  EXPECT_EQ(shader::TextureCones(p, 3u, 0.25f), glm::vec2(0.25f, 0.0f));
+  p.textureLod = 0u;
+  EXPECT_EQ(shader::TextureCones(p, 2u, 0.5f), glm::vec2(0.0f));
+  const RenderScene rs = PrepareRenderScene(MipQuadScene());
+  int offColour = 0, offData = 0;
+  for (uint32_t y = 0; y < 16; ++y)
+    for (uint32_t x = 0; x < 16; ++x) {
+      const glm::vec2 uv((x + 0.5f) / 16.0f, (y + 0.5f) / 16.0f);
+      // The quad spans [−1, 1]² with v down the image; straight on from −z.
+      const shader::Ray ray{glm::vec3(2.0f * uv.x - 1.0f, 1.0f - 2.0f * uv.y, -5.0f), glm::vec3(0, 0, 1)};
+      const Hit hit = IntersectClosest(rs, ray.origin, ray.dir, shader::kInfinity);
+      ASSERT_GE(hit.t, 0.0f);
+      const glm::vec3 level2(shader::SampleTexture(rs, rs.textures[0], uv, 2.0f));
+      const glm::vec3 level0(shader::SampleTexture(rs, rs.textures[0], uv, 0.0f));
+      offColour += shader::MakeSurfaceHit(rs, ray, hit, glm::vec2(0.125f, 0.0f)).material.baseColor != level2;
+      offData += shader::MakeSurfaceHit(rs, ray, hit, glm::vec2(0.0f, 0.125f)).material.baseColor != level0;
+    }
+  EXPECT_EQ(offColour, 0) << "colour lookups at the cone's level";
+  EXPECT_EQ(offData, 0) << "a data cone must not filter the colour";
 }
 
 class RayConesGpu : public ValidatedGpuTest {};
 
-TEST_F(RayConesGpu, QuadReadsTheLevelItsPixelsCover) {
+TEST_F(RayConesGpu, CameraHitsReadLevelZero) {
   Scene s = MipQuadScene();
   RenderScene rs = PrepareRenderScene(s);
   shader::FrameParams p = TestFrame(rs, s, 16, 2, 3, 1);
   p.background = glm::vec3(0.0f);
   vk::GpuRenderer gpu(Gpu(), rs);
-  const int off = PixelsOffLevelTwo(rs, gpu.Render(p).image);
-  std::printf("GPU: %d of 256 pixels off their level-2 texel\n", off);
-  EXPECT_EQ(off, 0);
+  const Image cones = gpu.Render(p).image;
+  p.textureLod = 0;
+  const Image none = gpu.Render(p).image;
+  const int off = PixelsOffLevelTwo(rs, cones);
+  std::printf("GPU camera hits with ray cones: %d of 256 pixels off their level-2 texel\n", off);
+  EXPECT_TRUE(cones.pixels == none.pixels);
+  EXPECT_GT(off, 200);
 }
 
 }  // namespace

@@ -75,7 +75,7 @@ VKPT_FN AovSample TraceAovSample(VKPT_SCENE_PARAM FrameParams params, uint px, u
       return a;
     }
     float coneWidth = VKPT_TEXTURES ? ConeWidthAt(s.coneWidth, s.coneSpread, hit.t) : 0.0f;
-    SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit, params.textureLod != 0u ? coneWidth : 0.0f);
+    SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit, TextureCones(params, bounce, coneWidth));
     if (bounce == 0u) {
       a.hit = 1u;
       a.depth = hit.t;  // camera rays are unit length (estimator.h)

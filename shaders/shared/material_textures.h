@@ -56,22 +56,29 @@ VKPT_FN vec4 SampleSlot(VKPT_SCENE_PARAM uint material, uint slot, TriangleUVs u
 }
 
 // `mat` (material `material`, read from the table) at the point (b1, b2) of a triangle
-// with texture coordinates `uvs`, for a ray cone of `footprint`. Emission reads level 0,
+// with texture coordinates `uvs`. Colour textures (base colour, specular colour) are read
+// at the mip level of ray cone footprint `footprints.x`, the data textures
+// (metallic-roughness, the extensions' factors) and normal maps (shading_frame.h) at
+// that of `footprints.y` — level 0, as the estimator reads them (path.h's TextureCones):
+// light is linear in a colour, so a filtered colour gives the average of the footprint's
+// light, but not in a roughness, a metalness or a normal, whose filtered value gives
+// other light (docs/design-notes.md, "Texture level of detail"). Emission reads level 0,
 // as light sampling does (EmissiveTexture), so both MIS strategies see the same emitter.
 VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, uint material, TriangleUVs uvs, float b1,
-                                   float b2, float footprint) {
+                                   float b2, vec2 footprints) {
+  float footprint = footprints.x, data = footprints.y;
   mat.baseColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotBaseColor, uvs, b1, b2, footprint));
-  vec4 mr = SampleSlot(VKPT_SCENE_ARG material, kSlotMetallicRoughness, uvs, b1, b2, footprint);
+  vec4 mr = SampleSlot(VKPT_SCENE_ARG material, kSlotMetallicRoughness, uvs, b1, b2, data);
   mat.roughness *= mr.g;
   mat.metallic *= mr.b;
   mat.emission *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotEmissive, uvs, b1, b2, kLevelZero));
   if (VKPT_EXTENSION_TEXTURES && (mat.flags & kMaterialExtensionTextured) != 0u) {
-    mat.transmission *= SampleSlot(VKPT_SCENE_ARG material, kSlotTransmission, uvs, b1, b2, footprint).r;
-    mat.specular *= SampleSlot(VKPT_SCENE_ARG material, kSlotSpecular, uvs, b1, b2, footprint).a;
+    mat.transmission *= SampleSlot(VKPT_SCENE_ARG material, kSlotTransmission, uvs, b1, b2, data).r;
+    mat.specular *= SampleSlot(VKPT_SCENE_ARG material, kSlotSpecular, uvs, b1, b2, data).a;
     mat.specularColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotSpecularColor, uvs, b1, b2, footprint));
     if (VKPT_CLEARCOAT && mat.clearcoat > 0.0f) {
-      mat.clearcoat *= SampleSlot(VKPT_SCENE_ARG material, kSlotClearcoat, uvs, b1, b2, footprint).r;
-      mat.clearcoatRoughness *= SampleSlot(VKPT_SCENE_ARG material, kSlotClearcoatRoughness, uvs, b1, b2, footprint).g;
+      mat.clearcoat *= SampleSlot(VKPT_SCENE_ARG material, kSlotClearcoat, uvs, b1, b2, data).r;
+      mat.clearcoatRoughness *= SampleSlot(VKPT_SCENE_ARG material, kSlotClearcoatRoughness, uvs, b1, b2, data).g;
     }
   }
 }

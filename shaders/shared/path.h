@@ -184,6 +184,19 @@ VKPT_FN bool LeavesOnLobeSide(BsdfSample bs, vec3 wi, vec3 ng) {
   return bs.pdf > 0.0f && side != 0.0f && (side < 0.0f) == (bs.wi.z < 0.0f);
 }
 
+// The ray cone widths (of a cone `coneWidth` wide at vertex `bounce`) at which the vertex
+// reads its colour textures (x) and its data textures and normal maps (y; shading_frame.h):
+// 0 reads level 0. What the camera sees directly is read at level 0 — a pixel's samples
+// average it, and the image converges to the unfiltered answer — and data textures
+// everywhere, as a filtered roughness or normal gives other light; paths filter their
+// later colour lookups by their cone (--texture-lod cones), where a texel's noise is the
+// larger and light is linear in the colour. A seam.
+#ifndef TextureCones
+VKPT_FN vec2 TextureCones(FrameParams params, uint bounce, float coneWidth) {
+  return vec2(params.textureLod != 0u && bounce > 0u ? coneWidth : 0.0f, 0.0f);
+}
+#endif
+
 // A path that survives Russian roulette with probability `survive` carries its throughput
 // divided by it, so that its expected contribution is what it was. A seam.
 #ifndef RouletteSurvivorThroughput
@@ -214,7 +227,7 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
     return false;
   }
   float coneWidth = VKPT_TEXTURES ? ConeWidthAt(s.coneWidth, s.coneSpread, hit.t) : 0.0f;
-  SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit, params.textureLod != 0u ? coneWidth : 0.0f);
+  SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit, TextureCones(params, bounce, coneWidth));
   if (VKPT_VOLUMES && !sh.frontFace && (sh.material.flags & kMaterialVolume) != 0u)
     s.throughput *= exp(-sh.material.attenuation * hit.t);
   s.result.radiance += s.throughput * WeightedEmission(VKPT_SCENE_ARG s, sh, hit.t);

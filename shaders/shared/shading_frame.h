@@ -90,9 +90,10 @@ VKPT_FN vec4 VertexNormal(VKPT_SCENE_PARAM Triangle tri, HitRecord hit, vec3 ng,
 // Surfaces scatter on both sides: the geometric normal is turned to face the ray, and
 // the shading normal with it. One-sided materials emit from their front face only
 // (glTF's winding). Textures are read at the mip level of a ray cone `coneWidth` wide at
-// the hit (0: level 0). A clear coat has its own normal (its normal map bending the
-// vertex normal, not the base's) and dims the emission beneath it (fresnel.h).
-VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit, float coneWidth) {
+// the hit: colour textures for one of width `coneWidths.x`, data textures and normal maps
+// for one of `coneWidths.y` (material_textures.h; 0: level 0). A clear coat has its own normal (its normal map bending
+// the vertex normal, not the base's) and dims the emission beneath it (fresnel.h).
+VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit, vec2 coneWidths) {
   Triangle tri = VKPT_TRIANGLE(hit.triangle);
   SurfaceHit sh;
   sh.material = VKPT_MATERIAL(tri.material);
@@ -104,12 +105,15 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit, float
   vec4 normalTexel = vec4(0.0f), coatTexel = vec4(0.0f);
   if (VKPT_TEXTURES && (sh.material.flags & kMaterialTextured) != 0u) {
     TriangleUVs uvs = VKPT_UVS_OF(tri.sourceIndex);
-    float footprint = FootprintLod(coneWidth, dot(ng, ray.dir), tri.e1, tri.e2);
-    ApplyMaterialTextures(VKPT_SCENE_ARG sh.material, tri.material, uvs, hit.b1, hit.b2, footprint);
+    float cosTheta = dot(ng, ray.dir);
+    vec2 footprints = vec2(FootprintLod(coneWidths.x, cosTheta, tri.e1, tri.e2),
+                           FootprintLod(coneWidths.y, cosTheta, tri.e1, tri.e2));
+    ApplyMaterialTextures(VKPT_SCENE_ARG sh.material, tri.material, uvs, hit.b1, hit.b2, footprints);
     if (VKPT_NORMAL_MAPS) {
-      normalTexel = NormalMapTexel(VKPT_SCENE_ARG tri.material, kSlotNormal, uvs, hit.b1, hit.b2, footprint);
+      normalTexel = NormalMapTexel(VKPT_SCENE_ARG tri.material, kSlotNormal, uvs, hit.b1, hit.b2, footprints.y);
       if (coated)
-        coatTexel = NormalMapTexel(VKPT_SCENE_ARG tri.material, kSlotClearcoatNormal, uvs, hit.b1, hit.b2, footprint);
+        coatTexel =
+            NormalMapTexel(VKPT_SCENE_ARG tri.material, kSlotClearcoatNormal, uvs, hit.b1, hit.b2, footprints.y);
     }
   }
   if (VKPT_VERTEX_COLORS)

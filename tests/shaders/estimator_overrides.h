@@ -18,6 +18,8 @@
 //   VKPT_MUTANT_NO_LIGHT_COSINE          a light sample forgets cos θ' at the emitter
 //   VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_TEXTURE  the emissive factor taken for the emission at
 //                                        a sampled point, its texture ignored
+//   VKPT_MUTANT_TEXTURES_FILTERED_EVERYWHERE  every texture read at its ray cone's level at
+//                                        every vertex, normal maps and roughness too
 //   VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_COAT  a sampled point's emission not dimmed by its
 //                                        clear coat
 // and mutants of the punctual lights, which tests/test_light_transport.cpp's closed
@@ -106,6 +108,14 @@ VKPT_FN float EmitterCosineOne(Light l, vec3 wi) {
 VKPT_FN vec3 EmissionTextureIgnored(VKPT_SCENE_PARAM Material mat, uint material, uint sourceIndex, vec2 b) {
   (void)scene, (void)mat, (void)material, (void)sourceIndex, (void)b;
   return vec3(1.0f);
+}
+#endif
+
+#ifdef VKPT_MUTANT_TEXTURES_FILTERED_EVERYWHERE
+#define TextureCones TextureConesEverywhere
+VKPT_FN vec2 TextureConesEverywhere(FrameParams params, uint bounce, float coneWidth) {
+  (void)bounce;
+  return vec2(params.textureLod != 0u ? coneWidth : 0.0f);
 }
 #endif
 
