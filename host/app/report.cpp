@@ -113,6 +113,13 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
               cam.orthographic ? cam.ymag : cam.yfov * 180.0 / M_PI);
   std::printf("  memory: %s counted for the scene, of --max-memory %s\n", FormatBytes(scene.memoryCounted).c_str(),
               FormatBytes(scene.memoryLimit).c_str());
+  if (!scene.materialVariants.empty()) {
+    std::printf("  material variants (--variant NAME|INDEX):");
+    for (size_t i = 0; i < scene.materialVariants.size(); ++i)
+      std::printf("%s %zu \"%s\"", i ? "," : "", i, scene.materialVariants[i].c_str());
+    std::printf("; rendering %s\n", scene.variant < 0 ? "the default materials"
+                                                      : ("\"" + scene.materialVariants[scene.variant] + "\"").c_str());
+  }
   for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
   for (const std::string& f : scene.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
 }

@@ -33,6 +33,8 @@ JsonObject SceneJson(const RunOutcome& run) {
   scene.Int("degenerate_triangles", run.rs.degenerateTriangles).Int("materials", run.scene.materials.size());
   scene.Int("lights", run.rs.lights.size()).Int("cameras", run.scene.cameras.size());
   scene.Int("memory_counted", run.scene.memoryCounted).Int("memory_limit", run.scene.memoryLimit);
+  scene.Raw("material_variant",
+            run.scene.variant < 0 ? "null" : JsonString(run.scene.materialVariants[size_t(run.scene.variant)]));
   return scene;
 }
 

@@ -17,6 +17,7 @@
 #include "scene/gltf_source.h"
 #include "scene/gltf_textures.h"
 #include "scene/gltf_validate.h"
+#include "scene/gltf_variants.h"
 #include "scene/scene_file.h"
 #include "util/byte_size.h"
 #include "util/content_hash.h"
@@ -106,11 +107,11 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
 
 // Extensions whose every property vkpt renders.
 bool IsRenderedExtension(const std::string& ext) {
-  static const char* const kRendered[] = {"KHR_materials_clearcoat",    "KHR_materials_emissive_strength",
-                                          "KHR_materials_ior",          "KHR_materials_specular",
-                                          "KHR_materials_transmission", "KHR_materials_volume",
-                                          "KHR_materials_unlit",        "KHR_lights_punctual",
-                                          "KHR_mesh_quantization",      "KHR_texture_transform"};
+  static const char* const kRendered[] = {
+      "KHR_materials_clearcoat", "KHR_materials_variants", "KHR_materials_emissive_strength",
+      "KHR_materials_ior",       "KHR_materials_specular", "KHR_materials_transmission",
+      "KHR_materials_volume",    "KHR_materials_unlit",    "KHR_lights_punctual",
+      "KHR_mesh_quantization",   "KHR_texture_transform"};
   return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
 }
 
@@ -142,7 +143,8 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
 
 // The phases of a load, in the order that makes each safe: the structure is checked
 // before any data it points to is read, the memory counted before anything is decoded.
-void BuildScene(const GltfSource& src, const LoadLimits& limits, Scene& scene, MemoryBudget& budget) {
+void BuildScene(const GltfSource& src, const LoadLimits& limits, const std::string& variant, Scene& scene,
+                MemoryBudget& budget) {
   CheckAsset(src);
   CheckBufferViews(src);
   for (size_t i = 0; i < src.m.accessors.size(); ++i) CheckAccessor(src, int(i));
@@ -152,9 +154,11 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, Scene& scene, M
   const bool textured = HasMaterialTextures(scene), normalMapped = UsesNormalMaps(scene);
   const std::vector<int> parents = CheckNodeGraph(src);
   ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), textured, normalMapped, budget);
+  scene.materialVariants = ReadVariants(src);
+  scene.variant = ResolveVariant(src, scene.materialVariants, variant);
+  const MeshDecoding decoding{defaultMaterial, textured, normalMapped, scene.variant, scene.materialVariants.size()};
   std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
-  for (size_t i = 0; i < src.m.meshes.size(); ++i)
-    meshes[i] = DecodeMesh(src, int(i), defaultMaterial, textured, normalMapped, scene.warnings);
+  for (size_t i = 0; i < src.m.meshes.size(); ++i) meshes[i] = DecodeMesh(src, int(i), decoding, scene.warnings);
   for (std::vector<DecodedPrimitive>& mesh : meshes)
     for (DecodedPrimitive& prim : mesh) {
       if (!normalMapped) break;
@@ -208,7 +212,7 @@ tinygltf::Model ParseWithTinyGltf(const std::string& path, const SceneFile& file
 
 }  // namespace
 
-Scene LoadGltf(const std::string& path, const LoadLimits& limits) {
+Scene LoadGltf(const std::string& path, const LoadLimits& limits, const std::string& variant) {
   MemoryBudget budget(limits.maxMemory ? limits.maxMemory : DefaultMaxMemory(), path);
   try {
     SceneFile file = ReadSceneFile(path, budget);
@@ -222,7 +226,7 @@ Scene LoadGltf(const std::string& path, const LoadLimits& limits) {
     scene.contentHash = hash.Value();
     file = SceneFile{};
     for (const std::string& skipped : access.SkippedImages()) scene.warnings.push_back(skipped);
-    BuildScene(GltfSource{path, model}, limits, scene, budget);
+    BuildScene(GltfSource{path, model}, limits, variant, scene, budget);
     scene.memoryLimit = budget.Limit();
     scene.memoryCounted = budget.Used();
     return scene;

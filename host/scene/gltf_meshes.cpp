@@ -5,6 +5,7 @@
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_validate.h"
+#include "scene/gltf_variants.h"
 #include "scene/tangent_space.h"
 
 namespace vkpt {
@@ -124,8 +125,8 @@ std::vector<glm::vec<N, float>> ReadFinite(const GltfSource& src, int accessor, 
 
 }  // namespace
 
-std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial, bool withUVs,
-                                         bool withTangents, std::vector<std::string>& warnings) {
+std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, const MeshDecoding& d,
+                                         std::vector<std::string>& warnings) {
   std::vector<DecodedPrimitive> decoded;
   const tinygltf::Mesh& mesh = src.m.meshes[meshIndex];
   for (size_t p = 0; p < mesh.primitives.size(); ++p) {
@@ -144,19 +145,21 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, u
       out.normals = ReadFiniteVec3(src, nrm->second, name, "NORMAL", "normal");
     if (auto col = prim.attributes.find("COLOR_0"); col != prim.attributes.end())
       out.colors = ReadColors(src, col->second, name, warnings);
-    for (int set = 0; set < 2 && withUVs; ++set) {
+    for (int set = 0; set < 2 && d.withUVs; ++set) {
       const char* attr = set == 0 ? "TEXCOORD_0" : "TEXCOORD_1";
       if (auto tc = prim.attributes.find(attr); tc != prim.attributes.end())
         out.uvs[set] = ReadFinite<2>(src, tc->second, name, attr, "texture coordinate");
     }
-    if (auto tan = prim.attributes.find("TANGENT"); withTangents && tan != prim.attributes.end()) {
+    if (auto tan = prim.attributes.find("TANGENT"); d.withTangents && tan != prim.attributes.end()) {
       // xyz as given (the instancer normalizes after the transform), w reduced to its
       // sign (the spec asks for ±1).
       out.tangents = ReadFinite<4>(src, tan->second, name, "TANGENT", "tangent");
       for (glm::vec4& t : out.tangents) t.w = t.w < 0.0f ? -1.0f : 1.0f;
     }
     out.indices = TriangleList(src, prim, out.positions.size(), name);
-    out.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial;
+    const int variantMaterial = VariantMaterial(src, prim, d.variant, d.variantCount, name);
+    out.material = variantMaterial >= 0 ? uint32_t(variantMaterial)
+                                        : (prim.material >= 0 ? uint32_t(prim.material) : d.defaultMaterial);
     decoded.push_back(std::move(out));
   }
   return decoded;

@@ -24,13 +24,22 @@ struct DecodedPrimitive {
   uint32_t material;
 };
 
+// What DecodeMesh reads besides the primitives themselves.
+struct MeshDecoding {
+  uint32_t defaultMaterial = 0;  // for primitives without a material
+  bool withUVs = false;          // some material has a texture
+  bool withTangents = false;     // some material has a normal map
+  int variant = -1;              // KHR_materials_variants' variant to render (−1: none)
+  size_t variantCount = 0;       // the file's variants
+};
+
 // Checks and decodes the triangle primitives of meshes[meshIndex]: positions, normals and
 // colours finite, indices in range and no primitive-restart values. Points and lines add a
 // warning, and so do colours outside [0, 1] (clamped). Texture coordinates are read only
-// when `withUVs` (some material has a texture), tangents when `withTangents` (some
-// material has a normal map); both must be finite.
-std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, uint32_t defaultMaterial, bool withUVs,
-                                         bool withTangents, std::vector<std::string>& warnings);
+// when `d.withUVs`, tangents when `d.withTangents`; both must be finite. A primitive takes
+// its material in `d.variant` where its variant mappings give one (gltf_variants.h).
+std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, const MeshDecoding& d,
+                                         std::vector<std::string>& warnings);
 
 // MikkTSpace tangents per corner (scene/tangent_space.h) for a primitive that supplies no
 // TANGENT, from its normals — for a flat primitive, the area-weighted face normals around

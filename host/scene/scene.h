@@ -115,6 +115,10 @@ struct Scene {
   std::vector<TextureImage> images;
   std::vector<std::string> materialNames;
   std::vector<Camera> cameras;  // in scene-graph order; --camera N picks one
+  // KHR_materials_variants: the file's variant names, and the one rendered (−1: none, the
+  // primitives' own materials).
+  std::vector<std::string> materialVariants;
+  int variant = -1;
   std::vector<PunctualLight> lights;  // in scene-graph order, one per light node
   Bounds3f bounds;
 
