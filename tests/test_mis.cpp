@@ -209,12 +209,19 @@ TEST(Mis, TexturedLightAgreesAtThreeRoughnesses) {
   EXPECT_EQ(v.failures, 0);
 }
 
+// Estimators whose light samples (light sampling alone, and MIS) come from `mutant`.
+Estimators WithLightSampleMutant(PathVariantRenderer mutant, const char* name) {
+  Estimators e;
+  e.lightOnly = mutant;
+  e.mis = mutant;
+  e.name = name;
+  return e;
+}
+
 // Light samples that take the emissive factor for the emission, texture ignored.
 TEST(Mis, MutantLightSampleWithoutTextureIsCaught) {
-  Estimators e;
-  e.lightOnly = RenderMutantLightSampleWithoutTexture;
-  e.mis = RenderMutantLightSampleWithoutTexture;
-  e.name = "mutant: light samples ignore the emissive texture";
+  const Estimators e =
+      WithLightSampleMutant(RenderMutantLightSampleWithoutTexture, "mutant: light samples ignore the emissive texture");
   EXPECT_GT(CompareEstimators(e, kMutantSpp / 2, GlossyPlaneUnderTexturedLight).failures, 0);
 }
 
@@ -239,10 +246,8 @@ TEST(Mis, ClearcoatAgreesAtThreeRoughnesses) {
 
 // Light samples that take the coated emitter's emission undimmed.
 TEST(Mis, MutantLightSampleWithoutCoatIsCaught) {
-  Estimators e;
-  e.lightOnly = RenderMutantLightSampleWithoutCoat;
-  e.mis = RenderMutantLightSampleWithoutCoat;
-  e.name = "mutant: light samples ignore the emitter's clear coat";
+  const Estimators e = WithLightSampleMutant(RenderMutantLightSampleWithoutCoat,
+                                             "mutant: light samples ignore the emitter's clear coat");
   EXPECT_GT(CompareEstimators(e, kMutantSpp, CoatedPlaneUnderCoatedLight).failures, 0);
 }
 

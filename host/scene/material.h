@@ -58,14 +58,14 @@ struct Material {
   float clearcoatNormalScale = 0.0f;  // clearcoatNormalTexture.scale
 
   // The textures that scale the factors above (shared/material_textures.h says how).
-  MaterialTexture baseColorTexture;          // RGB × baseColor, A × alpha (sRGB)
-  MaterialTexture metallicRoughnessTexture;  // G × roughness, B × metallic
-  MaterialTexture emissiveTexture;           // RGB × emission (sRGB)
-  MaterialTexture normalTexture;             // tangent-space normal, scaled by normalScale
-  MaterialTexture transmissionTexture;       // R × transmission
-  MaterialTexture specularTexture;           // A × specular
-  MaterialTexture specularColorTexture;      // RGB × specularColor (sRGB)
-  MaterialTexture clearcoatTexture;          // R × clearcoat
+  MaterialTexture baseColorTexture;           // RGB × baseColor, A × alpha (sRGB)
+  MaterialTexture metallicRoughnessTexture;   // G × roughness, B × metallic
+  MaterialTexture emissiveTexture;            // RGB × emission (sRGB)
+  MaterialTexture normalTexture;              // tangent-space normal, scaled by normalScale
+  MaterialTexture transmissionTexture;        // R × transmission
+  MaterialTexture specularTexture;            // A × specular
+  MaterialTexture specularColorTexture;       // RGB × specularColor (sRGB)
+  MaterialTexture clearcoatTexture;           // R × clearcoat
   MaterialTexture clearcoatRoughnessTexture;  // G × clearcoatRoughness
   MaterialTexture clearcoatNormalTexture;     // the coat's tangent-space normal, scaled by clearcoatNormalScale
 

@@ -224,14 +224,14 @@ struct TextureRef {
   float m12;
 };
 // The texture slots of a material, kTextureSlots TextureRefs each (kBindingMaterialTextures).
-const uint kSlotBaseColor = 0u;          // RGB × baseColor, A × alpha
-const uint kSlotMetallicRoughness = 1u;  // G × roughness, B × metallic
-const uint kSlotEmissive = 2u;           // RGB × emission
-const uint kSlotNormal = 3u;             // tangent-space normal (shared/normal_map.h)
-const uint kSlotTransmission = 4u;       // R × transmission (KHR_materials_transmission)
-const uint kSlotSpecular = 5u;           // A × specular (KHR_materials_specular)
-const uint kSlotSpecularColor = 6u;      // RGB × specularColor (KHR_materials_specular)
-const uint kSlotClearcoat = 7u;          // R × clearcoat (KHR_materials_clearcoat)
+const uint kSlotBaseColor = 0u;           // RGB × baseColor, A × alpha
+const uint kSlotMetallicRoughness = 1u;   // G × roughness, B × metallic
+const uint kSlotEmissive = 2u;            // RGB × emission
+const uint kSlotNormal = 3u;              // tangent-space normal (shared/normal_map.h)
+const uint kSlotTransmission = 4u;        // R × transmission (KHR_materials_transmission)
+const uint kSlotSpecular = 5u;            // A × specular (KHR_materials_specular)
+const uint kSlotSpecularColor = 6u;       // RGB × specularColor (KHR_materials_specular)
+const uint kSlotClearcoat = 7u;           // R × clearcoat (KHR_materials_clearcoat)
 const uint kSlotClearcoatRoughness = 8u;  // G × clearcoatRoughness
 const uint kSlotClearcoatNormal = 9u;     // the coat's tangent-space normal
 const uint kTextureSlots = 10u;

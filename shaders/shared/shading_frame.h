@@ -38,11 +38,11 @@ VKPT_BEGIN_NAMESPACE
 
 struct SurfaceHit {
   vec3 p;
-  uint light;      // the hit triangle's light-table entry, or kInvalidIndex
-  vec3 ng;         // unit geometric normal, on the side the ray arrived from
-  bool emits;      // the material emits towards the ray (front face, or double-sided)
-  bool frontFace;  // the ray arrived on the side the triangle's winding faces
-  Frame frame;     // shading frame; frame.n is the shading normal
+  uint light;       // the hit triangle's light-table entry, or kInvalidIndex
+  vec3 ng;          // unit geometric normal, on the side the ray arrived from
+  bool emits;       // the material emits towards the ray (front face, or double-sided)
+  bool frontFace;   // the ray arrived on the side the triangle's winding faces
+  Frame frame;      // shading frame; frame.n is the shading normal
   vec3 coatNormal;  // KHR_materials_clearcoat's normal: its own normal map, else the vertex normal
   Material material;
   float curvature;  // of the vertex normals (ray_cone.h), in textured scenes; else 0
