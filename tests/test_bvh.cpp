@@ -491,7 +491,7 @@ TEST(Bvh, AutoSplitsKeepTheDirectionCopies) {
 // build runs it; under AddressSanitizer (76 s) it would repeat what the smaller trees'
 // tests check there, at a twentieth of CI's time budget.
 TEST(Bvh, TenMillionTrianglesKeepInvariantsAndMatchBruteForce) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(VKPT_ADDRESS_SANITIZER)
   GTEST_SKIP() << "76 s under AddressSanitizer; the plain build runs it";
 #endif
   const Scene scene = bench::ProceduralScene(10'000'000);

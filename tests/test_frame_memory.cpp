@@ -26,7 +26,7 @@ class FrameMemory : public ::testing::TestWithParam<const char*> {};
 // the default --max-memory is half of that, and the image is refused before anything of
 // it is allocated: exit 1, a message naming the size, the figure and the limit, no file.
 TEST_P(FrameMemory, LargestImageIsRefusedWithItsFigure) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(VKPT_ADDRESS_SANITIZER)
   GTEST_SKIP() << "an address-space limit does not work with AddressSanitizer";
 #endif
   const test::TempFolder dir("frame-memory-refused");
@@ -81,7 +81,7 @@ Measured Render(const std::string& backend, uint32_t size, const std::vector<std
 // the peak of lavapipe's shader compiler, which the frame of a small image fits under); per configuration: plain,
 // checkpoints over closed chunks, every AOV with the denoiser into one EXR.
 TEST_P(FrameMemory, CountCoversWhatARenderHolds) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(VKPT_ADDRESS_SANITIZER)
   GTEST_SKIP() << "AddressSanitizer's shadow and quarantine are not the program's memory";
 #endif
   const std::vector<std::pair<std::vector<std::string>, std::string>> configs = {

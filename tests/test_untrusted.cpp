@@ -367,7 +367,7 @@ TEST(Messages, BufferFileOfTheWrongSizeIsNamed) {
 // the message says memory ran out, not that the file is broken. (ASan reserves terabytes of address space
 // for its shadow memory, so an address-space limit cannot apply to its builds.)
 TEST(Messages, ProcessMemoryLimitIsReportedAsMemory) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(VKPT_ADDRESS_SANITIZER)
   GTEST_SKIP() << "an address-space limit does not work with AddressSanitizer";
 #endif
   TempDir root;
