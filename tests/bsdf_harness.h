@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "shared/bsdf.h"
 #include "test_util.h"
 
@@ -171,6 +173,20 @@ inline Chi2Result BsdfChi2(const Material& m, float muO, uint32_t seed, bool fro
       b, wo, [&](vec3 wi) { return double(BsdfPdf(b, wo, wi)); }, seed);
 }
 
+// The lossless bases that layers (clear coat, sheen) are tested over: white Lambert
+// (specular 0), a white rough metal, a white dielectric (diffuse under specular: their
+// coupling sums to one) and a white rough glass boundary (both sides compensated).
+struct Base {
+  const char* name;
+  Material material;
+};
+const Base kLosslessBases[] = {
+    {"white Lambert", MakeMaterial(vec3(1.0f), 0.0f, 0.5f, 0.0f, 1.5f)},
+    {"white metal r 0.5", MakeMaterial(vec3(1.0f), 1.0f, 0.5f, 1.0f, 1.5f)},
+    {"white dielectric r 0.4", MakeMaterial(vec3(1.0f), 0.0f, 0.4f, 1.0f, 1.5f)},
+    {"white glass r 0.3", Transmissive(MakeMaterial(vec3(1.0f), 0.0f, 0.3f, 1.0f, 1.5f), 1.0f, true)},
+};
+
 // ---------------------------------------------------------------------------------------
 // Albedo ∫ f cos dω by importance sampling with SampleBsdf, stratified in (u.y, u.z).
 
@@ -202,9 +218,86 @@ inline Albedo EstimateAlbedo(const Bsdf& b, vec3 wo, uint32_t seed, int strata =
   return a;
 }
 
+// 2e5 stratified samples per albedo in the layers' furnaces; 4× fewer in a sanitizer
+// build (test_util.h).
+const int kFurnaceStrata = test::kSampleDivisor == 1 ? 448 : 224;
+
 inline Albedo EstimateAlbedo(const Material& m, float muO, uint32_t seed, int strata = 448, bool frontFace = true) {
   const vec3 wo = Outgoing(muO);
   return EstimateAlbedo(PrepareBsdf(m, wo, frontFace, kUp), wo, seed, strata);
+}
+
+// ---------------------------------------------------------------------------------------
+// Every sample's weight is f cos / pdf, its pdf BsdfPdf's, for `n` random materials and
+// shading normals from `make(u)` (a Material and the coat's normal), ωo on the upper
+// hemisphere, either face.
+
+struct SampleWeightCheck {
+  int checked = 0, bad = 0;
+};
+
+inline bool Near(float a, float b) { return std::abs(a - b) <= 1e-4f * std::max(a, b); }
+
+template <class Make>
+SampleWeightCheck CheckSampleWeights(Uniform& u, int n, const Make& make) {
+  SampleWeightCheck c;
+  for (int i = 0; i < n; ++i) {
+    const auto [m, coatNormal] = make(u);
+    const vec3 wo = u.Hemisphere();
+    const Bsdf b = PrepareBsdf(m, wo, u() < 0.7f, coatNormal);
+    const BsdfSample s = SampleBsdf(b, wo, u.Vec3());
+    if (!(s.pdf > 0.0f)) {
+      c.bad += s.pdf != 0.0f || s.weight != vec3(0.0f);
+      continue;
+    }
+    ++c.checked;
+    const float pdf = BsdfPdf(b, wo, s.wi);
+    const vec3 f = EvalBsdf(b, wo, s.wi);
+    const vec3 expected = f * std::abs(s.wi.z) / pdf;
+    const bool ok = Finite(s.weight) && MaxComponent(f) >= 0.0f && std::abs(s.pdf - pdf) <= 1e-6f * pdf &&
+                    Near(s.weight.x, expected.x) && Near(s.weight.y, expected.y) && Near(s.weight.z, expected.z);
+    if (!ok && ++c.bad <= 5) ADD_FAILURE() << "pdf " << s.pdf << " vs " << pdf << ", weight.x " << s.weight.x;
+  }
+  return c;
+}
+
+// CheckSampleWeights over 100,000 materials from `make`, printed and expected flawless.
+template <class Make>
+void ExpectSampleWeightsAreFCosOverPdf(const char* what, uint32_t seed, const Make& make) {
+  Uniform u(seed);
+  const SampleWeightCheck c = CheckSampleWeights(u, 100000, make);
+  std::printf("%s sample weight = f cos / pdf: %d samples checked, %d bad\n", what, c.checked, c.bad);
+  EXPECT_GT(c.checked, 80000);
+  EXPECT_EQ(c.bad, 0);
+}
+
+// SampleBsdf of `m` at μo against BsdfPdf (χ² above α, no sample in a cell of density 0,
+// the density's mass that of the real samples), the material's `lobe` sampled.
+inline void ExpectSamplerMatchesPdf(const Material& m, float muO, vec3 coatNormal, float Bsdf::*lobe, const char* name,
+                                    double alpha, uint32_t seed) {
+  const vec3 wo = Outgoing(muO);
+  const Bsdf b = PrepareBsdf(m, wo, true, coatNormal);
+  ASSERT_GT(b.*lobe, 0.0f) << name;
+  const Chi2Result r = SamplerChi2(
+      b, wo, [&](vec3 wi) { return double(BsdfPdf(b, wo, wi)); }, seed);
+  PrintChi2(name, r, alpha);
+  EXPECT_GT(r.p, alpha) << name;
+  EXPECT_EQ(r.zeroCellHits, 0) << name;
+  EXPECT_NEAR(r.pdfMass, 1.0 - r.noSample, 5.0 * r.massSigma + 2e-3) << name;
+}
+
+// The χ² tests' teeth: SampleBsdf of `m` at μo against the pdf of the same material with
+// `lobe`'s probability set to 0 (its samples counted as the cosine lobe's) must be rejected.
+inline void ExpectPdfWithoutLobeRejected(const Material& m, float muO, vec3 coatNormal, float Bsdf::*lobe,
+                                         const char* name, double alpha, uint32_t seed) {
+  const vec3 wo = Outgoing(muO);
+  const Bsdf b = PrepareBsdf(m, wo, true, coatNormal);
+  Bsdf mutant = b;
+  mutant.*lobe = 0.0f;
+  const Chi2Result r = SamplerChi2(
+      b, wo, [&](vec3 wi) { return double(BsdfPdf(mutant, wo, wi)); }, seed);
+  PrintChi2(name, r, alpha);
+  EXPECT_LT(r.p, alpha) << name;
 }
 
 }  // namespace vkpt::bsdf_test

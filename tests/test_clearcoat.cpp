@@ -31,23 +31,6 @@ vec3 Tilted(float degrees) {
 const float kMus[] = {0.1f, 0.4f, 1.0f};
 const float kCoatRoughness[] = {0.0f, 0.3f, 0.7f, 1.0f};
 
-// The lossless bases: white Lambert (specular 0), a white rough metal, a white dielectric
-// (diffuse under specular: their coupling sums to one) and a white rough glass boundary
-// (both sides compensated).
-struct Base {
-  const char* name;
-  Material material;
-};
-const Base kLosslessBases[] = {
-    {"white Lambert", MakeMaterial(vec3(1.0f), 0.0f, 0.5f, 0.0f, 1.5f)},
-    {"white metal r 0.5", MakeMaterial(vec3(1.0f), 1.0f, 0.5f, 1.0f, 1.5f)},
-    {"white dielectric r 0.4", MakeMaterial(vec3(1.0f), 0.0f, 0.4f, 1.0f, 1.5f)},
-    {"white glass r 0.3", Transmissive(MakeMaterial(vec3(1.0f), 0.0f, 0.3f, 1.0f, 1.5f), 1.0f, true)},
-};
-
-// 2e5 stratified samples per albedo; 4× fewer in a sanitizer build (test_util.h).
-const int kStrata = test::kSampleDivisor == 1 ? 448 : 224;
-
 // A white coat (factor 1 and 0.5) over each lossless base returns 1 at every μo and coat
 // roughness: the coat reflects c A_c(μo), the base is given the rest.
 TEST(ClearcoatFurnace, WhiteCoatOverALosslessBaseReturnsOne) {
@@ -58,7 +41,7 @@ TEST(ClearcoatFurnace, WhiteCoatOverALosslessBaseReturnsOne) {
     for (float coat : {1.0f, 0.5f})
       for (float rc : kCoatRoughness)
         for (float mu : kMus) {
-          const Albedo a = EstimateAlbedo(Coated(base.material, coat, rc), mu, seed++, kStrata);
+          const Albedo a = EstimateAlbedo(Coated(base.material, coat, rc), mu, seed++, kFurnaceStrata);
           const double dev = std::abs(a.mean.y - 1.0);
           worst = std::max(worst, dev);
           std::printf("  %-22s coat %.1f rough %.1f mu %.1f: %.4f +- %.4f\n", base.name, coat, rc, mu, a.mean.y,
@@ -159,62 +142,26 @@ TEST(ClearcoatChi2, SamplerMatchesPdf) {
   std::printf("chi2 of SampleBsdf against BsdfPdf with a clear coat, Sidak alpha %.5f over %d:\n", kCoatChi2Alpha,
               kCoatChi2Cases);
   uint32_t seed = 1100;
-  for (const CoatCase& c : kCoatCases) {
-    const vec3 wo = Outgoing(c.muO);
-    const Bsdf b = PrepareBsdf(c.material, wo, true, c.coatNormal);
-    ASSERT_GT(b.pCoat, 0.0f) << c.name;
-    Chi2Result r = SamplerChi2(
-        b, wo, [&](vec3 wi) { return double(BsdfPdf(b, wo, wi)); }, seed++);
-    PrintChi2(c.name, r, kCoatChi2Alpha);
-    EXPECT_GT(r.p, kCoatChi2Alpha) << c.name;
-    EXPECT_EQ(r.zeroCellHits, 0) << c.name;
-    EXPECT_NEAR(r.pdfMass, 1.0 - r.noSample, 5.0 * r.massSigma + 2e-3) << c.name;
-  }
+  for (const CoatCase& c : kCoatCases)
+    ExpectSamplerMatchesPdf(c.material, c.muO, c.coatNormal, &Bsdf::pCoat, c.name, kCoatChi2Alpha, seed++);
 }
 
 // The test has teeth: the density without the coat lobe's share (its samples counted as
 // if they were the cosine lobe's) is rejected.
 TEST(ClearcoatChi2, CatchesAPdfWithoutTheCoat) {
   const CoatCase& c = kCoatCases[0];
-  const vec3 wo = Outgoing(c.muO);
-  const Bsdf b = PrepareBsdf(c.material, wo, true, c.coatNormal);
-  Bsdf withoutCoat = b;
-  withoutCoat.pCoat = 0.0f;
-  Chi2Result r = SamplerChi2(
-      b, wo, [&](vec3 wi) { return double(BsdfPdf(withoutCoat, wo, wi)); }, 1200);
-  PrintChi2("mutant: pdf without the coat lobe", r, kCoatChi2Alpha);
-  EXPECT_LT(r.p, kCoatChi2Alpha);
+  ExpectPdfWithoutLobeRejected(c.material, c.muO, c.coatNormal, &Bsdf::pCoat, "mutant: pdf without the coat lobe",
+                               kCoatChi2Alpha, 1200);
 }
 
 // Random coated materials, coat normals up to 45° from the shading normal, both faces.
 TEST(Clearcoat, SampleWeightIsFCosOverPdf) {
-  Uniform u(17);
-  int checked = 0, bad = 0;
-  for (int i = 0; i < 100000; ++i) {
+  ExpectSampleWeightsAreFCosOverPdf("coated", 17, [](Uniform& u) {
     Material m = MakeMaterial(u.Vec3(), u() < 0.5f ? 0.0f : u(), u(), u() < 0.2f ? 0.0f : 1.0f, 1.0f + 2.0f * u());
     if (u() < 0.3f) m = Transmissive(m, u(), u() < 0.5f);
     m = Coated(m, u() < 0.5f ? 1.0f : u(), u() < 0.1f ? 0.0f : u());
-    const vec3 wo = u.Hemisphere();
-    const vec3 coatNormal = Tilted(90.0f * (u() - 0.5f));
-    const Bsdf b = PrepareBsdf(m, wo, u() < 0.7f, coatNormal);
-    const BsdfSample s = SampleBsdf(b, wo, u.Vec3());
-    if (!(s.pdf > 0.0f)) {
-      bad += s.pdf != 0.0f || s.weight != vec3(0.0f);
-      continue;
-    }
-    ++checked;
-    const float pdf = BsdfPdf(b, wo, s.wi);
-    const vec3 f = EvalBsdf(b, wo, s.wi);
-    const vec3 expected = f * std::abs(s.wi.z) / pdf;
-    const bool ok = Finite(s.weight) && MaxComponent(f) >= 0.0f && std::abs(s.pdf - pdf) <= 1e-6f * pdf &&
-                    std::abs(s.weight.x - expected.x) <= 1e-4f * std::max(expected.x, s.weight.x) &&
-                    std::abs(s.weight.y - expected.y) <= 1e-4f * std::max(expected.y, s.weight.y) &&
-                    std::abs(s.weight.z - expected.z) <= 1e-4f * std::max(expected.z, s.weight.z);
-    if (!ok && ++bad <= 5) ADD_FAILURE() << "pdf " << s.pdf << " vs " << pdf << ", weight.x " << s.weight.x;
-  }
-  std::printf("coated sample weight = f cos / pdf: %d samples checked, %d bad\n", checked, bad);
-  EXPECT_GT(checked, 80000);
-  EXPECT_EQ(bad, 0);
+    return std::pair(m, Tilted(90.0f * (u() - 0.5f)));
+  });
 }
 
 // The coat dims what glows beneath it as the extension says: 1 − c F(cos θ), F0 = 0.04.
