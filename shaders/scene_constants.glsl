@@ -50,6 +50,9 @@ layout(constant_id = 12) const uint kSceneHasTwoUvBuffers = 0u;
 // 0 when no triangle's material has a clear coat: see shared/clearcoat.h.
 layout(constant_id = 13) const uint kSceneHasClearcoat = 1u;
 #define VKPT_CLEARCOAT (kSceneHasClearcoat != 0u)
+// 0 when no triangle's material has a sheen: see shared/sheen.h.
+layout(constant_id = 14) const uint kSceneHasSheen = 1u;
+#define VKPT_SHEEN (kSceneHasSheen != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -57,7 +60,7 @@ layout(constant_id = 13) const uint kSceneHasClearcoat = 1u;
 #define VKPT_MATERIAL(i) FetchMaterial(i)
 #define VKPT_LIGHT(i) FetchLight(i)
 #define VKPT_LIGHT_CDF(i) FetchLightCdf(i)
-#define VKPT_GGX_ALBEDO_PAIR(k) FetchGgxAlbedoPair(k)
+#define VKPT_ALBEDO_PAIR(k) FetchAlbedoPair(k)
 #define VKPT_SHADING(i) FetchShading(i)
 #define VKPT_VERTEX_COLORS_OF(i) FetchColors(i)
 #define VKPT_TEXTURE(i) FetchTexture(i)

@@ -19,7 +19,7 @@ layout(binding = kBindingTrianglesHigh) uniform usamplerBuffer triangleTexelsHig
 layout(binding = kBindingNodes) uniform usamplerBuffer nodeTexels;
 layout(binding = kBindingMaterials) uniform usamplerBuffer materialTexels;
 layout(binding = kBindingLights) uniform usamplerBuffer lightTexels;
-layout(binding = kBindingGgxAlbedo) uniform usamplerBuffer ggxAlbedoTexels;
+layout(binding = kBindingAlbedoTables) uniform usamplerBuffer albedoTableTexels;
 layout(binding = kBindingShading) uniform usamplerBuffer shadingTexels;
 layout(binding = kBindingVertexColors) uniform usamplerBuffer colorTexels;
 layout(binding = kBindingVertexUVs) uniform usamplerBuffer uvTexels;
@@ -93,6 +93,7 @@ Material FetchMaterial(uint m) {
   uvec4 d = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 3u));
   uvec4 e = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 4u));
   uvec4 f = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 5u));
+  uvec4 g = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 6u));
   Material mat;
   mat.baseColor = uintBitsToFloat(a.xyz);
   mat.metallic = uintBitsToFloat(a.w);
@@ -110,6 +111,8 @@ Material FetchMaterial(uint m) {
   mat.clearcoat = uintBitsToFloat(f.y);
   mat.clearcoatRoughness = uintBitsToFloat(f.z);
   mat.clearcoatNormalScale = uintBitsToFloat(f.w);
+  mat.sheenColor = uintBitsToFloat(g.xyz);
+  mat.sheenRoughness = uintBitsToFloat(g.w);
   return mat;
 }
 
@@ -135,9 +138,9 @@ Light FetchLight(uint i) {
 // The binary search over the CDF reads one texel per step.
 float FetchLightCdf(uint i) { return uintBitsToFloat(texelFetch(lightTexels, int(kTexelsPerLight * i + 3u)).x); }
 
-// Pair k of shared/ggx_albedo_table.h's kGgxAlbedo (two pairs per texel).
-vec2 FetchGgxAlbedoPair(uint k) {
-  uvec4 t = texelFetch(ggxAlbedoTexels, int(k >> 1u));
+// Pair k of shared/albedo_tables.h's kAlbedoTables (two pairs per texel).
+vec2 FetchAlbedoPair(uint k) {
+  uvec4 t = texelFetch(albedoTableTexels, int(k >> 1u));
   return uintBitsToFloat((k & 1u) == 0u ? t.xy : t.zw);
 }
 

@@ -180,14 +180,48 @@ TEST(MaterialTextures, ClearcoatFactorsAndTexturesAreRead) {
   EXPECT_EQ(plain.clearcoatNormalScale, 1.0f);
 }
 
-TEST(MaterialTextures, ClearcoatFactorsOutOfRangeAreNamed) {
-  for (const char* bad : {R"("clearcoatFactor":1.5)", R"("clearcoatRoughnessFactor":-0.1)",
-                          R"("clearcoatNormalTexture":{"index":0,"scale":"big"})"}) {
+// KHR_materials_sheen: its factors, its colour texture (sRGB) and roughness texture (data)
+// in their slots; the extension is neither ignored nor refused when required.
+TEST(MaterialTextures, SheenFactorsAndTexturesAreRead) {
+  GltfBuilder b = TexturedTriangle(
+      R"({"extensions":{"KHR_materials_sheen":{"sheenColorFactor":[0.9,0.5,0.2],"sheenRoughnessFactor":0.4,)"
+      R"("sheenColorTexture":{"index":0},"sheenRoughnessTexture":{"index":0,"texCoord":1}}}})");
+  b.extensionsUsed = b.extensionsRequired = {"KHR_materials_sheen"};
+  Scene s = Load(b);
+  using namespace shader;
+  EXPECT_EQ(s.materials[0].sheenColor, glm::vec3(0.9f, 0.5f, 0.2f));
+  EXPECT_FLOAT_EQ(s.materials[0].sheenRoughness, 0.4f);
+  ASSERT_NE(Ref(s, 0, kSlotSheenColor).texture, kInvalidIndex);
+  ASSERT_NE(Ref(s, 0, kSlotSheenRoughness).texture, kInvalidIndex);
+  EXPECT_TRUE(s.textures[Ref(s, 0, kSlotSheenColor).texture].srgb);
+  EXPECT_FALSE(s.textures[Ref(s, 0, kSlotSheenRoughness).texture].srgb);
+  EXPECT_EQ(Ref(s, 0, kSlotSheenRoughness).texCoord, 1u);
+  const shader::Material packed = PackMaterials(s).materials[0];
+  EXPECT_EQ(packed.sheenColor, vec3(0.9f, 0.5f, 0.2f));
+  EXPECT_EQ(packed.sheenRoughness, 0.4f);
+  EXPECT_NE(packed.flags & kMaterialExtensionTextured, 0u);
+  for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("sheen"), std::string::npos) << f;
+  const vkpt::Material plain = Load(TexturedTriangle("{}")).materials[0];
+  EXPECT_EQ(plain.sheenColor, glm::vec3(0.0f));
+  EXPECT_FALSE(IsLambertian(PackMaterials(s).materials[0]));
+}
+
+TEST(MaterialTextures, ExtensionFactorsOutOfRangeAreNamed) {
+  const std::pair<const char*, const char*> kBad[] = {
+      {"KHR_materials_clearcoat", R"("clearcoatFactor":1.5)"},
+      {"KHR_materials_clearcoat", R"("clearcoatRoughnessFactor":-0.1)"},
+      {"KHR_materials_clearcoat", R"("clearcoatNormalTexture":{"index":0,"scale":"big"})"},
+      {"KHR_materials_sheen", R"("sheenColorFactor":[1.5,0,0])"},
+      {"KHR_materials_sheen", R"("sheenColorFactor":"red")"},
+      {"KHR_materials_sheen", R"("sheenColorFactor":[1,1])"},
+      {"KHR_materials_sheen", R"("sheenRoughnessFactor":2)"}};
+  for (const auto& [extension, bad] : kBad) {
     try {
-      Load(TexturedTriangle(std::string(R"({"extensions":{"KHR_materials_clearcoat":{)") + bad + "}}}"));
+      Load(TexturedTriangle(std::string(R"({"extensions":{")") + extension + R"(":{)" + bad + "}}}"));
       ADD_FAILURE() << bad << " loaded";
     } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("materials[0].KHR_materials_clearcoat."), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(std::string("materials[0].") + extension + "."), std::string::npos)
+          << e.what();
     }
   }
 }

@@ -244,6 +244,21 @@ TEST(Mis, ClearcoatAgreesAtThreeRoughnesses) {
   EXPECT_EQ(v.failures, 0);
 }
 
+// A sheened plane (sheen roughness as given, over a rough red dielectric) under the light:
+// the sheen lobe's pdf and its base scaling must give the same image every way.
+Scene SheenedPlaneUnderLight(double roughness) {
+  return Load(PlaneAndQuadLightModel(
+      R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.3,0.2,1],"metallicFactor":0,"roughnessFactor":0.5},)"
+      R"("extensions":{"KHR_materials_sheen":{"sheenColorFactor":[1,0.9,0.7],"sheenRoughnessFactor":)" +
+          Num(roughness) + "}}}",
+      1.5f, {"KHR_materials_sheen"}));
+}
+
+TEST(Mis, SheenAgreesAtThreeRoughnesses) {
+  Verdict v = CompareEstimators(Estimators{}, kSpp, SheenedPlaneUnderLight);
+  EXPECT_EQ(v.failures, 0);
+}
+
 // Light samples that take the coated emitter's emission undimmed.
 TEST(Mis, MutantLightSampleWithoutCoatIsCaught) {
   const Estimators e = WithLightSampleMutant(RenderMutantLightSampleWithoutCoat,

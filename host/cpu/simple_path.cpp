@@ -33,6 +33,7 @@
 #define VKPT_VERTEX_COLORS false
 #define VKPT_VOLUMES false
 #define VKPT_CLEARCOAT false
+#define VKPT_SHEEN false
 #undef VKPT_TEXTURES
 #define VKPT_TEXTURES false
 #undef VKPT_NORMAL_MAPS

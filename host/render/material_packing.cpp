@@ -19,6 +19,8 @@ const SlotTexture kSlots[] = {
     {shader::kSlotClearcoat, &Material::clearcoatTexture},
     {shader::kSlotClearcoatRoughness, &Material::clearcoatRoughnessTexture},
     {shader::kSlotClearcoatNormal, &Material::clearcoatNormalTexture},
+    {shader::kSlotSheenColor, &Material::sheenColorTexture},
+    {shader::kSlotSheenRoughness, &Material::sheenRoughnessTexture},
 };
 static_assert(sizeof kSlots / sizeof kSlots[0] == shader::kTextureSlots);
 
@@ -62,6 +64,8 @@ shader::Material PackMaterial(const Material& m) {
   g.clearcoat = m.clearcoat;
   g.clearcoatRoughness = m.clearcoatRoughness;
   g.clearcoatNormalScale = m.clearcoatNormalScale;
+  g.sheenColor = m.sheenColor;
+  g.sheenRoughness = m.sheenRoughness;
   g.flags = (m.doubleSided ? shader::kMaterialDoubleSided : 0u) | (m.unlit ? shader::kMaterialUnlit : 0u) |
             (m.volume ? shader::kMaterialVolume : 0u) | AlphaBits(m.alphaMode) | TextureBits(m);
   return g;

@@ -57,6 +57,8 @@ bool UsesGlossyMaterial(const RenderScene& scene);
 bool UsesVolumeMaterial(const RenderScene& scene);
 // And whether some triangle's material has a clear coat (KHR_materials_clearcoat).
 bool UsesClearcoat(const RenderScene& scene);
+// And whether some triangle's material has a sheen (KHR_materials_sheen).
+bool UsesSheen(const RenderScene& scene);
 
 // Whether the scene has lights meant to light it: punctual lights, or emissive triangles
 // whose emission is not painted by an emissive texture (a texture paints screens, dials

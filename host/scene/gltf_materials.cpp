@@ -35,6 +35,7 @@ class MaterialReader {
     mat.transmission = float(Unit(ExtensionNumber("KHR_materials_transmission", "transmissionFactor", 0.0),
                                   "KHR_materials_transmission.transmissionFactor"));
     ReadClearcoat(mat);
+    ReadSheen(mat);
     mat.doubleSided = in_.doubleSided;
     mat.unlit = in_.extensions.count("KHR_materials_unlit") != 0;
     ReadVolume(mat);
@@ -92,6 +93,17 @@ class MaterialReader {
     if (!scale.IsNumber() || !(std::abs(scale.GetNumberAsDouble()) <= 1e6))
       Fail("KHR_materials_clearcoat.clearcoatNormalTexture.scale is not a finite number of at most 1e6");
     mat.clearcoatNormalScale = float(scale.GetNumberAsDouble());
+  }
+
+  // KHR_materials_sheen's factors (its textures are gltf_textures.cpp's).
+  void ReadSheen(Material& mat) const {
+    const char* ext = "KHR_materials_sheen";
+    mat.sheenColor = glm::vec3(0.0f);
+    if (const tinygltf::Value* c = ExtensionField(ext, "sheenColorFactor"))
+      mat.sheenColor = Color(NumberArray(*c, "KHR_materials_sheen.sheenColorFactor"), 3,
+                             "KHR_materials_sheen.sheenColorFactor", 1.0);
+    mat.sheenRoughness =
+        float(Unit(ExtensionNumber(ext, "sheenRoughnessFactor", 0.0), "KHR_materials_sheen.sheenRoughnessFactor"));
   }
 
   [[noreturn]] void Fail(const std::string& what) const { src_.Fail(name_ + "." + what); }

@@ -45,6 +45,12 @@ const ExtensionSlot kExtensionSlots[] = {
     {{&Material::clearcoatNormalTexture, "extensions.KHR_materials_clearcoat.clearcoatNormalTexture", false},
      "KHR_materials_clearcoat",
      "clearcoatNormalTexture"},
+    {{&Material::sheenColorTexture, "extensions.KHR_materials_sheen.sheenColorTexture", true},
+     "KHR_materials_sheen",
+     "sheenColorTexture"},
+    {{&Material::sheenRoughnessTexture, "extensions.KHR_materials_sheen.sheenRoughnessTexture", false},
+     "KHR_materials_sheen",
+     "sheenRoughnessTexture"},
 };
 
 using Wrap = TextureSampler::Wrap;

@@ -56,6 +56,9 @@ struct Material {
   float clearcoat = 0.0f;  // 0: no coat
   float clearcoatRoughness = 0.0f;
   float clearcoatNormalScale = 0.0f;  // clearcoatNormalTexture.scale
+  // KHR_materials_sheen: a fibre lobe over the base, under the coat (shared/sheen.h).
+  glm::vec3 sheenColor{0.0f};  // black: no sheen
+  float sheenRoughness = 0.0f;
 
   // The textures that scale the factors above (shared/material_textures.h says how).
   MaterialTexture baseColorTexture;           // RGB × baseColor, A × alpha (sRGB)
@@ -68,12 +71,15 @@ struct Material {
   MaterialTexture clearcoatTexture;           // R × clearcoat
   MaterialTexture clearcoatRoughnessTexture;  // G × clearcoatRoughness
   MaterialTexture clearcoatNormalTexture;     // the coat's tangent-space normal, scaled by clearcoatNormalScale
+  MaterialTexture sheenColorTexture;          // RGB × sheenColor (sRGB)
+  MaterialTexture sheenRoughnessTexture;      // A × sheenRoughness
 
   // Whether some texture above is present.
   bool Textured() const {
-    for (const MaterialTexture* t : {&baseColorTexture, &metallicRoughnessTexture, &emissiveTexture, &normalTexture,
-                                     &transmissionTexture, &specularTexture, &specularColorTexture, &clearcoatTexture,
-                                     &clearcoatRoughnessTexture, &clearcoatNormalTexture})
+    for (const MaterialTexture* t :
+         {&baseColorTexture, &metallicRoughnessTexture, &emissiveTexture, &normalTexture, &transmissionTexture,
+          &specularTexture, &specularColorTexture, &clearcoatTexture, &clearcoatRoughnessTexture,
+          &clearcoatNormalTexture, &sheenColorTexture, &sheenRoughnessTexture})
       if (t->Present()) return true;
     return false;
   }

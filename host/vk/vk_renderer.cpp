@@ -45,7 +45,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
       nodes_(UploadArray<shader::BvhNode>(ctx, scene.nodes, "BVH nodes")),
       materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
       lights_(UploadArray<shader::Light>(ctx, scene.lights, "lights")),
-      ggxAlbedo_(UploadArray<float>(ctx, shader::kGgxAlbedo, "GGX albedo table")),
+      albedoTables_(UploadArray<float>(ctx, shader::kAlbedoTables, "albedo tables")),
       shading_(UploadArray<shader::TriangleShading>(ctx, scene.shading, "shading normals")),
       vertexColors_(UploadArray<shader::TriangleColors>(ctx, scene.vertexColors, "vertex colours")),
       uvs_(UploadSplitArray<shader::TriangleUVs>(ctx, scene.uvs, "texture coordinates", overrides.maxTexelsPerBuffer)),
@@ -64,6 +64,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
       hasVertexColors_(!scene.vertexColors.empty()),
       hasVolumes_(UsesVolumeMaterial(scene)),
       hasClearcoat_(UsesClearcoat(scene)),
+      hasSheen_(UsesSheen(scene)),
       hasTextures_(!scene.textureRefs.empty()),
       hasNormalMaps_(!scene.tangents.empty()),
       hasAlpha_(scene.alphaTested),
@@ -81,7 +82,7 @@ std::vector<BufferBinding> GpuRenderer::SceneBindings() const {
           TexelBinding(shader::kBindingNodes, nodes_),
           TexelBinding(shader::kBindingMaterials, materials_),
           TexelBinding(shader::kBindingLights, lights_),
-          TexelBinding(shader::kBindingGgxAlbedo, ggxAlbedo_),
+          TexelBinding(shader::kBindingAlbedoTables, albedoTables_),
           TexelBinding(shader::kBindingShading, shading_),
           TexelBinding(shader::kBindingVertexColors, vertexColors_),
           TexelBinding(shader::kBindingVertexUVs, uvs_.low),
@@ -110,7 +111,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           texels_.twoBuffers ? 1u : 0u,
           triangles_.twoBuffers ? 1u : 0u,
           uvs_.twoBuffers ? 1u : 0u,
-          hasClearcoat_ ? 1u : 0u};
+          hasClearcoat_ ? 1u : 0u,
+          hasSheen_ ? 1u : 0u};
 }
 
 std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams& frame,

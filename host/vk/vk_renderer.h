@@ -73,7 +73,7 @@ class GpuRenderer {
   std::span<const uint32_t> pathTraceSpirv_, traceSpirv_;
   // The scene is read as texel buffers (shaders/scene_fetch.glsl says why).
   SplitTexelBuffer triangles_;  // in two buffers if one cannot hold them
-  TexelBuffer nodes_, materials_, lights_, ggxAlbedo_, shading_;
+  TexelBuffer nodes_, materials_, lights_, albedoTables_, shading_;
   // The vertex colours; without any, one zero texel that the shader never reads.
   TexelBuffer vertexColors_;
   // Texture coordinates and textures (shared/texture.h); one zero texel each without.
@@ -92,6 +92,7 @@ class GpuRenderer {
   bool hasVertexColors_;             // some triangle has COLOR_0
   bool hasVolumes_;                  // some triangle's material bounds a volume
   bool hasClearcoat_;                // some triangle's material has a clear coat
+  bool hasSheen_;                    // some triangle's material has a sheen
   bool hasTextures_;                 // some material has a texture
   bool hasNormalMaps_;               // some material has a normal texture
   bool hasAlpha_;                    // some triangle's material is alpha MASK or BLEND

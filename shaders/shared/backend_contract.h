@@ -58,7 +58,8 @@
 //   [capability] VKPT_ALPHA             alpha.h: some material is alpha MASK or BLEND
 //   [capability] VKPT_EXTENSION_TEXTURES  material_textures.h: textures of material extensions
 //   [capability] VKPT_CLEARCOAT         clearcoat.h: some material has a clear coat
-//   [capability] VKPT_GGX_ALBEDO_PAIR(k)  ggx_albedo.h: pair k of the GGX albedo table
+//   [capability] VKPT_SHEEN             sheen.h: some material has a sheen
+//   [capability] VKPT_ALBEDO_PAIR(k)     albedo_tables.h: pair k of the albedo tables
 //   [denoise] VKPT_DENOISE_PARAM        denoise.h: the images as a leading parameter declaration
 //   [denoise] VKPT_DENOISE_ARG          the matching leading argument
 //   [denoise] VKPT_DENOISE_COLOR(i)     the noisy colour of pixel i

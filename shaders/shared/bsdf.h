@@ -37,12 +37,13 @@
 //    dielectric then returns what it receives from either side; f_ms covers the opaque
 //    share alone. The scaling depends on μo only, so f is not reciprocal there.
 //
-// KHR_materials_clearcoat (clearcoat.h) lays a GGX coat lobe over all of this, the base
-// weighted by 1 − c A_c(μo).
+// KHR_materials_sheen (sheen.h) lays a fibre lobe over all of this, the base weighted by
+// 1 − max(sheenColor) E_s(μo), and KHR_materials_clearcoat (clearcoat.h) a GGX coat lobe
+// over that, everything under it weighted by 1 − c A_c(μo).
 //
 // Sampling: one lobe chosen by its estimated albedo — the visible normals of GGX (Dupuy &
-// Benyoub 2023) reflected or refracted, the coat's visible normals, or the cosine
-// hemisphere for diffuse and f_ms together — and the sample
+// Benyoub 2023) reflected or refracted, the coat's visible normals, the sheen's sampler,
+// or the cosine hemisphere for diffuse and f_ms together — and the sample
 // weighted by the mixture pdf of both (one-sample MIS, Veach 1997 §9.2.4), so each lane
 // evaluates the same code whichever lobe it picked.
 #ifndef VKPT_BSDF_H
@@ -54,6 +55,7 @@
 #include "microfacet.h"
 #include "prelude.h"
 #include "sampling.h"
+#include "sheen.h"
 #include "transmission.h"
 
 // A shader may define VKPT_GLOSSY_MATERIALS as a specialization constant that is false
@@ -91,7 +93,12 @@ struct Bsdf {
   vec3 coatNormal;      // in this frame
   float coatBaseScale;  // 1 − c A_c(μo): the weight of everything under the coat
   float pCoat;          // probability of sampling the coat lobe
-  bool lambert;         // no specular layer, not metallic, opaque: f = baseColor/π, cosine sampling
+  vec3 sheenColor;      // KHR_materials_sheen's colour (0: no sheen)
+  float sheenAlpha;
+  float sheenScale;      // 1 / max(E_s(μo), 1): the sheen lobe reflects at most what it receives
+  float sheenBaseScale;  // 1 − max(sheenColor) min(E_s(μo), 1): the weight of the base under it
+  float pSheen;          // probability of sampling the sheen lobe
+  bool lambert;          // no specular layer, not metallic, opaque: f = baseColor/π, cosine sampling
 };
 
 struct BsdfSample {
@@ -107,9 +114,11 @@ VKPT_FN vec3 MultipleScatteringFresnel(vec3 f0, vec3 f90, float eAvg) {
 }
 
 // True for the Lambert special case (specular = 0, metallic = 0, transmission = 0, no
-// coat), where the full evaluation below would compute baseColor/π at many times the cost.
+// coat, no sheen), where the full evaluation below would compute baseColor/π at many
+// times the cost.
 VKPT_FN bool IsLambertian(Material mat) {
-  return mat.specular == 0.0f && mat.metallic == 0.0f && mat.transmission == 0.0f && mat.clearcoat == 0.0f;
+  return mat.specular == 0.0f && mat.metallic == 0.0f && mat.transmission == 0.0f && mat.clearcoat == 0.0f &&
+         MaxComponent(mat.sheenColor) == 0.0f;
 }
 
 // The diffuse base's weights c(μ) (the coupling above): the dielectric layer's scalar
@@ -133,7 +142,9 @@ VKPT_FN void PrepareCoupling(VKPT_INOUT(Bsdf) b, vec2 e, vec2 eAvg, vec3 fmsD) {
 // others by what it leaves them. Inside a volume, Fd(μo) (1 past the critical angle)
 // estimates both sides' shares, kept below 1 − α/2: microfacets tilted towards ωo
 // transmit past the macroscopic critical angle, and a lobe that is never chosen would
-// leave their light out (bias). Sets the coat's fields too.
+// leave their light out (bias). The sheen's is exact (sheenColor min(E_s, 1), by
+// luminance) and scales the base's, as the coat's scales all of them. Sets the sheen's
+// and the coat's fields too.
 VKPT_FN void ChooseLobes(VKPT_INOUT(Bsdf) b, Material mat, vec3 wo, vec2 e) {
   float mu = max(wo.z, 0.0f);
   vec3 specD = b.f0 * (e.x - e.y) + vec3(b.f90 * e.y);
@@ -147,6 +158,19 @@ VKPT_FN void ChooseLobes(VKPT_INOUT(Bsdf) b, Material mat, vec3 wo, vec2 e) {
   vec3 cosLobe = b.msWeight * (1.0f - e.x) + b.baseColor * (b.couplingO * b.couplingNorm);
   float wCos = Luminance(cosLobe);
   float wTrans = b.transmission * b.glassScale * Luminance(b.baseColor) * (1.0f - fresnelO) * e.x;
+  float wSheen = 0.0f;
+  if (VKPT_SHEEN && MaxComponent(mat.sheenColor) > 0.0f) {
+    b.sheenColor = mat.sheenColor;
+    b.sheenAlpha = SheenAlpha(mat.sheenRoughness);
+    float eSheen = SheenAlbedo(mu, b.sheenAlpha);
+    b.sheenScale = 1.0f / max(eSheen, 1.0f);
+    eSheen = min(eSheen, 1.0f);
+    b.sheenBaseScale = 1.0f - MaxComponent(b.sheenColor) * eSheen;
+    wSheen = Luminance(b.sheenColor) * eSheen;
+    wSpec *= b.sheenBaseScale;
+    wCos *= b.sheenBaseScale;
+    wTrans *= b.sheenBaseScale;
+  }
   float wCoat = 0.0f;
   if (VKPT_CLEARCOAT && mat.clearcoat > 0.0f) {
     b.coat = mat.clearcoat;
@@ -156,10 +180,12 @@ VKPT_FN void ChooseLobes(VKPT_INOUT(Bsdf) b, Material mat, vec3 wo, vec2 e) {
     wSpec *= b.coatBaseScale;
     wCos *= b.coatBaseScale;
     wTrans *= b.coatBaseScale;
+    wSheen *= b.coatBaseScale;
   }
-  float total = wSpec + wCos + wTrans + wCoat;
+  float total = wSpec + wCos + wTrans + wSheen + wCoat;
   b.pSpecular = total > 0.0f ? wSpec / total : 0.5f;
   b.pTransmission = total > 0.0f ? wTrans / total : 0.0f;
+  b.pSheen = total > 0.0f ? wSheen / total : 0.0f;
   b.pCoat = total > 0.0f ? wCoat / total : 0.0f;
 }
 
@@ -179,6 +205,11 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace, vec3 coatNormal)
   b.coatNormal = coatNormal;
   b.coatBaseScale = 1.0f;
   b.pCoat = 0.0f;
+  b.sheenColor = vec3(0.0f);
+  b.sheenAlpha = 1.0f;
+  b.sheenScale = 1.0f;
+  b.sheenBaseScale = 1.0f;
+  b.pSheen = 0.0f;
   if (b.lambert) return b;
   b.transmission = (1.0f - mat.metallic) * mat.transmission;
   // A volume of ior 1 (or the ior-0 mirror) bends nothing: it is rendered as a thin wall.
@@ -244,6 +275,8 @@ VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z == 0.0f) return vec3(0.0f);
   if (b.lambert) return wi.z > 0.0f ? b.baseColor * kInvPi : vec3(0.0f);
   vec3 f = EvalBase(b, wo, wi);
+  if (VKPT_SHEEN && MaxComponent(b.sheenColor) > 0.0f)
+    f = b.sheenBaseScale * f + b.sheenColor * (b.sheenScale * EvalSheen(wo, wi, b.sheenAlpha));
   if (VKPT_CLEARCOAT && b.coat > 0.0f)
     f = b.coatBaseScale * f + vec3(b.coat * EvalCoat(b.coatNormal, b.coatAlpha, wo, wi));
   return f;
@@ -260,7 +293,8 @@ VKPT_FN float BsdfPdf(Bsdf b, vec3 wo, vec3 wi) {
   if (wi.z < 0.0f) return b.pTransmission > 0.0f ? b.pTransmission * TransmissionPdf(b, wo, wi) : 0.0f;
   if (b.lambert) return CosineHemispherePdf(wi.z);
   float pdf = b.pSpecular * GgxReflectionPdf(wo, wi, b.alpha) +
-              (1.0f - b.pSpecular - b.pTransmission - b.pCoat) * CosineHemispherePdf(wi.z);
+              (1.0f - b.pSpecular - b.pTransmission - b.pSheen - b.pCoat) * CosineHemispherePdf(wi.z);
+  if (VKPT_SHEEN && b.pSheen > 0.0f) pdf += b.pSheen * SheenPdf(wi, b.sheenAlpha);
   if (VKPT_CLEARCOAT && b.pCoat > 0.0f) pdf += b.pCoat * CoatPdf(b.coatNormal, b.coatAlpha, wo, wi);
   return pdf;
 }
@@ -285,8 +319,12 @@ VKPT_FN BsdfSample SampleBsdf(Bsdf b, vec3 wo, vec3 u) {
   if (specular.z <= 0.0f) specular = vec3(0.0f);
   if (transmitted.z >= 0.0f) transmitted = vec3(0.0f);
   vec3 coated = VKPT_CLEARCOAT && b.pCoat > 0.0f ? SampleCoat(b.coatNormal, b.coatAlpha, wo, u.y, u.z) : vec3(0.0f);
+  vec3 sheen = VKPT_SHEEN && b.pSheen > 0.0f ? SampleSheen(b.sheenAlpha, u.y, u.z) : vec3(0.0f);
   float pBase = b.pSpecular + b.pTransmission;
-  s.wi = u.x < b.pSpecular ? specular : (u.x < pBase ? transmitted : (u.x < pBase + b.pCoat ? coated : diffuse));
+  float pLayers = pBase + b.pCoat;
+  s.wi = u.x < b.pSpecular
+             ? specular
+             : (u.x < pBase ? transmitted : (u.x < pLayers ? coated : (u.x < pLayers + b.pSheen ? sheen : diffuse)));
   s.pdf = BsdfPdf(b, wo, s.wi);
   s.weight = s.pdf > 0.0f ? EvalBsdf(b, wo, s.wi) * (abs(s.wi.z) / s.pdf) : vec3(0.0f);
   return s;

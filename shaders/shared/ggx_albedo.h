@@ -1,6 +1,6 @@
 // Directional albedo of the GGX lobe (microfacet.h), for energy compensation in bsdf.h.
 //
-// kGgxAlbedo (ggx_albedo_table.h; scripts/make_ggx_albedo_table.cpp writes its numbers)
+// kAlbedoTables (albedo_tables.h; scripts/make_ggx_albedo_table.cpp writes its numbers)
 // holds, on a kGgxAlbedoSize² grid over sqrt(cos θ) ∈ [0,1] (rows: E changes fastest at
 // grazing angles) and roughness = sqrt(α) ∈ [0,1] (columns), the pair
 //   E(μ)  = ∫ f cos θi dωi              the lobe's albedo with F = 1, and
@@ -16,7 +16,7 @@
 // kGlassAlbedoMaxIor), kGlassAlbedoCosines of sqrt(cos θ) and kGlassAlbedoRoughnesses of
 // sqrt(roughness) (denser near 0, where the albedo at grazing angles falls fastest).
 //
-// VKPT_GGX_ALBEDO_PAIR(k) reads pair k. C++ reads the compiled-in array; a shader reads
+// VKPT_ALBEDO_PAIR(k) reads pair k. C++ reads the compiled-in array; a shader reads
 // the same numbers from a texel buffer the host fills from it (lavapipe compiles a
 // shader with an 8,320-float constant array for minutes).
 #ifndef VKPT_GGX_ALBEDO_H
@@ -25,8 +25,7 @@
 #include "prelude.h"
 
 #ifdef __cplusplus
-#include "ggx_albedo_table.h"
-#define VKPT_GGX_ALBEDO_PAIR(k) vec2(kGgxAlbedo[2u * (k)], kGgxAlbedo[2u * (k) + 1u])
+#include "albedo_tables.h"
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -44,10 +43,10 @@ VKPT_FN vec2 GgxAlbedo(float mu, float alpha) {
   float fy = y - float(y0);
   uint k00 = x0 * kGgxAlbedoSize + y0;
   uint k10 = k00 + kGgxAlbedoSize;
-  vec2 a00 = VKPT_GGX_ALBEDO_PAIR(k00);
-  vec2 a01 = VKPT_GGX_ALBEDO_PAIR(k00 + 1u);
-  vec2 a10 = VKPT_GGX_ALBEDO_PAIR(k10);
-  vec2 a11 = VKPT_GGX_ALBEDO_PAIR(k10 + 1u);
+  vec2 a00 = VKPT_ALBEDO_PAIR(k00);
+  vec2 a01 = VKPT_ALBEDO_PAIR(k00 + 1u);
+  vec2 a10 = VKPT_ALBEDO_PAIR(k10);
+  vec2 a11 = VKPT_ALBEDO_PAIR(k10 + 1u);
   return mix(mix(a00, a01, fy), mix(a10, a11, fy), fx);
 }
 
@@ -57,8 +56,8 @@ VKPT_FN vec2 GgxAverageAlbedo(float alpha) {
   uint y0 = uint(clamp(int(y), 0, int(kGgxAlbedoSize) - 2));
   float fy = y - float(y0);
   uint k0 = kGgxAlbedoSize * kGgxAlbedoSize + y0;
-  vec2 a0 = VKPT_GGX_ALBEDO_PAIR(k0);
-  vec2 a1 = VKPT_GGX_ALBEDO_PAIR(k0 + 1u);
+  vec2 a0 = VKPT_ALBEDO_PAIR(k0);
+  vec2 a1 = VKPT_ALBEDO_PAIR(k0 + 1u);
   return mix(a0, a1, fy);
 }
 
@@ -78,10 +77,10 @@ VKPT_FN float GlassAlbedo(float mu, float alpha, float ior, bool entering) {
   uint r = kGlassAlbedoRoughnesses;
   uint k000 = kGgxAlbedoSize * (kGgxAlbedoSize + 1u) + (z0 * kGlassAlbedoCosines + x0) * r + y0;
   uint k100 = k000 + kGlassAlbedoCosines * r;
-  vec2 e0 = mix(mix(VKPT_GGX_ALBEDO_PAIR(k000), VKPT_GGX_ALBEDO_PAIR(k000 + 1u), fy),
-                mix(VKPT_GGX_ALBEDO_PAIR(k000 + r), VKPT_GGX_ALBEDO_PAIR(k000 + r + 1u), fy), fx);
-  vec2 e1 = mix(mix(VKPT_GGX_ALBEDO_PAIR(k100), VKPT_GGX_ALBEDO_PAIR(k100 + 1u), fy),
-                mix(VKPT_GGX_ALBEDO_PAIR(k100 + r), VKPT_GGX_ALBEDO_PAIR(k100 + r + 1u), fy), fx);
+  vec2 e0 = mix(mix(VKPT_ALBEDO_PAIR(k000), VKPT_ALBEDO_PAIR(k000 + 1u), fy),
+                mix(VKPT_ALBEDO_PAIR(k000 + r), VKPT_ALBEDO_PAIR(k000 + r + 1u), fy), fx);
+  vec2 e1 = mix(mix(VKPT_ALBEDO_PAIR(k100), VKPT_ALBEDO_PAIR(k100 + 1u), fy),
+                mix(VKPT_ALBEDO_PAIR(k100 + r), VKPT_ALBEDO_PAIR(k100 + r + 1u), fy), fx);
   vec2 e = mix(e0, e1, fz);
   return entering ? e.x : e.y;
 }

@@ -25,7 +25,7 @@ const uint kBindingHits = 8u;       // buffer HitRecord[]
 // pathtrace.comp again:
 const uint kBindingLoopStats = 9u;  // buffer uint: most loop passes per sample of a SIMD group
 const uint kBindingShading = 10u;   // texel buffer of TriangleShading, indexed by Triangle.sourceIndex
-const uint kBindingGgxAlbedo = 13u;     // texel buffer of the GGX albedo table (shared/ggx_albedo.h)
+const uint kBindingAlbedoTables = 13u;  // texel buffer of the albedo tables (shared/albedo_tables.h)
 const uint kBindingVertexColors = 14u;  // texel buffer of TriangleColors, indexed by Triangle.sourceIndex
 // Textures (shared/texture.h); a 1-texel dummy of each when the scene has none.
 const uint kBindingTextures = 15u;          // texel buffer of Texture
@@ -70,6 +70,12 @@ const uint kGlassAlbedoIors = 48u;
 const uint kGlassAlbedoCosines = 32u;
 const uint kGlassAlbedoRoughnesses = 48u;
 const float kGlassAlbedoMaxIor = 3.0f;
+// Pair index of the sheen albedo table (shared/sheen.h), after the two above, and its
+// grid points of cos θ and of log α.
+const uint kSheenAlbedoOffset =
+    kGgxAlbedoSize * (kGgxAlbedoSize + 1u) + kGlassAlbedoIors * kGlassAlbedoCosines * kGlassAlbedoRoughnesses;
+const uint kSheenAlbedoCosines = 64u;
+const uint kSheenAlbedoRoughnesses = 48u;
 
 // lavapipe ends a shader once its SIMD group has run 65535 loop passes in total
 // (traverse.glsl); pathtrace.comp keeps clear of it by a margin for the small loops not
@@ -133,6 +139,8 @@ struct Material {
   float clearcoat;     // KHR_materials_clearcoat: the coat's factor (0: no coat)
   float clearcoatRoughness;
   float clearcoatNormalScale;  // clearcoatNormalTexture.scale
+  vec3 sheenColor;             // KHR_materials_sheen: the sheen's colour (0: no sheen)
+  float sheenRoughness;
 };
 
 const uint kShadingHasNormals = 1u;
@@ -234,7 +242,9 @@ const uint kSlotSpecularColor = 6u;       // RGB × specularColor (KHR_materials
 const uint kSlotClearcoat = 7u;           // R × clearcoat (KHR_materials_clearcoat)
 const uint kSlotClearcoatRoughness = 8u;  // G × clearcoatRoughness
 const uint kSlotClearcoatNormal = 9u;     // the coat's tangent-space normal
-const uint kTextureSlots = 10u;
+const uint kSlotSheenColor = 10u;         // RGB × sheenColor (KHR_materials_sheen)
+const uint kSlotSheenRoughness = 11u;     // A × sheenRoughness
+const uint kTextureSlots = 12u;
 
 // Light types (shared/lights.h).
 const uint kLightTriangle = 0u;          // emits from its front face
@@ -264,7 +274,7 @@ struct Light {
 // 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
 const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
-const uint kTexelsPerMaterial = 6u;
+const uint kTexelsPerMaterial = 7u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
 const uint kTexelsPerColors = 2u;

@@ -4,7 +4,8 @@
 // material extensions' textures their factors: KHR_materials_transmission's R channel
 // the transmission, KHR_materials_specular's A channel the specular factor and its colour
 // texture the specular colour, KHR_materials_clearcoat's R and G channels the coat's
-// factor and roughness (its normal texture is shading_frame.h's).
+// factor and roughness (its normal texture is shading_frame.h's), KHR_materials_sheen's
+// colour texture the sheen's colour and its roughness texture's A channel its roughness.
 //
 // Scene access, as in texture.h, plus
 //   VKPT_TEXTURE_REF(i)  TextureRef i: slot s of material m is i = m · kTextureSlots + s
@@ -27,9 +28,13 @@
 #ifndef VKPT_EXTENSION_TEXTURES
 #define VKPT_EXTENSION_TEXTURES true
 #endif
-// And clearcoat.h's VKPT_CLEARCOAT (not included here: path.h's seams must come first).
+// And clearcoat.h's VKPT_CLEARCOAT and sheen.h's VKPT_SHEEN (not included here: path.h's
+// seams must come first).
 #ifndef VKPT_CLEARCOAT
 #define VKPT_CLEARCOAT true
+#endif
+#ifndef VKPT_SHEEN
+#define VKPT_SHEEN true
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -79,6 +84,10 @@ VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, ui
     if (VKPT_CLEARCOAT && mat.clearcoat > 0.0f) {
       mat.clearcoat *= SampleSlot(VKPT_SCENE_ARG material, kSlotClearcoat, uvs, b1, b2, data).r;
       mat.clearcoatRoughness *= SampleSlot(VKPT_SCENE_ARG material, kSlotClearcoatRoughness, uvs, b1, b2, data).g;
+    }
+    if (VKPT_SHEEN && MaxComponent(mat.sheenColor) > 0.0f) {
+      mat.sheenColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotSheenColor, uvs, b1, b2, footprint));
+      mat.sheenRoughness *= SampleSlot(VKPT_SCENE_ARG material, kSlotSheenRoughness, uvs, b1, b2, data).a;
     }
   }
 }
