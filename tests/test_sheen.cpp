@@ -79,8 +79,8 @@ TEST(SheenAlbedo, TableMatchesThePublishedPoints) {
 TEST(SheenAlbedo, TableMatchesAnIndependentQuadrature) {
   double worstGrid = 0.0, worstMid = 0.0;
   int checked = 0;
-  for (uint32_t i = 2; i < kSheenAlbedoCosines; i += 5)
-    for (uint32_t j = 0; j < kSheenAlbedoRoughnesses; j += 4) {
+  for (uint32_t i = 2; i < kSheenAlbedoCosines; i += 7)
+    for (uint32_t j = 0; j < kSheenAlbedoRoughnesses; j += 5) {
       const float s = float(i) / float(kSheenAlbedoCosines - 1u), mu = s * s, alpha = SheenTableAlpha(j);
       if (mu < 0.05f || alpha < 0.01f) continue;
       const double grid = std::abs(SheenAlbedo(mu, alpha) - SheenQuadrature(mu, alpha));
@@ -99,7 +99,7 @@ TEST(SheenAlbedo, TableMatchesAnIndependentQuadrature) {
       "sheen table vs quadrature at %d grid points: worst %.2e (limit 5e-4); at cell centres: worst %.2e "
       "(limit 3e-3)\n",
       checked, worstGrid, worstMid);
-  EXPECT_GT(checked, 60);
+  EXPECT_GT(checked, 40);
 }
 
 // ∫ D(h) cos θh dωh = 1 for every α.
@@ -117,7 +117,7 @@ TEST(SheenAlbedo, DistributionIsNormalised) {
 }
 
 const float kMus[] = {0.1f, 0.4f, 1.0f};
-const float kSheenRoughness[] = {0.1f, 0.3f, 0.6f, 1.0f};
+const float kSheenRoughness[] = {0.1f, 0.4f, 1.0f};
 
 // A white sheen over each lossless base, alone and under a white clear coat, returns 1 at
 // every μo and sheen roughness: the sheen reflects min(E(μo), 1), the base the rest.
