@@ -53,6 +53,9 @@ layout(constant_id = 13) const uint kSceneHasClearcoat = 1u;
 // 0 when no triangle's material has a sheen: see shared/sheen.h.
 layout(constant_id = 14) const uint kSceneHasSheen = 1u;
 #define VKPT_SHEEN (kSceneHasSheen != 0u)
+// 0 when no triangle's material transmits diffusely: see shared/bsdf.h.
+layout(constant_id = 15) const uint kSceneHasDiffuseTransmission = 1u;
+#define VKPT_DIFFUSE_TRANSMISSION (kSceneHasDiffuseTransmission != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

@@ -94,6 +94,7 @@ Material FetchMaterial(uint m) {
   uvec4 e = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 4u));
   uvec4 f = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 5u));
   uvec4 g = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 6u));
+  uvec4 h = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 7u));
   Material mat;
   mat.baseColor = uintBitsToFloat(a.xyz);
   mat.metallic = uintBitsToFloat(a.w);
@@ -113,6 +114,8 @@ Material FetchMaterial(uint m) {
   mat.clearcoatNormalScale = uintBitsToFloat(f.w);
   mat.sheenColor = uintBitsToFloat(g.xyz);
   mat.sheenRoughness = uintBitsToFloat(g.w);
+  mat.diffuseTransmissionColor = uintBitsToFloat(h.xyz);
+  mat.diffuseTransmission = uintBitsToFloat(h.w);
   return mat;
 }
 

@@ -162,7 +162,7 @@ Chi2Result SamplerChi2(const Bsdf& b, vec3 wo, const Pdf& pdf, uint32_t seed) {
         *wi = s.wi;
         return s.pdf > 0.0f;
       },
-      pdf, seed, b.transmission > 0.0f ? -1.0 : 0.0);
+      pdf, seed, Transmits(b) ? -1.0 : 0.0);
 }
 
 // χ² of SampleBsdf against BsdfPdf for one material and ωo, on the front face or inside.
@@ -192,13 +192,15 @@ const Base kLosslessBases[] = {
 
 struct Albedo {
   dvec3 mean, stderr_;
+  dvec3 reflected, reflectedStderr;      // the part of mean that leaves above the surface
+  dvec3 transmitted, transmittedStderr;  // and below it
 };
 
 // Transmitted samples count etap² times: radiance / η² is what a boundary conserves, so
 // this is the share of the energy arriving along ωo that leaves along either side.
 inline Albedo EstimateAlbedo(const Bsdf& b, vec3 wo, uint32_t seed, int strata = 448) {
   Uniform u(seed);
-  dvec3 sum(0.0), sum2(0.0);
+  dvec3 sum(0.0), sum2(0.0), above(0.0), above2(0.0);
   for (int i = 0; i < strata; ++i)
     for (int j = 0; j < strata; ++j) {
       float lobe = u();
@@ -207,12 +209,18 @@ inline Albedo EstimateAlbedo(const Bsdf& b, vec3 wo, uint32_t seed, int strata =
       BsdfSample s = SampleBsdf(b, wo, vec3(lobe, u1, u2));
       dvec3 w = s.pdf > 0.0f ? dvec3(s.weight) : dvec3(0.0);
       if (s.wi.z < 0.0f) w *= double(b.etap) * b.etap;
+      if (s.wi.z > 0.0f) above += w, above2 += w * w;
       sum += w;
       sum2 += w * w;
     }
   const double n = double(strata) * strata;
   Albedo a;
   a.mean = sum / n;
+  a.reflected = above / n;
+  a.transmitted = a.mean - a.reflected;
+  a.reflectedStderr = sqrt(max(above2 / n - a.reflected * a.reflected, dvec3(0.0)) / (n - 1.0));
+  const dvec3 below2 = sum2 - above2;
+  a.transmittedStderr = sqrt(max(below2 / n - a.transmitted * a.transmitted, dvec3(0.0)) / (n - 1.0));
   // The iid standard error: an upper bound for the stratified estimate.
   a.stderr_ = sqrt(max(sum2 / n - a.mean * a.mean, dvec3(0.0)) / (n - 1.0));
   return a;

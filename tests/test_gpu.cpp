@@ -593,19 +593,23 @@ TEST_F(GpuTest, ClearcoatedCornellAgreesOnBothBackends) {
   ExpectBackendsAgree(rs, Params(rs, s, 48, 48, 16, 1, 8), "clear-coated Cornell box");
 }
 
-// The Cornell box with a sheen on every material (colours and roughnesses varied), under a
-// clear coat on every other one: the sheen lobe, its table, its sampler and the layering
-// in lockstep on both backends, and in statistics with other seeds.
-TEST_F(GpuTest, SheenedCornellAgreesOnBothBackends) {
+// The Cornell box with a sheen on every material (colours and roughnesses varied), every
+// one passing part of its diffuse base through, tinted, and a clear coat on every other
+// one: the sheen lobe, its table and sampler, the diffusely transmitted lobe, light
+// sampled through walls and escaping the box, and the layering, in lockstep on both
+// backends and in statistics with other seeds.
+TEST_F(GpuTest, SheenedDiffuselyTransmittingCornellAgreesOnBothBackends) {
   Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
   for (size_t m = 0; m < s.materials.size(); ++m) {
     s.materials[m].sheenColor = m % 2 ? glm::vec3(1.0f, 0.8f, 0.6f) : glm::vec3(0.5f);
     s.materials[m].sheenRoughness = m % 3 ? 0.3f : 0.8f;
+    s.materials[m].diffuseTransmission = m % 2 ? 0.5f : 0.9f;
+    s.materials[m].diffuseTransmissionColor = glm::vec3(1.0f, 0.8f, 0.6f);
     s.materials[m].clearcoat = m % 2 ? 0.0f : 1.0f;
     s.materials[m].clearcoatRoughness = 0.2f;
   }
   RenderScene rs = PrepareRenderScene(s);
-  ExpectBackendsAgree(rs, Params(rs, s, 48, 48, 16, 1, 8), "sheened Cornell box");
+  ExpectBackendsAgree(rs, Params(rs, s, 48, 48, 16, 1, 8), "sheened, diffusely transmitting Cornell box");
 }
 
 // A generated map (test::RleHdr: a row of suns at the top, runs and ramps elsewhere), read

@@ -180,6 +180,15 @@ TEST(MaterialTextures, ClearcoatFactorsAndTexturesAreRead) {
   EXPECT_EQ(plain.clearcoatNormalScale, 1.0f);
 }
 
+// Slots `data` (linear, from TEXCOORD_1) and `colour` (sRGB) of material 0 hold textures.
+void ExpectDataAndColourSlots(const Scene& s, uint32_t data, uint32_t colour) {
+  ASSERT_NE(Ref(s, 0, data).texture, shader::kInvalidIndex);
+  ASSERT_NE(Ref(s, 0, colour).texture, shader::kInvalidIndex);
+  EXPECT_FALSE(s.textures[Ref(s, 0, data).texture].srgb);
+  EXPECT_TRUE(s.textures[Ref(s, 0, colour).texture].srgb);
+  EXPECT_EQ(Ref(s, 0, data).texCoord, 1u);
+}
+
 // KHR_materials_sheen: its factors, its colour texture (sRGB) and roughness texture (data)
 // in their slots; the extension is neither ignored nor refused when required.
 TEST(MaterialTextures, SheenFactorsAndTexturesAreRead) {
@@ -191,11 +200,7 @@ TEST(MaterialTextures, SheenFactorsAndTexturesAreRead) {
   using namespace shader;
   EXPECT_EQ(s.materials[0].sheenColor, glm::vec3(0.9f, 0.5f, 0.2f));
   EXPECT_FLOAT_EQ(s.materials[0].sheenRoughness, 0.4f);
-  ASSERT_NE(Ref(s, 0, kSlotSheenColor).texture, kInvalidIndex);
-  ASSERT_NE(Ref(s, 0, kSlotSheenRoughness).texture, kInvalidIndex);
-  EXPECT_TRUE(s.textures[Ref(s, 0, kSlotSheenColor).texture].srgb);
-  EXPECT_FALSE(s.textures[Ref(s, 0, kSlotSheenRoughness).texture].srgb);
-  EXPECT_EQ(Ref(s, 0, kSlotSheenRoughness).texCoord, 1u);
+  ExpectDataAndColourSlots(s, kSlotSheenRoughness, kSlotSheenColor);
   const shader::Material packed = PackMaterials(s).materials[0];
   EXPECT_EQ(packed.sheenColor, vec3(0.9f, 0.5f, 0.2f));
   EXPECT_EQ(packed.sheenRoughness, 0.4f);
@@ -206,6 +211,29 @@ TEST(MaterialTextures, SheenFactorsAndTexturesAreRead) {
   EXPECT_FALSE(IsLambertian(PackMaterials(s).materials[0]));
 }
 
+// KHR_materials_diffuse_transmission: its factors (colour white when absent), its factor
+// texture (data, A) and colour texture (sRGB) in their slots; not ignored, not refused.
+TEST(MaterialTextures, DiffuseTransmissionFactorsAndTexturesAreRead) {
+  GltfBuilder b = TexturedTriangle(
+      R"({"extensions":{"KHR_materials_diffuse_transmission":{"diffuseTransmissionFactor":0.25,)"
+      R"("diffuseTransmissionColorFactor":[1,0.9,0.85],"diffuseTransmissionTexture":{"index":0,"texCoord":1},)"
+      R"("diffuseTransmissionColorTexture":{"index":0}}}})");
+  b.extensionsUsed = b.extensionsRequired = {"KHR_materials_diffuse_transmission"};
+  Scene s = Load(b);
+  using namespace shader;
+  EXPECT_FLOAT_EQ(s.materials[0].diffuseTransmission, 0.25f);
+  EXPECT_EQ(s.materials[0].diffuseTransmissionColor, glm::vec3(1.0f, 0.9f, 0.85f));
+  ExpectDataAndColourSlots(s, kSlotDiffuseTransmission, kSlotDiffuseTransmissionColor);
+  const shader::Material packed = PackMaterials(s).materials[0];
+  EXPECT_EQ(packed.diffuseTransmission, 0.25f);
+  EXPECT_EQ(packed.diffuseTransmissionColor, vec3(1.0f, 0.9f, 0.85f));
+  EXPECT_FALSE(IsLambertian(packed));
+  for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("diffuse_transmission"), std::string::npos) << f;
+  const vkpt::Material plain = Load(TexturedTriangle("{}")).materials[0];
+  EXPECT_EQ(plain.diffuseTransmission, 0.0f);
+  EXPECT_EQ(plain.diffuseTransmissionColor, glm::vec3(1.0f));
+}
+
 TEST(MaterialTextures, ExtensionFactorsOutOfRangeAreNamed) {
   const std::pair<const char*, const char*> kBad[] = {
       {"KHR_materials_clearcoat", R"("clearcoatFactor":1.5)"},
@@ -214,7 +242,9 @@ TEST(MaterialTextures, ExtensionFactorsOutOfRangeAreNamed) {
       {"KHR_materials_sheen", R"("sheenColorFactor":[1.5,0,0])"},
       {"KHR_materials_sheen", R"("sheenColorFactor":"red")"},
       {"KHR_materials_sheen", R"("sheenColorFactor":[1,1])"},
-      {"KHR_materials_sheen", R"("sheenRoughnessFactor":2)"}};
+      {"KHR_materials_sheen", R"("sheenRoughnessFactor":2)"},
+      {"KHR_materials_diffuse_transmission", R"("diffuseTransmissionFactor":-0.5)"},
+      {"KHR_materials_diffuse_transmission", R"("diffuseTransmissionColorFactor":[0.5,2,0.5])"}};
   for (const auto& [extension, bad] : kBad) {
     try {
       Load(TexturedTriangle(std::string(R"({"extensions":{")") + extension + R"(":{)" + bad + "}}}"));

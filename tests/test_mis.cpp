@@ -72,6 +72,17 @@ Scene LightBehindThinWall(double roughness) {
       -1.5f, {"KHR_materials_transmission"});
 }
 
+// The light 1.5 below a diffusely transmitting thin wall (a rough red dielectric passing
+// the given share of its diffuse base through as pale blue): light sampling through the
+// wall and the transmitted cosine lobe must agree.
+Scene LightBehindDiffuseWall(double share) {
+  return PlaneAndQuadLight(
+      R"({"pbrMetallicRoughness":{"baseColorFactor":[0.9,0.3,0.2,1],"metallicFactor":0,"roughnessFactor":0.4},)"
+      R"("extensions":{"KHR_materials_diffuse_transmission":{"diffuseTransmissionFactor":)" +
+          Num(share) + R"(,"diffuseTransmissionColorFactor":[0.6,0.8,1]}}})",
+      -1.5f, {"KHR_materials_diffuse_transmission"});
+}
+
 // The glossy plane under a light whose emission an emissive texture paints: 4 × 4 texels
 // of different colours and brightness, NEAREST, over the quad. Light sampling
 // must read the texture at the point it picks as a hit there would.
@@ -197,6 +208,12 @@ TEST(Mis, LightBsdfAndMisEstimatesAgreeAtThreeRoughnesses) {
 // the light.
 TEST(Mis, LightThroughAThinWallAgreesAtThreeRoughnesses) {
   Verdict v = CompareEstimators(Estimators{}, kSpp, LightBehindThinWall);
+  EXPECT_EQ(v.failures, 0);
+}
+
+// kRoughness doubles as the share transmitted: 0.1, 0.3 and 0.7.
+TEST(Mis, DiffuseTransmissionAgreesAtThreeShares) {
+  Verdict v = CompareEstimators(Estimators{}, kSpp, LightBehindDiffuseWall);
   EXPECT_EQ(v.failures, 0);
 }
 

@@ -34,6 +34,7 @@
 #define VKPT_VOLUMES false
 #define VKPT_CLEARCOAT false
 #define VKPT_SHEEN false
+#define VKPT_DIFFUSE_TRANSMISSION false
 #undef VKPT_TEXTURES
 #define VKPT_TEXTURES false
 #undef VKPT_NORMAL_MAPS

@@ -21,6 +21,8 @@ const SlotTexture kSlots[] = {
     {shader::kSlotClearcoatNormal, &Material::clearcoatNormalTexture},
     {shader::kSlotSheenColor, &Material::sheenColorTexture},
     {shader::kSlotSheenRoughness, &Material::sheenRoughnessTexture},
+    {shader::kSlotDiffuseTransmission, &Material::diffuseTransmissionTexture},
+    {shader::kSlotDiffuseTransmissionColor, &Material::diffuseTransmissionColorTexture},
 };
 static_assert(sizeof kSlots / sizeof kSlots[0] == shader::kTextureSlots);
 
@@ -66,6 +68,8 @@ shader::Material PackMaterial(const Material& m) {
   g.clearcoatNormalScale = m.clearcoatNormalScale;
   g.sheenColor = m.sheenColor;
   g.sheenRoughness = m.sheenRoughness;
+  g.diffuseTransmission = m.diffuseTransmission;
+  g.diffuseTransmissionColor = m.diffuseTransmissionColor;
   g.flags = (m.doubleSided ? shader::kMaterialDoubleSided : 0u) | (m.unlit ? shader::kMaterialUnlit : 0u) |
             (m.volume ? shader::kMaterialVolume : 0u) | AlphaBits(m.alphaMode) | TextureBits(m);
   return g;

@@ -194,6 +194,10 @@ bool UsesSheen(const RenderScene& scene) {
   return SomeTriangleUses(scene, [](const shader::Material& m) { return m.sheenColor != glm::vec3(0.0f); });
 }
 
+bool UsesDiffuseTransmission(const RenderScene& scene) {
+  return SomeTriangleUses(scene, [](const shader::Material& m) { return m.diffuseTransmission > 0.0f; });
+}
+
 bool HasLightSources(const RenderScene& scene) {
   for (const shader::Light& l : scene.lights) {
     if (l.type != shader::kLightTriangle && l.type != shader::kLightTwoSidedTriangle) return true;

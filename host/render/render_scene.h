@@ -59,6 +59,8 @@ bool UsesVolumeMaterial(const RenderScene& scene);
 bool UsesClearcoat(const RenderScene& scene);
 // And whether some triangle's material has a sheen (KHR_materials_sheen).
 bool UsesSheen(const RenderScene& scene);
+// And whether some triangle's material transmits diffusely (KHR_materials_diffuse_transmission).
+bool UsesDiffuseTransmission(const RenderScene& scene);
 
 // Whether the scene has lights meant to light it: punctual lights, or emissive triangles
 // whose emission is not painted by an emissive texture (a texture paints screens, dials

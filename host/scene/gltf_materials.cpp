@@ -36,6 +36,7 @@ class MaterialReader {
                                   "KHR_materials_transmission.transmissionFactor"));
     ReadClearcoat(mat);
     ReadSheen(mat);
+    ReadDiffuseTransmission(mat);
     mat.doubleSided = in_.doubleSided;
     mat.unlit = in_.extensions.count("KHR_materials_unlit") != 0;
     ReadVolume(mat);
@@ -104,6 +105,18 @@ class MaterialReader {
                              "KHR_materials_sheen.sheenColorFactor", 1.0);
     mat.sheenRoughness =
         float(Unit(ExtensionNumber(ext, "sheenRoughnessFactor", 0.0), "KHR_materials_sheen.sheenRoughnessFactor"));
+  }
+
+  // KHR_materials_diffuse_transmission's factors (its textures are gltf_textures.cpp's).
+  void ReadDiffuseTransmission(Material& mat) const {
+    const char* ext = "KHR_materials_diffuse_transmission";
+    mat.diffuseTransmission = float(Unit(ExtensionNumber(ext, "diffuseTransmissionFactor", 0.0),
+                                         "KHR_materials_diffuse_transmission.diffuseTransmissionFactor"));
+    mat.diffuseTransmissionColor = glm::vec3(1.0f);
+    if (const tinygltf::Value* c = ExtensionField(ext, "diffuseTransmissionColorFactor"))
+      mat.diffuseTransmissionColor =
+          Color(NumberArray(*c, "KHR_materials_diffuse_transmission.diffuseTransmissionColorFactor"), 3,
+                "KHR_materials_diffuse_transmission.diffuseTransmissionColorFactor", 1.0);
   }
 
   [[noreturn]] void Fail(const std::string& what) const { src_.Fail(name_ + "." + what); }

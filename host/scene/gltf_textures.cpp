@@ -51,6 +51,14 @@ const ExtensionSlot kExtensionSlots[] = {
     {{&Material::sheenRoughnessTexture, "extensions.KHR_materials_sheen.sheenRoughnessTexture", false},
      "KHR_materials_sheen",
      "sheenRoughnessTexture"},
+    {{&Material::diffuseTransmissionTexture, "extensions.KHR_materials_diffuse_transmission.diffuseTransmissionTexture",
+      false},
+     "KHR_materials_diffuse_transmission",
+     "diffuseTransmissionTexture"},
+    {{&Material::diffuseTransmissionColorTexture,
+      "extensions.KHR_materials_diffuse_transmission.diffuseTransmissionColorTexture", true},
+     "KHR_materials_diffuse_transmission",
+     "diffuseTransmissionColorTexture"},
 };
 
 using Wrap = TextureSampler::Wrap;

@@ -59,27 +59,33 @@ struct Material {
   // KHR_materials_sheen: a fibre lobe over the base, under the coat (shared/sheen.h).
   glm::vec3 sheenColor{0.0f};  // black: no sheen
   float sheenRoughness = 0.0f;
+  // KHR_materials_diffuse_transmission: the diffuse base passed through (shared/bsdf.h).
+  float diffuseTransmission = 0.0f;  // 0: none
+  glm::vec3 diffuseTransmissionColor{1.0f};
 
   // The textures that scale the factors above (shared/material_textures.h says how).
-  MaterialTexture baseColorTexture;           // RGB × baseColor, A × alpha (sRGB)
-  MaterialTexture metallicRoughnessTexture;   // G × roughness, B × metallic
-  MaterialTexture emissiveTexture;            // RGB × emission (sRGB)
-  MaterialTexture normalTexture;              // tangent-space normal, scaled by normalScale
-  MaterialTexture transmissionTexture;        // R × transmission
-  MaterialTexture specularTexture;            // A × specular
-  MaterialTexture specularColorTexture;       // RGB × specularColor (sRGB)
-  MaterialTexture clearcoatTexture;           // R × clearcoat
-  MaterialTexture clearcoatRoughnessTexture;  // G × clearcoatRoughness
-  MaterialTexture clearcoatNormalTexture;     // the coat's tangent-space normal, scaled by clearcoatNormalScale
-  MaterialTexture sheenColorTexture;          // RGB × sheenColor (sRGB)
-  MaterialTexture sheenRoughnessTexture;      // A × sheenRoughness
+  MaterialTexture baseColorTexture;                 // RGB × baseColor, A × alpha (sRGB)
+  MaterialTexture metallicRoughnessTexture;         // G × roughness, B × metallic
+  MaterialTexture emissiveTexture;                  // RGB × emission (sRGB)
+  MaterialTexture normalTexture;                    // tangent-space normal, scaled by normalScale
+  MaterialTexture transmissionTexture;              // R × transmission
+  MaterialTexture specularTexture;                  // A × specular
+  MaterialTexture specularColorTexture;             // RGB × specularColor (sRGB)
+  MaterialTexture clearcoatTexture;                 // R × clearcoat
+  MaterialTexture clearcoatRoughnessTexture;        // G × clearcoatRoughness
+  MaterialTexture clearcoatNormalTexture;           // the coat's tangent-space normal, scaled by clearcoatNormalScale
+  MaterialTexture sheenColorTexture;                // RGB × sheenColor (sRGB)
+  MaterialTexture sheenRoughnessTexture;            // A × sheenRoughness
+  MaterialTexture diffuseTransmissionTexture;       // A × diffuseTransmission
+  MaterialTexture diffuseTransmissionColorTexture;  // RGB × diffuseTransmissionColor (sRGB)
 
   // Whether some texture above is present.
   bool Textured() const {
     for (const MaterialTexture* t :
          {&baseColorTexture, &metallicRoughnessTexture, &emissiveTexture, &normalTexture, &transmissionTexture,
           &specularTexture, &specularColorTexture, &clearcoatTexture, &clearcoatRoughnessTexture,
-          &clearcoatNormalTexture, &sheenColorTexture, &sheenRoughnessTexture})
+          &clearcoatNormalTexture, &sheenColorTexture, &sheenRoughnessTexture, &diffuseTransmissionTexture,
+          &diffuseTransmissionColorTexture})
       if (t->Present()) return true;
     return false;
   }

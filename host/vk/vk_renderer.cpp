@@ -65,6 +65,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
       hasVolumes_(UsesVolumeMaterial(scene)),
       hasClearcoat_(UsesClearcoat(scene)),
       hasSheen_(UsesSheen(scene)),
+      hasDiffuseTransmission_(UsesDiffuseTransmission(scene)),
       hasTextures_(!scene.textureRefs.empty()),
       hasNormalMaps_(!scene.tangents.empty()),
       hasAlpha_(scene.alphaTested),
@@ -112,7 +113,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           triangles_.twoBuffers ? 1u : 0u,
           uvs_.twoBuffers ? 1u : 0u,
           hasClearcoat_ ? 1u : 0u,
-          hasSheen_ ? 1u : 0u};
+          hasSheen_ ? 1u : 0u,
+          hasDiffuseTransmission_ ? 1u : 0u};
 }
 
 std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams& frame,

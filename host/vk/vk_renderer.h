@@ -93,6 +93,7 @@ class GpuRenderer {
   bool hasVolumes_;                  // some triangle's material bounds a volume
   bool hasClearcoat_;                // some triangle's material has a clear coat
   bool hasSheen_;                    // some triangle's material has a sheen
+  bool hasDiffuseTransmission_;      // some triangle's material transmits diffusely
   bool hasTextures_;                 // some material has a texture
   bool hasNormalMaps_;               // some material has a normal texture
   bool hasAlpha_;                    // some triangle's material is alpha MASK or BLEND

@@ -37,13 +37,20 @@
 //    dielectric then returns what it receives from either side; f_ms covers the opaque
 //    share alone. The scaling depends on μo only, so f is not reciprocal there.
 //
+// KHR_materials_diffuse_transmission passes the share dt of the diffuse base through the
+// surface as a Lambertian lobe of diffuseTransmissionColor on the other side, weighted
+// by the same coupling c(μo) c(|μi|), so it is reciprocal and a white base keeps its
+// energy; transmission T, where both are present, takes its share first (the extension's
+// mix(mix(diffuse_brdf, diffuse_btdf, dt), specular_btdf, T)).
+//
 // KHR_materials_sheen (sheen.h) lays a fibre lobe over all of this, the base weighted by
 // 1 − max(sheenColor) E_s(μo), and KHR_materials_clearcoat (clearcoat.h) a GGX coat lobe
 // over that, everything under it weighted by 1 − c A_c(μo).
 //
 // Sampling: one lobe chosen by its estimated albedo — the visible normals of GGX (Dupuy &
 // Benyoub 2023) reflected or refracted, the coat's visible normals, the sheen's sampler,
-// or the cosine hemisphere for diffuse and f_ms together — and the sample
+// the cosine hemisphere for diffuse and f_ms together, or the cosine hemisphere below the
+// surface for diffuse transmission — and the sample
 // weighted by the mixture pdf of both (one-sample MIS, Veach 1997 §9.2.4), so each lane
 // evaluates the same code whichever lobe it picked.
 #ifndef VKPT_BSDF_H
@@ -57,6 +64,12 @@
 #include "sampling.h"
 #include "sheen.h"
 #include "transmission.h"
+
+// A shader may define VKPT_DIFFUSE_TRANSMISSION as a specialization constant that is false
+// when no material has KHR_materials_diffuse_transmission.
+#ifndef VKPT_DIFFUSE_TRANSMISSION
+#define VKPT_DIFFUSE_TRANSMISSION true
+#endif
 
 // A shader may define VKPT_GLOSSY_MATERIALS as a specialization constant that is false
 // when every material the scene's triangles use is Lambertian (the default material the
@@ -87,8 +100,11 @@ struct Bsdf {
   float transmission;   // (1 − m) T: weight of the transmission lobe
   float glassScale;     // 1 / the rough dielectric's albedo at μo (1 without transmission)
   float pTransmission;  // probability of sampling it
-  float etap;           // η beyond the surface / η on ωo's side; 1: thin wall (or no transmission)
-  float coat;           // KHR_materials_clearcoat's factor c (0: no coat)
+  vec3 diffuseTransmissionColor;
+  float diffuseTransmission;   // dt: the share of the diffuse base passed through (0: none)
+  float pDiffuseTransmission;  // probability of sampling it
+  float etap;                  // η beyond the surface / η on ωo's side; 1: thin wall (or no transmission)
+  float coat;                  // KHR_materials_clearcoat's factor c (0: no coat)
   float coatAlpha;
   vec3 coatNormal;      // in this frame
   float coatBaseScale;  // 1 − c A_c(μo): the weight of everything under the coat
@@ -118,8 +134,11 @@ VKPT_FN vec3 MultipleScatteringFresnel(vec3 f0, vec3 f90, float eAvg) {
 // times the cost.
 VKPT_FN bool IsLambertian(Material mat) {
   return mat.specular == 0.0f && mat.metallic == 0.0f && mat.transmission == 0.0f && mat.clearcoat == 0.0f &&
-         MaxComponent(mat.sheenColor) == 0.0f;
+         MaxComponent(mat.sheenColor) == 0.0f && mat.diffuseTransmission == 0.0f;
 }
+
+// Whether the material passes light to the other side of its surface.
+VKPT_FN bool Transmits(Bsdf b) { return b.transmission > 0.0f || b.diffuseTransmission > 0.0f; }
 
 // The diffuse base's weights c(μ) (the coupling above): the dielectric layer's scalar
 // albedo A(μ) = F0s (E − E5) + F90 E5 + Fms_s (1 − E), with E (e at μo, eAvg averaged)
@@ -155,9 +174,11 @@ VKPT_FN void ChooseLobes(VKPT_INOUT(Bsdf) b, Material mat, vec3 wo, vec2 e) {
   }
   vec3 specM = b.baseColor * (e.x - e.y) + vec3(e.y);
   float wSpec = Luminance(mix(specD, specM, b.metallic));
-  vec3 cosLobe = b.msWeight * (1.0f - e.x) + b.baseColor * (b.couplingO * b.couplingNorm);
+  float diffuse = b.couplingO * b.couplingNorm;  // the diffuse base's albedo at μo
+  vec3 cosLobe = b.msWeight * (1.0f - e.x) + b.baseColor * (diffuse * (1.0f - b.diffuseTransmission));
   float wCos = Luminance(cosLobe);
   float wTrans = b.transmission * b.glassScale * Luminance(b.baseColor) * (1.0f - fresnelO) * e.x;
+  float wDiffuseTrans = Luminance(b.diffuseTransmissionColor) * (diffuse * b.diffuseTransmission);
   float wSheen = 0.0f;
   if (VKPT_SHEEN && MaxComponent(mat.sheenColor) > 0.0f) {
     b.sheenColor = mat.sheenColor;
@@ -170,6 +191,7 @@ VKPT_FN void ChooseLobes(VKPT_INOUT(Bsdf) b, Material mat, vec3 wo, vec2 e) {
     wSpec *= b.sheenBaseScale;
     wCos *= b.sheenBaseScale;
     wTrans *= b.sheenBaseScale;
+    wDiffuseTrans *= b.sheenBaseScale;
   }
   float wCoat = 0.0f;
   if (VKPT_CLEARCOAT && mat.clearcoat > 0.0f) {
@@ -180,24 +202,29 @@ VKPT_FN void ChooseLobes(VKPT_INOUT(Bsdf) b, Material mat, vec3 wo, vec2 e) {
     wSpec *= b.coatBaseScale;
     wCos *= b.coatBaseScale;
     wTrans *= b.coatBaseScale;
+    wDiffuseTrans *= b.coatBaseScale;
     wSheen *= b.coatBaseScale;
   }
-  float total = wSpec + wCos + wTrans + wSheen + wCoat;
+  float total = wSpec + wCos + wTrans + wDiffuseTrans + wSheen + wCoat;
   b.pSpecular = total > 0.0f ? wSpec / total : 0.5f;
   b.pTransmission = total > 0.0f ? wTrans / total : 0.0f;
+  b.pDiffuseTransmission = total > 0.0f ? wDiffuseTrans / total : 0.0f;
   b.pSheen = total > 0.0f ? wSheen / total : 0.0f;
   b.pCoat = total > 0.0f ? wCoat / total : 0.0f;
 }
 
-// `frontFace`: ωo lies on the side the surface's winding faces (outside a volume);
-// `coatNormal`: the clear coat's normal in the shading frame (clearcoat.h).
-VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace, vec3 coatNormal) {
+// The material without any of the lobes PrepareBsdf adds: the Lambertian case complete,
+// the rest to be filled in.
+VKPT_FN Bsdf BaseBsdf(Material mat, vec3 coatNormal) {
   Bsdf b;
   b.baseColor = mat.baseColor;
   b.metallic = mat.metallic;
   b.lambert = !VKPT_GLOSSY_MATERIALS || IsLambertian(mat);
   b.transmission = 0.0f;
   b.pTransmission = 0.0f;
+  b.diffuseTransmission = 0.0f;
+  b.diffuseTransmissionColor = vec3(0.0f);
+  b.pDiffuseTransmission = 0.0f;
   b.etap = 1.0f;
   b.glassScale = 1.0f;
   b.coat = 0.0f;
@@ -210,8 +237,19 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace, vec3 coatNormal)
   b.sheenScale = 1.0f;
   b.sheenBaseScale = 1.0f;
   b.pSheen = 0.0f;
+  return b;
+}
+
+// `frontFace`: ωo lies on the side the surface's winding faces (outside a volume);
+// `coatNormal`: the clear coat's normal in the shading frame (clearcoat.h).
+VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace, vec3 coatNormal) {
+  Bsdf b = BaseBsdf(mat, coatNormal);
   if (b.lambert) return b;
   b.transmission = (1.0f - mat.metallic) * mat.transmission;
+  if (VKPT_DIFFUSE_TRANSMISSION) {
+    b.diffuseTransmission = mat.diffuseTransmission;
+    b.diffuseTransmissionColor = mat.diffuseTransmissionColor;
+  }
   // A volume of ior 1 (or the ior-0 mirror) bends nothing: it is rendered as a thin wall.
   if (b.transmission > 0.0f && (mat.flags & kMaterialVolume) != 0u && mat.ior > 1.0f)
     b.etap = frontFace ? mat.ior : 1.0f / mat.ior;
@@ -251,9 +289,28 @@ VKPT_FN vec3 EvalTransmission(Bsdf b, vec3 wo, vec3 wi) {
   return (weight * GgxRefraction(wo, wi, m, b.etap, b.alpha)) * f * b.baseColor;
 }
 
+// The diffuse base's albedo coupling c(|μi|) for ωi on either side, from the GGX table's
+// (E, E5) at |μi|.
+VKPT_FN float CouplingI(Bsdf b, float albedo, float albedo5) {
+  float aI = b.couplingF0 * albedo + b.couplingE5 * albedo5 + b.couplingMs;
+  return max(1.0f - aI, 0.0f) * b.couplingNorm;
+}
+
+// The diffuse transmission lobe dt diffuseTransmissionColor / π c(μo) c(|μi|) for ωi
+// below the surface.
+VKPT_FN vec3 EvalDiffuseTransmission(Bsdf b, vec3 wi) {
+  vec2 ei = GgxAlbedo(-wi.z, b.alpha);
+  float c = b.diffuseTransmission * kInvPi * b.couplingO * CouplingI(b, ei.x, ei.y);
+  return b.diffuseTransmissionColor * c;
+}
+
 // f of everything under the coat, for ωo above the surface.
 VKPT_FN vec3 EvalBase(Bsdf b, vec3 wo, vec3 wi) {
-  if (wi.z < 0.0f) return b.transmission > 0.0f ? EvalTransmission(b, wo, wi) : vec3(0.0f);
+  if (wi.z < 0.0f) {
+    vec3 t = b.transmission > 0.0f ? EvalTransmission(b, wo, wi) : vec3(0.0f);
+    if (VKPT_DIFFUSE_TRANSMISSION && b.diffuseTransmission > 0.0f) t += EvalDiffuseTransmission(b, wi);
+    return t;
+  }
   vec3 h = normalize(wo + wi);
   float cosOH = dot(wo, h);
   vec3 fd = DielectricFresnel(b.f0, b.f90, cosOH, b.etap);
@@ -263,9 +320,8 @@ VKPT_FN vec3 EvalBase(Bsdf b, vec3 wo, vec3 wi) {
   vec3 f = fresnel * (GgxD(h, b.alpha) * GgxVisibility(wo.z, wi.z, b.alpha));
   vec2 ei = GgxAlbedo(wi.z, b.alpha);
   f += b.msWeight * ((1.0f - b.albedoO) * (1.0f - ei.x) * b.invMsNorm);
-  float aI = b.couplingF0 * ei.x + b.couplingE5 * ei.y + b.couplingMs;
-  float couplingI = max(1.0f - aI, 0.0f) * b.couplingNorm;
-  f += b.baseColor * (kInvPi * b.couplingO * couplingI);
+  float couplingI = CouplingI(b, ei.x, ei.y);
+  f += b.baseColor * (kInvPi * b.couplingO * couplingI * (1.0f - b.diffuseTransmission));
   return f;
 }
 
@@ -290,10 +346,16 @@ VKPT_FN float TransmissionPdf(Bsdf b, vec3 wo, vec3 wi) {
 
 VKPT_FN float BsdfPdf(Bsdf b, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0f || wi.z == 0.0f) return 0.0f;
-  if (wi.z < 0.0f) return b.pTransmission > 0.0f ? b.pTransmission * TransmissionPdf(b, wo, wi) : 0.0f;
+  if (wi.z < 0.0f) {
+    float pdf = b.pTransmission > 0.0f ? b.pTransmission * TransmissionPdf(b, wo, wi) : 0.0f;
+    if (VKPT_DIFFUSE_TRANSMISSION && b.pDiffuseTransmission > 0.0f)
+      pdf += b.pDiffuseTransmission * CosineHemispherePdf(-wi.z);
+    return pdf;
+  }
   if (b.lambert) return CosineHemispherePdf(wi.z);
-  float pdf = b.pSpecular * GgxReflectionPdf(wo, wi, b.alpha) +
-              (1.0f - b.pSpecular - b.pTransmission - b.pSheen - b.pCoat) * CosineHemispherePdf(wi.z);
+  float pdf =
+      b.pSpecular * GgxReflectionPdf(wo, wi, b.alpha) +
+      (1.0f - b.pSpecular - b.pTransmission - b.pDiffuseTransmission - b.pSheen - b.pCoat) * CosineHemispherePdf(wi.z);
   if (VKPT_SHEEN && b.pSheen > 0.0f) pdf += b.pSheen * SheenPdf(wi, b.sheenAlpha);
   if (VKPT_CLEARCOAT && b.pCoat > 0.0f) pdf += b.pCoat * CoatPdf(b.coatNormal, b.coatAlpha, wo, wi);
   return pdf;
@@ -320,11 +382,14 @@ VKPT_FN BsdfSample SampleBsdf(Bsdf b, vec3 wo, vec3 u) {
   if (transmitted.z >= 0.0f) transmitted = vec3(0.0f);
   vec3 coated = VKPT_CLEARCOAT && b.pCoat > 0.0f ? SampleCoat(b.coatNormal, b.coatAlpha, wo, u.y, u.z) : vec3(0.0f);
   vec3 sheen = VKPT_SHEEN && b.pSheen > 0.0f ? SampleSheen(b.sheenAlpha, u.y, u.z) : vec3(0.0f);
-  float pBase = b.pSpecular + b.pTransmission;
-  float pLayers = pBase + b.pCoat;
-  s.wi = u.x < b.pSpecular
-             ? specular
-             : (u.x < pBase ? transmitted : (u.x < pLayers ? coated : (u.x < pLayers + b.pSheen ? sheen : diffuse)));
+  // The lobes' shares of [0, 1) in order: specular, transmitted, diffusely transmitted,
+  // coat, sheen, and the cosine lobe the rest.
+  float pGlossy = b.pSpecular + b.pTransmission;
+  float pThrough = pGlossy + b.pDiffuseTransmission;
+  float pLayers = pThrough + b.pCoat + b.pSheen;
+  vec3 layer = u.x < pThrough + b.pCoat ? coated : sheen;
+  vec3 other = u.x < pThrough ? MirrorThroughSurface(diffuse) : (u.x < pLayers ? layer : diffuse);
+  s.wi = u.x < b.pSpecular ? specular : (u.x < pGlossy ? transmitted : other);
   s.pdf = BsdfPdf(b, wo, s.wi);
   s.weight = s.pdf > 0.0f ? EvalBsdf(b, wo, s.wi) * (abs(s.wi.z) / s.pdf) : vec3(0.0f);
   return s;

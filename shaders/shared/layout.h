@@ -141,6 +141,8 @@ struct Material {
   float clearcoatNormalScale;  // clearcoatNormalTexture.scale
   vec3 sheenColor;             // KHR_materials_sheen: the sheen's colour (0: no sheen)
   float sheenRoughness;
+  vec3 diffuseTransmissionColor;  // KHR_materials_diffuse_transmission
+  float diffuseTransmission;      // the share of the diffuse base transmitted (0: none)
 };
 
 const uint kShadingHasNormals = 1u;
@@ -232,19 +234,21 @@ struct TextureRef {
   float m12;
 };
 // The texture slots of a material, kTextureSlots TextureRefs each (kBindingMaterialTextures).
-const uint kSlotBaseColor = 0u;           // RGB × baseColor, A × alpha
-const uint kSlotMetallicRoughness = 1u;   // G × roughness, B × metallic
-const uint kSlotEmissive = 2u;            // RGB × emission
-const uint kSlotNormal = 3u;              // tangent-space normal (shared/normal_map.h)
-const uint kSlotTransmission = 4u;        // R × transmission (KHR_materials_transmission)
-const uint kSlotSpecular = 5u;            // A × specular (KHR_materials_specular)
-const uint kSlotSpecularColor = 6u;       // RGB × specularColor (KHR_materials_specular)
-const uint kSlotClearcoat = 7u;           // R × clearcoat (KHR_materials_clearcoat)
-const uint kSlotClearcoatRoughness = 8u;  // G × clearcoatRoughness
-const uint kSlotClearcoatNormal = 9u;     // the coat's tangent-space normal
-const uint kSlotSheenColor = 10u;         // RGB × sheenColor (KHR_materials_sheen)
-const uint kSlotSheenRoughness = 11u;     // A × sheenRoughness
-const uint kTextureSlots = 12u;
+const uint kSlotBaseColor = 0u;                  // RGB × baseColor, A × alpha
+const uint kSlotMetallicRoughness = 1u;          // G × roughness, B × metallic
+const uint kSlotEmissive = 2u;                   // RGB × emission
+const uint kSlotNormal = 3u;                     // tangent-space normal (shared/normal_map.h)
+const uint kSlotTransmission = 4u;               // R × transmission (KHR_materials_transmission)
+const uint kSlotSpecular = 5u;                   // A × specular (KHR_materials_specular)
+const uint kSlotSpecularColor = 6u;              // RGB × specularColor (KHR_materials_specular)
+const uint kSlotClearcoat = 7u;                  // R × clearcoat (KHR_materials_clearcoat)
+const uint kSlotClearcoatRoughness = 8u;         // G × clearcoatRoughness
+const uint kSlotClearcoatNormal = 9u;            // the coat's tangent-space normal
+const uint kSlotSheenColor = 10u;                // RGB × sheenColor (KHR_materials_sheen)
+const uint kSlotSheenRoughness = 11u;            // A × sheenRoughness
+const uint kSlotDiffuseTransmission = 12u;       // A × diffuseTransmission (KHR_materials_diffuse_transmission)
+const uint kSlotDiffuseTransmissionColor = 13u;  // RGB × diffuseTransmissionColor
+const uint kTextureSlots = 14u;
 
 // Light types (shared/lights.h).
 const uint kLightTriangle = 0u;          // emits from its front face
@@ -274,7 +278,7 @@ struct Light {
 // 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
 const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
-const uint kTexelsPerMaterial = 7u;
+const uint kTexelsPerMaterial = 8u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
 const uint kTexelsPerColors = 2u;

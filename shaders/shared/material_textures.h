@@ -5,7 +5,9 @@
 // the transmission, KHR_materials_specular's A channel the specular factor and its colour
 // texture the specular colour, KHR_materials_clearcoat's R and G channels the coat's
 // factor and roughness (its normal texture is shading_frame.h's), KHR_materials_sheen's
-// colour texture the sheen's colour and its roughness texture's A channel its roughness.
+// colour texture the sheen's colour and its roughness texture's A channel its roughness,
+// KHR_materials_diffuse_transmission's A channel its factor and its colour texture its
+// colour.
 //
 // Scene access, as in texture.h, plus
 //   VKPT_TEXTURE_REF(i)  TextureRef i: slot s of material m is i = m · kTextureSlots + s
@@ -28,13 +30,16 @@
 #ifndef VKPT_EXTENSION_TEXTURES
 #define VKPT_EXTENSION_TEXTURES true
 #endif
-// And clearcoat.h's VKPT_CLEARCOAT and sheen.h's VKPT_SHEEN (not included here: path.h's
-// seams must come first).
+// And clearcoat.h's VKPT_CLEARCOAT, sheen.h's VKPT_SHEEN and bsdf.h's
+// VKPT_DIFFUSE_TRANSMISSION (not included here: path.h's seams must come first).
 #ifndef VKPT_CLEARCOAT
 #define VKPT_CLEARCOAT true
 #endif
 #ifndef VKPT_SHEEN
 #define VKPT_SHEEN true
+#endif
+#ifndef VKPT_DIFFUSE_TRANSMISSION
+#define VKPT_DIFFUSE_TRANSMISSION true
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -88,6 +93,11 @@ VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, ui
     if (VKPT_SHEEN && MaxComponent(mat.sheenColor) > 0.0f) {
       mat.sheenColor *= vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotSheenColor, uvs, b1, b2, footprint));
       mat.sheenRoughness *= SampleSlot(VKPT_SCENE_ARG material, kSlotSheenRoughness, uvs, b1, b2, data).a;
+    }
+    if (VKPT_DIFFUSE_TRANSMISSION && mat.diffuseTransmission > 0.0f) {
+      mat.diffuseTransmission *= SampleSlot(VKPT_SCENE_ARG material, kSlotDiffuseTransmission, uvs, b1, b2, data).a;
+      mat.diffuseTransmissionColor *=
+          vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotDiffuseTransmissionColor, uvs, b1, b2, footprint));
     }
   }
 }

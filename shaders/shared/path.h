@@ -141,9 +141,10 @@ VKPT_FN vec3 EscapedRadiance(VKPT_SCENE_PARAM FrameParams params, PathState s) {
 }
 
 // Whether light sampling may look through the surface (see the top of this file): a
-// transmissive thin wall, or a volume's boundary seen from inside.
+// transmissive (or diffusely transmissive) thin wall, or a volume's boundary seen from
+// inside.
 VKPT_FN bool SamplesLightsThrough(SurfaceHit sh, Bsdf bsdf) {
-  return bsdf.transmission > 0.0f && ((sh.material.flags & kMaterialVolume) == 0u || !sh.frontFace);
+  return Transmits(bsdf) && ((sh.material.flags & kMaterialVolume) == 0u || !sh.frontFace);
 }
 
 // Next-event estimation at the vertex: samples a light and, if it can contribute, sets
