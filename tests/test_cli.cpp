@@ -563,6 +563,30 @@ TEST(Cli, VerboseReportsTheTexturesOfAGeneratedModel) {
   std::remove(out.c_str());
 }
 
+// The layers a material adds (coat, sheen, diffuse transmission) are listed with it.
+TEST(Cli, VerboseListsAMaterialsLayers) {
+  test::GltfBuilder b;
+  b.meshes.push_back(R"({"primitives":[{"attributes":{"POSITION":)" + std::to_string(b.Positions(test::kUnitTriangle)) +
+                     R"(},"material":0}]})");
+  b.materials.push_back(
+      R"({"extensions":{"KHR_materials_clearcoat":{"clearcoatFactor":0.5,"clearcoatRoughnessFactor":0.25},)"
+      R"("KHR_materials_sheen":{"sheenColorFactor":[1,0.5,0.25],"sheenRoughnessFactor":0.75},)"
+      R"("KHR_materials_diffuse_transmission":{"diffuseTransmissionFactor":0.3}}})");
+  b.extensionsUsed = {"KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_diffuse_transmission"};
+  b.Node(R"({"mesh":0})");
+  const test::TempFile file(b.Json());
+  const std::string out = TempPath("cli-verbose-layers.png");
+  ProcessResult r =
+      RunVkpt({"--scene", file.path, "-v", "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
+  ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
+  EXPECT_NE(r.out.find("clearcoat 0.5 (roughness 0.25) sheen (1, 0.5, 0.25) roughness 0.75 diffuse transmission 0.3 "
+                       "(1, 1, 1)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("ignored: "), std::string::npos) << r.out;
+  std::remove(out.c_str());
+}
+
 void ExpectQuiet(const std::string& scene) {
   const std::string out = TempPath("cli-quiet.png");
   ProcessResult r = RunVkpt({"--scene", scene, "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);

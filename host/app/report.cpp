@@ -21,6 +21,22 @@ std::string AlphaNote(const Material& m) {
   return note;
 }
 
+// The layers and lobes a material adds to the metallic-roughness model, as -v lists them.
+std::string LayerNote(const Material& m) {
+  char note[192] = "";
+  int n = 0;
+  if (m.clearcoat > 0.0f)
+    n +=
+        std::snprintf(note + n, sizeof note - n, " clearcoat %.3g (roughness %.3g)", m.clearcoat, m.clearcoatRoughness);
+  if (m.sheenColor != glm::vec3(0.0f))
+    n += std::snprintf(note + n, sizeof note - n, " sheen (%.3g, %.3g, %.3g) roughness %.3g", m.sheenColor.x,
+                       m.sheenColor.y, m.sheenColor.z, m.sheenRoughness);
+  if (m.diffuseTransmission > 0.0f)
+    std::snprintf(note + n, sizeof note - n, " diffuse transmission %.3g (%.3g, %.3g, %.3g)", m.diffuseTransmission,
+                  m.diffuseTransmissionColor.x, m.diffuseTransmissionColor.y, m.diffuseTransmissionColor.z);
+  return note;
+}
+
 std::string DiffPath(const std::string& out) {
   size_t dot = out.find_last_of('.');
   return out.substr(0, dot) + "-diff.png";
@@ -87,10 +103,10 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
     const Material& m = scene.materials[i];
     std::printf(
         "  material %zu \"%s\": baseColor (%.4g, %.4g, %.4g) metallic %.3g roughness %.3g specular %.3g ior %.3g "
-        "transmission %.3g%s emission (%.6g, %.6g, %.6g)%s%s%s\n",
+        "transmission %.3g%s emission (%.6g, %.6g, %.6g)%s%s%s%s\n",
         i, scene.materialNames[i].c_str(), m.baseColor.x, m.baseColor.y, m.baseColor.z, m.metallic, m.roughness,
         m.specular, m.ior, m.transmission, m.volume ? " (volume)" : "", m.emission.x, m.emission.y, m.emission.z,
-        m.doubleSided ? " double-sided" : "", m.unlit ? " unlit" : "", AlphaNote(m).c_str());
+        LayerNote(m).c_str(), m.doubleSided ? " double-sided" : "", m.unlit ? " unlit" : "", AlphaNote(m).c_str());
   }
   if (!scene.colors.empty()) std::printf("  vertex colours (COLOR_0): multiply the base colour\n");
   if (!scene.textures.empty()) {
