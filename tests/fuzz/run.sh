@@ -13,7 +13,9 @@
 # Seeds, read in place from the external test data ($VKPT_TEST_DATA or ../shared) and
 # never copied into the repository:
 #   loader   every .gltf/.glb of gltf-corpus/, the PBR feature models under 4 MB
-#            (gltf-pbr/: textures, alpha, material extensions) and scenes/*.gltf
+#            (gltf-pbr/: textures, alpha, material extensions), the extension models
+#            under 4 MB (gltf-ext/: clear coat, sheen, variants, skins...) and
+#            scenes/*.gltf
 #   env      gltf-pbr/environments/*.hdr, and small .hdr/.exr files fuzz_seeds writes
 #   texture  the PNG and JPEG files under 64 KB of gltf-pbr/ and gltf-corpus/, and small
 #            ones fuzz_seeds writes in each pixel layout
@@ -38,6 +40,7 @@ build=${2:-build-fuzz}
 data=${VKPT_TEST_DATA:-../shared}
 corpus=$data/gltf-corpus
 pbr=$data/gltf-pbr
+ext=$data/gltf-ext
 if [ "$mode" = split ]; then
   each=$((seconds / ${#targets[@]}))
   [ "$each" -ge 1 ] || each=1
@@ -66,7 +69,8 @@ seeds_of() {
   case "$1" in
     loader)
       find "$corpus/valid" "$corpus/invalid" scenes -type f \( -name '*.gltf' -o -name '*.glb' \)
-      if [ -d "$pbr" ]; then find "$pbr" -type f \( -name '*.gltf' -o -name '*.glb' \) -size -4M; fi ;;
+      if [ -d "$pbr" ]; then find "$pbr" -type f \( -name '*.gltf' -o -name '*.glb' \) -size -4M; fi
+      if [ -d "$ext" ]; then find "$ext" -type f \( -name '*.gltf' -o -name '*.glb' \) -size -4M; fi ;;
     env)
       if [ -d "$pbr/environments" ]; then find "$pbr/environments" -type f -name '*.hdr'; fi
       find "$scratch/generated/env" -type f ;;
