@@ -539,6 +539,16 @@ TEST(Cli, VerboseReportsTrianglesAndIgnoredFeatures) {
   std::remove(out.c_str());
 }
 
+// `vkpt -v` on the model `b` builds, 16 × 16 at 1 spp, writing image `name` and removing it.
+ProcessResult RunVerboseOn(const test::GltfBuilder& b, const std::string& name) {
+  const test::TempFile file(b.Json());
+  const std::string out = TempPath(name);
+  ProcessResult r =
+      RunVkpt({"--scene", file.path, "-v", "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
+  std::remove(out.c_str());
+  return r;
+}
+
 // The same report for a textured triangle built in code (a 2 × 2 PNG in a bufferView).
 TEST(Cli, VerboseReportsTheTexturesOfAGeneratedModel) {
   test::GltfBuilder b;
@@ -552,15 +562,11 @@ TEST(Cli, VerboseReportsTheTexturesOfAGeneratedModel) {
                      R"(,"mimeType":"image/png"})");
   b.textures.push_back(R"({"source":0})");
   b.Node(R"({"mesh":0})");
-  const test::TempFile file(b.Json());
-  const std::string out = TempPath("cli-verbose-generated.png");
-  ProcessResult r =
-      RunVkpt({"--scene", file.path, "-v", "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
+  ProcessResult r = RunVerboseOn(b, "cli-verbose-generated.png");
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
   EXPECT_TRUE(std::regex_search(r.out, std::regex("triangles: 1\\b"))) << r.out;
   EXPECT_TRUE(std::regex_search(r.out, std::regex("textures: 1 from 1 images, 4 texels"))) << r.out;
   EXPECT_EQ(r.out.find("ignored: "), std::string::npos) << r.out;
-  std::remove(out.c_str());
 }
 
 // The layers a material adds (coat, sheen, diffuse transmission) are listed with it.
@@ -574,17 +580,13 @@ TEST(Cli, VerboseListsAMaterialsLayers) {
       R"("KHR_materials_diffuse_transmission":{"diffuseTransmissionFactor":0.3}}})");
   b.extensionsUsed = {"KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_diffuse_transmission"};
   b.Node(R"({"mesh":0})");
-  const test::TempFile file(b.Json());
-  const std::string out = TempPath("cli-verbose-layers.png");
-  ProcessResult r =
-      RunVkpt({"--scene", file.path, "-v", "--width", "16", "--height", "16", "--spp", "1", "--out", out}, 60.0);
+  ProcessResult r = RunVerboseOn(b, "cli-verbose-layers.png");
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
   EXPECT_NE(r.out.find("clearcoat 0.5 (roughness 0.25) sheen (1, 0.5, 0.25) roughness 0.75 diffuse transmission 0.3 "
                        "(1, 1, 1)"),
             std::string::npos)
       << r.out;
   EXPECT_EQ(r.out.find("ignored: "), std::string::npos) << r.out;
-  std::remove(out.c_str());
 }
 
 void ExpectQuiet(const std::string& scene) {
