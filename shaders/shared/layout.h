@@ -1,4 +1,5 @@
-// Every GPU-visible struct and binding index, shared by C++ and GLSL.
+// Every GPU-visible struct and binding index, shared by C++ and GLSL (the textures' in
+// texture_layout.h).
 //
 // All structs follow std430 rules and are built only from 4-byte scalars and
 // (vec3, 4-byte scalar) pairs, so the C++ layout (glm::vec3 = 12 bytes, align 4)
@@ -8,6 +9,8 @@
 #ifndef VKPT_LAYOUT_H
 #define VKPT_LAYOUT_H
 #include "prelude.h"
+
+#include "texture_layout.h"  // the textures' structs and the material's texture slots
 
 VKPT_BEGIN_NAMESPACE
 
@@ -194,61 +197,6 @@ struct TriangleTangents {
   uint signs;
 };
 const uint kTangentsMissing = 8u;
-
-// A texture: an image with its mip levels in the texel store, and how it is sampled.
-// Level l is max(1, width >> l) × max(1, height >> l) texels, row-major from the image's
-// top row. The store holds at `offset` one word per level, the offset of that level,
-// then the levels.
-struct Texture {
-  uint offset;  // in words (RGBA8 texels) of the store
-  uint width;
-  uint height;
-  uint mode;  // kTextureWrapS* | kTextureWrapT* | filters | kTextureSrgb | levels << kTextureLevelShift
-};
-// Wrap modes (glTF sampler wrapS/wrapT), 2 bits each.
-const uint kWrapRepeat = 0u;
-const uint kWrapClampToEdge = 1u;
-const uint kWrapMirroredRepeat = 2u;
-const uint kTextureWrapSShift = 0u;
-const uint kTextureWrapTShift = 2u;
-const uint kTextureMagLinear = 16u;   // magFilter LINEAR (else NEAREST)
-const uint kTextureMinLinear = 32u;   // minFilter *LINEAR* within a level (else NEAREST)
-const uint kTextureMipNearest = 64u;  // minFilter *_MIPMAP_NEAREST: the nearest level
-const uint kTextureMipLinear = 128u;  // minFilter *_MIPMAP_LINEAR: between two levels (neither: level 0)
-const uint kTextureSrgb = 256u;       // RGB bytes are sRGB-encoded (base colour, emissive, specular colour)
-const uint kTextureLevelShift = 16u;  // the number of levels, 1 + floor(log2(max(width, height)))
-// The byte → float tables: [0, 256) sRGB to linear, [256, 512) byte / 255, each exactly rounded.
-const uint kTexelDecodeSize = 512u;
-const uint kTexelDecodeLinear = 256u;
-
-// A material's use of a texture (glTF textureInfo): which texture, which TEXCOORD set,
-// and the KHR_texture_transform as a 2×3 matrix, uv' = (m00 u + m01 v + m02, m10 u + m11 v + m12).
-struct TextureRef {
-  uint texture;   // index into the Texture table, or kInvalidIndex: the slot is unused
-  uint texCoord;  // 0 or 1
-  float m00;
-  float m01;
-  float m02;
-  float m10;
-  float m11;
-  float m12;
-};
-// The texture slots of a material, kTextureSlots TextureRefs each (kBindingMaterialTextures).
-const uint kSlotBaseColor = 0u;                  // RGB × baseColor, A × alpha
-const uint kSlotMetallicRoughness = 1u;          // G × roughness, B × metallic
-const uint kSlotEmissive = 2u;                   // RGB × emission
-const uint kSlotNormal = 3u;                     // tangent-space normal (shared/normal_map.h)
-const uint kSlotTransmission = 4u;               // R × transmission (KHR_materials_transmission)
-const uint kSlotSpecular = 5u;                   // A × specular (KHR_materials_specular)
-const uint kSlotSpecularColor = 6u;              // RGB × specularColor (KHR_materials_specular)
-const uint kSlotClearcoat = 7u;                  // R × clearcoat (KHR_materials_clearcoat)
-const uint kSlotClearcoatRoughness = 8u;         // G × clearcoatRoughness
-const uint kSlotClearcoatNormal = 9u;            // the coat's tangent-space normal
-const uint kSlotSheenColor = 10u;                // RGB × sheenColor (KHR_materials_sheen)
-const uint kSlotSheenRoughness = 11u;            // A × sheenRoughness
-const uint kSlotDiffuseTransmission = 12u;       // A × diffuseTransmission (KHR_materials_diffuse_transmission)
-const uint kSlotDiffuseTransmissionColor = 13u;  // RGB × diffuseTransmissionColor
-const uint kTextureSlots = 14u;
 
 // Light types (shared/lights.h).
 const uint kLightTriangle = 0u;          // emits from its front face
