@@ -12,6 +12,7 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev    # glTF loading and schema checks
   libstb-dev libtinyexr-dev             # PNG and EXR writers
   libgtest-dev                          # tests
+  colord-data                           # tests: the CIE 1931 matching functions (iridescence)
   libembree-dev                         # vkpt-bench compares against Embree
   libopenmpi-dev openmpi-bin            # optional: mpirun -n N vkpt shares a frame (tests use it)
   clang-format                          # scripts/check-format.sh

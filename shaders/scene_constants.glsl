@@ -56,6 +56,9 @@ layout(constant_id = 14) const uint kSceneHasSheen = 1u;
 // 0 when no triangle's material transmits diffusely: see shared/bsdf.h.
 layout(constant_id = 15) const uint kSceneHasDiffuseTransmission = 1u;
 #define VKPT_DIFFUSE_TRANSMISSION (kSceneHasDiffuseTransmission != 0u)
+// 0 when no triangle's material is iridescent: see shared/iridescence.h.
+layout(constant_id = 16) const uint kSceneHasIridescence = 1u;
+#define VKPT_IRIDESCENCE (kSceneHasIridescence != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

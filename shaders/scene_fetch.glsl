@@ -86,6 +86,10 @@ Triangle FetchTriangle(uint k) {
   return t;
 }
 
+#ifndef VKPT_IRIDESCENCE
+#define VKPT_IRIDESCENCE true
+#endif
+
 Material FetchMaterial(uint m) {
   uvec4 a = texelFetch(materialTexels, int(kTexelsPerMaterial * m));
   uvec4 b = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 1u));
@@ -95,6 +99,8 @@ Material FetchMaterial(uint m) {
   uvec4 f = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 5u));
   uvec4 g = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 6u));
   uvec4 h = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 7u));
+  // The film's texel only where some material has one (scene_constants.glsl).
+  uvec4 i = VKPT_IRIDESCENCE ? texelFetch(materialTexels, int(kTexelsPerMaterial * m + 8u)) : uvec4(0u);
   Material mat;
   mat.baseColor = uintBitsToFloat(a.xyz);
   mat.metallic = uintBitsToFloat(a.w);
@@ -116,6 +122,10 @@ Material FetchMaterial(uint m) {
   mat.sheenRoughness = uintBitsToFloat(g.w);
   mat.diffuseTransmissionColor = uintBitsToFloat(h.xyz);
   mat.diffuseTransmission = uintBitsToFloat(h.w);
+  mat.iridescence = uintBitsToFloat(i.x);
+  mat.iridescenceIor = uintBitsToFloat(i.y);
+  mat.iridescenceThicknessMin = uintBitsToFloat(i.z);
+  mat.iridescenceThickness = uintBitsToFloat(i.w);
   return mat;
 }
 

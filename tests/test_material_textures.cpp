@@ -148,26 +148,36 @@ TEST(MaterialTextures, ExtensionTexturesFillTheirSlots) {
   EXPECT_EQ(ignored.find("specularTexture"), std::string::npos) << ignored;
 }
 
+// A textured triangle whose material has `extension` (required) with `properties`.
+Scene LoadExtension(const char* extension, const std::string& properties) {
+  GltfBuilder b = TexturedTriangle(std::string(R"({"extensions":{")") + extension + R"(":{)" + properties + "}}}");
+  b.extensionsUsed = b.extensionsRequired = {extension};
+  return Load(b);
+}
+
+// Slots `slots` of material 0 hold data (linear) textures.
+void ExpectDataSlots(const Scene& s, std::initializer_list<uint32_t> slots) {
+  for (uint32_t slot : slots) {
+    ASSERT_NE(Ref(s, 0, slot).texture, shader::kInvalidIndex) << slot;
+    EXPECT_FALSE(s.textures[Ref(s, 0, slot).texture].srgb) << slot;
+  }
+}
+
 // KHR_materials_clearcoat: its factors, its three textures in their slots (data, not
 // colour), its normal texture's scale and the tangents it needs; the extension is neither
 // ignored nor refused when required.
 TEST(MaterialTextures, ClearcoatFactorsAndTexturesAreRead) {
-  GltfBuilder b = TexturedTriangle(
-      R"({"extensions":{"KHR_materials_clearcoat":{"clearcoatFactor":0.7,"clearcoatRoughnessFactor":0.2,)"
-      R"("clearcoatTexture":{"index":0},"clearcoatRoughnessTexture":{"index":0,"texCoord":1},)"
-      R"("clearcoatNormalTexture":{"index":0,"scale":0.5}}}})");
-  b.extensionsUsed = b.extensionsRequired = {"KHR_materials_clearcoat"};
-  Scene s = Load(b);
+  Scene s = LoadExtension("KHR_materials_clearcoat",
+                          R"("clearcoatFactor":0.7,"clearcoatRoughnessFactor":0.2,"clearcoatTexture":{"index":0},)"
+                          R"("clearcoatRoughnessTexture":{"index":0,"texCoord":1},)"
+                          R"("clearcoatNormalTexture":{"index":0,"scale":0.5})");
   using namespace shader;
   const vkpt::Material& m = s.materials[0];
   EXPECT_FLOAT_EQ(m.clearcoat, 0.7f);
   EXPECT_FLOAT_EQ(m.clearcoatRoughness, 0.2f);
   EXPECT_FLOAT_EQ(m.clearcoatNormalScale, 0.5f);
   EXPECT_EQ(Ref(s, 0, kSlotClearcoatRoughness).texCoord, 1u);
-  for (uint32_t slot : {kSlotClearcoat, kSlotClearcoatRoughness, kSlotClearcoatNormal}) {
-    ASSERT_NE(Ref(s, 0, slot).texture, kInvalidIndex) << slot;
-    EXPECT_FALSE(s.textures[Ref(s, 0, slot).texture].srgb) << slot;
-  }
+  ExpectDataSlots(s, {kSlotClearcoat, kSlotClearcoatRoughness, kSlotClearcoatNormal});
   const shader::Material packed = PackMaterials(s).materials[0];
   EXPECT_EQ(packed.clearcoat, 0.7f);
   EXPECT_EQ(packed.clearcoatNormalScale, 0.5f);
@@ -192,11 +202,10 @@ void ExpectDataAndColourSlots(const Scene& s, uint32_t data, uint32_t colour) {
 // KHR_materials_sheen: its factors, its colour texture (sRGB) and roughness texture (data)
 // in their slots; the extension is neither ignored nor refused when required.
 TEST(MaterialTextures, SheenFactorsAndTexturesAreRead) {
-  GltfBuilder b = TexturedTriangle(
-      R"({"extensions":{"KHR_materials_sheen":{"sheenColorFactor":[0.9,0.5,0.2],"sheenRoughnessFactor":0.4,)"
-      R"("sheenColorTexture":{"index":0},"sheenRoughnessTexture":{"index":0,"texCoord":1}}}})");
-  b.extensionsUsed = b.extensionsRequired = {"KHR_materials_sheen"};
-  Scene s = Load(b);
+  Scene s =
+      LoadExtension("KHR_materials_sheen",
+                    R"("sheenColorFactor":[0.9,0.5,0.2],"sheenRoughnessFactor":0.4,"sheenColorTexture":{"index":0},)"
+                    R"("sheenRoughnessTexture":{"index":0,"texCoord":1})");
   using namespace shader;
   EXPECT_EQ(s.materials[0].sheenColor, glm::vec3(0.9f, 0.5f, 0.2f));
   EXPECT_FLOAT_EQ(s.materials[0].sheenRoughness, 0.4f);
@@ -214,12 +223,10 @@ TEST(MaterialTextures, SheenFactorsAndTexturesAreRead) {
 // KHR_materials_diffuse_transmission: its factors (colour white when absent), its factor
 // texture (data, A) and colour texture (sRGB) in their slots; not ignored, not refused.
 TEST(MaterialTextures, DiffuseTransmissionFactorsAndTexturesAreRead) {
-  GltfBuilder b = TexturedTriangle(
-      R"({"extensions":{"KHR_materials_diffuse_transmission":{"diffuseTransmissionFactor":0.25,)"
-      R"("diffuseTransmissionColorFactor":[1,0.9,0.85],"diffuseTransmissionTexture":{"index":0,"texCoord":1},)"
-      R"("diffuseTransmissionColorTexture":{"index":0}}}})");
-  b.extensionsUsed = b.extensionsRequired = {"KHR_materials_diffuse_transmission"};
-  Scene s = Load(b);
+  Scene s = LoadExtension("KHR_materials_diffuse_transmission",
+                          R"("diffuseTransmissionFactor":0.25,"diffuseTransmissionColorFactor":[1,0.9,0.85],)"
+                          R"("diffuseTransmissionTexture":{"index":0,"texCoord":1},)"
+                          R"("diffuseTransmissionColorTexture":{"index":0})");
   using namespace shader;
   EXPECT_FLOAT_EQ(s.materials[0].diffuseTransmission, 0.25f);
   EXPECT_EQ(s.materials[0].diffuseTransmissionColor, glm::vec3(1.0f, 0.9f, 0.85f));
@@ -234,6 +241,36 @@ TEST(MaterialTextures, DiffuseTransmissionFactorsAndTexturesAreRead) {
   EXPECT_EQ(plain.diffuseTransmissionColor, glm::vec3(1.0f));
 }
 
+// KHR_materials_iridescence: its factors (the extension's defaults when absent), its
+// factor (R) and thickness (G) textures in their slots as data; not ignored, not refused.
+TEST(MaterialTextures, IridescenceFactorsAndTexturesAreRead) {
+  Scene s = LoadExtension(
+      "KHR_materials_iridescence",
+      R"("iridescenceFactor":0.8,"iridescenceIor":1.6,"iridescenceThicknessMinimum":150,"iridescenceThicknessMaximum":900,)"
+      R"("iridescenceTexture":{"index":0},"iridescenceThicknessTexture":{"index":0,"texCoord":1})");
+  using namespace shader;
+  const vkpt::Material& m = s.materials[0];
+  EXPECT_FLOAT_EQ(m.iridescence, 0.8f);
+  EXPECT_FLOAT_EQ(m.iridescenceIor, 1.6f);
+  EXPECT_FLOAT_EQ(m.iridescenceThicknessMin, 150.0f);
+  EXPECT_FLOAT_EQ(m.iridescenceThicknessMax, 900.0f);
+  ExpectDataSlots(s, {kSlotIridescence, kSlotIridescenceThickness});
+  EXPECT_EQ(Ref(s, 0, kSlotIridescenceThickness).texCoord, 1u);
+  const shader::Material packed = PackMaterials(s).materials[0];
+  EXPECT_EQ(packed.iridescence, 0.8f);
+  EXPECT_EQ(packed.iridescenceIor, 1.6f);
+  EXPECT_EQ(packed.iridescenceThicknessMin, 150.0f);
+  EXPECT_EQ(packed.iridescenceThickness, 900.0f);
+  EXPECT_FALSE(IsLambertian(packed));
+  for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("iridescence"), std::string::npos) << f;
+  const vkpt::Material plain =
+      Load(TexturedTriangle(R"({"extensions":{"KHR_materials_iridescence":{}}})")).materials[0];
+  EXPECT_EQ(plain.iridescence, 0.0f);
+  EXPECT_EQ(plain.iridescenceIor, 1.3f);
+  EXPECT_EQ(plain.iridescenceThicknessMin, 100.0f);
+  EXPECT_EQ(plain.iridescenceThicknessMax, 400.0f);
+}
+
 TEST(MaterialTextures, ExtensionFactorsOutOfRangeAreNamed) {
   const std::pair<const char*, const char*> kBad[] = {
       {"KHR_materials_clearcoat", R"("clearcoatFactor":1.5)"},
@@ -244,7 +281,11 @@ TEST(MaterialTextures, ExtensionFactorsOutOfRangeAreNamed) {
       {"KHR_materials_sheen", R"("sheenColorFactor":[1,1])"},
       {"KHR_materials_sheen", R"("sheenRoughnessFactor":2)"},
       {"KHR_materials_diffuse_transmission", R"("diffuseTransmissionFactor":-0.5)"},
-      {"KHR_materials_diffuse_transmission", R"("diffuseTransmissionColorFactor":[0.5,2,0.5])"}};
+      {"KHR_materials_diffuse_transmission", R"("diffuseTransmissionColorFactor":[0.5,2,0.5])"},
+      {"KHR_materials_iridescence", R"("iridescenceFactor":1.2)"},
+      {"KHR_materials_iridescence", R"("iridescenceIor":0.5)"},
+      {"KHR_materials_iridescence", R"("iridescenceThicknessMinimum":-1)"},
+      {"KHR_materials_iridescence", R"("iridescenceThicknessMaximum":1e9)"}};
   for (const auto& [extension, bad] : kBad) {
     try {
       Load(TexturedTriangle(std::string(R"({"extensions":{")") + extension + R"(":{)" + bad + "}}}"));

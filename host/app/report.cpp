@@ -23,7 +23,7 @@ std::string AlphaNote(const Material& m) {
 
 // The layers and lobes a material adds to the metallic-roughness model, as -v lists them.
 std::string LayerNote(const Material& m) {
-  char note[192] = "";
+  char note[256] = "";
   int n = 0;
   if (m.clearcoat > 0.0f)
     n +=
@@ -32,8 +32,15 @@ std::string LayerNote(const Material& m) {
     n += std::snprintf(note + n, sizeof note - n, " sheen (%.3g, %.3g, %.3g) roughness %.3g", m.sheenColor.x,
                        m.sheenColor.y, m.sheenColor.z, m.sheenRoughness);
   if (m.diffuseTransmission > 0.0f)
-    std::snprintf(note + n, sizeof note - n, " diffuse transmission %.3g (%.3g, %.3g, %.3g)", m.diffuseTransmission,
-                  m.diffuseTransmissionColor.x, m.diffuseTransmissionColor.y, m.diffuseTransmissionColor.z);
+    n +=
+        std::snprintf(note + n, sizeof note - n, " diffuse transmission %.3g (%.3g, %.3g, %.3g)", m.diffuseTransmission,
+                      m.diffuseTransmissionColor.x, m.diffuseTransmissionColor.y, m.diffuseTransmissionColor.z);
+  if (m.iridescence > 0.0f) {
+    // Without a thickness texture the film is as thick as its maximum.
+    float thin = m.iridescenceThicknessTexture.Present() ? m.iridescenceThicknessMin : m.iridescenceThicknessMax;
+    std::snprintf(note + n, sizeof note - n, " iridescence %.3g (ior %.3g, %.4g-%.4g nm)", m.iridescence,
+                  m.iridescenceIor, thin, m.iridescenceThicknessMax);
+  }
   return note;
 }
 

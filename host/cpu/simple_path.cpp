@@ -35,6 +35,7 @@
 #define VKPT_CLEARCOAT false
 #define VKPT_SHEEN false
 #define VKPT_DIFFUSE_TRANSMISSION false
+#define VKPT_IRIDESCENCE false
 #undef VKPT_TEXTURES
 #define VKPT_TEXTURES false
 #undef VKPT_NORMAL_MAPS

@@ -23,6 +23,8 @@ const SlotTexture kSlots[] = {
     {shader::kSlotSheenRoughness, &Material::sheenRoughnessTexture},
     {shader::kSlotDiffuseTransmission, &Material::diffuseTransmissionTexture},
     {shader::kSlotDiffuseTransmissionColor, &Material::diffuseTransmissionColorTexture},
+    {shader::kSlotIridescence, &Material::iridescenceTexture},
+    {shader::kSlotIridescenceThickness, &Material::iridescenceThicknessTexture},
 };
 static_assert(sizeof kSlots / sizeof kSlots[0] == shader::kTextureSlots);
 
@@ -70,6 +72,10 @@ shader::Material PackMaterial(const Material& m) {
   g.sheenRoughness = m.sheenRoughness;
   g.diffuseTransmission = m.diffuseTransmission;
   g.diffuseTransmissionColor = m.diffuseTransmissionColor;
+  g.iridescence = m.iridescence;
+  g.iridescenceIor = m.iridescenceIor;
+  g.iridescenceThicknessMin = m.iridescenceThicknessMin;
+  g.iridescenceThickness = m.iridescenceThicknessMax;
   g.flags = (m.doubleSided ? shader::kMaterialDoubleSided : 0u) | (m.unlit ? shader::kMaterialUnlit : 0u) |
             (m.volume ? shader::kMaterialVolume : 0u) | AlphaBits(m.alphaMode) | TextureBits(m);
   return g;

@@ -61,6 +61,8 @@ bool UsesClearcoat(const RenderScene& scene);
 bool UsesSheen(const RenderScene& scene);
 // And whether some triangle's material transmits diffusely (KHR_materials_diffuse_transmission).
 bool UsesDiffuseTransmission(const RenderScene& scene);
+// And whether some triangle's material is iridescent (KHR_materials_iridescence).
+bool UsesIridescence(const RenderScene& scene);
 
 // Whether the scene has lights meant to light it: punctual lights, or emissive triangles
 // whose emission is not painted by an emissive texture (a texture paints screens, dials

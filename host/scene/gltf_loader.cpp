@@ -107,19 +107,13 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
 
 // Extensions whose every property vkpt renders.
 bool IsRenderedExtension(const std::string& ext) {
-  static const char* const kRendered[] = {"KHR_materials_clearcoat",
-                                          "KHR_materials_diffuse_transmission",
-                                          "KHR_materials_sheen",
-                                          "KHR_materials_variants",
-                                          "KHR_materials_emissive_strength",
-                                          "KHR_materials_ior",
-                                          "KHR_materials_specular",
-                                          "KHR_materials_transmission",
-                                          "KHR_materials_volume",
-                                          "KHR_materials_unlit",
-                                          "KHR_lights_punctual",
-                                          "KHR_mesh_quantization",
-                                          "KHR_texture_transform"};
+  static const char* const kRendered[] = {"KHR_materials_clearcoat",    "KHR_materials_diffuse_transmission",
+                                          "KHR_materials_iridescence",  "KHR_materials_sheen",
+                                          "KHR_materials_variants",     "KHR_materials_emissive_strength",
+                                          "KHR_materials_ior",          "KHR_materials_specular",
+                                          "KHR_materials_transmission", "KHR_materials_volume",
+                                          "KHR_materials_unlit",        "KHR_lights_punctual",
+                                          "KHR_mesh_quantization",      "KHR_texture_transform"};
   return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
 }
 

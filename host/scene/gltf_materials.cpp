@@ -37,6 +37,7 @@ class MaterialReader {
     ReadClearcoat(mat);
     ReadSheen(mat);
     ReadDiffuseTransmission(mat);
+    ReadIridescence(mat);
     mat.doubleSided = in_.doubleSided;
     mat.unlit = in_.extensions.count("KHR_materials_unlit") != 0;
     ReadVolume(mat);
@@ -117,6 +118,26 @@ class MaterialReader {
       mat.diffuseTransmissionColor =
           Color(NumberArray(*c, "KHR_materials_diffuse_transmission.diffuseTransmissionColorFactor"), 3,
                 "KHR_materials_diffuse_transmission.diffuseTransmissionColorFactor", 1.0);
+  }
+
+  // KHR_materials_iridescence's factors (its textures are gltf_textures.cpp's).
+  void ReadIridescence(Material& mat) const {
+    const char* ext = "KHR_materials_iridescence";
+    mat.iridescence =
+        float(Unit(ExtensionNumber(ext, "iridescenceFactor", 0.0), "KHR_materials_iridescence.iridescenceFactor"));
+    const double ior = ExtensionNumber(ext, "iridescenceIor", 1.3);
+    if (!(ior >= 1.0 && ior <= 1e6)) Fail("KHR_materials_iridescence.iridescenceIor is not in [1, 1e6]");
+    mat.iridescenceIor = float(ior);
+    mat.iridescenceThicknessMin = Thickness(ExtensionNumber(ext, "iridescenceThicknessMinimum", 100.0),
+                                            "KHR_materials_iridescence.iridescenceThicknessMinimum");
+    mat.iridescenceThicknessMax = Thickness(ExtensionNumber(ext, "iridescenceThicknessMaximum", 400.0),
+                                            "KHR_materials_iridescence.iridescenceThicknessMaximum");
+  }
+
+  // A film's thickness in nm: at most 1 mm, where its colours have long averaged out.
+  float Thickness(double v, const char* field) const {
+    if (!(v >= 0.0 && v <= 1e6)) Fail(std::string(field) + " is not in [0, 1e6] nm");
+    return float(v);
   }
 
   [[noreturn]] void Fail(const std::string& what) const { src_.Fail(name_ + "." + what); }

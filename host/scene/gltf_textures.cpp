@@ -59,6 +59,13 @@ const ExtensionSlot kExtensionSlots[] = {
       "extensions.KHR_materials_diffuse_transmission.diffuseTransmissionColorTexture", true},
      "KHR_materials_diffuse_transmission",
      "diffuseTransmissionColorTexture"},
+    {{&Material::iridescenceTexture, "extensions.KHR_materials_iridescence.iridescenceTexture", false},
+     "KHR_materials_iridescence",
+     "iridescenceTexture"},
+    {{&Material::iridescenceThicknessTexture, "extensions.KHR_materials_iridescence.iridescenceThicknessTexture",
+      false},
+     "KHR_materials_iridescence",
+     "iridescenceThicknessTexture"},
 };
 
 using Wrap = TextureSampler::Wrap;

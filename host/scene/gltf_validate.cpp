@@ -16,6 +16,7 @@ const std::set<std::string> kSupportedRequiredExtensions = {"KHR_lights_punctual
                                                             "KHR_materials_diffuse_transmission",
                                                             "KHR_materials_emissive_strength",
                                                             "KHR_materials_ior",
+                                                            "KHR_materials_iridescence",
                                                             "KHR_materials_sheen",
                                                             "KHR_materials_specular",
                                                             "KHR_materials_transmission",

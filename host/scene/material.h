@@ -62,6 +62,11 @@ struct Material {
   // KHR_materials_diffuse_transmission: the diffuse base passed through (shared/bsdf.h).
   float diffuseTransmission = 0.0f;  // 0: none
   glm::vec3 diffuseTransmissionColor{1.0f};
+  // KHR_materials_iridescence: a thin film on the material (shared/iridescence.h).
+  float iridescence = 0.0f;  // 0: no film
+  float iridescenceIor = 1.3f;
+  float iridescenceThicknessMin = 100.0f;  // nm
+  float iridescenceThicknessMax = 400.0f;  // nm
 
   // The textures that scale the factors above (shared/material_textures.h says how).
   MaterialTexture baseColorTexture;                 // RGB × baseColor, A × alpha (sRGB)
@@ -78,6 +83,8 @@ struct Material {
   MaterialTexture sheenRoughnessTexture;            // A × sheenRoughness
   MaterialTexture diffuseTransmissionTexture;       // A × diffuseTransmission
   MaterialTexture diffuseTransmissionColorTexture;  // RGB × diffuseTransmissionColor (sRGB)
+  MaterialTexture iridescenceTexture;               // R × iridescence
+  MaterialTexture iridescenceThicknessTexture;      // G: the thickness from its minimum (0) to its maximum (1)
 
   // Whether some texture above is present.
   bool Textured() const {
@@ -85,7 +92,7 @@ struct Material {
          {&baseColorTexture, &metallicRoughnessTexture, &emissiveTexture, &normalTexture, &transmissionTexture,
           &specularTexture, &specularColorTexture, &clearcoatTexture, &clearcoatRoughnessTexture,
           &clearcoatNormalTexture, &sheenColorTexture, &sheenRoughnessTexture, &diffuseTransmissionTexture,
-          &diffuseTransmissionColorTexture})
+          &diffuseTransmissionColorTexture, &iridescenceTexture, &iridescenceThicknessTexture})
       if (t->Present()) return true;
     return false;
   }

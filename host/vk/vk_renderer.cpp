@@ -66,6 +66,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
       hasClearcoat_(UsesClearcoat(scene)),
       hasSheen_(UsesSheen(scene)),
       hasDiffuseTransmission_(UsesDiffuseTransmission(scene)),
+      hasIridescence_(UsesIridescence(scene)),
       hasTextures_(!scene.textureRefs.empty()),
       hasNormalMaps_(!scene.tangents.empty()),
       hasAlpha_(scene.alphaTested),
@@ -114,7 +115,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           uvs_.twoBuffers ? 1u : 0u,
           hasClearcoat_ ? 1u : 0u,
           hasSheen_ ? 1u : 0u,
-          hasDiffuseTransmission_ ? 1u : 0u};
+          hasDiffuseTransmission_ ? 1u : 0u,
+          hasIridescence_ ? 1u : 0u};
 }
 
 std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams& frame,

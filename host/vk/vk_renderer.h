@@ -94,6 +94,7 @@ class GpuRenderer {
   bool hasClearcoat_;                // some triangle's material has a clear coat
   bool hasSheen_;                    // some triangle's material has a sheen
   bool hasDiffuseTransmission_;      // some triangle's material transmits diffusely
+  bool hasIridescence_;              // some triangle's material is iridescent
   bool hasTextures_;                 // some material has a texture
   bool hasNormalMaps_;               // some material has a normal texture
   bool hasAlpha_;                    // some triangle's material is alpha MASK or BLEND

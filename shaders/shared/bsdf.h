@@ -43,6 +43,10 @@
 // energy; transmission T, where both are present, takes its share first (the extension's
 // mix(mix(diffuse_brdf, diffuse_btdf, dt), specular_btdf, T)).
 //
+// KHR_materials_iridescence (iridescence.h) mixes a thin film's reflectance into Fd and
+// Fm (and 1 − Fd of the transmission lobe), and scales the diffuse base by what the film
+// changes in its layer's albedo at μo (bsdf_prepare.h's PrepareFilm).
+//
 // KHR_materials_sheen (sheen.h) lays a fibre lobe over all of this, the base weighted by
 // 1 − max(sheenColor) E_s(μo), and KHR_materials_clearcoat (clearcoat.h) a GGX coat lobe
 // over that, everything under it weighted by 1 − c A_c(μo).
@@ -81,12 +85,12 @@ VKPT_FN vec3 EvalTransmission(Bsdf b, vec3 wo, vec3 wi) {
   float weight = b.transmission * b.glassScale;
   if (b.etap == 1.0f) {
     vec3 h = normalize(wo + MirrorThroughSurface(wi));
-    vec3 f = vec3(1.0f) - DielectricFresnel(b.f0, b.f90, dot(wo, h), 1.0f);
+    vec3 f = vec3(1.0f) - DielectricLayerFresnel(b, dot(wo, h));
     return (weight * GgxD(h, b.alpha) * GgxVisibility(wo.z, -wi.z, b.alpha)) * f * b.baseColor;
   }
   vec3 m = RefractionHalfVector(wo, wi, b.etap);
   if (m.z == 0.0f) return vec3(0.0f);
-  vec3 f = vec3(1.0f) - DielectricFresnel(b.f0, b.f90, dot(wo, m), b.etap);
+  vec3 f = vec3(1.0f) - DielectricLayerFresnel(b, dot(wo, m));
   return (weight * GgxRefraction(wo, wi, m, b.etap, b.alpha)) * f * b.baseColor;
 }
 
@@ -114,10 +118,9 @@ VKPT_FN vec3 EvalBase(Bsdf b, vec3 wo, vec3 wi) {
   }
   vec3 h = normalize(wo + wi);
   float cosOH = dot(wo, h);
-  vec3 fd = DielectricFresnel(b.f0, b.f90, cosOH, b.etap);
+  vec3 fd = DielectricLayerFresnel(b, cosOH);
   // The transmissive share's reflection is scaled with its transmission (+0 when opaque).
-  vec3 fresnel = mix(fd, SchlickFresnel(b.baseColor, vec3(1.0f), cosOH), b.metallic) +
-                 fd * (b.transmission * (b.glassScale - 1.0f));
+  vec3 fresnel = mix(fd, MetalFresnel(b, cosOH), b.metallic) + fd * (b.transmission * (b.glassScale - 1.0f));
   vec3 f = fresnel * (GgxD(h, b.alpha) * GgxVisibility(wo.z, wi.z, b.alpha));
   vec2 ei = GgxAlbedo(wi.z, b.alpha);
   f += b.msWeight * ((1.0f - b.albedoO) * (1.0f - ei.x) * b.invMsNorm);

@@ -146,6 +146,10 @@ struct Material {
   float sheenRoughness;
   vec3 diffuseTransmissionColor;  // KHR_materials_diffuse_transmission
   float diffuseTransmission;      // the share of the diffuse base transmitted (0: none)
+  float iridescence;              // KHR_materials_iridescence: the film's weight (0: no film)
+  float iridescenceIor;           // the film's index
+  float iridescenceThicknessMin;  // nm, where the thickness texture's G is 0
+  float iridescenceThickness;     // nm: the maximum (G = 1), the film's thickness once textured
 };
 
 const uint kShadingHasNormals = 1u;
@@ -226,7 +230,7 @@ struct Light {
 // 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
 const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
-const uint kTexelsPerMaterial = 8u;
+const uint kTexelsPerMaterial = 9u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
 const uint kTexelsPerColors = 2u;

@@ -7,7 +7,8 @@
 // factor and roughness (its normal texture is shading_frame.h's), KHR_materials_sheen's
 // colour texture the sheen's colour and its roughness texture's A channel its roughness,
 // KHR_materials_diffuse_transmission's A channel its factor and its colour texture its
-// colour.
+// colour, KHR_materials_iridescence's R channel its factor and its thickness texture's G
+// channel the film's thickness between its minimum and maximum.
 //
 // Scene access, as in texture.h, plus
 //   VKPT_TEXTURE_REF(i)  TextureRef i: slot s of material m is i = m · kTextureSlots + s
@@ -30,8 +31,8 @@
 #ifndef VKPT_EXTENSION_TEXTURES
 #define VKPT_EXTENSION_TEXTURES true
 #endif
-// And clearcoat.h's VKPT_CLEARCOAT, sheen.h's VKPT_SHEEN and bsdf.h's
-// VKPT_DIFFUSE_TRANSMISSION (not included here: path.h's seams must come first).
+// And clearcoat.h's VKPT_CLEARCOAT, sheen.h's VKPT_SHEEN, bsdf.h's
+// VKPT_DIFFUSE_TRANSMISSION and iridescence.h's VKPT_IRIDESCENCE (not included here: path.h's seams must come first).
 #ifndef VKPT_CLEARCOAT
 #define VKPT_CLEARCOAT true
 #endif
@@ -40,6 +41,9 @@
 #endif
 #ifndef VKPT_DIFFUSE_TRANSMISSION
 #define VKPT_DIFFUSE_TRANSMISSION true
+#endif
+#ifndef VKPT_IRIDESCENCE
+#define VKPT_IRIDESCENCE true
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -98,6 +102,11 @@ VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, ui
       mat.diffuseTransmission *= SampleSlot(VKPT_SCENE_ARG material, kSlotDiffuseTransmission, uvs, b1, b2, data).a;
       mat.diffuseTransmissionColor *=
           vec3(SampleSlot(VKPT_SCENE_ARG material, kSlotDiffuseTransmissionColor, uvs, b1, b2, footprint));
+    }
+    if (VKPT_IRIDESCENCE && mat.iridescence > 0.0f) {
+      mat.iridescence *= SampleSlot(VKPT_SCENE_ARG material, kSlotIridescence, uvs, b1, b2, data).r;
+      float g = SampleSlot(VKPT_SCENE_ARG material, kSlotIridescenceThickness, uvs, b1, b2, data).g;
+      mat.iridescenceThickness = mix(mat.iridescenceThicknessMin, mat.iridescenceThickness, g);
     }
   }
 }

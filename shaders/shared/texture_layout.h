@@ -60,7 +60,9 @@ const uint kSlotSheenColor = 10u;                // RGB × sheenColor (KHR_mater
 const uint kSlotSheenRoughness = 11u;            // A × sheenRoughness
 const uint kSlotDiffuseTransmission = 12u;       // A × diffuseTransmission (KHR_materials_diffuse_transmission)
 const uint kSlotDiffuseTransmissionColor = 13u;  // RGB × diffuseTransmissionColor
-const uint kTextureSlots = 14u;
+const uint kSlotIridescence = 14u;               // R × iridescence (KHR_materials_iridescence)
+const uint kSlotIridescenceThickness = 15u;      // G: the film's thickness between its minimum and maximum
+const uint kTextureSlots = 16u;
 
 VKPT_END_NAMESPACE
 
