@@ -59,6 +59,9 @@ layout(constant_id = 15) const uint kSceneHasDiffuseTransmission = 1u;
 // 0 when no triangle's material is iridescent: see shared/iridescence.h.
 layout(constant_id = 16) const uint kSceneHasIridescence = 1u;
 #define VKPT_IRIDESCENCE (kSceneHasIridescence != 0u)
+// 0 when no triangle's material is anisotropic: see shared/microfacet.h.
+layout(constant_id = 17) const uint kSceneHasAnisotropy = 1u;
+#define VKPT_ANISOTROPY (kSceneHasAnisotropy != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

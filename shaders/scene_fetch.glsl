@@ -89,6 +89,9 @@ Triangle FetchTriangle(uint k) {
 #ifndef VKPT_IRIDESCENCE
 #define VKPT_IRIDESCENCE true
 #endif
+#ifndef VKPT_ANISOTROPY
+#define VKPT_ANISOTROPY true
+#endif
 
 Material FetchMaterial(uint m) {
   uvec4 a = texelFetch(materialTexels, int(kTexelsPerMaterial * m));
@@ -99,8 +102,10 @@ Material FetchMaterial(uint m) {
   uvec4 f = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 5u));
   uvec4 g = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 6u));
   uvec4 h = texelFetch(materialTexels, int(kTexelsPerMaterial * m + 7u));
-  // The film's texel only where some material has one (scene_constants.glsl).
+  // The film's and the anisotropy's texels only where some material has them
+  // (scene_constants.glsl).
   uvec4 i = VKPT_IRIDESCENCE ? texelFetch(materialTexels, int(kTexelsPerMaterial * m + 8u)) : uvec4(0u);
+  uvec4 j = VKPT_ANISOTROPY ? texelFetch(materialTexels, int(kTexelsPerMaterial * m + 9u)) : uvec4(0u);
   Material mat;
   mat.baseColor = uintBitsToFloat(a.xyz);
   mat.metallic = uintBitsToFloat(a.w);
@@ -126,6 +131,9 @@ Material FetchMaterial(uint m) {
   mat.iridescenceIor = uintBitsToFloat(i.y);
   mat.iridescenceThicknessMin = uintBitsToFloat(i.z);
   mat.iridescenceThickness = uintBitsToFloat(i.w);
+  mat.anisotropy = uintBitsToFloat(j.x);
+  mat.anisotropyRotation = uintBitsToFloat(j.y);
+  mat.anisotropyDirection = uintBitsToFloat(j.zw);
   return mat;
 }
 

@@ -236,6 +236,24 @@ inline Albedo EstimateAlbedo(const Material& m, float muO, uint32_t seed, int st
 }
 
 // ---------------------------------------------------------------------------------------
+// Two materials from `make(u)` (a pair) that must be one BSDF bit for bit: f, pdf and
+// sample weights for `n` random ωo, ωi on either side and either face.
+template <class Make>
+void ExpectSameBsdf(uint32_t seed, int n, const Make& make) {
+  Uniform u(seed);
+  for (int i = 0; i < n; ++i) {
+    const auto [m1, m2] = make(u);
+    const vec3 wo = u.Hemisphere(), wi = u() < 0.5f ? u.Hemisphere() : MirrorThroughSurface(u.Hemisphere());
+    const bool front = u() < 0.7f;
+    const Bsdf a = PrepareBsdf(m1, wo, front, kUp), b = PrepareBsdf(m2, wo, front, kUp);
+    ASSERT_EQ(EvalBsdf(a, wo, wi), EvalBsdf(b, wo, wi)) << i;
+    ASSERT_EQ(BsdfPdf(a, wo, wi), BsdfPdf(b, wo, wi)) << i;
+    const vec3 v(u(), u(), u());
+    ASSERT_EQ(SampleBsdf(a, wo, v).weight, SampleBsdf(b, wo, v).weight) << i;
+  }
+}
+
+// ---------------------------------------------------------------------------------------
 // Every sample's weight is f cos / pdf, its pdf BsdfPdf's, for `n` random materials and
 // shading normals from `make(u)` (a Material and the coat's normal), ωo on the upper
 // hemisphere, either face.

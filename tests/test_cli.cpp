@@ -578,14 +578,15 @@ TEST(Cli, VerboseListsAMaterialsLayers) {
       R"({"extensions":{"KHR_materials_clearcoat":{"clearcoatFactor":0.5,"clearcoatRoughnessFactor":0.25},)"
       R"("KHR_materials_sheen":{"sheenColorFactor":[1,0.5,0.25],"sheenRoughnessFactor":0.75},)"
       R"("KHR_materials_diffuse_transmission":{"diffuseTransmissionFactor":0.3},)"
-      R"("KHR_materials_iridescence":{"iridescenceFactor":1,"iridescenceThicknessMaximum":500}}})");
+      R"("KHR_materials_iridescence":{"iridescenceFactor":1,"iridescenceThicknessMaximum":500},)"
+      R"("KHR_materials_anisotropy":{"anisotropyStrength":0.5,"anisotropyRotation":1}}})");
   b.extensionsUsed = {"KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_diffuse_transmission",
-                      "KHR_materials_iridescence"};
+                      "KHR_materials_iridescence", "KHR_materials_anisotropy"};
   b.Node(R"({"mesh":0})");
   ProcessResult r = RunVerboseOn(b, "cli-verbose-layers.png");
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
   EXPECT_NE(r.out.find("clearcoat 0.5 (roughness 0.25) sheen (1, 0.5, 0.25) roughness 0.75 diffuse transmission 0.3 "
-                       "(1, 1, 1) iridescence 1 (ior 1.3, 500-500 nm)"),
+                       "(1, 1, 1) anisotropy 0.5 (rotation 1 rad) iridescence 1 (ior 1.3, 500-500 nm)"),
             std::string::npos)
       << r.out;
   EXPECT_EQ(r.out.find("ignored: "), std::string::npos) << r.out;

@@ -575,7 +575,8 @@ INSTANTIATE_TEST_SUITE_P(
                       // Its normal map, repeated 30 times, parts the backends' paths in 1.2 %
                       // of the channels, with or without the sheen (1.27 % without).
                       PbrModel{"SheenCloth/glTF/SheenCloth.gltf", true, "gltf-ext", 0.02},
-                      PbrModel{"IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb", true, "gltf-ext"}),
+                      PbrModel{"IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb", true, "gltf-ext"},
+                      PbrModel{"AnisotropyStrengthTest/glTF-Binary/AnisotropyStrengthTest.glb", true, "gltf-ext"}),
     [](const auto& info) {
       std::string n = info.param.file.substr(0, info.param.file.find('/'));
       return n;
@@ -596,10 +597,11 @@ TEST_F(GpuTest, ClearcoatedCornellAgreesOnBothBackends) {
 
 // The Cornell box with a sheen on every material (colours and roughnesses varied), every
 // one passing part of its diffuse base through, tinted, a clear coat on every other one
-// and a thin film on the rest (thicknesses varied): the sheen lobe, its table and
-// sampler, the diffusely transmitted lobe, light sampled through walls and escaping the
-// box, the film's Fresnel, and the layering, in lockstep on both backends and in
-// statistics with other seeds.
+// and a thin film on the rest (thicknesses varied), anisotropic on two of three (without
+// tangents: each frame's own x axis): the sheen lobe, its table and sampler, the
+// diffusely transmitted lobe, light sampled through walls and escaping the box, the
+// film's Fresnel, the anisotropic lobe, and the layering, in lockstep on both backends and
+// in statistics with other seeds.
 TEST_F(GpuTest, LayeredMaterialsCornellAgreesOnBothBackends) {
   Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
   for (size_t m = 0; m < s.materials.size(); ++m) {
@@ -611,6 +613,9 @@ TEST_F(GpuTest, LayeredMaterialsCornellAgreesOnBothBackends) {
     s.materials[m].clearcoatRoughness = 0.2f;
     s.materials[m].iridescence = m % 2 ? 1.0f : 0.0f;
     s.materials[m].iridescenceThicknessMax = m % 3 ? 300.0f : 700.0f;
+    s.materials[m].roughness = 0.4f;
+    s.materials[m].anisotropyStrength = m % 3 ? 0.8f : 0.0f;
+    s.materials[m].anisotropyRotation = 0.5f * float(m);
   }
   RenderScene rs = PrepareRenderScene(s);
   ExpectBackendsAgree(rs, Params(rs, s, 48, 48, 16, 1, 8), "layered Cornell box");

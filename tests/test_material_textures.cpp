@@ -271,6 +271,28 @@ TEST(MaterialTextures, IridescenceFactorsAndTexturesAreRead) {
   EXPECT_EQ(plain.iridescenceThicknessMax, 400.0f);
 }
 
+// KHR_materials_anisotropy: its factors (rotation taken to (−π, π]), its texture (data)
+// in its slot, the direction packed as the rotation's (cos, sin), and tangents generated
+// for it without a normal map; not ignored, not refused.
+TEST(MaterialTextures, AnisotropyFactorsAndTextureAreRead) {
+  Scene s = LoadExtension("KHR_materials_anisotropy",
+                          R"("anisotropyStrength":0.6,"anisotropyRotation":7.85398,"anisotropyTexture":{"index":0})");
+  using namespace shader;
+  const vkpt::Material& m = s.materials[0];
+  EXPECT_FLOAT_EQ(m.anisotropyStrength, 0.6f);
+  EXPECT_NEAR(m.anisotropyRotation, 0.5f * kPi, 1e-5f) << "7.85398 rad is a quarter turn and two half turns";
+  ExpectDataSlots(s, {kSlotAnisotropy});
+  const shader::Material packed = PackMaterials(s).materials[0];
+  EXPECT_EQ(packed.anisotropy, 0.6f);
+  EXPECT_NEAR(packed.anisotropyDirection.x, 0.0f, 1e-5f);
+  EXPECT_NEAR(packed.anisotropyDirection.y, 1.0f, 1e-5f);
+  EXPECT_EQ(s.generatedTangentPrimitives, 1u);
+  EXPECT_FALSE(PrepareRenderScene(s).tangents.empty()) << "the anisotropic lobe needs tangents";
+  for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("anisotropy"), std::string::npos) << f;
+  const vkpt::Material plain = Load(TexturedTriangle("{}")).materials[0];
+  EXPECT_EQ(plain.anisotropyStrength, 0.0f);
+}
+
 TEST(MaterialTextures, ExtensionFactorsOutOfRangeAreNamed) {
   const std::pair<const char*, const char*> kBad[] = {
       {"KHR_materials_clearcoat", R"("clearcoatFactor":1.5)"},
@@ -285,7 +307,9 @@ TEST(MaterialTextures, ExtensionFactorsOutOfRangeAreNamed) {
       {"KHR_materials_iridescence", R"("iridescenceFactor":1.2)"},
       {"KHR_materials_iridescence", R"("iridescenceIor":0.5)"},
       {"KHR_materials_iridescence", R"("iridescenceThicknessMinimum":-1)"},
-      {"KHR_materials_iridescence", R"("iridescenceThicknessMaximum":1e9)"}};
+      {"KHR_materials_iridescence", R"("iridescenceThicknessMaximum":1e9)"},
+      {"KHR_materials_anisotropy", R"("anisotropyStrength":-0.2)"},
+      {"KHR_materials_anisotropy", R"("anisotropyRotation":1e300)"}};
   for (const auto& [extension, bad] : kBad) {
     try {
       Load(TexturedTriangle(std::string(R"({"extensions":{")") + extension + R"(":{)" + bad + "}}}"));

@@ -35,6 +35,9 @@ std::string LayerNote(const Material& m) {
     n +=
         std::snprintf(note + n, sizeof note - n, " diffuse transmission %.3g (%.3g, %.3g, %.3g)", m.diffuseTransmission,
                       m.diffuseTransmissionColor.x, m.diffuseTransmissionColor.y, m.diffuseTransmissionColor.z);
+  if (m.anisotropyStrength > 0.0f)
+    n += std::snprintf(note + n, sizeof note - n, " anisotropy %.3g (rotation %.3g rad)", m.anisotropyStrength,
+                       m.anisotropyRotation);
   if (m.iridescence > 0.0f) {
     // Without a thickness texture the film is as thick as its maximum.
     float thin = m.iridescenceThicknessTexture.Present() ? m.iridescenceThicknessMin : m.iridescenceThicknessMax;

@@ -36,6 +36,8 @@
 #define VKPT_SHEEN false
 #define VKPT_DIFFUSE_TRANSMISSION false
 #define VKPT_IRIDESCENCE false
+#undef VKPT_ANISOTROPY
+#define VKPT_ANISOTROPY false
 #undef VKPT_TEXTURES
 #define VKPT_TEXTURES false
 #undef VKPT_NORMAL_MAPS

@@ -18,7 +18,7 @@ static_assert(sizeof(BvhNode) == 32);
 static_assert(offsetof(BvhNode, lo) == 0 && offsetof(BvhNode, skip) == 12);
 static_assert(offsetof(BvhNode, hi) == 16 && offsetof(BvhNode, leaf) == 28);
 
-static_assert(sizeof(Material) == 144);
+static_assert(sizeof(Material) == 160);
 static_assert(offsetof(Material, baseColor) == 0 && offsetof(Material, metallic) == 12);
 static_assert(offsetof(Material, emission) == 16 && offsetof(Material, roughness) == 28);
 static_assert(offsetof(Material, specularColor) == 32 && offsetof(Material, specular) == 44);
@@ -30,6 +30,7 @@ static_assert(offsetof(Material, clearcoatNormalScale) == 92 && offsetof(Materia
 static_assert(offsetof(Material, sheenRoughness) == 108 && offsetof(Material, diffuseTransmissionColor) == 112);
 static_assert(offsetof(Material, diffuseTransmission) == 124 && offsetof(Material, iridescence) == 128);
 static_assert(offsetof(Material, iridescenceThicknessMin) == 136 && offsetof(Material, iridescenceThickness) == 140);
+static_assert(offsetof(Material, anisotropy) == 144 && offsetof(Material, anisotropyDirection) == 152);
 
 static_assert(sizeof(Light) == 64);
 static_assert(offsetof(Light, position) == 0 && offsetof(Light, triangle) == 12);

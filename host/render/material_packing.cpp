@@ -25,6 +25,7 @@ const SlotTexture kSlots[] = {
     {shader::kSlotDiffuseTransmissionColor, &Material::diffuseTransmissionColorTexture},
     {shader::kSlotIridescence, &Material::iridescenceTexture},
     {shader::kSlotIridescenceThickness, &Material::iridescenceThicknessTexture},
+    {shader::kSlotAnisotropy, &Material::anisotropyTexture},
 };
 static_assert(sizeof kSlots / sizeof kSlots[0] == shader::kTextureSlots);
 
@@ -76,6 +77,9 @@ shader::Material PackMaterial(const Material& m) {
   g.iridescenceIor = m.iridescenceIor;
   g.iridescenceThicknessMin = m.iridescenceThicknessMin;
   g.iridescenceThickness = m.iridescenceThicknessMax;
+  g.anisotropy = m.anisotropyStrength;
+  g.anisotropyRotation = m.anisotropyRotation;
+  g.anisotropyDirection = glm::vec2(std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation));
   g.flags = (m.doubleSided ? shader::kMaterialDoubleSided : 0u) | (m.unlit ? shader::kMaterialUnlit : 0u) |
             (m.volume ? shader::kMaterialVolume : 0u) | AlphaBits(m.alphaMode) | TextureBits(m);
   return g;

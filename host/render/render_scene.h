@@ -63,6 +63,8 @@ bool UsesSheen(const RenderScene& scene);
 bool UsesDiffuseTransmission(const RenderScene& scene);
 // And whether some triangle's material is iridescent (KHR_materials_iridescence).
 bool UsesIridescence(const RenderScene& scene);
+// And whether some triangle's material is anisotropic (KHR_materials_anisotropy).
+bool UsesAnisotropy(const RenderScene& scene);
 
 // Whether the scene has lights meant to light it: punctual lights, or emissive triangles
 // whose emission is not painted by an emissive texture (a texture paints screens, dials

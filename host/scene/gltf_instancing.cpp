@@ -22,7 +22,7 @@ class Instancer {
         meshes_(meshes),
         scene_(scene),
         withUVs_(HasMaterialTextures(scene)),
-        withTangents_(UsesNormalMaps(scene)) {}
+        withTangents_(UsesTangents(scene)) {}
 
   void Run() {
     for (size_t s = 0; s < src_.m.scenes.size(); ++s)

@@ -73,9 +73,9 @@ uint64_t DecodedBytes(const GltfSource& src, int accessor) {
 // The memory the meshes will take, counted before any is decoded: each primitive's
 // positions, normals, colours and indices, and every triangle of every instance through to the
 // renderer.
-// `textured`, `normalMapped`: the scene keeps the texture coordinates, the tangents of
+// `textured`, `tangents`: the scene keeps the texture coordinates, the tangents of
 // every triangle.
-void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, bool textured, bool normalMapped,
+void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, bool textured, bool tangents,
                     MemoryBudget& budget) {
   for (size_t i = 0; i < src.m.meshes.size(); ++i) {
     uint64_t decoded = 0, triangles = 0, colored = 0;
@@ -99,21 +99,38 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
     if (textured)
       budget.Charge(SaturatingMul(total, kBytesPerTexturedTriangle),
                     name + " (texture coordinates of " + std::to_string(total) + " triangles)");
-    if (normalMapped)
+    if (tangents)
       budget.Charge(SaturatingMul(total, kBytesPerTangentTriangle),
                     name + " (tangents of " + std::to_string(total) + " triangles)");
   }
 }
 
+// The TEXCOORD set a material's tangents follow: its base's normal texture's, else its
+// coat's, else its anisotropy texture's, else 0 for an anisotropic material; −1: it needs
+// none.
+int TangentUVSet(const Material& mat) {
+  for (const MaterialTexture* t : {&mat.normalTexture, &mat.clearcoatNormalTexture, &mat.anisotropyTexture})
+    if (t->Present()) return int(t->texCoord);
+  return mat.anisotropyStrength > 0.0f ? 0 : -1;
+}
+
 // Extensions whose every property vkpt renders.
 bool IsRenderedExtension(const std::string& ext) {
-  static const char* const kRendered[] = {"KHR_materials_clearcoat",    "KHR_materials_diffuse_transmission",
-                                          "KHR_materials_iridescence",  "KHR_materials_sheen",
-                                          "KHR_materials_variants",     "KHR_materials_emissive_strength",
-                                          "KHR_materials_ior",          "KHR_materials_specular",
-                                          "KHR_materials_transmission", "KHR_materials_volume",
-                                          "KHR_materials_unlit",        "KHR_lights_punctual",
-                                          "KHR_mesh_quantization",      "KHR_texture_transform"};
+  static const char* const kRendered[] = {"KHR_materials_anisotropy",
+                                          "KHR_materials_clearcoat",
+                                          "KHR_materials_diffuse_transmission",
+                                          "KHR_materials_iridescence",
+                                          "KHR_materials_sheen",
+                                          "KHR_materials_variants",
+                                          "KHR_materials_emissive_strength",
+                                          "KHR_materials_ior",
+                                          "KHR_materials_specular",
+                                          "KHR_materials_transmission",
+                                          "KHR_materials_volume",
+                                          "KHR_materials_unlit",
+                                          "KHR_lights_punctual",
+                                          "KHR_mesh_quantization",
+                                          "KHR_texture_transform"};
   return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
 }
 
@@ -153,21 +170,22 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, const std::stri
   CheckTexturesAndMaterials(src);
   const uint32_t defaultMaterial = LoadMaterials(src, scene);
   LoadTextures(src, limits, budget, scene);
-  const bool textured = HasMaterialTextures(scene), normalMapped = UsesNormalMaps(scene);
+  const bool textured = HasMaterialTextures(scene), tangents = UsesTangents(scene);
   const std::vector<int> parents = CheckNodeGraph(src);
-  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), textured, normalMapped, budget);
+  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), textured, tangents, budget);
   scene.materialVariants = ReadVariants(src);
   scene.variant = ResolveVariant(src, scene.materialVariants, variant);
-  const MeshDecoding decoding{defaultMaterial, textured, normalMapped, scene.variant, scene.materialVariants.size()};
+  // Texture coordinates are decoded where tangents are generated from them, kept where
+  // textures read them.
+  const MeshDecoding decoding{defaultMaterial, textured || tangents, tangents, scene.variant,
+                              scene.materialVariants.size()};
   std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
   for (size_t i = 0; i < src.m.meshes.size(); ++i) meshes[i] = DecodeMesh(src, int(i), decoding, scene.warnings);
   for (std::vector<DecodedPrimitive>& mesh : meshes)
     for (DecodedPrimitive& prim : mesh) {
-      if (!normalMapped) break;
-      // The tangents follow the base's normal texture's TEXCOORD, else the coat's.
-      const Material& mat = scene.materials[prim.material];
-      const MaterialTexture& ref = mat.normalTexture.Present() ? mat.normalTexture : mat.clearcoatNormalTexture;
-      if (ref.Present() && GenerateMissingTangents(prim, ref.texCoord)) ++scene.generatedTangentPrimitives;
+      if (!tangents) break;
+      const int uvSet = TangentUVSet(scene.materials[prim.material]);
+      if (uvSet >= 0 && GenerateMissingTangents(prim, uint32_t(uvSet))) ++scene.generatedTangentPrimitives;
     }
   CheckCameras(src);
   CheckLights(src);

@@ -38,6 +38,7 @@ class MaterialReader {
     ReadSheen(mat);
     ReadDiffuseTransmission(mat);
     ReadIridescence(mat);
+    ReadAnisotropy(mat);
     mat.doubleSided = in_.doubleSided;
     mat.unlit = in_.extensions.count("KHR_materials_unlit") != 0;
     ReadVolume(mat);
@@ -132,6 +133,17 @@ class MaterialReader {
                                             "KHR_materials_iridescence.iridescenceThicknessMinimum");
     mat.iridescenceThicknessMax = Thickness(ExtensionNumber(ext, "iridescenceThicknessMaximum", 400.0),
                                             "KHR_materials_iridescence.iridescenceThicknessMaximum");
+  }
+
+  // KHR_materials_anisotropy's factors (its texture is gltf_textures.cpp's).
+  void ReadAnisotropy(Material& mat) const {
+    const char* ext = "KHR_materials_anisotropy";
+    mat.anisotropyStrength =
+        float(Unit(ExtensionNumber(ext, "anisotropyStrength", 0.0), "KHR_materials_anisotropy.anisotropyStrength"));
+    const double rotation = ExtensionNumber(ext, "anisotropyRotation", 0.0);
+    if (!(std::abs(rotation) <= 1e6))
+      Fail("KHR_materials_anisotropy.anisotropyRotation is not a finite number of at most 1e6");
+    mat.anisotropyRotation = float(std::remainder(rotation, 2.0 * 3.14159265358979323846));
   }
 
   // A film's thickness in nm: at most 1 mm, where its colours have long averaged out.

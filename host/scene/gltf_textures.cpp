@@ -66,6 +66,9 @@ const ExtensionSlot kExtensionSlots[] = {
       false},
      "KHR_materials_iridescence",
      "iridescenceThicknessTexture"},
+    {{&Material::anisotropyTexture, "extensions.KHR_materials_anisotropy.anisotropyTexture", false},
+     "KHR_materials_anisotropy",
+     "anisotropyTexture"},
 };
 
 using Wrap = TextureSampler::Wrap;
@@ -255,9 +258,9 @@ bool IsAppliedExtensionTexture(const std::string& extension, const std::string& 
   return false;
 }
 
-bool UsesNormalMaps(const Scene& scene) {
+bool UsesTangents(const Scene& scene) {
   for (const Material& m : scene.materials)
-    if (m.normalTexture.Present() || m.clearcoatNormalTexture.Present()) return true;
+    if (m.normalTexture.Present() || m.clearcoatNormalTexture.Present() || m.anisotropyStrength > 0.0f) return true;
   return false;
 }
 

@@ -17,9 +17,9 @@ namespace vkpt {
 // when no material has a texture). `scene.materials` must be loaded, in glTF order.
 void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget& budget, Scene& scene);
 
-// Whether some material of the loaded scene has a normal texture (and so its triangles
-// need tangents).
-bool UsesNormalMaps(const Scene& scene);
+// Whether some material of the loaded scene has a normal texture or is anisotropic (and
+// so its triangles need tangents).
+bool UsesTangents(const Scene& scene);
 
 // Whether vkpt applies the texture `field` of material extension `extension` (the others
 // are listed by -v as ignored).

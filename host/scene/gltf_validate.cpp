@@ -12,6 +12,7 @@ namespace {
 // Extensions vkpt understands; a file that *requires* any other one is refused, as the
 // glTF spec demands of a loader that does not implement it.
 const std::set<std::string> kSupportedRequiredExtensions = {"KHR_lights_punctual",
+                                                            "KHR_materials_anisotropy",
                                                             "KHR_materials_clearcoat",
                                                             "KHR_materials_diffuse_transmission",
                                                             "KHR_materials_emissive_strength",

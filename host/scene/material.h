@@ -67,6 +67,9 @@ struct Material {
   float iridescenceIor = 1.3f;
   float iridescenceThicknessMin = 100.0f;  // nm
   float iridescenceThicknessMax = 400.0f;  // nm
+  // KHR_materials_anisotropy: the GGX lobe stretched along a direction (shared/microfacet.h).
+  float anisotropyStrength = 0.0f;  // 0: isotropic
+  float anisotropyRotation = 0.0f;  // radians, counter-clockwise from the tangent
 
   // The textures that scale the factors above (shared/material_textures.h says how).
   MaterialTexture baseColorTexture;                 // RGB × baseColor, A × alpha (sRGB)
@@ -85,6 +88,7 @@ struct Material {
   MaterialTexture diffuseTransmissionColorTexture;  // RGB × diffuseTransmissionColor (sRGB)
   MaterialTexture iridescenceTexture;               // R × iridescence
   MaterialTexture iridescenceThicknessTexture;      // G: the thickness from its minimum (0) to its maximum (1)
+  MaterialTexture anisotropyTexture;                // RG direction in tangent space, B × anisotropyStrength
 
   // Whether some texture above is present.
   bool Textured() const {
@@ -92,7 +96,7 @@ struct Material {
          {&baseColorTexture, &metallicRoughnessTexture, &emissiveTexture, &normalTexture, &transmissionTexture,
           &specularTexture, &specularColorTexture, &clearcoatTexture, &clearcoatRoughnessTexture,
           &clearcoatNormalTexture, &sheenColorTexture, &sheenRoughnessTexture, &diffuseTransmissionTexture,
-          &diffuseTransmissionColorTexture, &iridescenceTexture, &iridescenceThicknessTexture})
+          &diffuseTransmissionColorTexture, &iridescenceTexture, &iridescenceThicknessTexture, &anisotropyTexture})
       if (t->Present()) return true;
     return false;
   }

@@ -67,6 +67,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
       hasSheen_(UsesSheen(scene)),
       hasDiffuseTransmission_(UsesDiffuseTransmission(scene)),
       hasIridescence_(UsesIridescence(scene)),
+      hasAnisotropy_(UsesAnisotropy(scene)),
       hasTextures_(!scene.textureRefs.empty()),
       hasNormalMaps_(!scene.tangents.empty()),
       hasAlpha_(scene.alphaTested),
@@ -116,7 +117,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           hasClearcoat_ ? 1u : 0u,
           hasSheen_ ? 1u : 0u,
           hasDiffuseTransmission_ ? 1u : 0u,
-          hasIridescence_ ? 1u : 0u};
+          hasIridescence_ ? 1u : 0u,
+          hasAnisotropy_ ? 1u : 0u};
 }
 
 std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams& frame,

@@ -47,6 +47,10 @@
 // Fm (and 1 − Fd of the transmission lobe), and scales the diffuse base by what the film
 // changes in its layer's albedo at μo (bsdf_prepare.h's PrepareFilm).
 //
+// KHR_materials_anisotropy stretches the GGX lobe (reflected and transmitted) to
+// αx = mix(α, 1, strength²) along the frame's x axis, the anisotropy's direction, and
+// compensates it as the isotropic lobe of α = sqrt(αx αy) (bsdf_prepare.h).
+//
 // KHR_materials_sheen (sheen.h) lays a fibre lobe over all of this, the base weighted by
 // 1 − max(sheenColor) E_s(μo), and KHR_materials_clearcoat (clearcoat.h) a GGX coat lobe
 // over that, everything under it weighted by 1 − c A_c(μo).
@@ -86,12 +90,12 @@ VKPT_FN vec3 EvalTransmission(Bsdf b, vec3 wo, vec3 wi) {
   if (b.etap == 1.0f) {
     vec3 h = normalize(wo + MirrorThroughSurface(wi));
     vec3 f = vec3(1.0f) - DielectricLayerFresnel(b, dot(wo, h));
-    return (weight * GgxD(h, b.alpha) * GgxVisibility(wo.z, -wi.z, b.alpha)) * f * b.baseColor;
+    return (weight * GgxD(h, b.lobeAlpha) * GgxVisibility(wo, wi, b.lobeAlpha)) * f * b.baseColor;
   }
   vec3 m = RefractionHalfVector(wo, wi, b.etap);
   if (m.z == 0.0f) return vec3(0.0f);
   vec3 f = vec3(1.0f) - DielectricLayerFresnel(b, dot(wo, m));
-  return (weight * GgxRefraction(wo, wi, m, b.etap, b.alpha)) * f * b.baseColor;
+  return (weight * GgxRefraction(wo, wi, m, b.etap, b.lobeAlpha)) * f * b.baseColor;
 }
 
 // The diffuse base's albedo coupling c(|μi|) for ωi on either side, from the GGX table's
@@ -121,7 +125,7 @@ VKPT_FN vec3 EvalBase(Bsdf b, vec3 wo, vec3 wi) {
   vec3 fd = DielectricLayerFresnel(b, cosOH);
   // The transmissive share's reflection is scaled with its transmission (+0 when opaque).
   vec3 fresnel = mix(fd, MetalFresnel(b, cosOH), b.metallic) + fd * (b.transmission * (b.glassScale - 1.0f));
-  vec3 f = fresnel * (GgxD(h, b.alpha) * GgxVisibility(wo.z, wi.z, b.alpha));
+  vec3 f = fresnel * (GgxD(h, b.lobeAlpha) * GgxVisibility(wo, wi, b.lobeAlpha));
   vec2 ei = GgxAlbedo(wi.z, b.alpha);
   f += b.msWeight * ((1.0f - b.albedoO) * (1.0f - ei.x) * b.invMsNorm);
   float couplingI = CouplingI(b, ei.x, ei.y);
@@ -142,10 +146,16 @@ VKPT_FN vec3 EvalBsdf(Bsdf b, vec3 wo, vec3 wi) {
   return f;
 }
 
+// The density of the GGX lobe's reflected ωi (above the surface).
+VKPT_FN float SpecularPdf(Bsdf b, vec3 wo, vec3 wi) {
+  return IsIsotropic(b.lobeAlpha) ? GgxReflectionPdf(wo, wi, b.alpha)
+                                  : GgxAnisotropicReflectionPdf(wo, wi, b.lobeAlpha);
+}
+
 VKPT_FN float TransmissionPdf(Bsdf b, vec3 wo, vec3 wi) {
-  if (b.etap == 1.0f) return GgxReflectionPdf(wo, MirrorThroughSurface(wi), b.alpha);
+  if (b.etap == 1.0f) return SpecularPdf(b, wo, MirrorThroughSurface(wi));
   vec3 m = RefractionHalfVector(wo, wi, b.etap);
-  return m.z == 0.0f ? 0.0f : GgxRefractionPdf(wo, wi, m, b.etap, b.alpha);
+  return m.z == 0.0f ? 0.0f : GgxRefractionPdf(wo, wi, m, b.etap, b.lobeAlpha);
 }
 
 VKPT_FN float BsdfPdf(Bsdf b, vec3 wo, vec3 wi) {
@@ -158,7 +168,7 @@ VKPT_FN float BsdfPdf(Bsdf b, vec3 wo, vec3 wi) {
   }
   if (b.lambert) return CosineHemispherePdf(wi.z);
   float pdf =
-      b.pSpecular * GgxReflectionPdf(wo, wi, b.alpha) +
+      b.pSpecular * SpecularPdf(b, wo, wi) +
       (1.0f - b.pSpecular - b.pTransmission - b.pDiffuseTransmission - b.pSheen - b.pCoat) * CosineHemispherePdf(wi.z);
   if (VKPT_SHEEN && b.pSheen > 0.0f) pdf += b.pSheen * SheenPdf(wi, b.sheenAlpha);
   if (VKPT_CLEARCOAT && b.pCoat > 0.0f) pdf += b.pCoat * CoatPdf(b.coatNormal, b.coatAlpha, wo, wi);
@@ -175,7 +185,7 @@ VKPT_FN BsdfSample SampleBsdf(Bsdf b, vec3 wo, vec3 u) {
     s.weight = s.pdf > 0.0f ? b.baseColor : vec3(0.0f);
     return s;
   }
-  vec3 h = SampleGgxVisibleNormal(wo, b.alpha, u.y, u.z);
+  vec3 h = SampleGgxVisibleNormal(wo, b.lobeAlpha, u.y, u.z);
   vec3 specular = 2.0f * dot(wo, h) * h - wo;
   vec3 diffuse = SampleCosineHemisphere(u.y, u.z);
   vec3 transmitted = b.etap == 1.0f ? MirrorThroughSurface(specular) : Refract(wo, h, b.etap);

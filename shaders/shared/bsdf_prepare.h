@@ -35,10 +35,11 @@ VKPT_BEGIN_NAMESPACE
 struct Bsdf {
   vec3 baseColor;
   float metallic;
-  vec3 f0;        // dielectric Schlick F0 (metals use baseColor)
-  float f90;      // dielectric Schlick F90 (= specular)
-  vec3 msWeight;  // (1 − m − transmission) Fms_d + m Fms_m: weight of f_ms
-  float alpha;
+  vec3 f0;           // dielectric Schlick F0 (metals use baseColor)
+  float f90;         // dielectric Schlick F90 (= specular)
+  vec3 msWeight;     // (1 − m − transmission) Fms_d + m Fms_m: weight of f_ms
+  float alpha;       // the GGX lobe's α, or its anisotropic lobe's effective α for the albedo tables
+  vec2 lobeAlpha;    // (αx, αy) along the frame's axes: (α, α) unless anisotropic
   float albedoO;     // E(μo)
   float couplingO;   // c(μo) for the diffuse base (0 for metals)
   float invMsNorm;   // 1 / (π (1 − E_avg))
@@ -226,6 +227,16 @@ VKPT_FN void PrepareFilm(VKPT_INOUT(Bsdf) b, Material mat, float mu, vec2 e) {
   b.couplingO *= max(1.0f - a - delta, 0.0f) / max(1.0f - a, 1e-6f);
 }
 
+// KHR_materials_anisotropy (αx along the frame's x axis, the anisotropy's direction;
+// normal_map.h's AnisotropicFrame turns the frame so) is compensated as the isotropic
+// lobe of α = sqrt(αx αy), the one of the same stretched area: the albedo tables, the
+// multiple-scattering lobe and the diffuse coupling read it. The anisotropic lobe's
+// albedo depends on ωo's azimuth too, which no isotropic α follows: a white anisotropic
+// metal returns 0.93–1.03 at strength 0.5 and down to 0.58 at strength 1, where the lobe
+// is as rough as can be along x (docs/limits.md). Larger effective α (the root mean
+// square) lose less there but return up to 1.11 elsewhere, creating energy.
+VKPT_FN float AnisotropicAlbedoAlpha(vec2 alpha) { return sqrt(alpha.x * alpha.y); }
+
 // `frontFace`: ωo lies on the side the surface's winding faces (outside a volume);
 // `coatNormal`: the clear coat's normal in the shading frame (clearcoat.h).
 VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace, vec3 coatNormal) {
@@ -240,6 +251,11 @@ VKPT_FN Bsdf PrepareBsdf(Material mat, vec3 wo, bool frontFace, vec3 coatNormal)
   if (b.transmission > 0.0f && (mat.flags & kMaterialVolume) != 0u && mat.ior > 1.0f)
     b.etap = frontFace ? mat.ior : 1.0f / mat.ior;
   b.alpha = GgxAlpha(mat.roughness);
+  b.lobeAlpha = vec2(b.alpha);
+  if (VKPT_ANISOTROPY && mat.anisotropy > 0.0f) {
+    b.lobeAlpha.x = mix(b.alpha, 1.0f, mat.anisotropy * mat.anisotropy);
+    b.alpha = AnisotropicAlbedoAlpha(b.lobeAlpha);
+  }
   float r = (mat.ior - 1.0f) / (mat.ior + 1.0f);
   b.f0 = min(r * r * mat.specularColor, vec3(1.0f)) * mat.specular;
   b.f90 = mat.specular;

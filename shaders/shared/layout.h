@@ -150,6 +150,9 @@ struct Material {
   float iridescenceIor;           // the film's index
   float iridescenceThicknessMin;  // nm, where the thickness texture's G is 0
   float iridescenceThickness;     // nm: the maximum (G = 1), the film's thickness once textured
+  float anisotropy;               // KHR_materials_anisotropy: the strength (0: isotropic)
+  float anisotropyRotation;       // radians, counter-clockwise from the tangent
+  vec2 anisotropyDirection;       // in tangent space: (cos, sin) of the rotation, turned by the texture
 };
 
 const uint kShadingHasNormals = 1u;
@@ -230,7 +233,7 @@ struct Light {
 // 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
 const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
-const uint kTexelsPerMaterial = 9u;
+const uint kTexelsPerMaterial = 10u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerShading = 1u;
 const uint kTexelsPerColors = 2u;

@@ -8,7 +8,9 @@
 // colour texture the sheen's colour and its roughness texture's A channel its roughness,
 // KHR_materials_diffuse_transmission's A channel its factor and its colour texture its
 // colour, KHR_materials_iridescence's R channel its factor and its thickness texture's G
-// channel the film's thickness between its minimum and maximum.
+// channel the film's thickness between its minimum and maximum, KHR_materials_anisotropy's
+// B channel its strength and RG its direction in tangent space (2·RG − 1, turned by the
+// rotation; without the texture the rotation alone).
 //
 // Scene access, as in texture.h, plus
 //   VKPT_TEXTURE_REF(i)  TextureRef i: slot s of material m is i = m · kTextureSlots + s
@@ -32,7 +34,8 @@
 #define VKPT_EXTENSION_TEXTURES true
 #endif
 // And clearcoat.h's VKPT_CLEARCOAT, sheen.h's VKPT_SHEEN, bsdf.h's
-// VKPT_DIFFUSE_TRANSMISSION and iridescence.h's VKPT_IRIDESCENCE (not included here: path.h's seams must come first).
+// VKPT_DIFFUSE_TRANSMISSION, iridescence.h's VKPT_IRIDESCENCE and microfacet.h's
+// VKPT_ANISOTROPY (not included here: path.h's seams must come first).
 #ifndef VKPT_CLEARCOAT
 #define VKPT_CLEARCOAT true
 #endif
@@ -44,6 +47,9 @@
 #endif
 #ifndef VKPT_IRIDESCENCE
 #define VKPT_IRIDESCENCE true
+#endif
+#ifndef VKPT_ANISOTROPY
+#define VKPT_ANISOTROPY true
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -107,6 +113,16 @@ VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, ui
       mat.iridescence *= SampleSlot(VKPT_SCENE_ARG material, kSlotIridescence, uvs, b1, b2, data).r;
       float g = SampleSlot(VKPT_SCENE_ARG material, kSlotIridescenceThickness, uvs, b1, b2, data).g;
       mat.iridescenceThickness = mix(mat.iridescenceThicknessMin, mat.iridescenceThickness, g);
+    }
+    if (VKPT_ANISOTROPY && mat.anisotropy > 0.0f &&
+        VKPT_TEXTURE_REF(material * kTextureSlots + kSlotAnisotropy).texture != kInvalidIndex) {
+      vec4 t = SampleSlot(VKPT_SCENE_ARG material, kSlotAnisotropy, uvs, b1, b2, data);
+      mat.anisotropy *= t.b;
+      vec2 d = 2.0f * vec2(t) - vec2(1.0f);
+      float length2 = dot(d, d);
+      d = length2 > 0.0f ? d * inversesqrt(length2) : vec2(1.0f, 0.0f);
+      float c = cos(mat.anisotropyRotation), s = sin(mat.anisotropyRotation);
+      mat.anisotropyDirection = vec2(c * d.x - s * d.y, s * d.x + c * d.y);
     }
   }
 }

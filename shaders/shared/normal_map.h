@@ -1,12 +1,14 @@
 // Normal maps (glTF 2.0 §3.9.3, normalTexture): the texture holds a unit normal in the
 // tangent space of the surface, (T, B, N) with T the vertex tangent (glTF TANGENT, or
 // MikkTSpace tangents the loader generated), B = w · N × T and N the shading normal;
-// x and y are scaled by normalTexture.scale.
+// x and y are scaled by normalTexture.scale. The same tangent space orients
+// KHR_materials_anisotropy's lobe (AnisotropicFrame).
 #ifndef VKPT_NORMAL_MAP_H
 #define VKPT_NORMAL_MAP_H
 #include "prelude.h"  // first, as in every shared header
 
 #include "layout.h"
+#include "sampling.h"
 #include "shading_normal.h"
 
 VKPT_BEGIN_NAMESPACE
@@ -37,6 +39,24 @@ VKPT_FN vec3 PerturbedNormal(vec3 n, vec4 tangent, vec3 texel, float scale) {
   vec3 p = m.x * scale * t + m.y * scale * b + m.z * n;
   float p2 = dot(p, p);
   return p2 > 1e-12f ? p / sqrt(p2) : n;
+}
+
+// The shading frame turned about its normal so that its x axis is the anisotropy's
+// direction (KHR_materials_anisotropy; microfacet.h stretches the lobe along x):
+// `direction` in the tangent space of `tangent` (xyz, and w the bitangent's sign,
+// bitangent = w n × t as glTF defines it), projected on the shading plane. Without a
+// tangent (w = 0: none given and none generated, no texture coordinates) the frame keeps
+// its own, arbitrary but fixed x axis.
+VKPT_FN Frame AnisotropicFrame(Frame f, vec4 tangent, vec2 direction) {
+  if (tangent.w == 0.0f) return f;
+  vec3 t = vec3(tangent);
+  vec3 a = direction.x * t + direction.y * (tangent.w * cross(f.n, t));
+  a -= f.n * dot(a, f.n);
+  float length2 = dot(a, a);
+  if (!(length2 > 1e-12f)) return f;
+  f.t = a * inversesqrt(length2);
+  f.b = cross(f.n, f.t);
+  return f;
 }
 
 VKPT_END_NAMESPACE

@@ -33,6 +33,10 @@
 #ifndef VKPT_NORMAL_MAPS
 #define VKPT_NORMAL_MAPS true
 #endif
+// And microfacet.h's VKPT_ANISOTROPY (not included here: path.h's seams must come first).
+#ifndef VKPT_ANISOTROPY
+#define VKPT_ANISOTROPY true
+#endif
 
 VKPT_BEGIN_NAMESPACE
 
@@ -87,6 +91,16 @@ VKPT_FN vec4 VertexNormal(VKPT_SCENE_PARAM Triangle tri, HitRecord hit, vec3 ng,
   return abs(dot(interpolated, interpolated) - 1.0f) < 1e-3f ? vec4(interpolated, 1.0f) : vec4(ng, 0.0f);
 }
 
+// The frame the BSDF works in around the shading normal ns: its x axis along an
+// anisotropic material's direction (normal_map.h's AnisotropicFrame), else any.
+VKPT_FN Frame ShadingFrame(VKPT_SCENE_PARAM vec3 ns, uint sourceIndex, HitRecord hit, Material material) {
+  Frame f = FrameFromNormal(ns);
+  if (VKPT_ANISOTROPY && VKPT_NORMAL_MAPS && material.anisotropy > 0.0f)
+    f = AnisotropicFrame(f, InterpolatedTangent(VKPT_TANGENTS_OF(sourceIndex), hit.b1, hit.b2),
+                         material.anisotropyDirection);
+  return f;
+}
+
 // Surfaces scatter on both sides: the geometric normal is turned to face the ray, and
 // the shading normal with it. One-sided materials emit from their front face only
 // (glTF's winding). Textures are read at the mip level of a ray cone `coneWidth` wide at
@@ -137,7 +151,7 @@ VKPT_FN SurfaceHit MakeSurfaceHit(VKPT_SCENE_PARAM Ray ray, HitRecord hit, vec2 
   }
   // A flat surface needs no adaptation: the mirror direction of any ωo above it is above it.
   vec3 ns = n.w > 0.0f ? AdaptShadingNormal(frontFace ? vec3(n) : -vec3(n), sh.ng, -ray.dir) : sh.ng;
-  sh.frame = FrameFromNormal(ns);
+  sh.frame = ShadingFrame(VKPT_SCENE_ARG ns, tri.sourceIndex, hit, sh.material);
   sh.coatNormal = ns;
   if (coated) {
     sh.coatNormal = nc.w > 0.0f ? AdaptShadingNormal(frontFace ? vec3(nc) : -vec3(nc), sh.ng, -ray.dir) : sh.ng;

@@ -62,7 +62,8 @@ const uint kSlotDiffuseTransmission = 12u;       // A × diffuseTransmission (KH
 const uint kSlotDiffuseTransmissionColor = 13u;  // RGB × diffuseTransmissionColor
 const uint kSlotIridescence = 14u;               // R × iridescence (KHR_materials_iridescence)
 const uint kSlotIridescenceThickness = 15u;      // G: the film's thickness between its minimum and maximum
-const uint kTextureSlots = 16u;
+const uint kSlotAnisotropy = 16u;                // RG direction, B × anisotropy (KHR_materials_anisotropy)
+const uint kTextureSlots = 17u;
 
 VKPT_END_NAMESPACE
 
