@@ -24,6 +24,7 @@
 // backend's own, read by no shared header) and test (test builds only).
 //
 //   [language] VKPT_FN                  qualifier of free functions: inline / nothing
+//   [language] VKPT_RARE_FN             qualifier of functions few materials reach: out of line / nothing
 //   [language] VKPT_INOUT(T)            a parameter read and written: T& / inout T
 //   [language] VKPT_PRECISE             no FMA contraction: nothing (-ffp-contract=off) / precise
 //   [language] VKPT_BEGIN_NAMESPACE     opens vkpt::shader in C++; nothing in GLSL
@@ -78,6 +79,9 @@
 
 #ifndef VKPT_FN
 #error "backend contract: VKPT_FN is not defined"
+#endif
+#ifndef VKPT_RARE_FN
+#error "backend contract: VKPT_RARE_FN is not defined"
 #endif
 #ifndef VKPT_INOUT
 #error "backend contract: VKPT_INOUT is not defined"

@@ -216,7 +216,7 @@ VKPT_FN vec3 MetalFresnel(Bsdf b, float cosTheta) {
 // by (1 − A(μo) − δ) / (1 − A(μo)), as the extension weights it by 1 − max F, so it
 // returns what the layer does not reflect. The coupling c(μi) stays Schlick's, so the
 // scaling depends on μo only, as the sheen's does.
-VKPT_FN void PrepareFilm(VKPT_INOUT(Bsdf) b, Material mat, float mu, vec2 e) {
+VKPT_RARE_FN void PrepareFilm(VKPT_INOUT(Bsdf) b, Material mat, float mu, vec2 e) {
   if (mat.iridescence <= 0.0f || mat.iridescenceThickness <= 0.0f || b.etap < 1.0f) return;
   b.iridescence = mat.iridescence;
   b.filmIor = mat.iridescenceIor;

@@ -17,6 +17,10 @@ using uint = std::uint32_t;
 
 // Free functions in shared headers are `VKPT_FN`: inline in C++, plain in GLSL.
 #define VKPT_FN inline
+// A function only some materials reach (a film, an anisotropic lobe): out of line in C++,
+// so that the functions of the common path that call it stay small enough to inline (a
+// specialization constant drops it from a shader that does not need it).
+#define VKPT_RARE_FN [[gnu::noinline]] inline
 // A parameter the function reads and writes: a reference in C++, `inout` in GLSL.
 #define VKPT_INOUT(T) T&
 // A value whose computation no compiler may fuse into FMAs: GLSL's `precise`. C++ builds

@@ -2,6 +2,7 @@
 #ifndef VKPT_GLSL_PRELUDE_H
 #define VKPT_GLSL_PRELUDE_H
 #define VKPT_FN
+#define VKPT_RARE_FN
 #define VKPT_INOUT(T) inout T
 #define VKPT_PRECISE precise
 #define VKPT_BEGIN_NAMESPACE

@@ -89,7 +89,7 @@ const int kFilmTerms = 32;
 
 // The film's reflectance at cos θ1 to its normal, from air, on a base of normal-incidence
 // reflectance baseF0 (per channel); thickness in nm.
-VKPT_FN vec3 ThinFilmFresnel(float cosTheta1, float filmIor, float thickness, vec3 baseF0) {
+VKPT_RARE_FN vec3 ThinFilmFresnel(float cosTheta1, float filmIor, float thickness, vec3 baseF0) {
   float sin2Film = (1.0f - cosTheta1 * cosTheta1) / (filmIor * filmIor);
   if (sin2Film >= 1.0f) return vec3(1.0f);  // a film less dense than air reflects totally
   float cosTheta2 = sqrt(1.0f - sin2Film);

@@ -83,13 +83,14 @@ VKPT_FN vec3 SampleGgxVisibleNormal(vec3 wo, float alpha, float u1, float u2) {
 VKPT_FN bool IsIsotropic(vec2 alpha) { return !VKPT_ANISOTROPY || alpha.x == alpha.y; }
 
 // D(h) = 1 / (π αx αy (hx²/αx² + hy²/αy² + hz²)²).
-VKPT_FN float GgxD(vec3 h, vec2 alpha) {
-  if (IsIsotropic(alpha)) return GgxD(h, alpha.x);
+VKPT_RARE_FN float GgxAnisotropicD(vec3 h, vec2 alpha) {
   float a2 = alpha.x * alpha.y;
   vec3 f = vec3(alpha.y * h.x, alpha.x * h.y, a2 * h.z);
   float w2 = a2 / dot(f, f);
   return a2 * w2 * w2 / kPi;
 }
+
+VKPT_FN float GgxD(vec3 h, vec2 alpha) { return IsIsotropic(alpha) ? GgxD(h, alpha.x) : GgxAnisotropicD(h, alpha); }
 
 // sqrt(αx² x² + αy² y² + z²) for a unit direction w: the isotropic root at w's azimuth.
 VKPT_FN float GgxLambdaRoot(vec3 w, vec2 alpha) {
@@ -97,28 +98,35 @@ VKPT_FN float GgxLambdaRoot(vec3 w, vec2 alpha) {
   return sqrt(alpha.x * alpha.x * w.x * w.x + alpha.y * alpha.y * w.y * w.y + w.z * w.z);
 }
 
-// V for ωo above the surface and ωi on either side (|cos θi|).
-VKPT_FN float GgxVisibility(vec3 wo, vec3 wi, vec2 alpha) {
-  if (IsIsotropic(alpha)) return GgxVisibility(wo.z, abs(wi.z), alpha.x);
+VKPT_RARE_FN float GgxAnisotropicVisibility(vec3 wo, vec3 wi, vec2 alpha) {
   return 0.5f / (abs(wi.z) * GgxLambdaRoot(wo, alpha) + wo.z * GgxLambdaRoot(wi, alpha));
 }
 
+// V for ωo above the surface and ωi on either side (|cos θi|).
+VKPT_FN float GgxVisibility(vec3 wo, vec3 wi, vec2 alpha) {
+  return IsIsotropic(alpha) ? GgxVisibility(wo.z, abs(wi.z), alpha.x) : GgxAnisotropicVisibility(wo, wi, alpha);
+}
+
 // GgxReflectionPdf's anisotropic form (apart, as that one is a seam).
-VKPT_FN float GgxAnisotropicReflectionPdf(vec3 wo, vec3 wi, vec2 alpha) {
+VKPT_RARE_FN float GgxAnisotropicReflectionPdf(vec3 wo, vec3 wi, vec2 alpha) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
   vec3 h = normalize(wo + wi);
   return GgxD(h, alpha) / (2.0f * (wo.z + GgxLambdaRoot(wo, alpha)));
 }
 
 // Stretched by (αx, αy) instead of α.
-VKPT_FN vec3 SampleGgxVisibleNormal(vec3 wo, vec2 alpha, float u1, float u2) {
-  if (IsIsotropic(alpha)) return SampleGgxVisibleNormal(wo, alpha.x, u1, u2);
+VKPT_RARE_FN vec3 SampleGgxAnisotropicVisibleNormal(vec3 wo, vec2 alpha, float u1, float u2) {
   vec3 v = normalize(vec3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
   float phi = 2.0f * kPi * u1;
   float z = (1.0f - u2) * (1.0f + v.z) - v.z;
   float sinTheta = sqrt(max(0.0f, 1.0f - z * z));
   vec3 hStd = vec3(sinTheta * cos(phi), sinTheta * sin(phi), z) + v;
   return normalize(vec3(alpha.x * hStd.x, alpha.y * hStd.y, max(hStd.z, 0.0f)));
+}
+
+VKPT_FN vec3 SampleGgxVisibleNormal(vec3 wo, vec2 alpha, float u1, float u2) {
+  return IsIsotropic(alpha) ? SampleGgxVisibleNormal(wo, alpha.x, u1, u2)
+                            : SampleGgxAnisotropicVisibleNormal(wo, alpha, u1, u2);
 }
 
 VKPT_END_NAMESPACE

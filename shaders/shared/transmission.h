@@ -63,17 +63,25 @@ VKPT_FN float GgxRefractionPdf(vec3 wo, vec3 wi, vec3 m, float etap, float alpha
 }
 
 // The anisotropic lobe's (microfacet.h).
-VKPT_FN float GgxRefraction(vec3 wo, vec3 wi, vec3 m, float etap, vec2 alpha) {
-  if (IsIsotropic(alpha)) return GgxRefraction(wo, wi, m, etap, alpha.x);
+VKPT_RARE_FN float GgxAnisotropicRefraction(vec3 wo, vec3 wi, vec3 m, float etap, vec2 alpha) {
   float denom = etap * dot(wi, m) + dot(wo, m);
   return 4.0f * abs(dot(wi, m) * dot(wo, m)) * GgxD(m, alpha) * GgxVisibility(wo, wi, alpha) / (denom * denom);
 }
 
-VKPT_FN float GgxRefractionPdf(vec3 wo, vec3 wi, vec3 m, float etap, vec2 alpha) {
-  if (IsIsotropic(alpha)) return GgxRefractionPdf(wo, wi, m, etap, alpha.x);
+VKPT_FN float GgxRefraction(vec3 wo, vec3 wi, vec3 m, float etap, vec2 alpha) {
+  return IsIsotropic(alpha) ? GgxRefraction(wo, wi, m, etap, alpha.x)
+                            : GgxAnisotropicRefraction(wo, wi, m, etap, alpha);
+}
+
+VKPT_RARE_FN float GgxAnisotropicRefractionPdf(vec3 wo, vec3 wi, vec3 m, float etap, vec2 alpha) {
   float denom = etap * dot(wi, m) + dot(wo, m);
   float visibleD = 2.0f * dot(wo, m) * GgxD(m, alpha) / (wo.z + GgxLambdaRoot(wo, alpha));
   return visibleD * etap * etap * abs(dot(wi, m)) / (denom * denom);
+}
+
+VKPT_FN float GgxRefractionPdf(vec3 wo, vec3 wi, vec3 m, float etap, vec2 alpha) {
+  return IsIsotropic(alpha) ? GgxRefractionPdf(wo, wi, m, etap, alpha.x)
+                            : GgxAnisotropicRefractionPdf(wo, wi, m, etap, alpha);
 }
 
 VKPT_END_NAMESPACE
