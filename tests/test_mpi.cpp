@@ -94,8 +94,13 @@ class MpiIdentity : public ::testing::TestWithParam<Case> {};
 
 TEST_P(MpiIdentity, SameImageBytesForOneTwoAndThreeRanks) {
   if (GetParam().scene == &kBoxTextured) VKPT_REQUIRE_SHARED_DATA();
-  const test::TempFolder dir("mpi-identity");
   const auto [backend, scene] = GetParam();
+#if defined(VKPT_ADDRESS_SANITIZER)
+  if (std::string(backend) == "vulkan")
+    GTEST_SKIP() << "28-31 s under AddressSanitizer; the cpu variants check the same ranks' code, the plain build "
+                    "runs it";
+#endif
+  const test::TempFolder dir("mpi-identity");
   ProcessResult one = test::RunVkpt(Frame(*scene, backend, dir / "one.pfm"));
   ASSERT_TRUE(one.ExitedWith(0)) << one.Describe();
   const std::string expected = test::ReadFile(dir / "one.pfm");
