@@ -12,7 +12,7 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev    # glTF loading and schema checks
   libstb-dev libtinyexr-dev             # PNG and EXR writers
   libgtest-dev                          # tests
-  colord-data                           # tests: the CIE 1931 matching functions (iridescence)
+  colord-data                           # tests: the CIE 1931 matching functions (iridescence, dispersion)
   libembree-dev                         # vkpt-bench compares against Embree
   libopenmpi-dev openmpi-bin            # optional: mpirun -n N vkpt shares a frame (tests use it)
   clang-format                          # scripts/check-format.sh

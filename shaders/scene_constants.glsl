@@ -62,6 +62,9 @@ layout(constant_id = 16) const uint kSceneHasIridescence = 1u;
 // 0 when no triangle's material is anisotropic: see shared/microfacet.h.
 layout(constant_id = 17) const uint kSceneHasAnisotropy = 1u;
 #define VKPT_ANISOTROPY (kSceneHasAnisotropy != 0u)
+// 0 when no triangle's material is dispersive: see shared/dispersion.h.
+layout(constant_id = 18) const uint kSceneHasDispersion = 1u;
+#define VKPT_DISPERSION (kSceneHasDispersion != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

@@ -92,6 +92,9 @@ Triangle FetchTriangle(uint k) {
 #ifndef VKPT_ANISOTROPY
 #define VKPT_ANISOTROPY true
 #endif
+#ifndef VKPT_DISPERSION
+#define VKPT_DISPERSION true
+#endif
 
 Material FetchMaterial(uint m) {
   uvec4 a = texelFetch(materialTexels, int(kTexelsPerMaterial * m));
@@ -105,7 +108,7 @@ Material FetchMaterial(uint m) {
   // The film's and the anisotropy's texels only where some material has them
   // (scene_constants.glsl).
   uvec4 i = VKPT_IRIDESCENCE ? texelFetch(materialTexels, int(kTexelsPerMaterial * m + 8u)) : uvec4(0u);
-  uvec4 j = VKPT_ANISOTROPY ? texelFetch(materialTexels, int(kTexelsPerMaterial * m + 9u)) : uvec4(0u);
+  uvec4 j = VKPT_ANISOTROPY || VKPT_DISPERSION ? texelFetch(materialTexels, int(kTexelsPerMaterial * m + 9u)) : uvec4(0u);
   Material mat;
   mat.baseColor = uintBitsToFloat(a.xyz);
   mat.metallic = uintBitsToFloat(a.w);
@@ -132,7 +135,7 @@ Material FetchMaterial(uint m) {
   mat.iridescenceThicknessMin = uintBitsToFloat(i.z);
   mat.iridescenceThickness = uintBitsToFloat(i.w);
   mat.anisotropy = uintBitsToFloat(j.x);
-  mat.anisotropyRotation = uintBitsToFloat(j.y);
+  mat.dispersion = uintBitsToFloat(j.y);
   mat.anisotropyDirection = uintBitsToFloat(j.zw);
   return mat;
 }

@@ -31,5 +31,7 @@ RenderResult RenderMutantLightSampleWithoutTexture(const RenderScene& scene, con
 RenderResult RenderMutantLightSampleWithoutCoat(const RenderScene& scene, const shader::FrameParams& params);
 // Mutant of texture filtering (path.h): every texture at its ray cone's level everywhere.
 RenderResult RenderMutantTexturesFilteredEverywhere(const RenderScene& scene, const shader::FrameParams& params);
+// Mutant of dispersion (path.h): the hero wavelength's weight applied at every dispersive vertex.
+RenderResult RenderMutantWavelengthWeightEveryVertex(const RenderScene& scene, const shader::FrameParams& params);
 
 }  // namespace vkpt::test

@@ -572,7 +572,8 @@ TEST(Cli, VerboseReportsTheTexturesOfAGeneratedModel) {
   EXPECT_EQ(r.out.find("ignored: "), std::string::npos) << r.out;
 }
 
-// The layers a material adds (coat, sheen, diffuse transmission) are listed with it.
+// The layers a material adds (coat, sheen, diffuse transmission, …) are listed with it,
+// and a dispersion that nothing shows is said to be unseen.
 TEST(Cli, VerboseListsAMaterialsLayers) {
   test::GltfBuilder b;
   b.meshes.push_back(R"({"primitives":[{"attributes":{"POSITION":)" + std::to_string(b.Positions(test::kUnitTriangle)) +
@@ -582,14 +583,16 @@ TEST(Cli, VerboseListsAMaterialsLayers) {
       R"("KHR_materials_sheen":{"sheenColorFactor":[1,0.5,0.25],"sheenRoughnessFactor":0.75},)"
       R"("KHR_materials_diffuse_transmission":{"diffuseTransmissionFactor":0.3},)"
       R"("KHR_materials_iridescence":{"iridescenceFactor":1,"iridescenceThicknessMaximum":500},)"
-      R"("KHR_materials_anisotropy":{"anisotropyStrength":0.5,"anisotropyRotation":1}}})");
-  b.extensionsUsed = {"KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_diffuse_transmission",
-                      "KHR_materials_iridescence", "KHR_materials_anisotropy"};
+      R"("KHR_materials_anisotropy":{"anisotropyStrength":0.5,"anisotropyRotation":1},)"
+      R"("KHR_materials_dispersion":{"dispersion":0.5}}})");
+  b.extensionsUsed = {"KHR_materials_clearcoat",   "KHR_materials_sheen",      "KHR_materials_diffuse_transmission",
+                      "KHR_materials_iridescence", "KHR_materials_anisotropy", "KHR_materials_dispersion"};
   b.Node(R"({"mesh":0})");
   ProcessResult r = RunVerboseOn(b, "cli-verbose-layers.png");
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
   EXPECT_NE(r.out.find("clearcoat 0.5 (roughness 0.25) sheen (1, 0.5, 0.25) roughness 0.75 diffuse transmission 0.3 "
-                       "(1, 1, 1) anisotropy 0.5 (rotation 1 rad) iridescence 1 (ior 1.3, 500-500 nm)"),
+                       "(1, 1, 1) anisotropy 0.5 (rotation 1 rad) dispersion 0.5 (Abbe number 40; unseen: it needs a "
+                       "transmissive volume of ior > 1) iridescence 1 (ior 1.3, 500-500 nm)"),
             std::string::npos)
       << r.out;
   EXPECT_EQ(r.out.find("ignored: "), std::string::npos) << r.out;

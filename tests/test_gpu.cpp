@@ -582,7 +582,8 @@ INSTANTIATE_TEST_SUITE_P(
                       // of the channels, with or without the sheen (1.27 % without).
                       PbrModel{"SheenCloth/glTF/SheenCloth.gltf", true, "gltf-ext", 0.02},
                       PbrModel{"IridescenceSuzanne/glTF-Binary/IridescenceSuzanne.glb", true, "gltf-ext"},
-                      PbrModel{"AnisotropyStrengthTest/glTF-Binary/AnisotropyStrengthTest.glb", true, "gltf-ext"}),
+                      PbrModel{"AnisotropyStrengthTest/glTF-Binary/AnisotropyStrengthTest.glb", true, "gltf-ext"},
+                      PbrModel{"DispersionTest/glTF-Binary/DispersionTest.glb", true, "gltf-ext"}),
     [](const auto& info) {
       std::string n = info.param.file.substr(0, info.param.file.find('/'));
       return n;

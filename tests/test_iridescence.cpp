@@ -8,8 +8,6 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -30,42 +28,7 @@ Material Iridescent(Material m, float factor, float ior, float thickness) {
   return m;
 }
 
-// ---------------------------------------------------------------------------------------
-// The CIE 1931 2° matching functions, 360–830 nm in 5 nm steps, from Debian's colord-data
-// (installed by scripts/install-deps.sh), interpolated linearly to 1 nm.
-
-const char* const kCmfPath = "/usr/share/colord/cmf/CIE1931-2deg-XYZ.cmf";
-
-struct Cmf {
-  std::vector<double> x, y, z;  // at 360 + i nm
-  double yIntegral = 0.0;       // ∫ ȳ dλ in nm
-};
-
-Cmf LoadCmf() {
-  std::ifstream in(kCmfPath);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const size_t begin = text.find("BEGIN_DATA\n"), end = text.find("END_DATA", begin + 1);
-  Cmf cmf;
-  if (begin == std::string::npos || end == std::string::npos) return cmf;
-  std::istringstream data(text.substr(begin + 11, end - begin - 11));
-  std::vector<double> rows[3];
-  for (std::vector<double>& row : rows)
-    for (int i = 0; i < 95; ++i) data >> row.emplace_back();
-  if (!data) return cmf;
-  for (int nm = 360; nm <= 830; ++nm) {
-    const int i = std::min((nm - 360) / 5, 93);
-    const double t = (nm - 360 - 5 * i) / 5.0;
-    cmf.x.push_back(rows[0][i] * (1 - t) + rows[0][i + 1] * t);
-    cmf.y.push_back(rows[1][i] * (1 - t) + rows[1][i + 1] * t);
-    cmf.z.push_back(rows[2][i] * (1 - t) + rows[2][i + 1] * t);
-    cmf.yIntegral += cmf.y.back();
-  }
-  return cmf;
-}
-
-#define REQUIRE_CMF(cmf)     \
-  const Cmf cmf = LoadCmf(); \
-  if (cmf.x.empty()) GTEST_SKIP() << kCmfPath << " is missing (Debian's colord-data)"
+using cie::Cmf;
 
 // ∫ cmf(λ) g(λ) dλ / ∫ ȳ dλ at 1 nm.
 template <class G>
@@ -94,7 +57,7 @@ double WorstSensitivityError(const Cmf& cmf, float maxOpd, const Fit& fit) {
 // OPDs up to 1,000 nm are a 400 nm film's first term; up to 3,000 nm its second term
 // and thicker films, where the fit's error is larger but its terms are small.
 TEST(Iridescence, SensitivityFitMatchesCieIntegration) {
-  REQUIRE_CMF(cmf);
+  VKPT_REQUIRE_CMF(cmf);
   const double near = WorstSensitivityError(cmf, 1000.0f, FilmSensitivityXyz);
   const double far = WorstSensitivityError(cmf, 3000.0f, FilmSensitivityXyz);
   std::printf("sensitivity fit - 1 nm CIE integral: worst %.4f to 1000 nm (limit 0.03), %.4f to 3000 nm (limit 0.07)\n",
@@ -162,7 +125,7 @@ float WorstFilmError(const Cmf& cmf, const FilmCase& f, float maxThickness, cons
 // Belcour & Barla's series (the fit's integrals) reproduces the spectral Airy sum for
 // films up to twice the extension's default maximum.
 TEST(Iridescence, SeriesMatchesTheSpectralAirySum) {
-  REQUIRE_CMF(cmf);
+  VKPT_REQUIRE_CMF(cmf);
   std::printf("thin film: series - 1 nm Airy integral, cos 0.1-1, thickness 0-800 nm:\n");
   for (const FilmCase& f : kFilms) {
     const float worst = WorstFilmError(cmf, f, 800.0f, ThinFilmFresnel);

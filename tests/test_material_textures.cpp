@@ -293,6 +293,28 @@ TEST(MaterialTextures, AnisotropyFactorsAndTextureAreRead) {
   EXPECT_EQ(plain.anisotropyStrength, 0.0f);
 }
 
+// KHR_materials_dispersion: its factor is read (a file that requires it loads), and
+// packed for the renderers only where the material refracts as a volume's boundary, so
+// that no other material draws a wavelength.
+TEST(MaterialTextures, DispersionIsReadAndPackedWhereItRefracts) {
+  Scene s = LoadExtension("KHR_materials_dispersion", R"("dispersion":0.5)");
+  EXPECT_EQ(s.materials[0].dispersion, 0.5f);
+  for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("dispersion"), std::string::npos) << f;
+  EXPECT_EQ(PackMaterials(s).materials[0].dispersion, 0.0f) << "no transmission, no volume";
+  for (float ior : {1.0f, 1.5f}) {
+    GltfBuilder b = TexturedTriangle(R"({"extensions":{"KHR_materials_dispersion":{"dispersion":0.5},)"
+                                     R"("KHR_materials_transmission":{"transmissionFactor":1},)"
+                                     R"("KHR_materials_volume":{"thicknessFactor":1},)"
+                                     R"("KHR_materials_ior":{"ior":)" +
+                                     std::to_string(ior) + "}}}");
+    b.extensionsUsed = {"KHR_materials_dispersion", "KHR_materials_transmission", "KHR_materials_volume",
+                        "KHR_materials_ior"};
+    const Scene glass = Load(b);
+    EXPECT_EQ(PackMaterials(glass).materials[0].dispersion, ior > 1.0f ? 0.5f : 0.0f) << "ior " << ior;
+  }
+  EXPECT_EQ(Load(TexturedTriangle("{}")).materials[0].dispersion, 0.0f);
+}
+
 TEST(MaterialTextures, ExtensionFactorsOutOfRangeAreNamed) {
   const std::pair<const char*, const char*> kBad[] = {
       {"KHR_materials_clearcoat", R"("clearcoatFactor":1.5)"},
@@ -309,7 +331,9 @@ TEST(MaterialTextures, ExtensionFactorsOutOfRangeAreNamed) {
       {"KHR_materials_iridescence", R"("iridescenceThicknessMinimum":-1)"},
       {"KHR_materials_iridescence", R"("iridescenceThicknessMaximum":1e9)"},
       {"KHR_materials_anisotropy", R"("anisotropyStrength":-0.2)"},
-      {"KHR_materials_anisotropy", R"("anisotropyRotation":1e300)"}};
+      {"KHR_materials_anisotropy", R"("anisotropyRotation":1e300)"},
+      {"KHR_materials_dispersion", R"("dispersion":-1)"},
+      {"KHR_materials_dispersion", R"("dispersion":1e4)"}};
   for (const auto& [extension, bad] : kBad) {
     try {
       Load(TexturedTriangle(std::string(R"({"extensions":{")") + extension + R"(":{)" + bad + "}}}"));

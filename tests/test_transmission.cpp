@@ -55,25 +55,6 @@ TEST(Transmission, GlassSlabAttenuatesByBeerLambert) {
   }
 }
 
-// A sphere of radius 1 about the origin, flat-shaded (geometric normals only, so that
-// the BSDF is exactly energy-conserving at every facet): 64 × 32 latitude-longitude
-// quads, wound to face out.
-std::vector<SceneTriangle> SphereTriangles() {
-  const int nPhi = 64, nTheta = 32;
-  auto at = [&](int i, int j) {
-    const float phi = 2.0f * float(M_PI) * float(i % nPhi) / nPhi, theta = float(M_PI) * float(j) / nTheta;
-    return glm::vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-  };
-  std::vector<SceneTriangle> tris;
-  for (int j = 0; j < nTheta; ++j)
-    for (int i = 0; i < nPhi; ++i) {
-      const glm::vec3 a = at(i, j), b = at(i, j + 1), c = at(i + 1, j + 1), d = at(i + 1, j);
-      if (j > 0) tris.push_back({a, b, d, 0});
-      if (j + 1 < nTheta) tris.push_back({b, c, d, 0});
-    }
-  return tris;
-}
-
 // A white rough glass sphere (ior 1.5, no absorption) in a white furnace: every pixel
 // is 1 when each crossing and reflection keeps its energy — the rough dielectric's
 // compensation (shared/bsdf.h) — and paths run until roulette ends them (light trapped by
@@ -84,16 +65,9 @@ TEST(Transmission, RoughGlassSphereInAWhiteFurnaceReturnsOne) {
     Material glass = test::ClearGlass(glm::vec3(1.0f), glm::vec3(0.0f), 1.5f);
     glass.specular = 1.0f;
     glass.roughness = roughness;
-    Scene s = test::MakeScene(SphereTriangles(), {glass});
-    s.cameras.push_back(test::OrthographicAlongMinusZ(3.0f, 0.7f));  // every pixel sees the sphere
+    Scene s = test::SphereInFurnace(glass);
     RenderScene rs = PrepareRenderScene(s);
-    shader::FrameParams p = MakeFrameParams(rs, s.cameras[0], 48, 48);
-    p.seed = 11;
-    p.sampleCount = 1024 / test::kSampleDivisor;
-    p.maxDepth = 100000;
-    p.rrDepth = 16;
-    p.background = glm::vec3(1.0f);
-    RenderResult r = RenderCpu(rs, p);
+    RenderResult r = RenderCpu(rs, test::SphereFurnaceParams(rs, s, 11));
     EXPECT_EQ(r.nonFinite, 0u);
     const test::ZTest z = test::MeanAndError(r.image, glm::dvec3(1.0));
     std::printf("rough glass sphere furnace, roughness %.1f: mean %.4f +- %.4f (must be 1 within 1 %%)\n", roughness,

@@ -336,6 +336,38 @@ Material ClearGlass(glm::vec3 tint, glm::vec3 attenuation, float ior) {
   return m;
 }
 
+static std::vector<SceneTriangle> SphereTriangles() {
+  const int nPhi = 64, nTheta = 32;
+  auto at = [&](int i, int j) {
+    const float phi = 2.0f * float(M_PI) * float(i % nPhi) / nPhi, theta = float(M_PI) * float(j) / nTheta;
+    return glm::vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+  };
+  std::vector<SceneTriangle> tris;
+  for (int j = 0; j < nTheta; ++j)
+    for (int i = 0; i < nPhi; ++i) {
+      const glm::vec3 a = at(i, j), b = at(i, j + 1), c = at(i + 1, j + 1), d = at(i + 1, j);
+      if (j > 0) tris.push_back({a, b, d, 0});
+      if (j + 1 < nTheta) tris.push_back({b, c, d, 0});
+    }
+  return tris;
+}
+
+Scene SphereInFurnace(const Material& material) {
+  Scene s = MakeScene(SphereTriangles(), {material});
+  s.cameras.push_back(OrthographicAlongMinusZ(3.0f, 0.7f));  // every pixel sees the sphere
+  return s;
+}
+
+shader::FrameParams SphereFurnaceParams(const RenderScene& rs, const Scene& s, uint32_t seed) {
+  shader::FrameParams p = MakeFrameParams(rs, s.cameras[0], 48, 48);
+  p.seed = seed;
+  p.sampleCount = 1024 / kSampleDivisor;
+  p.maxDepth = 100000;
+  p.rrDepth = 16;
+  p.background = glm::vec3(1.0f);
+  return p;
+}
+
 Camera OrthographicAlongMinusZ(float z, float half) {
   Camera cam;
   cam.name = "orthographic along -z";

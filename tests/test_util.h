@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cie_1931.h"
 #include "image/image.h"
 #include "render/render_scene.h"
 #include "scene/scene.h"
@@ -49,6 +50,11 @@ bool SharedDataRequired();                            // $VKPT_REQUIRE_TEST_DATA
     if (::vkpt::test::SharedDataRequired()) FAIL() << ::vkpt::test::SharedDataMissing(); \
     GTEST_SKIP() << ::vkpt::test::SharedDataMissing();                                   \
   } while (0)
+// The CIE 1931 matching functions (scripts/cie_1931.h) as `cmf`, or the test skips
+// naming the missing file. A macro for the same reason.
+#define VKPT_REQUIRE_CMF(cmf)                          \
+  const ::vkpt::cie::Cmf cmf = ::vkpt::cie::LoadCmf(); \
+  if (cmf.x.empty()) GTEST_SKIP() << ::vkpt::cie::kCmfPath << " is missing (Debian's colord-data)"
 std::string TempPath(const std::string& name);        // unique per test process
 std::string FreshTempDirectory(const std::string& name);           // TempPath(name), created empty
 std::vector<std::string> DirectoryListing(const std::string& dir);  // entry names, sorted
@@ -142,6 +148,14 @@ Scene MakeScene(const std::vector<SceneTriangle>& triangles, const std::vector<M
 // Glass that light crosses straight at normal incidence: transmission 1 with a volume
 // (KHR_materials_volume), no specular reflection (F = 0), a near-mirror roughness.
 Material ClearGlass(glm::vec3 tint, glm::vec3 attenuation, float ior);
+// A sphere of radius 1 about the origin of `material`, flat-shaded (geometric normals
+// only, so that a BSDF keeps its energy exactly at every facet: 64 × 32
+// latitude-longitude quads, wound to face out), in a white furnace (background 1), seen
+// whole by an orthographic camera; and the parameters of its render: 48² pixels, 1024
+// samples (divided by kSampleDivisor), paths ended by roulette alone (after 16 bounces),
+// as light trapped by total internal reflection needs hundreds of bounces.
+Scene SphereInFurnace(const Material& material);
+shader::FrameParams SphereFurnaceParams(const RenderScene& rs, const Scene& s, uint32_t seed);
 // An orthographic camera at (0, 0, z) looking along −z, framing [−half, half]².
 Camera OrthographicAlongMinusZ(float z, float half);
 // The slab [−3, 3]² × [−1, 1] of `material`, seen by an orthographic camera along −z that

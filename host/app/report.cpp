@@ -23,7 +23,7 @@ std::string AlphaNote(const Material& m) {
 
 // The layers and lobes a material adds to the metallic-roughness model, as -v lists them.
 std::string LayerNote(const Material& m) {
-  char note[256] = "";
+  char note[512] = "";  // room for every layer at once
   int n = 0;
   if (m.clearcoat > 0.0f)
     n +=
@@ -38,6 +38,10 @@ std::string LayerNote(const Material& m) {
   if (m.anisotropyStrength > 0.0f)
     n += std::snprintf(note + n, sizeof note - n, " anisotropy %.3g (rotation %.3g rad)", m.anisotropyStrength,
                        m.anisotropyRotation);
+  if (m.dispersion > 0.0f)
+    n += std::snprintf(note + n, sizeof note - n, " dispersion %.3g (Abbe number %.3g%s)", m.dispersion,
+                       20.0f / m.dispersion,
+                       m.RefractsAsVolume() ? "" : "; unseen: it needs a transmissive volume of ior > 1");
   if (m.iridescence > 0.0f) {
     // Without a thickness texture the film is as thick as its maximum.
     float thin = m.iridescenceThicknessTexture.Present() ? m.iridescenceThicknessMin : m.iridescenceThicknessMax;

@@ -38,6 +38,7 @@
 #define VKPT_IRIDESCENCE false
 #undef VKPT_ANISOTROPY
 #define VKPT_ANISOTROPY false
+#define VKPT_DISPERSION false
 #undef VKPT_TEXTURES
 #define VKPT_TEXTURES false
 #undef VKPT_NORMAL_MAPS

@@ -78,7 +78,7 @@ shader::Material PackMaterial(const Material& m) {
   g.iridescenceThicknessMin = m.iridescenceThicknessMin;
   g.iridescenceThickness = m.iridescenceThicknessMax;
   g.anisotropy = m.anisotropyStrength;
-  g.anisotropyRotation = m.anisotropyRotation;
+  g.dispersion = m.RefractsAsVolume() ? m.dispersion : 0.0f;  // seen nowhere else: no wavelength drawn
   g.anisotropyDirection = glm::vec2(std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation));
   g.flags = (m.doubleSided ? shader::kMaterialDoubleSided : 0u) | (m.unlit ? shader::kMaterialUnlit : 0u) |
             (m.volume ? shader::kMaterialVolume : 0u) | AlphaBits(m.alphaMode) | TextureBits(m);

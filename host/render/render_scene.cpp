@@ -206,6 +206,10 @@ bool UsesAnisotropy(const RenderScene& scene) {
   return SomeTriangleUses(scene, [](const shader::Material& m) { return m.anisotropy > 0.0f; });
 }
 
+bool UsesDispersion(const RenderScene& scene) {
+  return SomeTriangleUses(scene, [](const shader::Material& m) { return m.dispersion > 0.0f; });
+}
+
 bool HasLightSources(const RenderScene& scene) {
   for (const shader::Light& l : scene.lights) {
     if (l.type != shader::kLightTriangle && l.type != shader::kLightTwoSidedTriangle) return true;

@@ -65,6 +65,8 @@ bool UsesDiffuseTransmission(const RenderScene& scene);
 bool UsesIridescence(const RenderScene& scene);
 // And whether some triangle's material is anisotropic (KHR_materials_anisotropy).
 bool UsesAnisotropy(const RenderScene& scene);
+// And whether some triangle's material is dispersive (KHR_materials_dispersion).
+bool UsesDispersion(const RenderScene& scene);
 
 // Whether the scene has lights meant to light it: punctual lights, or emissive triangles
 // whose emission is not painted by an emissive texture (a texture paints screens, dials

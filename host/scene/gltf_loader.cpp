@@ -119,6 +119,7 @@ bool IsRenderedExtension(const std::string& ext) {
   static const char* const kRendered[] = {"KHR_materials_anisotropy",
                                           "KHR_materials_clearcoat",
                                           "KHR_materials_diffuse_transmission",
+                                          "KHR_materials_dispersion",
                                           "KHR_materials_iridescence",
                                           "KHR_materials_sheen",
                                           "KHR_materials_variants",

@@ -39,6 +39,7 @@ class MaterialReader {
     ReadDiffuseTransmission(mat);
     ReadIridescence(mat);
     ReadAnisotropy(mat);
+    ReadDispersion(mat);
     mat.doubleSided = in_.doubleSided;
     mat.unlit = in_.extensions.count("KHR_materials_unlit") != 0;
     ReadVolume(mat);
@@ -144,6 +145,14 @@ class MaterialReader {
     if (!(std::abs(rotation) <= 1e6))
       Fail("KHR_materials_anisotropy.anisotropyRotation is not a finite number of at most 1e6");
     mat.anisotropyRotation = float(std::remainder(rotation, 2.0 * 3.14159265358979323846));
+  }
+
+  // KHR_materials_dispersion's factor: 20/Vd, realistic up to about 1 (Vd = 20); larger
+  // values exaggerate, and beyond 1000 (Vd = 0.02) nothing is left to exaggerate.
+  void ReadDispersion(Material& mat) const {
+    const double dispersion = ExtensionNumber("KHR_materials_dispersion", "dispersion", 0.0);
+    if (!(dispersion >= 0.0 && dispersion <= 1000.0)) Fail("KHR_materials_dispersion.dispersion is not in [0, 1000]");
+    mat.dispersion = float(dispersion);
   }
 
   // A film's thickness in nm: at most 1 mm, where its colours have long averaged out.

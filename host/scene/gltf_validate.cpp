@@ -11,21 +11,15 @@ namespace {
 
 // Extensions vkpt understands; a file that *requires* any other one is refused, as the
 // glTF spec demands of a loader that does not implement it.
-const std::set<std::string> kSupportedRequiredExtensions = {"KHR_lights_punctual",
-                                                            "KHR_materials_anisotropy",
-                                                            "KHR_materials_clearcoat",
-                                                            "KHR_materials_diffuse_transmission",
-                                                            "KHR_materials_emissive_strength",
-                                                            "KHR_materials_ior",
-                                                            "KHR_materials_iridescence",
-                                                            "KHR_materials_sheen",
-                                                            "KHR_materials_specular",
-                                                            "KHR_materials_transmission",
-                                                            "KHR_materials_unlit",
-                                                            "KHR_materials_variants",
-                                                            "KHR_materials_volume",
-                                                            "KHR_mesh_quantization",
-                                                            "KHR_texture_transform"};
+const std::set<std::string> kSupportedRequiredExtensions = {
+    "KHR_lights_punctual",        "KHR_materials_anisotropy",
+    "KHR_materials_clearcoat",    "KHR_materials_diffuse_transmission",
+    "KHR_materials_dispersion",   "KHR_materials_emissive_strength",
+    "KHR_materials_ior",          "KHR_materials_iridescence",
+    "KHR_materials_sheen",        "KHR_materials_specular",
+    "KHR_materials_transmission", "KHR_materials_unlit",
+    "KHR_materials_variants",     "KHR_materials_volume",
+    "KHR_mesh_quantization",      "KHR_texture_transform"};
 
 void CheckTextureRef(const GltfSource& src, int index, const std::string& what) {
   if (index != -1) src.CheckIndex(index, src.m.textures, what);

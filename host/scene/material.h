@@ -70,6 +70,8 @@ struct Material {
   // KHR_materials_anisotropy: the GGX lobe stretched along a direction (shared/microfacet.h).
   float anisotropyStrength = 0.0f;  // 0: isotropic
   float anisotropyRotation = 0.0f;  // radians, counter-clockwise from the tangent
+  // KHR_materials_dispersion: the volume's index varies with wavelength (shared/dispersion.h).
+  float dispersion = 0.0f;  // 20 / the Abbe number Vd; 0: none
 
   // The textures that scale the factors above (shared/material_textures.h says how).
   MaterialTexture baseColorTexture;                 // RGB × baseColor, A × alpha (sRGB)
@@ -89,6 +91,10 @@ struct Material {
   MaterialTexture iridescenceTexture;               // R × iridescence
   MaterialTexture iridescenceThicknessTexture;      // G: the thickness from its minimum (0) to its maximum (1)
   MaterialTexture anisotropyTexture;                // RG direction in tangent space, B × anisotropyStrength
+
+  // Whether the material refracts as the boundary of a volume, where alone its dispersion
+  // is seen.
+  bool RefractsAsVolume() const { return volume && transmission > 0.0f && ior > 1.0f && !unlit; }
 
   // Whether some texture above is present.
   bool Textured() const {

@@ -68,6 +68,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
       hasDiffuseTransmission_(UsesDiffuseTransmission(scene)),
       hasIridescence_(UsesIridescence(scene)),
       hasAnisotropy_(UsesAnisotropy(scene)),
+      hasDispersion_(UsesDispersion(scene)),
       hasTextures_(!scene.textureRefs.empty()),
       hasNormalMaps_(!scene.tangents.empty()),
       hasAlpha_(scene.alphaTested),
@@ -118,7 +119,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           hasSheen_ ? 1u : 0u,
           hasDiffuseTransmission_ ? 1u : 0u,
           hasIridescence_ ? 1u : 0u,
-          hasAnisotropy_ ? 1u : 0u};
+          hasAnisotropy_ ? 1u : 0u,
+          hasDispersion_ ? 1u : 0u};
 }
 
 std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams& frame,

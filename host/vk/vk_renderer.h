@@ -96,6 +96,7 @@ class GpuRenderer {
   bool hasDiffuseTransmission_;      // some triangle's material transmits diffusely
   bool hasIridescence_;              // some triangle's material is iridescent
   bool hasAnisotropy_;               // some triangle's material is anisotropic
+  bool hasDispersion_;               // some triangle's material is dispersive
   bool hasTextures_;                 // some material has a texture
   bool hasNormalMaps_;               // some material has a normal texture
   bool hasAlpha_;                    // some triangle's material is alpha MASK or BLEND

@@ -63,6 +63,7 @@
 //   [capability] VKPT_DIFFUSE_TRANSMISSION  bsdf.h: some material transmits diffusely
 //   [capability] VKPT_IRIDESCENCE       iridescence.h: some material is iridescent
 //   [capability] VKPT_ANISOTROPY        microfacet.h: some material is anisotropic
+//   [capability] VKPT_DISPERSION        dispersion.h: some material is dispersive
 //   [capability] VKPT_ALBEDO_PAIR(k)     albedo_tables.h: pair k of the albedo tables
 //   [denoise] VKPT_DENOISE_PARAM        denoise.h: the images as a leading parameter declaration
 //   [denoise] VKPT_DENOISE_ARG          the matching leading argument

@@ -79,6 +79,10 @@ const uint kSheenAlbedoOffset =
     kGgxAlbedoSize * (kGgxAlbedoSize + 1u) + kGlassAlbedoIors * kGlassAlbedoCosines * kGlassAlbedoRoughnesses;
 const uint kSheenAlbedoCosines = 64u;
 const uint kSheenAlbedoRoughnesses = 48u;
+// Pair index of the hero wavelength's bins (shared/dispersion.h), after the sheen table:
+// two pairs (one texel) per bin of equal probability and two after the last.
+const uint kWavelengthOffset = kSheenAlbedoOffset + kSheenAlbedoCosines * (kSheenAlbedoRoughnesses - 1u);
+const uint kWavelengthBins = 256u;
 
 // lavapipe ends a shader once its SIMD group has run 65535 loop passes in total
 // (traverse.glsl); pathtrace.comp keeps clear of it by a margin for the small loops not
@@ -151,7 +155,7 @@ struct Material {
   float iridescenceThicknessMin;  // nm, where the thickness texture's G is 0
   float iridescenceThickness;     // nm: the maximum (G = 1), the film's thickness once textured
   float anisotropy;               // KHR_materials_anisotropy: the strength (0: isotropic)
-  float anisotropyRotation;       // radians, counter-clockwise from the tangent
+  float dispersion;               // KHR_materials_dispersion: 20/Vd where the material refracts (0: none)
   vec2 anisotropyDirection;       // in tangent space: (cos, sin) of the rotation, turned by the texture
 };
 

@@ -121,8 +121,8 @@ VKPT_FN void ApplyMaterialTextures(VKPT_SCENE_PARAM VKPT_INOUT(Material) mat, ui
       vec2 d = 2.0f * vec2(t) - vec2(1.0f);
       float length2 = dot(d, d);
       d = length2 > 0.0f ? d * inversesqrt(length2) : vec2(1.0f, 0.0f);
-      float c = cos(mat.anisotropyRotation), s = sin(mat.anisotropyRotation);
-      mat.anisotropyDirection = vec2(c * d.x - s * d.y, s * d.x + c * d.y);
+      vec2 r = mat.anisotropyDirection;  // the rotation's (cos, sin)
+      mat.anisotropyDirection = vec2(r.x * d.x - r.y * d.y, r.y * d.x + r.x * d.y);
     }
   }
 }

@@ -19,9 +19,9 @@
 // it), so that traversal stays separate (the CPU walks the BVH with an ordered stack, the
 // shader stackless).
 //
-// Seams: a few functions of the estimator, each marked "A seam" (the MIS weights and
-// roulette below, GgxReflectionPdf in microfacet.h, the punctual falloffs and the
-// emitter's cosine and texture in lights.h), that a test build may replace to prove its
+// Seams: a few functions of the estimator, each marked "A seam" (the MIS weights,
+// roulette and the hero wavelength's draw below, GgxReflectionPdf in microfacet.h, the
+// punctual falloffs and the emitter's cosine and texture in lights.h), that a test build may replace to prove its
 // tests reject a wrong estimator. Such a build defines VKPT_ESTIMATOR_OVERRIDES and puts
 // its estimator_overrides.h on the include path; that header defines a replaced
 // function's name as a macro naming its replacement, so the default here is left out.
@@ -35,6 +35,7 @@
 
 #include "backend_contract.h"  // the backend's scene access is complete by now
 #include "bsdf.h"
+#include "dispersion.h"
 #include "estimator.h"
 #include "intersect.h"
 #include "layout.h"
@@ -91,6 +92,7 @@ struct PathState {
   Ray shadowRay;
   float shadowTMax;
   vec3 lightContribution;  // added to the radiance if the shadow ray is unoccluded
+  float wavelength;        // nm, drawn at the first dispersive vertex (dispersion.h); 0 before
 };
 
 // Sample `sampleIndex` of pixel (px, py) before its first ray: the camera ray. Its random
@@ -113,6 +115,7 @@ VKPT_FN PathState StartPath(FrameParams params, uint px, uint py, uint sampleInd
   s.shadowRay = s.ray;
   s.shadowTMax = 1.0f;
   s.lightContribution = vec3(0.0f);
+  s.wavelength = 0.0f;
   return s;
 }
 
@@ -175,6 +178,24 @@ VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(P
     s.shadowRay.origin = beyond;
   }
   s.lightContribution = s.throughput * f * ls.radiance * (abs(wi.z) * weight / ls.pdf);
+}
+
+// Whether a dispersive vertex draws the path's wavelength: the first, whose path has none
+// yet (0). A seam.
+#ifndef DrawsWavelength
+VKPT_FN bool DrawsWavelength(float wavelength) { return wavelength == 0.0f; }
+#endif
+
+// A dispersive vertex (dispersion.h): the path's first draws its wavelength and weights
+// the throughput by the wavelength's colour; each refracts by its index there. The
+// emission seen at the vertex does not depend on the wavelength and is left unweighted.
+VKPT_FN void Disperse(FrameParams params, VKPT_INOUT(PathState) s, VKPT_INOUT(Material) mat) {
+  if (DrawsWavelength(s.wavelength)) {
+    vec4 hero = SampleWavelength(Sample2D(params.seed, s.pixel, s.sampleIndex, kGroupWavelength).x);
+    s.wavelength = hero.x;
+    s.throughput *= vec3(hero.y, hero.z, hero.w);
+  }
+  mat.ior = DispersiveIor(mat.ior, mat.dispersion, s.wavelength);
 }
 
 // Whether sampled direction `wi` (bs.wi in the shading frame) is usable: reflection must
@@ -240,6 +261,7 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   // leaving it (which may escape to the environment), make k + 1.
   if (bounce >= params.maxDepth) return false;
 
+  if (VKPT_DISPERSION && sh.material.dispersion > 0.0f) Disperse(params, s, sh.material);
   vec3 wo = WorldToFrame(sh.frame, -s.ray.dir);
   Bsdf bsdf = PrepareBsdf(sh.material, wo, sh.frontFace, WorldToFrame(sh.frame, sh.coatNormal));
   vec3 origin = OffsetRayOrigin(sh.p, sh.ng);  // of the shadow ray and a reflected continuation

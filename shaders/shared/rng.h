@@ -109,7 +109,10 @@ VKPT_FN vec2 Sample2D(uint seed, uint pixel, uint sampleIndex, uint pair) {
 //                        (the camera ray for vertex 0), z: that of the vertex's shadow ray
 //   Sample2D(LightGroup): the light and the point on it
 //   Sample2D(BsdfGroup):  the scattered direction within the lobe
+// Pair kGroupWavelength of Sample2D, x: the hero wavelength, drawn once per path
+// (dispersion.h), at no fixed vertex; beyond the pairs of any reachable bounce.
 const uint kGroupCamera = 0u;
+const uint kGroupWavelength = 0xFFFFFFFFu;
 VKPT_FN uint LightGroup(uint bounce) { return 1u + 2u * bounce; }
 VKPT_FN uint BsdfGroup(uint bounce) { return 2u + 2u * bounce; }
 

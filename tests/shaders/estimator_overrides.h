@@ -22,6 +22,8 @@
 //                                        every vertex, normal maps and roughness too
 //   VKPT_MUTANT_LIGHT_SAMPLE_WITHOUT_COAT  a sampled point's emission not dimmed by its
 //                                        clear coat
+//   VKPT_MUTANT_WAVELENGTH_WEIGHT_EVERY_VERTEX  the hero wavelength's colour weight applied
+//                                        at every dispersive vertex, not once per path
 // and mutants of the punctual lights, which tests/test_light_transport.cpp's closed
 // forms must reject:
 //   VKPT_MUTANT_SPOT_FALLOFF_LINEAR      the cone's falloff not squared
@@ -161,5 +163,13 @@ VKPT_FN float RangeFalloffSquared(float range, float dist) {
 #endif
 
 VKPT_END_NAMESPACE
+
+#ifdef VKPT_MUTANT_WAVELENGTH_WEIGHT_EVERY_VERTEX
+#define DrawsWavelength DrawsWavelengthEveryVertex
+VKPT_FN bool DrawsWavelengthEveryVertex(float wavelength) {
+  (void)wavelength;
+  return true;
+}
+#endif
 
 #endif
