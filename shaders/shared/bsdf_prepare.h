@@ -92,15 +92,18 @@ VKPT_FN bool Transmits(Bsdf b) { return b.transmission > 0.0f || b.diffuseTransm
 // The diffuse base's weights c(μ) (the coupling above): the dielectric layer's scalar
 // albedo A(μ) = F0s (E − E5) + F90 E5 + Fms_s (1 − E), with E (e at μo, eAvg averaged)
 // from the GGX table and the dielectric's Fms `fmsD`.
+// The layer's albedo A at the GGX table's (E, E5) `e`, once PrepareCoupling has set its
+// terms.
+VKPT_FN float LayerAlbedo(Bsdf b, vec2 e) { return b.couplingF0 * e.x + b.couplingE5 * e.y + b.couplingMs; }
+
 VKPT_FN void PrepareCoupling(VKPT_INOUT(Bsdf) b, vec2 e, vec2 eAvg, vec3 fmsD) {
   float f0s = MaxComponent(b.f0);
   float fmsS = MaxComponent(fmsD);
   b.couplingF0 = f0s - fmsS;
   b.couplingE5 = b.f90 - f0s;
   b.couplingMs = fmsS;
-  float aAvg = b.couplingF0 * eAvg.x + b.couplingE5 * eAvg.y + b.couplingMs;
-  b.couplingNorm = inversesqrt(max(1.0f - aAvg, 1e-6f));
-  float aO = b.couplingF0 * e.x + b.couplingE5 * e.y + b.couplingMs;
+  b.couplingNorm = inversesqrt(max(1.0f - LayerAlbedo(b, eAvg), 1e-6f));
+  float aO = LayerAlbedo(b, e);
   b.couplingO = (1.0f - b.metallic - b.transmission) * max(1.0f - aO, 0.0f) * b.couplingNorm;
 }
 
@@ -192,21 +195,22 @@ VKPT_FN Bsdf BaseBsdf(Material mat, vec3 coatNormal) {
   return b;
 }
 
-// The dielectric layer's Fresnel at cos θ to a microfacet: Schlick's (DielectricFresnel),
-// mixed with the film's (iridescence.h).
-VKPT_FN vec3 DielectricLayerFresnel(Bsdf b, float cosTheta) {
-  vec3 f = DielectricFresnel(b.f0, b.f90, cosTheta, b.etap);
+// Fresnel `f` at cos θ to a microfacet, mixed with the film's (iridescence.h) over a base
+// of reflectance `baseF0` where the material has a film.
+VKPT_FN vec3 WithFilm(Bsdf b, vec3 f, float cosTheta, vec3 baseF0) {
   if (VKPT_IRIDESCENCE && b.iridescence > 0.0f)
-    f = mix(f, ThinFilmFresnel(cosTheta, b.filmIor, b.filmThickness, b.f0), b.iridescence);
+    f = mix(f, ThinFilmFresnel(cosTheta, b.filmIor, b.filmThickness, baseF0), b.iridescence);
   return f;
 }
 
-// The metal's: Schlick's with F0 = baseColor, mixed with the film's on that F0.
+// The dielectric layer's Fresnel: Schlick's (DielectricFresnel) under the film.
+VKPT_FN vec3 DielectricLayerFresnel(Bsdf b, float cosTheta) {
+  return WithFilm(b, DielectricFresnel(b.f0, b.f90, cosTheta, b.etap), cosTheta, b.f0);
+}
+
+// The metal's: Schlick's with F0 = baseColor under the film on that F0.
 VKPT_FN vec3 MetalFresnel(Bsdf b, float cosTheta) {
-  vec3 f = SchlickFresnel(b.baseColor, vec3(1.0f), cosTheta);
-  if (VKPT_IRIDESCENCE && b.iridescence > 0.0f)
-    f = mix(f, ThinFilmFresnel(cosTheta, b.filmIor, b.filmThickness, b.baseColor), b.iridescence);
-  return f;
+  return WithFilm(b, SchlickFresnel(b.baseColor, vec3(1.0f), cosTheta), cosTheta, b.baseColor);
 }
 
 // A film (iridescence.h) changes the dielectric layer's albedo at μo by what its Fresnel
@@ -223,7 +227,7 @@ VKPT_RARE_FN void PrepareFilm(VKPT_INOUT(Bsdf) b, Material mat, float mu, vec2 e
   b.filmThickness = mat.iridescenceThickness;
   float schlick = MaxComponent(DielectricFresnel(b.f0, b.f90, mu, b.etap));
   float delta = (MaxComponent(DielectricLayerFresnel(b, mu)) - schlick) * e.x;
-  float a = b.couplingF0 * e.x + b.couplingE5 * e.y + b.couplingMs;
+  float a = LayerAlbedo(b, e);
   b.couplingO *= max(1.0f - a - delta, 0.0f) / max(1.0f - a, 1e-6f);
 }
 
