@@ -159,6 +159,22 @@ TEST(Render, ImageIsIdenticalForAnyThreadCount) {
   EXPECT_NE(0, std::memcmp(a.pixels.data(), c.pixels.data(), a.pixels.size() * sizeof(glm::vec3)));
 }
 
+// Every sample of `rs`, and its rays, bit for bit from the general estimator and from
+// `estimator`, one compiled for fewer features.
+using Estimator = glm::vec3 (*)(const RenderScene&, const shader::FrameParams&, uint32_t, uint32_t, uint32_t,
+                                SampleStats&);
+void ExpectSameSamplesAsTheGeneralEstimator(const RenderScene& rs, const shader::FrameParams& p, Estimator estimator) {
+  SampleStats general, specialized;
+  for (uint32_t y = 0; y < p.height; ++y)
+    for (uint32_t x = 0; x < p.width; ++x)
+      for (uint32_t s = 0; s < p.sampleCount; ++s) {
+        const glm::vec3 a = SampleRadiance(rs, p, x, y, s, general);
+        const glm::vec3 b = estimator(rs, p, x, y, s, specialized);
+        ASSERT_EQ(0, std::memcmp(&a, &b, sizeof a)) << "pixel " << x << "," << y << " sample " << s;
+      }
+  EXPECT_EQ(general.rays, specialized.rays);
+}
+
 // The Cornell box is a simple scene: the CPU renders it with SampleRadianceSimple, which
 // must give every sample bit for bit as the general estimator does.
 TEST(Render, SimpleSceneEstimatorEqualsTheGeneralOne) {
@@ -167,15 +183,7 @@ TEST(Render, SimpleSceneEstimatorEqualsTheGeneralOne) {
   shader::FrameParams p = Params(scene, rs, 24, 24, 8, 32, 3, 5);
   ASSERT_TRUE(IsSimpleScene(rs, p));
   ASSERT_FALSE(rs.shading.empty());
-  SampleStats general, simple;
-  for (uint32_t y = 0; y < p.height; ++y)
-    for (uint32_t x = 0; x < p.width; ++x)
-      for (uint32_t s = 0; s < p.sampleCount; ++s) {
-        const glm::vec3 a = SampleRadiance(rs, p, x, y, s, general);
-        const glm::vec3 b = SampleRadianceSimple(rs, p, x, y, s, simple);
-        ASSERT_EQ(0, std::memcmp(&a, &b, sizeof a)) << "pixel " << x << "," << y << " sample " << s;
-      }
-  EXPECT_EQ(general.rays, simple.rays);
+  ExpectSameSamplesAsTheGeneralEstimator(rs, p, SampleRadianceSimple);
   // What makes a scene not simple: a glossy material on a triangle, vertex normals, a
   // punctual light, an environment map, vertex colours, a volume. An unused glossy material does not.
   RenderScene glossy = rs;
@@ -198,6 +206,46 @@ TEST(Render, SimpleSceneEstimatorEqualsTheGeneralOne) {
   RenderScene colored = rs;
   colored.vertexColors.resize(rs.shading.size());
   EXPECT_FALSE(IsSimpleScene(colored, p));
+}
+
+// A scene whose materials use none of the layered extensions is rendered by
+// SampleRadianceCore, which must give every sample as the general estimator does: the
+// Cornell box made of metals, rough dielectrics and glass volumes, and a textured quad.
+TEST(Render, CoreSceneEstimatorEqualsTheGeneralOne) {
+  Scene scene = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    Material& mat = scene.materials[m];
+    mat.roughness = 0.2f + 0.15f * float(m % 4);
+    mat.metallic = m % 3 == 2 ? 1.0f : 0.0f;
+    mat.transmission = 1.0f;
+    mat.volume = true;
+    mat.attenuation = glm::vec3(0.2f, 0.4f, 0.8f);
+  }
+  RenderScene rs = PrepareRenderScene(scene);
+  shader::FrameParams p = Params(scene, rs, 24, 24, 8, 32, 3, 5);
+  ASSERT_FALSE(IsSimpleScene(rs, p));
+  ASSERT_TRUE(IsCoreScene(rs));
+  ExpectSameSamplesAsTheGeneralEstimator(rs, p, SampleRadianceCore);
+  Scene quad = test::TexturedQuadScene();
+  RenderScene rsQuad = PrepareRenderScene(quad);
+  ASSERT_TRUE(IsCoreScene(rsQuad));
+  ExpectSameSamplesAsTheGeneralEstimator(rsQuad, test::TestFrame(rsQuad, quad, 16, 4, 7, 4), SampleRadianceCore);
+  // Any layered extension on a triangle's material makes the scene not core; on an unused
+  // material it does not.
+  using Edit = void (*)(shader::Material&);
+  const Edit kLayers[] = {[](shader::Material& m) { m.clearcoat = 1.0f; },
+                          [](shader::Material& m) { m.sheenColor = glm::vec3(0.5f); },
+                          [](shader::Material& m) { m.diffuseTransmission = 0.5f; },
+                          [](shader::Material& m) { m.iridescence = 1.0f; },
+                          [](shader::Material& m) { m.anisotropy = 0.5f; },
+                          [](shader::Material& m) { m.dispersion = 1.0f; }};
+  for (Edit edit : kLayers) {
+    RenderScene layered = rs;
+    edit(layered.materials.back());  // the loader's default material, unused
+    EXPECT_TRUE(IsCoreScene(layered));
+    edit(layered.materials[layered.triangles[0].material]);
+    EXPECT_FALSE(IsCoreScene(layered));
+  }
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // goes through a RenderScene, traversal through the CPU's own ordered BVH walk.
 #pragma once
 
+#include "cpu/path_tracer.h"
 #include "cpu/traversal.h"
 #include "render/render_scene.h"
 #include "render/scene_access.h"
@@ -20,6 +21,18 @@ inline bool TraceOccluded(const RenderScene& scene, vec3 origin, vec3 dir, float
 }
 
 }  // namespace vkpt::shader
+
+namespace vkpt {
+
+// The radiance of a path (a PathSample of one of the estimator's compilations), its rays
+// counted in `stats`.
+template <class PathSample>
+glm::vec3 CountRays(const PathSample& s, SampleStats& stats) {
+  stats.rays += s.rays;
+  return s.radiance;
+}
+
+}  // namespace vkpt
 
 #include "shared/environment.h"
 #include "shared/path.h"

@@ -19,21 +19,27 @@ using namespace shader;
 
 glm::vec3 SampleRadiance(const RenderScene& scene, const FrameParams& params, uint32_t px, uint32_t py,
                          uint32_t sampleIndex, SampleStats& stats) {
-  PathSample s = TracePath(scene, params, px, py, sampleIndex);
-  stats.rays += s.rays;
-  return s.radiance;
+  return CountRays(TracePath(scene, params, px, py, sampleIndex), stats);
 }
 
 namespace {
 
 // Pixel (x, y)'s samples [begin, begin + count), added to `sums` in sample order (so the
 // sums are the same for any thread count); non-finite samples are counted and left out.
-template <bool kSimple>
+using Estimator = glm::vec3 (*)(const RenderScene&, const FrameParams&, uint32_t, uint32_t, uint32_t, SampleStats&);
+
+// The estimator compiled for the least the scene needs: the simple one, the one without
+// the layered extensions, or the general one. Each gives the same bits.
+Estimator ChooseEstimator(const RenderScene& scene, const FrameParams& params) {
+  if (IsSimpleScene(scene, params)) return SampleRadianceSimple;
+  return IsCoreScene(scene) ? SampleRadianceCore : SampleRadiance;
+}
+
+template <Estimator kEstimator>
 void SamplePixel(const RenderScene& scene, const FrameParams& params, uint32_t x, uint32_t y, uint32_t begin,
                  uint32_t count, PixelSums& sums, SampleStats& stats) {
   for (uint32_t s = 0; s < count; ++s) {
-    glm::vec3 L = kSimple ? SampleRadianceSimple(scene, params, x, y, begin + s, stats)
-                          : SampleRadiance(scene, params, x, y, begin + s, stats);
+    glm::vec3 L = kEstimator(scene, params, x, y, begin + s, stats);
     ++sums.samples;
     if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z)) {
       ++stats.nonFinite;
@@ -50,7 +56,7 @@ class CpuFrame final : public FrameRenderer {
       : scene_(scene),
         params_(params),
         threads_(std::min<unsigned>(ThreadCount(threads), params.height)),
-        simple_(IsSimpleScene(scene, params)) {
+        estimator_(ChooseEstimator(scene, params)) {
     if (scene.pairLayout.pairs.empty() && scene.pairLayout.packets.empty())
       throw Error("the CPU renderer needs a RenderScene prepared with forCpu = true");
     sums_.width = params.width;
@@ -68,8 +74,11 @@ class CpuFrame final : public FrameRenderer {
       for (uint32_t x = 0; x < params_.width; ++x) {
         const size_t i = y * params_.width + x;
         if (!active.empty() && !active[i]) continue;
-        if (simple_) SamplePixel<true>(scene_, params_, x, uint32_t(y), begin, count, sums_.pixels[i], st);
-        else SamplePixel<false>(scene_, params_, x, uint32_t(y), begin, count, sums_.pixels[i], st);
+        if (estimator_ == SampleRadianceSimple)
+          SamplePixel<SampleRadianceSimple>(scene_, params_, x, uint32_t(y), begin, count, sums_.pixels[i], st);
+        else if (estimator_ == SampleRadianceCore)
+          SamplePixel<SampleRadianceCore>(scene_, params_, x, uint32_t(y), begin, count, sums_.pixels[i], st);
+        else SamplePixel<SampleRadiance>(scene_, params_, x, uint32_t(y), begin, count, sums_.pixels[i], st);
       }
       rays.fetch_add(st.rays);
       nonFinite.fetch_add(st.nonFinite);
@@ -93,7 +102,7 @@ class CpuFrame final : public FrameRenderer {
   const RenderScene& scene_;
   const FrameParams params_;
   const unsigned threads_;
-  const bool simple_;
+  const Estimator estimator_;
   FrameSums sums_;
 };
 

@@ -27,6 +27,14 @@ bool IsSimpleScene(const RenderScene& scene, const shader::FrameParams& params);
 glm::vec3 SampleRadianceSimple(const RenderScene& scene, const shader::FrameParams& params, uint32_t px, uint32_t py,
                                uint32_t sampleIndex, SampleStats& stats);
 
+// Whether no material a triangle uses has a layered extension (clear coat, sheen, diffuse
+// transmission, iridescence, anisotropy, dispersion) — and SampleRadianceCore, the same
+// estimator compiled without them (core_path.cpp), renders such a scene as
+// SampleRadiance does.
+bool IsCoreScene(const RenderScene& scene);
+glm::vec3 SampleRadianceCore(const RenderScene& scene, const shader::FrameParams& params, uint32_t px, uint32_t py,
+                             uint32_t sampleIndex, SampleStats& stats);
+
 struct CpuRenderOptions {
   unsigned threads = 0;  // 0: all hardware threads
   // Called from the calling thread about every 100 ms with the finished fraction.

@@ -66,9 +66,7 @@ bool IsSimpleScene(const RenderScene& scene, const shader::FrameParams& params) 
 
 glm::vec3 SampleRadianceSimple(const RenderScene& scene, const shader::FrameParams& params, uint32_t px, uint32_t py,
                                uint32_t sampleIndex, SampleStats& stats) {
-  shader::simple::PathSample s = shader::simple::TracePath(scene, params, px, py, sampleIndex);
-  stats.rays += s.rays;
-  return s.radiance;
+  return CountRays(shader::simple::TracePath(scene, params, px, py, sampleIndex), stats);
 }
 
 }  // namespace vkpt
