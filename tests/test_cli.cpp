@@ -62,7 +62,8 @@ TEST(Cli, HelpListsEveryOption) {
                             "--diff",         "--camera",      "--background", "--exposure",     "--leaf-size",
                             "--splits",       "--stats",       "-v",           "--verbose",      "--help",
                             "--version",      "--texture-lod", "--time",       "--noise-target", "--adaptive",
-                            "--no-adaptive",  "--checkpoint"})
+                            "--no-adaptive",  "--checkpoint",  "--look-from",  "--look-at",      "--up",
+                            "--fov",          "--orbit"})
       EXPECT_NE(r.out.find(opt), std::string::npos) << flag << " output does not mention " << opt;
     EXPECT_NE(r.out.find(".png"), std::string::npos);
     EXPECT_NE(r.out.find(".pfm"), std::string::npos);
@@ -122,6 +123,13 @@ TEST(Cli, BadValuesAreUsageErrors) {
       {"--rr-depth", "1025"},
       {"--splits", "sbvh"},
       {"--texture-lod", "auto"},
+      {"--look-from", "1,2"},
+      {"--look-at", "1,2,3,4"},
+      {"--up", "0,x,1"},
+      {"--look-from", "1e10,0,0"},
+      {"--fov", "0"},
+      {"--fov", "180"},
+      {"--orbit", "inf"},
   };
   for (const std::vector<std::string>& c : cases) {
     std::vector<std::string> args = {"--scene", kCornell, "--out", out};
@@ -201,6 +209,74 @@ TEST(Cli, CameraZeroIsTheFileCamera) {
   EXPECT_EQ(ReadFile(a), ReadFile(b));
   std::remove(a.c_str());
   std::remove(b.c_str());
+}
+
+// The Cornell box's camera (at (278, 273, −800), looking along +Z, up +Y) given again by
+// --look-from, --look-at and --up renders the same image, within the rounding of its
+// view recomputed from the two points; turned by --orbit 360 too. Turned by 90° about
+// the box's centre (278, 273, 279.6) it stands at its −X side, looking along +X.
+TEST(Cli, LookAtAndOrbitMoveTheCamera) {
+  const std::string a = TempPath("cli-look-file.pfm"), b = TempPath("cli-look-at.pfm"), c = TempPath("cli-orbit.pfm");
+  ASSERT_TRUE(RenderCornell(a).ExitedWith(0));
+  ProcessResult same = RenderCornell(b, {"--look-from", "278,273,-800", "--look-at", "278,273,0", "--up", "0,1,0"});
+  ASSERT_TRUE(same.ExitedWith(0)) << same.Describe();
+  ProcessResult turned = RenderCornell(c, {"--orbit", "360", "-v"});
+  ASSERT_TRUE(turned.ExitedWith(0)) << turned.Describe();
+  const Image ia = ReadPfm(a), ib = ReadPfm(b), ic = ReadPfm(c);
+  ASSERT_EQ(ia.pixels.size(), ib.pixels.size());
+  int off = 0, offOrbit = 0;
+  for (size_t i = 0; i < ia.pixels.size(); ++i) {
+    off += glm::any(glm::greaterThan(glm::abs(ia.pixels[i] - ib.pixels[i]), glm::vec3(1e-3f)));
+    offOrbit += glm::any(glm::greaterThan(glm::abs(ia.pixels[i] - ic.pixels[i]), glm::vec3(1e-3f)));
+  }
+  std::printf("--look-from/--look-at: %d, --orbit 360: %d of %zu pixels off by more than 1e-3 (<= 2 %%)\n", off,
+              offOrbit, ia.pixels.size());
+  EXPECT_LE(off, int(ia.pixels.size() / 50));
+  EXPECT_LE(offOrbit, int(ia.pixels.size() / 50));
+  ProcessResult quarter = RenderCornell(c, {"--orbit", "90", "-v"});
+  ASSERT_TRUE(quarter.ExitedWith(0)) << quarter.Describe();
+  EXPECT_TRUE(std::regex_search(quarter.out, std::regex("turned by --orbit\" at \\(-801\\.[0-9]+, 273, 279\\.[0-9]+\\) "
+                                                        "looking \\(1, [-0-9e.]+, [-0-9e.]+\\)")))
+      << quarter.out;
+  for (const std::string& f : {a, b, c}) std::remove(f.c_str());
+}
+
+// Where the camera cannot be placed, the error names the file and why, and nothing is
+// written.
+TEST(Cli, CameraThatCannotBePlacedIsAnError) {
+  const std::string out = TempPath("cli-look-bad.png");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--look-from", "1,2,3", "--look-at", "1,2,3"}, "look-at point is where it stands"},
+      {{"--look-from", "0,5,0", "--look-at", "0,0,0"}, "up direction lies along its view"},
+      {{"--up", "0,0,2"}, "up direction lies along its view"}};
+  for (const auto& [args, message] : cases) {
+    ProcessResult r = RenderCornell(out, args);
+    EXPECT_TRUE(r.ExitedWith(1)) << r.Describe();
+    EXPECT_EQ(r.err.rfind(std::string("vkpt: error: ") + kCornell + ": ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+// --fov sets a perspective camera's field of view (-v shows it) and is an error for an
+// orthographic one.
+TEST(Cli, FovIsForPerspectiveCameras) {
+  test::GltfBuilder b = test::TriangleModel();
+  b.cameras.push_back(R"({"type":"orthographic","orthographic":{"xmag":1,"ymag":1,"znear":0.1,"zfar":10}})");
+  b.Node(R"({"children":[1,2]})");
+  b.Node(R"({"mesh":0})");
+  b.Node(R"({"camera":0,"translation":[0.3,0.3,3]})");
+  const test::TempFile file(b.Json());
+  const std::string out = TempPath("cli-fov.png");
+  ProcessResult ortho = RunVkpt({"--scene", file.path, "--spp", "1", "--width", "8", "--fov", "30", "--out", out});
+  EXPECT_TRUE(ortho.ExitedWith(1)) << ortho.Describe();
+  EXPECT_NE(ortho.err.find("--fov is for perspective cameras, and camera 0 is orthographic"), std::string::npos)
+      << ortho.err;
+  EXPECT_FALSE(fs::exists(out));
+  ProcessResult wide = RenderCornell(out, {"--fov", "75", "-v"});
+  ASSERT_TRUE(wide.ExitedWith(0)) << wide.Describe();
+  EXPECT_NE(wide.out.find("perspective yfov(deg) 75"), std::string::npos) << wide.out;
+  std::remove(out.c_str());
 }
 
 // The suite pins lavapipe (VK_ICD_FILENAMES in tests/CMakeLists.txt), so Vulkan must

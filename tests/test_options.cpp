@@ -35,7 +35,8 @@ TEST(Options, StatsObjectOfTheDefaults) {
     "scene": "dir/box.gltf", "out": "box.png", "width": null, "height": null, "spp": 64, "time": null,
     "noise_target": null, "adaptive": false, "checkpoint": null, "seed": 0, "chunk": 16, "max_depth": 32,
     "rr_depth": 3, "backend": "auto", "device": "", "threads": 0, "batch": 0, "compare": false,
-    "validation": false, "camera": null, "exposure": 0, "background": null, "env": "", "env_rotation": 0,
+    "validation": false, "camera": null, "look_from": null, "look_at": null, "up": null, "fov": null,
+    "orbit": null, "exposure": 0, "background": null, "env": "", "env_rotation": 0,
     "env_intensity": 1, "texture_lod": "cones", "leaf_size": 8, "splits": "auto", "max_memory": 0,
     "max_texels": 0, "allow_external_uris": false, "aov": [], "denoise": false, "stats": "",
     "variant": "", "verbose": false})"));
@@ -47,6 +48,7 @@ TEST(Options, StatsObjectOfEveryOptionGiven) {
   std::istringstream words(
       "--scene s.glb --out x.exr --width 10 --height 20 --spp 5 --time 2.5 --noise-target 0.01 --checkpoint 3 --seed 9 "
       "--chunk 8 --max-depth 4 --rr-depth 2 --backend cpu --device lav --threads 3 --batch 7 --validation --camera 1 "
+      "--look-from 1,2,3 --look-at 0,0.5,-1 --up 0,0,1 --fov 35 --orbit -90 "
       "--exposure 0.1 --env e.hdr --env-rotation 90 --env-intensity 2 --variant beach --texture-lod none --leaf-size 4 "
       "--splits "
       "spatial --max-memory 64M --max-texels 1K --allow-external-uris --aov normal,depth,normal --denoise --stats "
@@ -56,7 +58,8 @@ TEST(Options, StatsObjectOfEveryOptionGiven) {
     "scene": "s.glb", "out": "x.exr", "width": 10, "height": 20, "spp": 5, "time": 2.5,
     "noise_target": 0.01, "adaptive": false, "checkpoint": 3, "seed": 9, "chunk": 8, "max_depth": 4,
     "rr_depth": 2, "backend": "cpu", "device": "lav", "threads": 3, "batch": 7, "compare": false,
-    "validation": true, "camera": 1, "exposure": 0.10000000149011612, "background": null, "env": "e.hdr",
+    "validation": true, "camera": 1, "look_from": [1, 2, 3], "look_at": [0, 0.5, -1], "up": [0, 0, 1],
+    "fov": 35, "orbit": -90, "exposure": 0.10000000149011612, "background": null, "env": "e.hdr",
     "env_rotation": 90, "env_intensity": 2, "texture_lod": "none", "leaf_size": 4, "splits": "spatial",
     "max_memory": 67108864, "max_texels": 1024, "allow_external_uris": true, "aov": ["normal", "depth"],
     "denoise": true, "stats": "s.json", "variant": "beach", "verbose": true})"));

@@ -79,6 +79,17 @@ std::vector<OptionDef> SceneRows() {
   return {
       Row({"--camera"}, "N", "glTF camera to render from, in scene order; without one, a camera framing the scene", "0",
           Number(&O::camera, {0, 1u << 20})),
+      Row({"--look-from"}, "X,Y,Z", "move the camera to this point (scene units)", "the camera's position",
+          PointValue(&O::lookFrom)),
+      Row({"--look-at"}, "X,Y,Z", "aim the camera at this point",
+          "the scene's centre with `--look-from`, else straight ahead", PointValue(&O::lookAt)),
+      Row({"--up"}, "X,Y,Z", "the direction that is up in the image", "+Y, glTF's up", PointValue(&O::up)),
+      Row({"--fov"}, "DEGREES", "vertical field of view of a perspective camera", "the camera's",
+          Number(&O::fov, {0.0, 179.0, true})),
+      Row({"--orbit"}, "DEGREES",
+          "turn the camera about the up axis through `--look-at` (else the scene's centre), counter-clockwise seen "
+          "from above",
+          "0", Number(&O::orbit, {-3600, 3600})),
       Row({"--background"}, "R,G,B", "constant environment radiance for rays that leave the scene (one number: grey)",
           "1 if the scene has no lights, else 0", BackgroundValue()),
       Row({"--env"}, "FILE",

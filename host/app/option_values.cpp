@@ -92,6 +92,13 @@ JsonFn JsonOf(bool Options::*f) {
 JsonFn JsonOf(std::string Options::*f) {
   return [f](const Options& o) { return JsonString(o.*f); };
 }
+JsonFn JsonOf(std::optional<std::array<float, 3>> Options::*f) {
+  return [f](const Options& o) {
+    if (!(o.*f)) return Null();
+    const std::array<float, 3>& v = *(o.*f);
+    return JsonArray({JsonNumber(v[0]), JsonNumber(v[1]), JsonNumber(v[2])});
+  };
+}
 
 std::string ChoicesText(const std::vector<std::string>& names) {
   std::string text;
@@ -160,12 +167,19 @@ OptionValue BackgroundValue() {
     for (size_t k = 0; k < 3; ++k) c[k] = ParseNumber<float>(g.name, parts[parts.size() == 1 ? 0 : k], range);
     o.background = c;
   };
-  auto json = [](const Options& o) {
-    if (!o.background) return Null();
-    const std::array<float, 3>& c = *o.background;
-    return JsonArray({JsonNumber(c[0]), JsonNumber(c[1]), JsonNumber(c[2])});
+  return {"each " + RangeText(range), set, JsonOf(&Options::background)};
+}
+
+OptionValue PointValue(std::optional<std::array<float, 3>> Options::*field) {
+  const Range range{-1e9, 1e9};
+  auto set = [field, range](Options& o, const GivenOption& g) {
+    const std::vector<std::string> parts = SplitCommas(g.value());
+    if (parts.size() != 3) throw UsageError(g.name + " expects X,Y,Z, got \"" + g.value() + "\"");
+    std::array<float, 3> p{};
+    for (size_t k = 0; k < 3; ++k) p[k] = ParseNumber<float>(g.name, parts[k], range);
+    o.*field = p;
   };
-  return {"each " + RangeText(range), set, json};
+  return {"three numbers, each " + RangeText(range), set, JsonOf(field)};
 }
 
 OptionValue AovValue() {

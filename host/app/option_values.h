@@ -51,6 +51,7 @@ std::function<std::string(const Options&)> JsonOf(std::optional<double> Options:
 std::function<std::string(const Options&)> JsonOf(float Options::*field);
 std::function<std::string(const Options&)> JsonOf(bool Options::*field);
 std::function<std::string(const Options&)> JsonOf(std::string Options::*field);
+std::function<std::string(const Options&)> JsonOf(std::optional<std::array<float, 3>> Options::*field);
 
 template <class T>
 struct NumberOf {
@@ -105,6 +106,8 @@ OptionValue AdaptiveValue(bool on);
 OptionValue CheckpointValue();
 OptionValue DiffValue();
 OptionValue BackgroundValue();
+// X,Y,Z: a point or direction in scene units.
+OptionValue PointValue(std::optional<std::array<float, 3>> Options::*field);
 OptionValue AovValue();
 OptionValue MaxMemoryValue();
 OptionValue MaxTexelsValue();

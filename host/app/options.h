@@ -41,6 +41,11 @@ struct Options {
   std::vector<std::string> diff;    // --diff A.pfm B.pfm: compare two existing images
   unsigned threads = 0;  // 0: all cores
   std::optional<uint32_t> camera;
+  // --look-from, --look-at, --up: the camera moved and aimed (scene/scene.h's LookAt);
+  // --fov: its vertical field of view in degrees; --orbit: degrees it turns about the up
+  // axis through the look-at point (Orbit).
+  std::optional<std::array<float, 3>> lookFrom, lookAt, up;
+  std::optional<double> fov, orbit;
   float exposure = 0.0f;
   // Constant environment radiance; absent: white (1,1,1) for a scene without emissive
   // triangles (so any model is visible), black otherwise.

@@ -25,7 +25,7 @@ using shader::MaxComponent;
 
 // The camera --camera names (the scene's first, or a default one framing the scene if
 // it has none); its index goes to *index.
-Camera ChooseCamera(const Scene& scene, const Options& o, uint32_t* index) {
+Camera SceneCamera(const Scene& scene, const Options& o, uint32_t* index) {
   *index = o.camera.value_or(0);
   if (scene.cameras.empty()) {
     if (o.camera)
@@ -36,6 +36,36 @@ Camera ChooseCamera(const Scene& scene, const Options& o, uint32_t* index) {
     throw Error(o.scene + ": --camera " + std::to_string(*index) + " is out of range; the scene has " +
                 std::to_string(scene.cameras.size()) + " camera(s)");
   return scene.cameras[*index];
+}
+
+glm::vec3 Vec3(const std::array<float, 3>& v) { return {v[0], v[1], v[2]}; }
+
+// That camera as --look-from, --look-at, --up, --fov and --orbit move it.
+Camera ChooseCamera(const Scene& scene, const Options& o, uint32_t* index) {
+  Camera cam = SceneCamera(scene, o, index);
+  const glm::vec3 up = o.up ? Vec3(*o.up) : glm::vec3(0.0f, 1.0f, 0.0f);
+  const glm::vec3 pivot = o.lookAt ? Vec3(*o.lookAt) : scene.bounds.Center();
+  try {
+    if (o.lookFrom || o.lookAt || o.up) {
+      const glm::vec3 from = o.lookFrom ? Vec3(*o.lookFrom) : cam.position;
+      const glm::vec3 at = o.lookAt ? pivot : o.lookFrom ? scene.bounds.Center() : cam.position + cam.forward;
+      cam = LookAt(cam, from, at, up);
+      cam.name += " moved by --look-from/--look-at/--up";
+    }
+    if (o.orbit) {
+      cam = Orbit(cam, pivot, up, float(*o.orbit));
+      cam.name += ", turned by --orbit";
+    }
+  } catch (const Error& e) {
+    throw Error(o.scene + ": " + e.what());
+  }
+  if (o.fov) {
+    if (cam.orthographic)
+      throw Error(o.scene + ": --fov is for perspective cameras, and camera " + std::to_string(*index) +
+                  " is orthographic");
+    cam.yfov = float(*o.fov * 3.14159265358979323846 / 180.0);
+  }
+  return cam;
 }
 
 // Resolution: what the user said; the missing side follows the camera's aspect ratio.

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "scene/scene.h"
+#include "util/error.h"
 
 namespace vkpt {
 
@@ -20,6 +21,32 @@ Camera DefaultCamera(const Bounds3f& bounds) {
   cam.forward = -back;
   cam.right = glm::normalize(glm::cross(cam.forward, glm::vec3(0.0f, 1.0f, 0.0f)));
   cam.up = glm::cross(cam.right, cam.forward);
+  return cam;
+}
+
+Camera LookAt(Camera cam, glm::vec3 from, glm::vec3 at, glm::vec3 up) {
+  const glm::vec3 view = at - from;
+  if (!(glm::length(view) > 0.0f)) throw Error("the camera's look-at point is where it stands");
+  const glm::vec3 forward = glm::normalize(view);
+  const glm::vec3 side = glm::cross(forward, up);
+  // sin of the angle between the view and `up`: below 1e-4 the image's roll is undefined.
+  if (!(glm::length(side) > 1e-4f * glm::length(up))) throw Error("the camera's up direction lies along its view");
+  cam.position = from;
+  cam.forward = forward;
+  cam.right = glm::normalize(side);
+  cam.up = glm::cross(cam.right, cam.forward);
+  return cam;
+}
+
+Camera Orbit(Camera cam, glm::vec3 pivot, glm::vec3 up, float degrees) {
+  // Rodrigues' rotation about the unit axis k: v cos θ + (k × v) sin θ + k (k·v)(1 − cos θ).
+  const glm::vec3 k = glm::normalize(up);
+  const float theta = glm::radians(degrees), c = std::cos(theta), s = std::sin(theta);
+  auto turn = [&](glm::vec3 v) { return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0f - c); };
+  cam.position = pivot + turn(cam.position - pivot);
+  cam.forward = turn(cam.forward);
+  cam.up = turn(cam.up);
+  cam.right = turn(cam.right);
   return cam;
 }
 

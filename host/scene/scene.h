@@ -142,5 +142,12 @@ inline bool HasMaterialTextures(const Scene& scene) {
 // A camera framing the whole scene, for files that define none: looks along −Z at the
 // centre of the bounds from far enough that the bounding sphere fits the view.
 Camera DefaultCamera(const Bounds3f& bounds);
+// `cam` moved to `from` and aimed at `at`, turned about its view so that `up` points up in
+// the image; its lens (perspective or orthographic, field of view) unchanged. Throws
+// Error when `from` and `at` coincide or `up` lies along the view.
+Camera LookAt(Camera cam, glm::vec3 from, glm::vec3 at, glm::vec3 up);
+// `cam` turned by `degrees` about the axis along `up` through `pivot`, counter-clockwise
+// seen from above (from where `up` points): position, view and up turn together.
+Camera Orbit(Camera cam, glm::vec3 pivot, glm::vec3 up, float degrees);
 
 }  // namespace vkpt
