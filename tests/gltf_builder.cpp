@@ -65,6 +65,8 @@ std::string GltfBuilder::Json(bool glb) const {
   array("textures", textures);
   array("images", images);
   array("nodes", nodes);
+  array("skins", skins);
+  array("animations", animations);
   std::vector<std::string> sc = scenes;
   if (sc.empty() && !nodes.empty() && defaultScenes) sc.push_back("{\"nodes\":[0]}");
   array("scenes", sc);
@@ -72,15 +74,16 @@ std::string GltfBuilder::Json(bool glb) const {
   return j + extraTopLevel + "}";
 }
 
-Scene Load(const GltfBuilder& b) {
+Scene Load(const GltfBuilder& b, const SceneChoice& choice) {
   TempFile f(b.Json());
-  return LoadGltf(f.path);
+  return LoadGltf(f.path, {}, choice);
 }
 
-::testing::AssertionResult LoadFailsWith(const std::string& path, std::initializer_list<std::string> needles) {
+::testing::AssertionResult LoadFailsWith(const std::string& path, std::initializer_list<std::string> needles,
+                                         const SceneChoice& choice) {
   std::string what;
   try {
-    Scene s = LoadGltf(path);
+    Scene s = LoadGltf(path, {}, choice);
     return ::testing::AssertionFailure() << path << " loaded (" << s.triangles.size()
                                          << " triangles) but should have failed";
   } catch (const Error& e) {
@@ -95,9 +98,10 @@ Scene Load(const GltfBuilder& b) {
   return ::testing::AssertionSuccess() << what;
 }
 
-::testing::AssertionResult FailsWith(const GltfBuilder& b, std::initializer_list<std::string> needles) {
+::testing::AssertionResult FailsWith(const GltfBuilder& b, std::initializer_list<std::string> needles,
+                                     const SceneChoice& choice) {
   TempFile f(b.Json());
-  return LoadFailsWith(f.path, needles);
+  return LoadFailsWith(f.path, needles, choice);
 }
 
 ::testing::AssertionResult Near(const glm::vec3& a, const glm::vec3& b, float eps) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -15,6 +16,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 #include "test_util.h"
 
@@ -99,7 +101,7 @@ class GltfBuilder {
     return b;
   }
 
-  std::vector<std::string> meshes, nodes, materials, cameras, scenes, textures, images;
+  std::vector<std::string> meshes, nodes, materials, cameras, scenes, textures, images, skins, animations;
   std::vector<std::string> extensionsUsed, extensionsRequired;
   std::string version = "2.0";
   std::optional<int> scene;
@@ -121,7 +123,9 @@ class TempFile {
  public:
   TempFile(const std::string& contents, const std::string& ext = ".gltf") {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = TempPath(std::string("loader-") + info->name() + "-" + std::to_string(counter_++) + ext);
+    std::string test = info->name();
+    std::replace(test.begin(), test.end(), '/', '-');  // parameterized tests' names: "Name/0"
+    path = TempPath("loader-" + test + "-" + std::to_string(counter_++) + ext);
     std::ofstream(path, std::ios::binary) << contents;
   }
   ~TempFile() { std::remove(path.c_str()); }
@@ -133,12 +137,14 @@ class TempFile {
   static inline int counter_ = 0;
 };
 
-Scene Load(const GltfBuilder& b);
+Scene Load(const GltfBuilder& b, const SceneChoice& choice = {});
 
 // LoadGltf(path) must throw vkpt::Error whose message starts with the path and contains
 // every needle.
-::testing::AssertionResult LoadFailsWith(const std::string& path, std::initializer_list<std::string> needles);
-::testing::AssertionResult FailsWith(const GltfBuilder& b, std::initializer_list<std::string> needles);
+::testing::AssertionResult LoadFailsWith(const std::string& path, std::initializer_list<std::string> needles,
+                                         const SceneChoice& choice = {});
+::testing::AssertionResult FailsWith(const GltfBuilder& b, std::initializer_list<std::string> needles,
+                                     const SceneChoice& choice = {});
 
 ::testing::AssertionResult Near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f);
 

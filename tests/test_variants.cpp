@@ -57,9 +57,9 @@ TEST(Variants, EachVariantGivesItsMappedMaterials) {
   EXPECT_EQ(plain.materialVariants, (std::vector<std::string>{"red", "blue", "green"}));
   EXPECT_EQ(plain.variant, -1);
   EXPECT_EQ(TriangleMaterials(plain), (std::vector<uint32_t>{0, 0}));
-  EXPECT_EQ(TriangleMaterials(LoadGltf(f.path, {}, "red")), (std::vector<uint32_t>{1, 0}));
-  EXPECT_EQ(TriangleMaterials(LoadGltf(f.path, {}, "2")), (std::vector<uint32_t>{2, 0}));
-  const Scene blue = LoadGltf(f.path, {}, "blue");  // mapped by no primitive
+  EXPECT_EQ(TriangleMaterials(LoadGltf(f.path, {}, {.variant = "red"})), (std::vector<uint32_t>{1, 0}));
+  EXPECT_EQ(TriangleMaterials(LoadGltf(f.path, {}, {.variant = "2"})), (std::vector<uint32_t>{2, 0}));
+  const Scene blue = LoadGltf(f.path, {}, {.variant = "blue"});  // mapped by no primitive
   EXPECT_EQ(blue.variant, 1);
   EXPECT_EQ(TriangleMaterials(blue), (std::vector<uint32_t>{0, 0}));
   for (const std::string& ig : plain.ignoredFeatures) EXPECT_EQ(ig.find("variants"), std::string::npos) << ig;
@@ -69,7 +69,7 @@ TEST(Variants, UnknownVariantsAndBadMappingsAreNamed) {
   const TempFile f(VariantModel().Json());
   for (const char* wanted : {"purple", "3", "-1"}) {
     try {
-      LoadGltf(f.path, {}, wanted);
+      LoadGltf(f.path, {}, {.variant = wanted});
       ADD_FAILURE() << wanted << " loaded";
     } catch (const Error& e) {
       EXPECT_NE(std::string(e.what()).find(std::string("--variant ") + wanted +
@@ -98,7 +98,7 @@ TEST(Variants, UnknownVariantsAndBadMappingsAreNamed) {
   none.Node(R"({"mesh":0})");
   const TempFile nf(none.Json());
   try {
-    LoadGltf(nf.path, {}, "red");
+    LoadGltf(nf.path, {}, {.variant = "red"});
     ADD_FAILURE() << "a file without variants took --variant";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("the file has no material variants"), std::string::npos) << e.what();
@@ -135,7 +135,7 @@ TEST(Variants, ShoeRendersEachVariantInItsColours) {
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   std::vector<glm::dvec3> means;
   for (const char* v : {"midnight", "beach", "street"}) {
-    const Scene s = LoadGltf(path, {}, v);
+    const Scene s = LoadGltf(path, {}, {.variant = v});
     const RenderScene rs = PrepareRenderScene(s);
     shader::FrameParams p = MakeFrameParams(rs, s.cameras.empty() ? DefaultCamera(s.bounds) : s.cameras[0], 32, 32);
     p.sampleCount = 16;

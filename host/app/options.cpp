@@ -39,6 +39,7 @@ void Complete(Options& o) {
     throw UsageError("--compare checks the backends against each other; it takes no --aov or --denoise");
   if (!o.sppGiven && (o.time || o.noiseTarget)) o.spp = kBudgetMaxSpp;
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
+  if (o.at && o.animation.empty()) throw UsageError("--at is a time in an --animation; none was given");
   if (!o.env.empty() && o.background) throw UsageError("--env and --background both set the environment; give one");
   if (o.env.empty() && (o.envRotation != 0.0f || o.envIntensity != 1.0f))
     throw UsageError("--env-rotation and --env-intensity apply to an --env map; none was given");

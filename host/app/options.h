@@ -52,6 +52,8 @@ struct Options {
   std::optional<std::array<float, 3>> background;
   std::string env;            // --env: equirectangular environment map (.hdr, .exr)
   std::string variant;        // --variant: a KHR_materials_variants name or index ("": none)
+  std::string animation;      // --animation: a glTF animation's name or index ("": none)
+  std::optional<double> at;   // --at: seconds into the animation
   float envRotation = 0.0f;   // --env-rotation: degrees about +Y, counter-clockwise from above
   float envIntensity = 1.0f;  // --env-intensity: radiance scale
   uint32_t leafSize = 8;

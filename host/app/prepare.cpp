@@ -169,7 +169,7 @@ Prepared Prepare(const Options& o, bool report, uint32_t ranks) {
   CheckOutputPath(o.out);  // fail before a long render, not after
   if (!o.stats.empty()) CheckWritablePath(o.stats, "a stats");
   PhaseTimer phase;
-  p.scene = LoadGltf(o.scene, o.load, o.variant);
+  p.scene = LoadGltf(o.scene, o.load, {o.variant, o.animation, o.at.value_or(0.0)});
   phase.Lap(p.times.load);
   uint64_t envBytes = 0;
   EnvironmentMap env = LoadEnvironment(o, p.scene, &envBytes);

@@ -150,6 +150,14 @@ void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& ca
     std::printf("; rendering %s\n", scene.variant < 0 ? "the default materials"
                                                       : ("\"" + scene.materialVariants[scene.variant] + "\"").c_str());
   }
+  if (!scene.animations.empty()) {
+    std::printf("  animations (--animation NAME|INDEX, --at SECONDS):");
+    for (size_t i = 0; i < scene.animations.size(); ++i)
+      std::printf("%s %zu \"%s\" %.6g s", i ? "," : "", i, scene.animations[i].name.c_str(),
+                  scene.animations[i].duration);
+    if (scene.animation < 0) std::printf("; posing none (the nodes' own transforms)\n");
+    else std::printf("; posing %zu at %.6g s\n", size_t(scene.animation), scene.animationTime);
+  }
   for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
   for (const std::string& f : scene.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
 }

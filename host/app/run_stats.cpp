@@ -35,6 +35,9 @@ JsonObject SceneJson(const RunOutcome& run) {
   scene.Int("memory_counted", run.scene.memoryCounted).Int("memory_limit", run.scene.memoryLimit);
   scene.Raw("material_variant",
             run.scene.variant < 0 ? "null" : JsonString(run.scene.materialVariants[size_t(run.scene.variant)]));
+  scene.Raw("animation",
+            run.scene.animation < 0 ? "null" : JsonString(run.scene.animations[size_t(run.scene.animation)].name));
+  scene.Num("animation_time", run.scene.animationTime);
   return scene;
 }
 

@@ -3,22 +3,20 @@
 #include <algorithm>
 #include <cmath>
 
-#include <glm/gtc/matrix_inverse.hpp>
-#include <glm/gtc/quaternion.hpp>
-#include <glm/gtc/type_ptr.hpp>
-
 #include "scene/gltf_lights.h"
 #include "scene/gltf_textures.h"
+#include "scene/posed_primitive.h"
 
 namespace vkpt {
 namespace {
 
 class Instancer {
  public:
-  Instancer(const GltfSource& src, const std::vector<int>& parents,
+  Instancer(const GltfSource& src, const std::vector<int>& parents, const ScenePose& pose,
             const std::vector<std::vector<DecodedPrimitive>>& meshes, Scene& scene)
       : src_(src),
         parents_(parents),
+        pose_(pose),
         meshes_(meshes),
         scene_(scene),
         withUVs_(HasMaterialTextures(scene)),
@@ -36,35 +34,12 @@ class Instancer {
     if (src_.m.scenes.empty() && std::count(parents_.begin(), parents_.end(), -1) > 0)
       scene_.warnings.push_back("the file defines no scene; rendering all root nodes");
     for (int r : SceneRoots(src_, parents_)) InstantiateTree(r);
+    if (unweighted_)
+      scene_.warnings.push_back(std::to_string(unweighted_) +
+                                " skinned vertices have no weight on any joint and stay in their bind pose");
   }
 
  private:
-  glm::dmat4 LocalTransform(int nodeIndex) const {
-    const tinygltf::Node& n = src_.m.nodes[nodeIndex];
-    std::string name = "nodes[" + std::to_string(nodeIndex) + "]";
-    auto finite = [&](const std::vector<double>& v, size_t size, const char* field) {
-      if (v.empty()) return false;
-      if (v.size() != size) src_.Fail(name + "." + field + " must have " + std::to_string(size) + " numbers");
-      for (double x : v)
-        if (!std::isfinite(x)) src_.Fail(name + "." + field + " has a non-finite value");
-      return true;
-    };
-    if (finite(n.matrix, 16, "matrix")) return glm::make_mat4(n.matrix.data());  // column-major
-    glm::dmat4 t(1.0);
-    if (finite(n.translation, 3, "translation"))
-      t = glm::translate(glm::dmat4(1.0), glm::make_vec3(n.translation.data()));
-    glm::dmat4 r(1.0);
-    if (finite(n.rotation, 4, "rotation")) {
-      glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);  // (w, x, y, z)
-      double len = glm::length(q);
-      if (len < 1e-6) src_.Fail(name + ".rotation is not a unit quaternion");
-      r = glm::mat4_cast(q / len);
-    }
-    glm::dmat4 s(1.0);
-    if (finite(n.scale, 3, "scale")) s = glm::scale(glm::dmat4(1.0), glm::make_vec3(n.scale.data()));
-    return t * r * s;
-  }
-
   void AddCamera(int cameraIndex, const glm::dmat4& world, const std::string& nodeName) {
     const tinygltf::Camera& in = src_.m.cameras[cameraIndex];
     Camera cam;
@@ -91,83 +66,60 @@ class Instancer {
     scene_.cameras.push_back(cam);
   }
 
-  // Instantiates a root and its subtree. Iterative: a hierarchy thousands of levels
-  // deep must not overflow the call stack.
+  // Instantiates a root and its subtree, each node once, parents first. Iterative: a
+  // hierarchy thousands of levels deep must not overflow the call stack.
   void InstantiateTree(int root) {
-    std::vector<std::pair<int, glm::dmat4>> work{{root, glm::dmat4(1.0)}};
+    std::vector<int> work{root};
     while (!work.empty()) {
-      auto [node, parent] = work.back();
+      const int node = work.back();
       work.pop_back();
-      glm::dmat4 world = InstantiateNode(node, parent);
+      InstantiateNode(node);
       const std::vector<int>& children = src_.m.nodes[node].children;
-      for (auto it = children.rbegin(); it != children.rend(); ++it) work.push_back({*it, world});
+      work.insert(work.end(), children.rbegin(), children.rend());
     }
   }
 
-  // A mesh instance's transform and what follows from it for its attributes.
-  struct Placement {
-    glm::dmat4 world;
-    glm::dmat3 normalMatrix;  // normals stay perpendicular to the surface under the inverse transpose
-    // A mirroring transform (negative determinant) flips the winding; swap two
-    // vertices so the front face stays the one the author meant (glTF spec §3.7.4).
-    bool mirrored;
-  };
-
-  // Adds one node's camera, light and mesh; returns its world transform.
-  glm::dmat4 InstantiateNode(int nodeIndex, const glm::dmat4& parent) {
+  // Adds one node's camera, light and mesh.
+  void InstantiateNode(int nodeIndex) {
     const tinygltf::Node& n = src_.m.nodes[nodeIndex];
-    std::string name = "nodes[" + std::to_string(nodeIndex) + "]";
-    glm::dmat4 world = parent * LocalTransform(nodeIndex);
+    const std::string name = "nodes[" + std::to_string(nodeIndex) + "]";
+    const glm::dmat4& world = pose_.world[nodeIndex];
     if (n.camera != -1) {
       src_.CheckIndex(n.camera, src_.m.cameras, name + ".camera");
       AddCamera(n.camera, world, name);
     }
     if (int light = NodeLight(src_, nodeIndex); light != -1)
       scene_.lights.push_back(PlaceLight(src_, light, world, name));
-    if (n.mesh != -1) {
-      src_.CheckIndex(n.mesh, src_.m.meshes, name + ".mesh");
-      const Placement place{world, glm::inverseTranspose(glm::dmat3(world)), glm::determinant(glm::dmat3(world)) < 0.0};
-      for (const DecodedPrimitive& prim : meshes_[n.mesh]) AddPrimitive(prim, place, name, n.mesh);
+    if (n.mesh == -1) return;
+    src_.CheckIndex(n.mesh, src_.m.meshes, name + ".mesh");
+    if (n.skin != -1) src_.CheckIndex(n.skin, pose_.skins, name + ".skin");
+    // A skinned mesh moves with its joints alone; its node's transform plays no part.
+    const std::vector<glm::dmat4> joints =
+        n.skin != -1 ? JointMatrices(pose_.skins[n.skin], pose_.world) : std::vector<glm::dmat4>{};
+    const std::vector<double>& weights = pose_.nodes[nodeIndex].weights;
+    const bool morphed = std::any_of(weights.begin(), weights.end(), [](double w) { return w != 0.0; });
+    const std::string what = name + " (mesh " + std::to_string(n.mesh) + ")";
+    for (const DecodedPrimitive& base : meshes_[n.mesh]) {
+      DecodedPrimitive displaced;
+      if (morphed) displaced = Morphed(base, weights);
+      const DecodedPrimitive& prim = morphed ? displaced : base;
+      const bool skinned = n.skin != -1 && !prim.joints[0].empty();
+      AddPrimitive(prim,
+                   skinned ? PoseSkinned(src_, prim, joints, what, unweighted_) : PoseRigid(src_, prim, world, what));
     }
-    return world;
   }
 
-  // One primitive of a mesh instance (nodes[…] `name`, meshes[`mesh`]): its attributes
-  // in world space, then its triangles.
-  void AddPrimitive(const DecodedPrimitive& prim, const Placement& place, const std::string& name, int mesh) {
-    std::vector<glm::vec3> p(prim.positions.size());
-    for (size_t v = 0; v < p.size(); ++v) {
-      glm::dvec4 w = place.world * glm::dvec4(glm::dvec3(prim.positions[v]), 1.0);
-      if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z) ||
-          glm::any(glm::greaterThan(glm::abs(glm::dvec3(w)), glm::dvec3(1e30))))
-        src_.Fail(name + ": transformed position is not finite (mesh " + std::to_string(mesh) + ")");
-      p[v] = glm::vec3(w);
-    }
-    std::vector<glm::vec3> nw(prim.normals.size());
-    for (size_t v = 0; v < nw.size(); ++v) nw[v] = WorldNormal(place.normalMatrix, prim.normals[v]);
-    // Per vertex (TANGENT) or per corner (generated).
+  // One primitive of a mesh instance, `posed` in world space: its triangles.
+  void AddPrimitive(const DecodedPrimitive& prim, const PosedPrimitive& posed) {
     const bool perCorner = !prim.cornerTangents.empty();
-    const std::vector<glm::vec4> tw = WorldTangents(perCorner ? prim.cornerTangents : prim.tangents, place);
+    const std::vector<glm::vec4>& tw = posed.tangents;
     for (size_t k = 0; k < prim.indices.size(); k += 3) {
       const uint32_t i[3] = {prim.indices[k], prim.indices[k + 1], prim.indices[k + 2]};
       VertexTangents vt;
       if (perCorner) vt = {{tw[k], tw[k + 1], tw[k + 2]}};
       else if (!tw.empty()) vt = {{tw[i[0]], tw[i[1]], tw[i[2]]}};
-      AddCorners(prim, i, p, nw, vt, place.mirrored);
+      AddCorners(prim, i, posed.positions, posed.normals, vt, posed.mirrored[k / 3]);
     }
-  }
-
-  // Tangents lie in the surface: they transform as directions, and a mirroring
-  // transform flips the bitangent (w). Zero where the transform leaves no direction.
-  static std::vector<glm::vec4> WorldTangents(const std::vector<glm::vec4>& tangents, const Placement& place) {
-    std::vector<glm::vec4> tw(tangents.size());
-    for (size_t v = 0; v < tw.size(); ++v) {
-      const glm::dvec3 t = glm::dmat3(place.world) * glm::dvec3(tangents[v]);
-      const double len = glm::length(t);
-      if (len > 0.0 && std::isfinite(len))
-        tw[v] = glm::vec4(glm::vec3(t / len), tangents[v].w * (place.mirrored ? -1.0f : 1.0f));
-    }
-    return tw;
   }
 
   // The triangle of corners i[0..2] with its world-space positions p, normals nw and
@@ -225,18 +177,12 @@ class Instancer {
     array.push_back(value);
   }
 
-  // The unit world-space normal, or zero when the transform leaves it no direction.
-  static glm::vec3 WorldNormal(const glm::dmat3& normalMatrix, const glm::vec3& n) {
-    glm::dvec3 w = normalMatrix * glm::dvec3(n);
-    double len = glm::length(w);
-    if (!(len > 0.0) || !std::isfinite(len)) return glm::vec3(0.0f);
-    return glm::vec3(w / len);
-  }
-
   const GltfSource& src_;
   const std::vector<int>& parents_;
+  const ScenePose& pose_;
   const std::vector<std::vector<DecodedPrimitive>>& meshes_;
   Scene& scene_;
+  size_t unweighted_ = 0;    // skinned vertices without weights
   const bool withUVs_;       // some material has a texture
   const bool withTangents_;  // some material has a normal texture
 };
@@ -268,9 +214,9 @@ std::vector<uint64_t> MeshInstances(const GltfSource& src, const std::vector<int
   return instances;
 }
 
-void InstantiateScene(const GltfSource& src, const std::vector<int>& parents,
+void InstantiateScene(const GltfSource& src, const std::vector<int>& parents, const ScenePose& pose,
                       const std::vector<std::vector<DecodedPrimitive>>& meshes, Scene& scene) {
-  Instancer(src, parents, meshes, scene).Run();
+  Instancer(src, parents, pose, meshes, scene).Run();
 }
 
 }  // namespace vkpt

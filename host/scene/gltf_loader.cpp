@@ -9,6 +9,7 @@
 #include "scene/asset_access.h"
 #include "scene/external_uris.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_animation.h"
 #include "scene/gltf_instancing.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
@@ -53,6 +54,10 @@ constexpr uint64_t kBytesPerTexturedTriangle = 192;
 constexpr uint64_t kBytesPerTangentTriangle = 192;
 // Decoding an accessor holds each component as a double, then as a float.
 constexpr uint64_t kBytesPerDecodedComponent = 12;
+// Posing a primitive copies its attributes (morphed; up to ~100 bytes a vertex with
+// every attribute and skin weights) and holds a skinned vertex's transform (208 bytes)
+// and its posed attributes (~44 bytes): per byte of POSITION decoded (36 a vertex).
+constexpr uint64_t kPosingBytesPerDecodedPosition = 10;
 
 uint64_t SaturatingMul(uint64_t a, uint64_t b) { return b && a > UINT64_MAX / b ? UINT64_MAX : a * b; }
 
@@ -77,17 +82,29 @@ uint64_t DecodedBytes(const GltfSource& src, int accessor) {
 // every triangle.
 void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, bool textured, bool tangents,
                     MemoryBudget& budget) {
+  uint64_t largestPosing = 0;
   for (size_t i = 0; i < src.m.meshes.size(); ++i) {
-    uint64_t decoded = 0, triangles = 0, colored = 0;
+    uint64_t decoded = 0, triangles = 0, colored = 0, posing = 0;
     for (const tinygltf::Primitive& prim : src.m.meshes[i].primitives) {
       decoded += DecodedBytes(src, prim.indices);
-      for (const char* attr : {"POSITION", "NORMAL", "COLOR_0", "TEXCOORD_0", "TEXCOORD_1", "TANGENT"})
+      for (const char* attr : {"POSITION", "NORMAL", "COLOR_0", "TEXCOORD_0", "TEXCOORD_1", "TANGENT", "JOINTS_0",
+                               "JOINTS_1", "WEIGHTS_0", "WEIGHTS_1"})
         if (auto it = prim.attributes.find(attr); it != prim.attributes.end()) decoded += DecodedBytes(src, it->second);
+      for (const auto& target : prim.targets)
+        for (const auto& [attr, accessor] : target) decoded += DecodedBytes(src, accessor);
+      // A morphed or skinned instance is posed from a copy, one primitive at a time.
+      const bool deformed = !prim.targets.empty() || prim.attributes.count("JOINTS_0");
+      if (auto it = prim.attributes.find("POSITION"); deformed && it != prim.attributes.end() && instances[i])
+        posing = std::max(posing, SaturatingMul(DecodedBytes(src, it->second), kPosingBytesPerDecodedPosition));
       triangles += TriangleCount(src, prim);
       if (prim.attributes.count("COLOR_0")) colored += TriangleCount(src, prim);
     }
     std::string name = "meshes[" + std::to_string(i) + "]";
     budget.Charge(decoded, name + " (decoding its accessors)");
+    if (posing > largestPosing) {
+      budget.Charge(posing - largestPosing, name + " (posing an instance)");
+      largestPosing = posing;
+    }
     uint64_t total = SaturatingMul(triangles, instances[i]);
     budget.Charge(SaturatingMul(total, kBytesPerTriangle), name + " (" + std::to_string(triangles) + " triangles × " +
                                                                std::to_string(instances[i]) +
@@ -150,20 +167,36 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   }
   if (occlusionTex) ig.push_back("occlusion textures: not applied (a path tracer computes occlusion)");
   for (const std::string& t : extensionTextures) ig.push_back(t + ": the factor is used alone");
-  if (!src.m.animations.empty())
-    ig.push_back(std::to_string(src.m.animations.size()) + " animation(s): the static pose is rendered");
-  if (!src.m.skins.empty()) ig.push_back("skins: meshes are rendered unskinned");
-  bool morph = false;
+  std::set<std::string> morphedOthers;
   for (const auto& mesh : src.m.meshes)
-    for (const auto& p : mesh.primitives) morph |= !p.targets.empty();
-  if (morph) ig.push_back("morph targets: the base mesh is rendered");
+    for (const auto& p : mesh.primitives)
+      for (const auto& target : p.targets)
+        for (const auto& [attr, accessor] : target)
+          if (attr != "POSITION" && attr != "NORMAL" && attr != "TANGENT") morphedOthers.insert(attr);
+  for (const std::string& attr : morphedOthers) ig.push_back("morph targets of " + attr + ": the base values are used");
   for (const std::string& ext : src.m.extensionsUsed)
     if (!IsRenderedExtension(ext)) ig.push_back("extension " + ext);
 }
 
+// The nodes' pose: as the file places them, or at `choice`'s time of its animation.
+ScenePose Pose(const GltfSource& src, const std::vector<int>& parents, const SceneChoice& choice, MemoryBudget& budget,
+               Scene& scene) {
+  ScenePose pose{RestPoses(src), {}, ReadSkins(src)};
+  scene.animations = ListAnimations(src);
+  scene.animation = ResolveAnimation(src, scene.animations, choice.animation);
+  scene.animationTime = choice.time;
+  if (scene.animation >= 0) {
+    budget.Charge(AnimationBytes(src, scene.animation),
+                  "animations[" + std::to_string(scene.animation) + "] (decoding its keyframes)");
+    PoseAtTime(src, scene.animation, choice.time, pose.nodes);
+  }
+  pose.world = WorldTransforms(parents, pose.nodes);
+  return pose;
+}
+
 // The phases of a load, in the order that makes each safe: the structure is checked
 // before any data it points to is read, the memory counted before anything is decoded.
-void BuildScene(const GltfSource& src, const LoadLimits& limits, const std::string& variant, Scene& scene,
+void BuildScene(const GltfSource& src, const LoadLimits& limits, const SceneChoice& choice, Scene& scene,
                 MemoryBudget& budget) {
   CheckAsset(src);
   CheckBufferViews(src);
@@ -175,11 +208,11 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, const std::stri
   const std::vector<int> parents = CheckNodeGraph(src);
   ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), textured, tangents, budget);
   scene.materialVariants = ReadVariants(src);
-  scene.variant = ResolveVariant(src, scene.materialVariants, variant);
+  scene.variant = ResolveVariant(src, scene.materialVariants, choice.variant);
   // Texture coordinates are decoded where tangents are generated from them, kept where
   // textures read them.
-  const MeshDecoding decoding{defaultMaterial, textured || tangents, tangents, scene.variant,
-                              scene.materialVariants.size()};
+  const MeshDecoding decoding{defaultMaterial, textured || tangents,          tangents,
+                              scene.variant,   scene.materialVariants.size(), !src.m.skins.empty()};
   std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
   for (size_t i = 0; i < src.m.meshes.size(); ++i) meshes[i] = DecodeMesh(src, int(i), decoding, scene.warnings);
   for (std::vector<DecodedPrimitive>& mesh : meshes)
@@ -190,7 +223,7 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, const std::stri
     }
   CheckCameras(src);
   CheckLights(src);
-  InstantiateScene(src, parents, meshes, scene);
+  InstantiateScene(src, parents, Pose(src, parents, choice, budget, scene), meshes, scene);
   if (scene.triangles.empty()) src.Fail("the scene contains no triangles to render");
   NoteIgnoredFeatures(src, scene);
 }
@@ -233,7 +266,7 @@ tinygltf::Model ParseWithTinyGltf(const std::string& path, const SceneFile& file
 
 }  // namespace
 
-Scene LoadGltf(const std::string& path, const LoadLimits& limits, const std::string& variant) {
+Scene LoadGltf(const std::string& path, const LoadLimits& limits, const SceneChoice& choice) {
   MemoryBudget budget(limits.maxMemory ? limits.maxMemory : DefaultMaxMemory(), path);
   try {
     SceneFile file = ReadSceneFile(path, budget);
@@ -247,7 +280,7 @@ Scene LoadGltf(const std::string& path, const LoadLimits& limits, const std::str
     scene.contentHash = hash.Value();
     file = SceneFile{};
     for (const std::string& skipped : access.SkippedImages()) scene.warnings.push_back(skipped);
-    BuildScene(GltfSource{path, model}, limits, variant, scene, budget);
+    BuildScene(GltfSource{path, model}, limits, choice, scene, budget);
     scene.memoryLimit = budget.Limit();
     scene.memoryCounted = budget.Used();
     return scene;

@@ -8,12 +8,20 @@
 
 namespace vkpt {
 
+// What to render of a file beyond its default scene.
+struct SceneChoice {
+  std::string variant{};    // a KHR_materials_variants variant, by name or index; "": the primitives' own materials
+  std::string animation{};  // an animation, by name or index; "": the nodes' own transforms
+  double time = 0.0;        // seconds into the animation
+};
+
 // Loads the default scene (else scene 0; with no scenes, every root node) of a glTF
 // file. Everything the renderer reads is validated first, files are read only as
 // `limits` allow (scene/asset_access.h), and the memory the scene will need is counted
 // against limits.maxMemory before it is allocated; any problem throws vkpt::Error whose
-// message starts with the file name. `variant` names a KHR_materials_variants variant
-// (its name or index) whose materials the primitives take; "" keeps their own.
-Scene LoadGltf(const std::string& path, const LoadLimits& limits = {}, const std::string& variant = "");
+// message starts with the file name. Skinned meshes follow their joints and morph
+// targets their weights, in the pose `choice` gives; primitives take the materials of its
+// variant.
+Scene LoadGltf(const std::string& path, const LoadLimits& limits = {}, const SceneChoice& choice = {});
 
 }  // namespace vkpt

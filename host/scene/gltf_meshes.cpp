@@ -123,6 +123,43 @@ std::vector<glm::vec<N, float>> ReadFinite(const GltfSource& src, int accessor, 
   return out;
 }
 
+// A primitive's morph targets (spec §3.7.2.2): POSITION, NORMAL and TANGENT
+// displacements, each finite; NORMAL and TANGENT only where the primitive keeps the
+// attribute they displace.
+std::vector<MorphTarget> ReadTargets(const GltfSource& src, const tinygltf::Primitive& prim,
+                                     const DecodedPrimitive& out, const std::string& name) {
+  std::vector<MorphTarget> targets(prim.targets.size());
+  for (size_t t = 0; t < targets.size(); ++t) {
+    const std::string tn = name + ".targets[" + std::to_string(t) + "]";
+    for (const auto& [attr, accessor] : prim.targets[t]) {
+      std::vector<glm::vec3>* delta = attr == "POSITION"                           ? &targets[t].positions
+                                      : attr == "NORMAL" && !out.normals.empty()   ? &targets[t].normals
+                                      : attr == "TANGENT" && !out.tangents.empty() ? &targets[t].tangents
+                                                                                   : nullptr;
+      if (delta) *delta = ReadFinite<3>(src, accessor, tn, attr.c_str(), "displacement");
+    }
+  }
+  return targets;
+}
+
+// JOINTS_n and WEIGHTS_n, each set present as a pair or not at all.
+void ReadSkinAttributes(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name,
+                        DecodedPrimitive& out) {
+  for (int set = 0; set < 2; ++set) {
+    const std::string joints = "JOINTS_" + std::to_string(set), weights = "WEIGHTS_" + std::to_string(set);
+    auto j = prim.attributes.find(joints), w = prim.attributes.find(weights);
+    if (j == prim.attributes.end() && w == prim.attributes.end()) continue;
+    if (j == prim.attributes.end() || w == prim.attributes.end())
+      src.Fail(name + " has one of " + joints + " and " + weights + " without the other");
+    for (const glm::vec4& v : ReadFinite<4>(src, j->second, name, joints.c_str(), "joint index"))
+      out.joints[set].push_back(glm::u16vec4(v));
+    out.weights[set] = ReadFinite<4>(src, w->second, name, weights.c_str(), "weight");
+    for (size_t v = 0; v < out.weights[set].size(); ++v)
+      if (glm::any(glm::lessThan(out.weights[set][v], glm::vec4(0.0f))))
+        src.Fail(name + ".attributes." + weights + " element " + std::to_string(v) + " has a negative weight");
+  }
+}
+
 }  // namespace
 
 std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, const MeshDecoding& d,
@@ -156,6 +193,8 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, c
       out.tangents = ReadFinite<4>(src, tan->second, name, "TANGENT", "tangent");
       for (glm::vec4& t : out.tangents) t.w = t.w < 0.0f ? -1.0f : 1.0f;
     }
+    out.targets = ReadTargets(src, prim, out, name);
+    if (d.withSkins) ReadSkinAttributes(src, prim, name, out);
     out.indices = TriangleList(src, prim, out.positions.size(), name);
     const int variantMaterial = VariantMaterial(src, prim, d.variant, d.variantCount, name);
     out.material = variantMaterial >= 0 ? uint32_t(variantMaterial)
@@ -180,7 +219,26 @@ bool GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet) {
       if (glm::dot(n, n) > 0.0f) n = glm::normalize(n);
   }
   prim.cornerTangents = GenerateCornerTangents(prim.positions, normals, prim.uvs[uvSet], prim.indices);
+  prim.generatedTangentSet = int(uvSet);
   return true;
+}
+
+DecodedPrimitive Morphed(const DecodedPrimitive& prim, const std::vector<double>& weights) {
+  DecodedPrimitive out = prim;
+  for (size_t t = 0; t < prim.targets.size(); ++t) {
+    const float w = float(weights[t]);
+    if (w == 0.0f) continue;
+    const MorphTarget& target = prim.targets[t];
+    for (size_t v = 0; v < target.positions.size(); ++v) out.positions[v] += w * target.positions[v];
+    for (size_t v = 0; v < target.normals.size(); ++v) out.normals[v] += w * target.normals[v];
+    for (size_t v = 0; v < target.tangents.size(); ++v) out.tangents[v] += glm::vec4(w * target.tangents[v], 0.0f);
+  }
+  // Tangents generated from the base shape follow the displaced one.
+  if (prim.generatedTangentSet >= 0) {
+    out.cornerTangents.clear();
+    GenerateMissingTangents(out, uint32_t(prim.generatedTangentSet));
+  }
+  return out;
 }
 
 uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim) {

@@ -8,10 +8,17 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 #include "scene/gltf_source.h"
 
 namespace vkpt {
+
+// A morph target's displacements (spec §3.7.2.2), one per vertex; empty for an
+// attribute the target leaves alone (or the primitive does not keep).
+struct MorphTarget {
+  std::vector<glm::vec3> positions, normals, tangents;
+};
 
 struct DecodedPrimitive {
   std::vector<glm::vec3> positions;       // object space
@@ -22,6 +29,12 @@ struct DecodedPrimitive {
   std::vector<glm::vec4> cornerTangents;  // or generated (MikkTSpace), one per index
   std::vector<uint32_t> indices;          // triangle list, 3 per triangle
   uint32_t material;
+  int generatedTangentSet = -1;      // the TEXCOORD set cornerTangents were generated from; −1: none
+  std::vector<MorphTarget> targets;  // in the mesh's order
+  // JOINTS_0/1 and WEIGHTS_0/1 (read in files with skins), one per position; empty
+  // without them.
+  std::vector<glm::u16vec4> joints[2];
+  std::vector<glm::vec4> weights[2];
 };
 
 // What DecodeMesh reads besides the primitives themselves.
@@ -31,6 +44,7 @@ struct MeshDecoding {
   bool withTangents = false;     // some material has a normal map
   int variant = -1;              // KHR_materials_variants' variant to render (−1: none)
   size_t variantCount = 0;       // the file's variants
+  bool withSkins = false;        // the file has skins: JOINTS_n and WEIGHTS_n are read
 };
 
 // Checks and decodes the triangle primitives of meshes[meshIndex]: positions, normals and
@@ -46,6 +60,10 @@ std::vector<DecodedPrimitive> DecodeMesh(const GltfSource& src, int meshIndex, c
 // each vertex — and texture coordinate set `uvSet`; it keeps none without those coordinates.
 // Returns whether it generated them.
 bool GenerateMissingTangents(DecodedPrimitive& prim, uint32_t uvSet);
+
+// `prim` with its morph targets applied at `weights` (one per target): displaced
+// positions, normals and tangents, and tangents generated anew where they were generated.
+DecodedPrimitive Morphed(const DecodedPrimitive& prim, const std::vector<double>& weights);
 
 // Triangles a primitive makes, from its accessors' counts alone (nothing is decoded).
 uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim);

@@ -140,6 +140,45 @@ void CheckDirectionAttribute(const GltfSource& src, const tinygltf::Primitive& p
              (quantized ? std::string(" or a normalized BYTE/SHORT ") + typeName + " one" : ""));
 }
 
+// JOINTS_n: unsigned byte or short VEC4; WEIGHTS_n: VEC4 of FLOAT or normalized unsigned
+// byte or short (spec §3.7.3.1).
+void CheckSkinAttributes(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name) {
+  for (const auto& [attr, acc] : prim.attributes) {
+    const tinygltf::Accessor& a = src.m.accessors[acc];
+    const bool small = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                       a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    const std::string what = name + ".attributes." + attr + " (accessors[" + std::to_string(acc) + "])";
+    if (attr.starts_with("JOINTS_") && (a.type != TINYGLTF_TYPE_VEC4 || !small || a.normalized))
+      src.Fail(what + " must be an UNSIGNED_BYTE or UNSIGNED_SHORT VEC4 accessor");
+    if (attr.starts_with("WEIGHTS_") &&
+        (a.type != TINYGLTF_TYPE_VEC4 ||
+         !(a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || (small && a.normalized))))
+      src.Fail(what + " must be a VEC4 accessor of FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT");
+  }
+}
+
+// Morph targets' POSITION, NORMAL and TANGENT: VEC3 of FLOAT, or with
+// KHR_mesh_quantization of (normalized) BYTE or SHORT; as many as the positions.
+void CheckTargets(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name, bool quantized,
+                  size_t vertices) {
+  for (size_t t = 0; t < prim.targets.size(); ++t)
+    for (const auto& [attr, acc] : prim.targets[t]) {
+      src.CheckIndex(acc, src.m.accessors, name + ".targets[" + std::to_string(t) + "]." + attr);
+      if (attr != "POSITION" && attr != "NORMAL" && attr != "TANGENT") continue;
+      const tinygltf::Accessor& a = src.m.accessors[acc];
+      const std::string what =
+          name + ".targets[" + std::to_string(t) + "]." + attr + " (accessors[" + std::to_string(acc) + "])";
+      const bool signedSmall =
+          a.componentType == TINYGLTF_COMPONENT_TYPE_BYTE || a.componentType == TINYGLTF_COMPONENT_TYPE_SHORT;
+      if (a.type != TINYGLTF_TYPE_VEC3 ||
+          !(a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || (quantized && signedSmall)))
+        src.Fail(what + " must be a FLOAT VEC3 accessor" +
+                 (quantized ? std::string(" or a (normalized) BYTE/SHORT VEC3 one") : ""));
+      if (a.count != vertices)
+        src.Fail(what + " has " + std::to_string(a.count) + " elements but POSITION has " + std::to_string(vertices));
+    }
+}
+
 }  // namespace
 
 void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name) {
@@ -151,10 +190,9 @@ void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, cons
   auto pos = prim.attributes.find("POSITION");
   if (pos == prim.attributes.end()) src.Fail(name + " has no POSITION attribute");
   for (const auto& [attr, acc] : prim.attributes) src.CheckIndex(acc, src.m.accessors, name + ".attributes." + attr);
-  for (size_t t = 0; t < prim.targets.size(); ++t)
-    for (const auto& [attr, acc] : prim.targets[t])
-      src.CheckIndex(acc, src.m.accessors, name + ".targets[" + std::to_string(t) + "]." + attr);
   const tinygltf::Accessor& pa = src.m.accessors[pos->second];
+  CheckTargets(src, prim, name, quantized, pa.count);
+  CheckSkinAttributes(src, prim, name);
   std::string pan = "accessors[" + std::to_string(pos->second) + "]";
   if (pa.type != TINYGLTF_TYPE_VEC3 || (pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized))
     src.Fail(name + ".attributes.POSITION (" + pan + ") must be a FLOAT VEC3 accessor");

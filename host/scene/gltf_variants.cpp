@@ -34,16 +34,7 @@ std::vector<std::string> ReadVariants(const GltfSource& src) {
 }
 
 int ResolveVariant(const GltfSource& src, const std::vector<std::string>& variants, const std::string& wanted) {
-  if (wanted.empty()) return -1;
-  for (size_t i = 0; i < variants.size(); ++i)
-    if (variants[i] == wanted) return int(i);
-  const bool digits = wanted.size() <= 9 && wanted.find_first_not_of("0123456789") == std::string::npos;
-  if (digits && std::stoul(wanted) < variants.size()) return int(std::stoul(wanted));
-  if (variants.empty())
-    src.Fail("--variant " + wanted + ": the file has no material variants (KHR_materials_variants)");
-  std::string list;
-  for (size_t i = 0; i < variants.size(); ++i) list += (i ? ", " : "") + std::to_string(i) + " \"" + variants[i] + "\"";
-  src.Fail("--variant " + wanted + ": the file has no such material variant; it has " + list);
+  return src.Choose(variants, wanted, "--variant", "material variant", "no material variants (KHR_materials_variants)");
 }
 
 int VariantMaterial(const GltfSource& src, const tinygltf::Primitive& prim, int variant, size_t variantCount,

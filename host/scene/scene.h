@@ -98,6 +98,12 @@ struct PunctualLight {
   std::string name;
 };
 
+// A glTF animation: its name ("" when it has none) and its length in seconds.
+struct AnimationSummary {
+  std::string name;
+  double duration = 0.0;
+};
+
 struct Scene {
   std::string path;
   std::vector<SceneTriangle> triangles;
@@ -119,6 +125,11 @@ struct Scene {
   // primitives' own materials).
   std::vector<std::string> materialVariants;
   int variant = -1;
+  // The file's animations, the one posing the scene (−1: none, the nodes' own transforms)
+  // and the time it is read at, in seconds.
+  std::vector<AnimationSummary> animations;
+  int animation = -1;
+  double animationTime = 0.0;
   std::vector<PunctualLight> lights;  // in scene-graph order, one per light node
   Bounds3f bounds;
 

@@ -52,7 +52,12 @@ inline bool LoadInput(const std::string& dir, std::string_view bytes, std::strin
     ~Remove() { std::remove(path.c_str()); }
   } remove{path};
   try {
-    vkpt::Scene scene = vkpt::LoadGltf(path, vkpt::LoadLimits{.maxMemory = kFuzzMaxMemory});
+    const vkpt::LoadLimits limits{.maxMemory = kFuzzMaxMemory};
+    const vkpt::Scene scene = vkpt::LoadGltf(path, limits);
+    // An animated file is loaded once more, posed halfway through its first animation, so
+    // that its keyframes are read too.
+    if (!scene.animations.empty())
+      vkpt::LoadGltf(path, limits, {.animation = "0", .time = scene.animations[0].duration / 2});
     return true;
   } catch (const vkpt::Error& e) {
     if (error) *error = e.what();
