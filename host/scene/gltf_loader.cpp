@@ -166,7 +166,11 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
             extensionTextures.insert(name + "." + key);
   }
   if (occlusionTex) ig.push_back("occlusion textures: not applied (a path tracer computes occlusion)");
-  for (const std::string& t : extensionTextures) ig.push_back(t + ": the factor is used alone");
+  // A rasterizer's stand-in for the distance light travels inside; paths trace it.
+  const std::string thickness = "KHR_materials_volume.thicknessTexture";
+  for (const std::string& t : extensionTextures)
+    ig.push_back(t + (t == thickness ? ": not applied (a path tracer measures the thickness along each ray)"
+                                     : ": the factor is used alone"));
   std::set<std::string> morphedOthers;
   for (const auto& mesh : src.m.meshes)
     for (const auto& p : mesh.primitives)
