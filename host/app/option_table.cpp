@@ -106,6 +106,11 @@ std::vector<OptionDef> SceneRows() {
           "none: the nodes' own transforms", Text(&O::animation, "an animation name or index")),
       Row({"--at"}, "SECONDS", "time in the `--animation` at which the scene is posed", "0",
           Number(&O::at, {0.0, 1e9})),
+      Row({"--frames"}, "FIRST:LAST[:STEP]",
+          "render a sequence from one load: frame k at k / `--fps` s into the `--animation`, turned by k × `--orbit`, "
+          "written to `--out` with the frame number (`NAME.####.EXT`, or in place of a run of `#`)",
+          "one image", FramesValue()),
+      Row({"--fps"}, "N", "frames per second of `--frames`", "24", Number(&O::fps, {0.0, 1e6, true})),
       Row({"--texture-lod"}, "MODE",
           "mip levels of colour textures after the camera's hit: by each path's ray cone, or level 0 everywhere",
           "cones", Choice(&O::textureLod, {{"cones", true}, {"none", false}})),

@@ -233,4 +233,36 @@ OptionValue AllowExternalUrisValue() {
           [](const Options& o) { return std::string(o.load.allowExternalUris ? "true" : "false"); }};
 }
 
+OptionValue FramesValue() {
+  const Range numbers{0, 999999}, steps{1, 999999};
+  auto set = [numbers, steps](Options& o, const GivenOption& g) {
+    std::vector<std::string> parts;
+    for (size_t start = 0;;) {
+      const size_t colon = g.value().find(':', start);
+      parts.push_back(g.value().substr(start, colon == std::string::npos ? std::string::npos : colon - start));
+      if (colon == std::string::npos) break;
+      start = colon + 1;
+    }
+    if (parts.size() != 2 && parts.size() != 3)
+      throw UsageError(g.name + " expects FIRST:LAST[:STEP], got \"" + g.value() + "\"");
+    FrameRange f;
+    f.first = ParseNumber<uint32_t>(g.name, parts[0], numbers);
+    f.last = ParseNumber<uint32_t>(g.name, parts[1], numbers);
+    if (parts.size() == 3) f.step = ParseNumber<uint32_t>(g.name, parts[2], steps);
+    if (f.last < f.first)
+      throw UsageError(g.name + ": the last frame, " + parts[1] + ", comes before the first, " + parts[0]);
+    o.frames = f;
+  };
+  auto json = [](const Options& o) {
+    if (!o.frames) return std::string("null");
+    // Appended piece by piece: GCC 12 warns falsely on "[" + std::string (bug 105651).
+    std::string list = "[";
+    list += std::to_string(o.frames->first) + ", ";
+    list += std::to_string(o.frames->last) + ", ";
+    list += std::to_string(o.frames->step) + "]";
+    return list;
+  };
+  return {"FIRST ≤ LAST in " + RangeText(numbers) + ", STEP ≥ 1", set, json};
+}
+
 }  // namespace vkpt

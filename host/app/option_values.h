@@ -109,6 +109,7 @@ OptionValue BackgroundValue();
 // X,Y,Z: a point or direction in scene units.
 OptionValue PointValue(std::optional<std::array<float, 3>> Options::*field);
 OptionValue AovValue();
+OptionValue FramesValue();  // FIRST:LAST[:STEP]
 OptionValue MaxMemoryValue();
 OptionValue MaxTexelsValue();
 OptionValue AllowExternalUrisValue();

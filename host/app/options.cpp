@@ -40,6 +40,8 @@ void Complete(Options& o) {
   if (!o.sppGiven && (o.time || o.noiseTarget)) o.spp = kBudgetMaxSpp;
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
   if (o.at && o.animation.empty()) throw UsageError("--at is a time in an --animation; none was given");
+  if (o.frames && o.at) throw UsageError("--frames gives each frame its time (k / --fps); drop --at");
+  if (o.frames && o.compare) throw UsageError("--compare checks one image; drop --frames");
   if (!o.env.empty() && o.background) throw UsageError("--env and --background both set the environment; give one");
   if (o.env.empty() && (o.envRotation != 0.0f || o.envIntensity != 1.0f))
     throw UsageError("--env-rotation and --env-intensity apply to an --env map; none was given");

@@ -17,6 +17,11 @@ namespace vkpt {
 
 enum class Backend { Auto, Cpu, Vulkan };
 
+// --frames FIRST:LAST[:STEP]: the frame numbers FIRST, FIRST + STEP, … up to LAST.
+struct FrameRange {
+  uint32_t first = 0, last = 0, step = 1;
+};
+
 struct Options {
   std::string scene;
   std::string out;  // default: <scene name>.png in the current directory
@@ -50,10 +55,14 @@ struct Options {
   // Constant environment radiance; absent: white (1,1,1) for a scene without emissive
   // triangles (so any model is visible), black otherwise.
   std::optional<std::array<float, 3>> background;
-  std::string env;            // --env: equirectangular environment map (.hdr, .exr)
-  std::string variant;        // --variant: a KHR_materials_variants name or index ("": none)
-  std::string animation;      // --animation: a glTF animation's name or index ("": none)
-  std::optional<double> at;   // --at: seconds into the animation
+  std::string env;           // --env: equirectangular environment map (.hdr, .exr)
+  std::string variant;       // --variant: a KHR_materials_variants name or index ("": none)
+  std::string animation;     // --animation: a glTF animation's name or index ("": none)
+  std::optional<double> at;  // --at: seconds into the animation
+  // --frames: a sequence of renders, frame k posed k / --fps seconds into the animation and
+  // turned by k × --orbit; each written to FramePath(out, k).
+  std::optional<FrameRange> frames;
+  double fps = 24.0;
   float envRotation = 0.0f;   // --env-rotation: degrees about +Y, counter-clockwise from above
   float envIntensity = 1.0f;  // --env-intensity: radiance scale
   uint32_t leafSize = 8;

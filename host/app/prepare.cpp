@@ -154,8 +154,8 @@ void CountFrameMemory(Prepared& p, const Options& o, glm::uvec2 size, uint64_t e
   shape.exrOutput = FormatFromPath(o.out) == ImageFormat::Exr;
   p.frameParts = FrameMemoryParts(shape);
   p.frameMemory = BytesPerPixel(p.frameParts) * size.x * size.y;
-  MemoryBudget budget(p.scene.memoryLimit, o.out);
-  budget.Charge(p.scene.memoryCounted + envBytes, "the scene and environment");
+  MemoryBudget budget(p.scene().memoryLimit, o.out);
+  budget.Charge(p.scene().memoryCounted + envBytes, "the scene and environment");
   budget.Charge(
       p.frameMemory,
       "a " + std::to_string(size.x) + " × " + std::to_string(size.y) + " image (" + DescribeParts(p.frameParts) + ")",
@@ -164,32 +164,41 @@ void CountFrameMemory(Prepared& p, const Options& o, glm::uvec2 size, uint64_t e
 
 }  // namespace
 
+void PrepareFrame(Prepared& p, const Options& o, bool report, uint32_t ranks) {
+  PhaseTimer phase;
+  p.asset->PoseAt(o.at.value_or(0.0));
+  phase.Lap(p.times.pose);
+  uint32_t camIndex = 0;
+  const Camera cam = ChooseCamera(p.scene(), o, &camIndex);
+  const glm::uvec2 size = ImageSize(cam, o);
+  // A sequence keeps the map for its next frame (counted twice); one image hands it over.
+  const bool keep = o.frames.has_value();
+  CountFrameMemory(p, o, size, p.environmentBytes * (keep ? 2 : 1), ranks);
+  phase.Restart();
+  p.rs = RenderScene{};  // the last frame's arrays go before the next's are built
+  p.rs = PrepareForRender(p.scene(), o, p.ctx != nullptr, keep ? p.environment : std::move(p.environment));
+  phase.Lap(p.times.prepare);
+  if (report && o.verbose) {
+    PrintLoadReport(p.scene(), p.rs, cam, camIndex);
+    std::printf("  memory: %s counted for the %u × %u image (%s)\n", FormatBytes(p.frameMemory).c_str(), size.x, size.y,
+                DescribeParts(p.frameParts).c_str());
+  }
+  p.params = FrameFromOptions(p.rs, cam, size, o, report);
+}
+
 Prepared Prepare(const Options& o, bool report, uint32_t ranks) {
   Prepared p;
   CheckOutputPath(o.out);  // fail before a long render, not after
   if (!o.stats.empty()) CheckWritablePath(o.stats, "a stats");
   PhaseTimer phase;
-  p.scene = LoadGltf(o.scene, o.load, {o.variant, o.animation, o.at.value_or(0.0)});
+  p.asset = std::make_unique<GltfAsset>(o.scene, o.load, SceneChoice{o.variant, o.animation});
   phase.Lap(p.times.load);
-  uint64_t envBytes = 0;
-  EnvironmentMap env = LoadEnvironment(o, p.scene, &envBytes);
+  p.environment = LoadEnvironment(o, p.scene(), &p.environmentBytes);
   phase.Lap(p.times.environment);
-  uint32_t camIndex = 0;
-  const Camera cam = ChooseCamera(p.scene, o, &camIndex);
-  const glm::uvec2 size = ImageSize(cam, o);
   // The device before the scene's arrays: without one (auto backend) the CPU renders, and
   // only then does the scene need the CPU's BVH layout.
   p.ctx = OpenVulkan(o);
-  CountFrameMemory(p, o, size, envBytes, ranks);
-  phase.Restart();
-  p.rs = PrepareForRender(p.scene, o, p.ctx != nullptr, std::move(env));
-  phase.Lap(p.times.prepare);
-  if (report && o.verbose) {
-    PrintLoadReport(p.scene, p.rs, cam, camIndex);
-    std::printf("  memory: %s counted for the %u × %u image (%s)\n", FormatBytes(p.frameMemory).c_str(), size.x, size.y,
-                DescribeParts(p.frameParts).c_str());
-  }
-  p.params = FrameFromOptions(p.rs, cam, size, o, report);
+  PrepareFrame(p, o, report, ranks);
   return p;
 }
 

@@ -12,6 +12,7 @@
 #include "app/prepare.h"
 #include "app/report.h"
 #include "app/run_stats.h"
+#include "app/sequence.h"
 #include "cluster/agreement.h"
 #include "cluster/chunk_dealer.h"
 #include "image/image.h"
@@ -91,9 +92,10 @@ std::vector<std::string> WriteFiles(const RenderedFrame& frame, const Options& o
   return files;
 }
 
-// After the render: the files, the reports and the stats; the exit status.
+// After the render: the files, the reports and the stats (into *frameStats for a frame of
+// a sequence, else to --stats); the exit status.
 int Finish(const Options& o, Prepared& p, const RenderedFrame& frame, const RenderedFrame* reference,
-           const RenderBackend& backend) {
+           const RenderBackend& backend, std::string* frameStats = nullptr) {
   RunTimes& times = p.times;
   times.upload = backend.UploadSeconds();
   times.render = frame.seconds;
@@ -103,7 +105,7 @@ int Finish(const Options& o, Prepared& p, const RenderedFrame& frame, const Rend
   const std::vector<std::string> files = WriteFiles(frame, o);
   phase.Lap(times.write);
   int status = reference ? CompareBackends(*reference, frame, o) : 0;
-  PrintRenderReport(p.scene, p.rs, frame, o, files, backend.DenoiserName());
+  PrintRenderReport(p.scene(), p.rs, frame, o, files, backend.DenoiserName());
   const uint32_t validationMessages = p.ctx ? p.ctx->ValidationMessages() : 0;
   if (validationMessages) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
@@ -115,11 +117,12 @@ int Finish(const Options& o, Prepared& p, const RenderedFrame& frame, const Rend
                  frame.stoppedBy == StopReason::kSignal ? "stopped early" : "the render had finished");
     status = 128 + sig;
   }
-  if (!o.stats.empty()) {
+  if (!o.stats.empty() || frameStats) {
     times.total = SecondsSince(p.start);
     const std::string json =
-        StatsJson(o, {p.scene, p.rs, frame, reference, times, validationMessages, status, files, p.frameMemory});
-    WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
+        StatsJson(o, {p.scene(), p.rs, frame, reference, times, validationMessages, status, files, p.frameMemory});
+    if (frameStats) *frameStats = json;
+    else WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
   }
   return status;
 }
@@ -171,7 +174,7 @@ uint64_t FrameKey(const Options& o, const Prepared& p) {
   shared.threads = 0;
   shared.batch = 0;
   shared.validation = shared.verbose = false;
-  const std::string key = OptionsAsJson(shared) + std::to_string(p.scene.contentHash);
+  const std::string key = OptionsAsJson(shared) + std::to_string(p.scene().contentHash);
   ContentHash hash;
   hash.Add({reinterpret_cast<const unsigned char*>(key.data()), key.size()});
   return hash.Value();
@@ -184,6 +187,8 @@ int ParseOnEveryRank(Cluster& cluster, int argc, char** argv, Options& o) {
   try {
     o = ParseOptions(argc, argv);
     if (o.compare) throw UsageError("--compare renders in one process; run it without mpirun");
+    if (o.frames)
+      throw UsageError("--frames renders in one process; under mpirun, render each frame with --animation and --at");
     if (!o.diff.empty() || o.listDevices || o.help || o.version)
       throw UsageError("--diff, --list-devices, --help and --version run in one process; run them without mpirun");
   } catch (const UsageError& e) {
@@ -195,9 +200,43 @@ int ParseOnEveryRank(Cluster& cluster, int argc, char** argv, Options& o) {
 
 }  // namespace
 
+// --frames: each frame posed, built, rendered and written in turn from one load; the
+// first signal ends the sequence after the frame it stops.
+int RunSequence(const Options& o) {
+  const std::vector<uint32_t> numbers = FrameNumbers(*o.frames);
+  for (uint32_t k : numbers) CheckOutputPath(FramePath(o.out, k));
+  Prepared p = Prepare(FrameOptions(o, numbers.front()), true);
+  const auto start = p.start;
+  GracefulStop stop;
+  std::vector<std::string> stats;
+  int status = 0;
+  for (size_t i = 0; i < numbers.size() && status == 0; ++i) {
+    const Options f = FrameOptions(o, numbers[i]);
+    if (i > 0) {
+      p.start = std::chrono::steady_clock::now();
+      p.times = RunTimes{};  // the file was read once, for the first frame
+      PrepareFrame(p, f, false);
+    }
+    RenderBackend backend(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
+    LocalPasses source(backend.Frame(), o.chunkSpp);
+    const RenderedFrame frame = Render(source, SettingsFromOptions(f, backend), f);
+    stats.emplace_back();
+    status = Finish(f, p, frame, nullptr, backend, &stats.back());
+    std::printf(
+        "vkpt: frame %u (%zu of %zu, %.6g s): pose %.3f s, BVH and arrays %.3f s, upload %.3f s, render %.3f s\n",
+        numbers[i], i + 1, numbers.size(), f.at.value_or(0.0), p.times.pose, p.times.prepare, p.times.upload,
+        frame.seconds);
+    std::fflush(stdout);
+  }
+  std::printf("vkpt: %zu of %zu frames in %.3f s\n", stats.size(), numbers.size(), SecondsSince(start));
+  if (!o.stats.empty()) WriteSequenceStats(o.stats, stats);
+  return status;
+}
+
 int Run(const Options& o) {
   if (o.listDevices) return ListDevices();
   if (!o.diff.empty()) return Diff(o);
+  if (o.frames) return RunSequence(o);
   Prepared p = Prepare(o, true);
   std::optional<RenderedFrame> reference;
   if (o.compare) reference = RenderReference(p, o);

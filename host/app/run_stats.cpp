@@ -50,7 +50,11 @@ JsonObject BvhJson(const BvhStats& b) {
 
 JsonObject TimesJson(const RunTimes& t) {
   JsonObject times;
-  times.Num("load", t.load).Num("environment", t.environment).Num("prepare", t.prepare).Num("upload", t.upload);
+  times.Num("load", t.load)
+      .Num("environment", t.environment)
+      .Num("pose", t.pose)
+      .Num("prepare", t.prepare)
+      .Num("upload", t.upload);
   times.Num("render", t.render).Num("aov", t.aov).Num("denoise", t.denoise).Num("write", t.write).Num("total", t.total);
   return times;
 }

@@ -19,6 +19,7 @@ namespace vkpt {
 struct RunTimes {
   double load = 0.0;         // reading and checking the glTF
   double environment = 0.0;  // reading the --env map and building its distribution
+  double pose = 0.0;         // posing the scene: animation, skins, morph targets, world-space triangles
   double prepare = 0.0;      // BVH build and the renderers' arrays (includes bvh.build_ms)
   double upload = 0.0;       // Vulkan: the scene into device memory (0 on the CPU)
   double render = 0.0;       // the render itself (--compare: the Vulkan one)

@@ -27,7 +27,7 @@ std::vector<uint64_t> MeshInstances(const GltfSource& src, const std::vector<int
 struct ScenePose {
   std::vector<NodePose> nodes;
   std::vector<glm::dmat4> world;
-  std::vector<Skin> skins;
+  const std::vector<Skin>& skins;
 };
 
 // Adds the world-space triangles, cameras and lights of the scene to `scene`. Iterative: a

@@ -8,6 +8,7 @@
 
 #include "scene/asset_access.h"
 #include "scene/external_uris.h"
+#include "scene/geometry_budget.h"
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_animation.h"
 #include "scene/gltf_instancing.h"
@@ -25,6 +26,17 @@
 #include "util/error.h"
 
 namespace vkpt {
+
+struct GltfAsset::Parts {
+  tinygltf::Model model;
+  Scene scene;
+  std::vector<int> parents;                           // CheckNodeGraph's
+  std::vector<std::vector<DecodedPrimitive>> meshes;  // decoded, in object space
+  std::vector<NodePose> rest;                         // as the file places the nodes
+  std::vector<Skin> skins;
+  size_t readWarnings = 0;  // the scene's warnings from reading it; each pose adds its own
+};
+
 namespace {
 
 // tinygltf would decode every image with its own stb_image, used or not, before vkpt
@@ -37,89 +49,12 @@ bool KeepImageEncoded(tinygltf::Image* image, const int, std::string*, std::stri
   return true;
 }
 
-// Host memory per triangle of the instanced scene, from the loader's arrays through the
-// BVH builds (both trees with --splits auto) to the renderer's arrays and their device
-// copies: up to ~490 bytes measured on 1 M triangles with vertex normals
-// (docs/design-notes.md), with a margin.
-constexpr uint64_t kBytesPerTriangle = 560;
-// And per triangle with COLOR_0: the Scene's VertexColors (48 bytes), the packed
-// TriangleColors (32) and their staging and device copies (32 each).
-constexpr uint64_t kBytesPerColoredTriangle = 144;
-// And per triangle with textures: the Scene's VertexUVs (48 bytes), the packed TriangleUVs
-// (48) and their staging and device copies (48 each).
-constexpr uint64_t kBytesPerTexturedTriangle = 192;
-// And per triangle with normal maps: the Scene's VertexTangents (48 bytes), the packed
-// TriangleTangents (16) and their staging and device copies (16 each), and generated
-// tangents' corners (48, and 48 more while an instance transforms them).
-constexpr uint64_t kBytesPerTangentTriangle = 192;
-// Decoding an accessor holds each component as a double, then as a float.
-constexpr uint64_t kBytesPerDecodedComponent = 12;
-// Posing a primitive copies its attributes (morphed; up to ~100 bytes a vertex with
-// every attribute and skin weights) and holds a skinned vertex's transform (208 bytes)
-// and its posed attributes (~44 bytes): per byte of POSITION decoded (36 a vertex).
-constexpr uint64_t kPosingBytesPerDecodedPosition = 10;
-
-uint64_t SaturatingMul(uint64_t a, uint64_t b) { return b && a > UINT64_MAX / b ? UINT64_MAX : a * b; }
-
 // tinygltf's messages may quote a whole data URI: keep the first line's start.
 std::string Shorten(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
   std::replace(s.begin(), s.end(), '\n', ';');
   if (s.size() > 240) s = s.substr(0, 200) + "… (" + std::to_string(s.size()) + " characters)";
   return s;
-}
-
-uint64_t DecodedBytes(const GltfSource& src, int accessor) {
-  if (accessor < 0 || size_t(accessor) >= src.m.accessors.size()) return 0;
-  const tinygltf::Accessor& a = src.m.accessors[accessor];
-  return SaturatingMul(a.count, uint64_t(ComponentCount(a.type)) * kBytesPerDecodedComponent);
-}
-
-// The memory the meshes will take, counted before any is decoded: each primitive's
-// positions, normals, colours and indices, and every triangle of every instance through to the
-// renderer.
-// `textured`, `tangents`: the scene keeps the texture coordinates, the tangents of
-// every triangle.
-void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, bool textured, bool tangents,
-                    MemoryBudget& budget) {
-  uint64_t largestPosing = 0;
-  for (size_t i = 0; i < src.m.meshes.size(); ++i) {
-    uint64_t decoded = 0, triangles = 0, colored = 0, posing = 0;
-    for (const tinygltf::Primitive& prim : src.m.meshes[i].primitives) {
-      decoded += DecodedBytes(src, prim.indices);
-      for (const char* attr : {"POSITION", "NORMAL", "COLOR_0", "TEXCOORD_0", "TEXCOORD_1", "TANGENT", "JOINTS_0",
-                               "JOINTS_1", "WEIGHTS_0", "WEIGHTS_1"})
-        if (auto it = prim.attributes.find(attr); it != prim.attributes.end()) decoded += DecodedBytes(src, it->second);
-      for (const auto& target : prim.targets)
-        for (const auto& [attr, accessor] : target) decoded += DecodedBytes(src, accessor);
-      // A morphed or skinned instance is posed from a copy, one primitive at a time.
-      const bool deformed = !prim.targets.empty() || prim.attributes.count("JOINTS_0");
-      if (auto it = prim.attributes.find("POSITION"); deformed && it != prim.attributes.end() && instances[i])
-        posing = std::max(posing, SaturatingMul(DecodedBytes(src, it->second), kPosingBytesPerDecodedPosition));
-      triangles += TriangleCount(src, prim);
-      if (prim.attributes.count("COLOR_0")) colored += TriangleCount(src, prim);
-    }
-    std::string name = "meshes[" + std::to_string(i) + "]";
-    budget.Charge(decoded, name + " (decoding its accessors)");
-    if (posing > largestPosing) {
-      budget.Charge(posing - largestPosing, name + " (posing an instance)");
-      largestPosing = posing;
-    }
-    uint64_t total = SaturatingMul(triangles, instances[i]);
-    budget.Charge(SaturatingMul(total, kBytesPerTriangle), name + " (" + std::to_string(triangles) + " triangles × " +
-                                                               std::to_string(instances[i]) +
-                                                               " instances = " + std::to_string(total) + " triangles)");
-    if (colored)
-      budget.Charge(SaturatingMul(SaturatingMul(colored, instances[i]), kBytesPerColoredTriangle),
-                    name + " (vertex colours of " + std::to_string(colored) + " triangles × " +
-                        std::to_string(instances[i]) + " instances)");
-    if (textured)
-      budget.Charge(SaturatingMul(total, kBytesPerTexturedTriangle),
-                    name + " (texture coordinates of " + std::to_string(total) + " triangles)");
-    if (tangents)
-      budget.Charge(SaturatingMul(total, kBytesPerTangentTriangle),
-                    name + " (tangents of " + std::to_string(total) + " triangles)");
-  }
 }
 
 // The TEXCOORD set a material's tangents follow: its base's normal texture's, else its
@@ -182,26 +117,12 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
     if (!IsRenderedExtension(ext)) ig.push_back("extension " + ext);
 }
 
-// The nodes' pose: as the file places them, or at `choice`'s time of its animation.
-ScenePose Pose(const GltfSource& src, const std::vector<int>& parents, const SceneChoice& choice, MemoryBudget& budget,
-               Scene& scene) {
-  ScenePose pose{RestPoses(src), {}, ReadSkins(src)};
-  scene.animations = ListAnimations(src);
-  scene.animation = ResolveAnimation(src, scene.animations, choice.animation);
-  scene.animationTime = choice.time;
-  if (scene.animation >= 0) {
-    budget.Charge(AnimationBytes(src, scene.animation),
-                  "animations[" + std::to_string(scene.animation) + "] (decoding its keyframes)");
-    PoseAtTime(src, scene.animation, choice.time, pose.nodes);
-  }
-  pose.world = WorldTransforms(parents, pose.nodes);
-  return pose;
-}
-
-// The phases of a load, in the order that makes each safe: the structure is checked
-// before any data it points to is read, the memory counted before anything is decoded.
-void BuildScene(const GltfSource& src, const LoadLimits& limits, const SceneChoice& choice, Scene& scene,
-                MemoryBudget& budget) {
+// The phases of reading a file, in the order that makes each safe: the structure is
+// checked before any data it points to is read, the memory counted before anything is
+// decoded. What posing needs is kept in `parts`.
+void BuildScene(const GltfSource& src, const LoadLimits& limits, const SceneChoice& choice, MemoryBudget& budget,
+                GltfAsset::Parts& parts) {
+  Scene& scene = parts.scene;
   CheckAsset(src);
   CheckBufferViews(src);
   for (size_t i = 0; i < src.m.accessors.size(); ++i) CheckAccessor(src, int(i));
@@ -209,17 +130,17 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, const SceneChoi
   const uint32_t defaultMaterial = LoadMaterials(src, scene);
   LoadTextures(src, limits, budget, scene);
   const bool textured = HasMaterialTextures(scene), tangents = UsesTangents(scene);
-  const std::vector<int> parents = CheckNodeGraph(src);
-  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parents)), textured, tangents, budget);
+  parts.parents = CheckNodeGraph(src);
+  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parts.parents)), textured, tangents, budget);
   scene.materialVariants = ReadVariants(src);
   scene.variant = ResolveVariant(src, scene.materialVariants, choice.variant);
   // Texture coordinates are decoded where tangents are generated from them, kept where
   // textures read them.
   const MeshDecoding decoding{defaultMaterial, textured || tangents,          tangents,
                               scene.variant,   scene.materialVariants.size(), !src.m.skins.empty()};
-  std::vector<std::vector<DecodedPrimitive>> meshes(src.m.meshes.size());
-  for (size_t i = 0; i < src.m.meshes.size(); ++i) meshes[i] = DecodeMesh(src, int(i), decoding, scene.warnings);
-  for (std::vector<DecodedPrimitive>& mesh : meshes)
+  parts.meshes.resize(src.m.meshes.size());
+  for (size_t i = 0; i < src.m.meshes.size(); ++i) parts.meshes[i] = DecodeMesh(src, int(i), decoding, scene.warnings);
+  for (std::vector<DecodedPrimitive>& mesh : parts.meshes)
     for (DecodedPrimitive& prim : mesh) {
       if (!tangents) break;
       const int uvSet = TangentUVSet(scene.materials[prim.material]);
@@ -227,8 +148,13 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, const SceneChoi
     }
   CheckCameras(src);
   CheckLights(src);
-  InstantiateScene(src, parents, Pose(src, parents, choice, budget, scene), meshes, scene);
-  if (scene.triangles.empty()) src.Fail("the scene contains no triangles to render");
+  parts.rest = RestPoses(src);
+  parts.skins = ReadSkins(src);
+  scene.animations = ListAnimations(src);
+  scene.animation = ResolveAnimation(src, scene.animations, choice.animation);
+  if (scene.animation >= 0)
+    budget.Charge(AnimationBytes(src, scene.animation),
+                  "animations[" + std::to_string(scene.animation) + "] (decoding its keyframes)");
   NoteIgnoredFeatures(src, scene);
 }
 
@@ -270,28 +196,66 @@ tinygltf::Model ParseWithTinyGltf(const std::string& path, const SceneFile& file
 
 }  // namespace
 
-Scene LoadGltf(const std::string& path, const LoadLimits& limits, const SceneChoice& choice) {
+GltfAsset::GltfAsset(const std::string& path, const LoadLimits& limits, const SceneChoice& choice)
+    : parts_(std::make_unique<Parts>()) {
   MemoryBudget budget(limits.maxMemory ? limits.maxMemory : DefaultMaxMemory(), path);
   try {
     SceneFile file = ReadSceneFile(path, budget);
     AssetAccess access(path, CheckJson(path, file.json), limits, budget);
-    Scene scene;
+    Scene& scene = parts_->scene;
     scene.path = path;
-    tinygltf::Model model = ParseWithTinyGltf(path, file, access, scene.warnings);
+    parts_->model = ParseWithTinyGltf(path, file, access, scene.warnings);
     ContentHash hash;
     hash.Add({reinterpret_cast<const unsigned char*>(file.bytes.data()), file.bytes.size()});
-    for (const tinygltf::Buffer& b : model.buffers) hash.Add(b.data);
+    for (const tinygltf::Buffer& b : parts_->model.buffers) hash.Add(b.data);
     scene.contentHash = hash.Value();
     file = SceneFile{};
     for (const std::string& skipped : access.SkippedImages()) scene.warnings.push_back(skipped);
-    BuildScene(GltfSource{path, model}, limits, choice, scene, budget);
+    BuildScene(GltfSource{path, parts_->model}, limits, choice, budget, *parts_);
     scene.memoryLimit = budget.Limit();
     scene.memoryCounted = budget.Used();
-    return scene;
+    parts_->readWarnings = scene.warnings.size();
   } catch (const std::bad_alloc&) {
     throw Error(path + ": ran out of memory while loading, within --max-memory " + FormatBytes(budget.Limit()) +
                 " (the process may have a lower limit, e.g. ulimit -v)");
   }
+}
+
+GltfAsset::~GltfAsset() = default;
+
+void GltfAsset::PoseAt(double time) {
+  Scene& scene = parts_->scene;
+  const GltfSource src{scene.path, parts_->model};
+  try {
+    scene.triangles.clear();
+    scene.normals.clear();
+    scene.colors.clear();
+    scene.uvs.clear();
+    scene.tangents.clear();
+    scene.cameras.clear();
+    scene.lights.clear();
+    scene.bounds = Bounds3f{};
+    scene.warnings.resize(parts_->readWarnings);
+    ScenePose pose{parts_->rest, {}, parts_->skins};
+    if (scene.animation >= 0) PoseAtTime(src, scene.animation, time, pose.nodes);
+    pose.world = WorldTransforms(parts_->parents, pose.nodes);
+    scene.animationTime = time;
+    InstantiateScene(src, parts_->parents, pose, parts_->meshes, scene);
+  } catch (const std::bad_alloc&) {
+    throw Error(scene.path + ": ran out of memory while posing, within --max-memory " + FormatBytes(scene.memoryLimit) +
+                " (the process may have a lower limit, e.g. ulimit -v)");
+  }
+  if (scene.triangles.empty()) src.Fail("the scene contains no triangles to render");
+}
+
+const Scene& GltfAsset::scene() const { return parts_->scene; }
+
+Scene GltfAsset::TakeScene() { return std::move(parts_->scene); }
+
+Scene LoadGltf(const std::string& path, const LoadLimits& limits, const SceneChoice& choice) {
+  GltfAsset asset(path, limits, choice);
+  asset.PoseAt(choice.time);
+  return asset.TakeScene();
 }
 
 }  // namespace vkpt

@@ -1,7 +1,9 @@
 // glTF 2.0 (.gltf / .glb) → Scene.
 #pragma once
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "scene/load_limits.h"
 #include "scene/scene.h"
@@ -13,6 +15,28 @@ struct SceneChoice {
   std::string variant{};    // a KHR_materials_variants variant, by name or index; "": the primitives' own materials
   std::string animation{};  // an animation, by name or index; "": the nodes' own transforms
   double time = 0.0;        // seconds into the animation
+};
+
+// A glTF file read, checked and decoded once — materials, textures, meshes, skins and
+// the chosen animation — and posed any number of times.
+class GltfAsset {
+ public:
+  // Reads `path` as LoadGltf does, but poses nothing yet.
+  GltfAsset(const std::string& path, const LoadLimits& limits = {}, const SceneChoice& choice = {});
+  ~GltfAsset();
+  GltfAsset(GltfAsset&&) = default;
+  GltfAsset& operator=(GltfAsset&&) = default;
+
+  // Poses the scene `time` seconds into the chosen animation (the nodes' own transforms
+  // without one): its triangles, cameras, lights and bounds are replaced.
+  void PoseAt(double time);
+  const Scene& scene() const;
+  Scene TakeScene();  // the asset is spent
+
+  struct Parts;  // the parsed file, its decoded meshes and rest pose (gltf_loader.cpp)
+
+ private:
+  std::unique_ptr<Parts> parts_;
 };
 
 // Loads the default scene (else scene 0; with no scenes, every root node) of a glTF

@@ -1,0 +1,49 @@
+#include "app/sequence.h"
+
+#include <cstdio>
+
+#include "util/atomic_write.h"
+
+namespace vkpt {
+
+std::vector<uint32_t> FrameNumbers(const FrameRange& range) {
+  std::vector<uint32_t> numbers;
+  for (uint64_t k = range.first; k <= range.last; k += range.step) numbers.push_back(uint32_t(k));
+  return numbers;
+}
+
+std::string FramePath(const std::string& out, uint32_t frame) {
+  const size_t slash = out.find_last_of('/');
+  const size_t name = slash == std::string::npos ? 0 : slash + 1;
+  const size_t end = out.find_last_of('#');
+  if (end != std::string::npos && end >= name) {
+    size_t begin = end;
+    while (begin > name && out[begin - 1] == '#') --begin;
+    char number[16];
+    std::snprintf(number, sizeof number, "%0*u", int(end + 1 - begin), frame);
+    return out.substr(0, begin) + number + out.substr(end + 1);
+  }
+  const size_t dot = out.find_last_of('.');
+  const size_t at = dot == std::string::npos || dot < name ? out.size() : dot;
+  char number[16];
+  std::snprintf(number, sizeof number, ".%04u", frame);
+  return out.substr(0, at) + number + out.substr(at);
+}
+
+Options FrameOptions(const Options& o, uint32_t frame) {
+  Options f = o;
+  if (!o.animation.empty()) f.at = frame / o.fps;
+  if (o.orbit) f.orbit = *o.orbit * frame;
+  f.out = FramePath(o.out, frame);
+  f.stats.clear();
+  return f;
+}
+
+void WriteSequenceStats(const std::string& path, const std::vector<std::string>& frames) {
+  std::string json = "{\"frames\":[";
+  for (size_t i = 0; i < frames.size(); ++i) json += (i ? "," : "") + frames[i];
+  json += "]}";
+  WriteFileAtomically(path, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
+}
+
+}  // namespace vkpt
