@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/gltf_gpu_instancing.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_textures.h"
 #include "scene/posed_primitive.h"
@@ -99,13 +100,19 @@ class Instancer {
     const std::vector<double>& weights = pose_.nodes[nodeIndex].weights;
     const bool morphed = std::any_of(weights.begin(), weights.end(), [](double w) { return w != 0.0; });
     const std::string what = name + " (mesh " + std::to_string(n.mesh) + ")";
+    // EXT_mesh_gpu_instancing: the mesh once per instance, the instance's transform first.
+    std::vector<glm::dmat4> placements = InstanceTransforms(src_, nodeIndex);
+    if (!placements.empty() && n.skin != -1) src_.Fail(name + " is skinned and instanced (EXT_mesh_gpu_instancing)");
+    if (placements.empty()) placements.push_back(glm::dmat4(1.0));
     for (const DecodedPrimitive& base : meshes_[n.mesh]) {
       DecodedPrimitive displaced;
       if (morphed) displaced = Morphed(base, weights);
       const DecodedPrimitive& prim = morphed ? displaced : base;
-      const bool skinned = n.skin != -1 && !prim.joints[0].empty();
-      AddPrimitive(prim,
-                   skinned ? PoseSkinned(src_, prim, joints, what, unweighted_) : PoseRigid(src_, prim, world, what));
+      if (n.skin != -1 && !prim.joints[0].empty()) {
+        AddPrimitive(prim, PoseSkinned(src_, prim, joints, what, unweighted_));
+        continue;
+      }
+      for (const glm::dmat4& placement : placements) AddPrimitive(prim, PoseRigid(src_, prim, world * placement, what));
     }
   }
 
@@ -208,7 +215,7 @@ std::vector<uint64_t> MeshInstances(const GltfSource& src, const std::vector<int
     work.pop_back();
     if (n < 0 || size_t(n) >= src.m.nodes.size()) continue;  // reported by InstantiateScene
     int mesh = src.m.nodes[n].mesh;
-    if (mesh >= 0 && size_t(mesh) < src.m.meshes.size()) ++instances[mesh];
+    if (mesh >= 0 && size_t(mesh) < src.m.meshes.size()) instances[mesh] += InstanceCount(src, n);
     work.insert(work.end(), src.m.nodes[n].children.begin(), src.m.nodes[n].children.end());
   }
   return instances;

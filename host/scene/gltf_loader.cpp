@@ -66,27 +66,6 @@ int TangentUVSet(const Material& mat) {
   return mat.anisotropyStrength > 0.0f ? 0 : -1;
 }
 
-// Extensions whose every property vkpt renders.
-bool IsRenderedExtension(const std::string& ext) {
-  static const char* const kRendered[] = {"KHR_materials_anisotropy",
-                                          "KHR_materials_clearcoat",
-                                          "KHR_materials_diffuse_transmission",
-                                          "KHR_materials_dispersion",
-                                          "KHR_materials_iridescence",
-                                          "KHR_materials_sheen",
-                                          "KHR_materials_variants",
-                                          "KHR_materials_emissive_strength",
-                                          "KHR_materials_ior",
-                                          "KHR_materials_specular",
-                                          "KHR_materials_transmission",
-                                          "KHR_materials_volume",
-                                          "KHR_materials_unlit",
-                                          "KHR_lights_punctual",
-                                          "KHR_mesh_quantization",
-                                          "KHR_texture_transform"};
-  return std::find(std::begin(kRendered), std::end(kRendered), ext) != std::end(kRendered);
-}
-
 // What the file uses that vkpt does not render yet (printed by -v).
 void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   auto& ig = scene.ignoredFeatures;
@@ -114,7 +93,7 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
           if (attr != "POSITION" && attr != "NORMAL" && attr != "TANGENT") morphedOthers.insert(attr);
   for (const std::string& attr : morphedOthers) ig.push_back("morph targets of " + attr + ": the base values are used");
   for (const std::string& ext : src.m.extensionsUsed)
-    if (!IsRenderedExtension(ext)) ig.push_back("extension " + ext);
+    if (!IsSupportedExtension(ext)) ig.push_back("extension " + ext);
 }
 
 // The phases of reading a file, in the order that makes each safe: the structure is

@@ -9,8 +9,7 @@
 namespace vkpt {
 namespace {
 
-// Extensions vkpt understands; a file that *requires* any other one is refused, as the
-// glTF spec demands of a loader that does not implement it.
+// Extensions vkpt renders every property of.
 const std::set<std::string> kSupportedRequiredExtensions = {
     "KHR_lights_punctual",        "KHR_materials_anisotropy",
     "KHR_materials_clearcoat",    "KHR_materials_diffuse_transmission",
@@ -19,7 +18,8 @@ const std::set<std::string> kSupportedRequiredExtensions = {
     "KHR_materials_sheen",        "KHR_materials_specular",
     "KHR_materials_transmission", "KHR_materials_unlit",
     "KHR_materials_variants",     "KHR_materials_volume",
-    "KHR_mesh_quantization",      "KHR_texture_transform"};
+    "KHR_mesh_quantization",      "KHR_texture_transform",
+    "EXT_mesh_gpu_instancing"};
 
 void CheckTextureRef(const GltfSource& src, int index, const std::string& what) {
   if (index != -1) src.CheckIndex(index, src.m.textures, what);
@@ -27,13 +27,14 @@ void CheckTextureRef(const GltfSource& src, int index, const std::string& what) 
 
 }  // namespace
 
+bool IsSupportedExtension(const std::string& name) { return kSupportedRequiredExtensions.count(name) > 0; }
+
 void CheckAsset(const GltfSource& src) {
   const std::string& v = src.m.asset.version;
   if (v.empty()) src.Fail("asset.version is missing");
   if (v.substr(0, v.find('.')) != "2") src.Fail("asset.version is \"" + v + "\"; vkpt reads glTF 2.x only");
   for (const std::string& ext : src.m.extensionsRequired)
-    if (!kSupportedRequiredExtensions.count(ext))
-      src.Fail("the file requires extension " + ext + ", which vkpt does not support");
+    if (!IsSupportedExtension(ext)) src.Fail("the file requires extension " + ext + ", which vkpt does not support");
 }
 
 void CheckBufferViews(const GltfSource& src) {

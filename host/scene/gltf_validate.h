@@ -10,6 +10,10 @@
 
 namespace vkpt {
 
+// Whether vkpt renders every property of extension `name`: a file that *requires* any
+// other is refused, as the glTF spec demands of a loader that does not implement it, and
+// -v lists any other it uses as ignored.
+bool IsSupportedExtension(const std::string& name);
 // asset.version 2.x and no required extension vkpt lacks.
 void CheckAsset(const GltfSource& src);
 // Each bufferView inside its buffer, with a legal byteStride.
