@@ -11,6 +11,7 @@ packages=(
   libglm-dev                            # vector math shared by C++ and GLSL headers
   libtinygltf-dev nlohmann-json3-dev    # glTF loading and schema checks
   libstb-dev libtinyexr-dev             # PNG and EXR writers
+  libwebp-dev                           # EXT_texture_webp textures
   libgtest-dev                          # tests
   colord-data                           # tests: the CIE 1931 matching functions (iridescence, dispersion)
   libembree-dev                         # vkpt-bench compares against Embree

@@ -399,14 +399,15 @@ TEST(MaterialTextures, UnusableReferencesWarnAndKeepTheFactor) {
   EXPECT_TRUE(s.textures.empty());
   ASSERT_EQ(s.warnings.size(), 1u);
   EXPECT_NE(s.warnings[0].find("TEXCOORD_2"), std::string::npos) << s.warnings[0];
-  // A texture whose only image is in an extension vkpt cannot decode (WebP).
-  GltfBuilder webp = TexturedTriangle(R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})");
-  webp.textures[0] = R"({"extensions":{"EXT_texture_webp":{"source":0}}})";
-  webp.extensionsUsed.push_back("EXT_texture_webp");
-  Scene w = Load(webp);
+  // A texture whose only image is in an extension vkpt does not know (AVIF).
+  GltfBuilder avif = TexturedTriangle(R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})");
+  avif.textures[0] = R"({"extensions":{"EXT_texture_avif":{"source":0}}})";
+  avif.extensionsUsed.push_back("EXT_texture_avif");
+  Scene w = Load(avif);
   EXPECT_TRUE(w.textures.empty());
   ASSERT_EQ(w.warnings.size(), 1u);
-  EXPECT_NE(w.warnings[0].find("no PNG or JPEG source"), std::string::npos) << w.warnings[0];
+  EXPECT_NE(w.warnings[0].find("textures[0] has no image; the factor is used alone"), std::string::npos)
+      << w.warnings[0];
 }
 
 TEST(MaterialTextures, BadImagesNameTheImageAndTheMaterial) {
@@ -417,9 +418,11 @@ TEST(MaterialTextures, BadImagesNameTheImageAndTheMaterial) {
   EXPECT_TRUE(FailsWith(TexturedTriangle(material, cut), {where[0], where[1], where[2], "truncated"}));
   EXPECT_TRUE(
       FailsWith(TexturedTriangle(material, MakePng(60000, 60000, 8, 6, {})), {where[0], where[1], "60000", "16384"}));
-  const std::string webp = "RIFF\x10\0\0\0WEBPVP8 ";
+  const std::string webp("RIFF\x10\0\0\0WEBPVP8 ", 16);  // declares 24 bytes
   EXPECT_TRUE(FailsWith(TexturedTriangle(material, std::vector<unsigned char>(webp.begin(), webp.end())),
-                        {where[0], where[1], "neither PNG nor JPEG"}));
+                        {where[0], where[1], "is truncated (WebP"}));
+  EXPECT_TRUE(FailsWith(TexturedTriangle(material, {'G', 'I', 'F', '8', '9', 'a'}),
+                        {where[0], where[1], "is not PNG, JPEG or WebP"}));
   EXPECT_TRUE(FailsWith(TexturedTriangle(material, SmallPng(), R"({"wrapS":1234})"), {"samplers[0].wrapS", "1234"}));
 }
 

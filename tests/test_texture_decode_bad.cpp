@@ -53,15 +53,15 @@ TEST(TextureDecode, EmptyInput) {
 }
 
 TEST(TextureDecode, UnknownFormatNamesTheMimeType) {
-  const Bytes webp = {'R', 'I', 'F', 'F', 0x24, 0, 0, 0, 'W', 'E', 'B', 'P', 'V', 'P', '8', ' '};
-  EXPECT_EQ(HeaderError(webp, "image/webp"),
-            "is neither PNG nor JPEG (mimeType \"image/webp\", first bytes 52 49 46 46)");
+  const Bytes avif = {0, 0, 0, 0x1c, 'f', 't', 'y', 'p', 'a', 'v', 'i', 'f'};
+  EXPECT_EQ(HeaderError(avif, "image/avif"),
+            "is not PNG, JPEG or WebP (mimeType \"image/avif\", first bytes 00 00 00 1C)");
   const Bytes ktx2 = {0xab, 'K', 'T', 'X', ' ', '2', '0', 0xbb, '\r', '\n', 0x1a, '\n'};
   EXPECT_EQ(HeaderError(ktx2, "image/ktx2"),
-            "is neither PNG nor JPEG (mimeType \"image/ktx2\", first bytes AB 4B 54 58)");
+            "is not PNG, JPEG or WebP (mimeType \"image/ktx2\", first bytes AB 4B 54 58)");
   // The mimeType does not decide: a PNG called JPEG is still read as PNG, and the reverse.
   EXPECT_EQ(ReadTextureImageHeader(SmallPng(), "image/jpeg").format, "PNG");
-  EXPECT_EQ(HeaderError({0x89, 'P'}), "is neither PNG nor JPEG (no mimeType, first bytes 89 50)");
+  EXPECT_EQ(HeaderError({0x89, 'P'}), "is not PNG, JPEG or WebP (no mimeType, first bytes 89 50)");
 }
 
 TEST(TextureDecode, SidesAbove16384RefusedFromTheHeader) {
@@ -105,7 +105,7 @@ TEST(TextureDecode, TruncatedPngAtEveryByte) {
     const Bytes part(png.begin(), png.begin() + cut);
     const std::string byHeader = HeaderError(part), byDecoder = ErrorOf([&] { DecodeTextureImage(part, header); });
     if (cut < 8) {
-      EXPECT_NE(byHeader.find("is neither PNG nor JPEG"), std::string::npos) << byHeader;
+      EXPECT_NE(byHeader.find("is not PNG, JPEG or WebP"), std::string::npos) << byHeader;
       EXPECT_NE(byDecoder, "(no error)");
     } else {
       EXPECT_EQ(byHeader.rfind("is truncated (PNG: ", 0), 0u) << byHeader;
@@ -126,7 +126,7 @@ TEST(TextureDecode, TruncatedJpegAtEveryByte) {
       SCOPED_TRACE(std::string(name) + " cut at " + std::to_string(cut));
       const Bytes part(jpeg.begin(), jpeg.begin() + cut);
       const std::string byHeader = HeaderError(part), byDecoder = ErrorOf([&] { DecodeTextureImage(part, header); });
-      const std::string expected = cut < 3 ? "is neither PNG nor JPEG" : "is truncated (JPEG: ";
+      const std::string expected = cut < 3 ? "is not PNG, JPEG or WebP" : "is truncated (JPEG: ";
       EXPECT_EQ(byHeader.rfind(expected, 0), 0u) << byHeader;
       EXPECT_EQ(byDecoder, byHeader);
       EXPECT_LT(byHeader.size(), 160u);

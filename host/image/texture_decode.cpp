@@ -9,6 +9,7 @@
 // Only the PNG and JPEG decoders, with internal linkage: Debian's tinygltf links its own
 // stb_image, and image_load.cpp has another private copy for Radiance files.
 #include "image/stb_source.h"
+#include "image/webp_decode.h"
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #define STBI_ONLY_PNG
@@ -237,6 +238,7 @@ TextureImageHeader ReadTextureImageHeader(std::span<const unsigned char> bytes, 
   if (bytes.empty()) throw Error("is empty (0 bytes)");
   if (IsPng(bytes)) return ReadPngHeader(bytes);
   if (IsJpeg(bytes)) return ReadJpegHeader(bytes);
+  if (IsWebp(bytes)) return ReadWebpHeader(bytes);
   std::string start;
   for (size_t i = 0; i < std::min<size_t>(bytes.size(), 4); ++i) {
     char hex[4];
@@ -244,7 +246,7 @@ TextureImageHeader ReadTextureImageHeader(std::span<const unsigned char> bytes, 
     start += hex;
   }
   const std::string mime = mimeType.empty() ? "no mimeType" : "mimeType \"" + std::string(mimeType) + "\"";
-  throw Error("is neither PNG nor JPEG (" + mime + ", first bytes " + start + ")");
+  throw Error("is not PNG, JPEG or WebP (" + mime + ", first bytes " + start + ")");
 }
 
 Rgba8Image DecodeTextureImage(std::span<const unsigned char> bytes, const TextureImageHeader& header) {
@@ -258,6 +260,7 @@ Rgba8Image DecodeTextureImage(std::span<const unsigned char> bytes, const Textur
     throw Error("is a " + std::to_string(actual.width) + " × " + std::to_string(actual.height) + " " + actual.format +
                 ", not the " + std::to_string(header.width) + " × " + std::to_string(header.height) + " " +
                 header.format + " its header said");
+  if (header.format == "WebP") return DecodeWebp(bytes, header);
   StbSource source{bytes};
   StbHeap heap;  // frees stb's pixels, and what it held when the reader ended its decode
   Rgba8Image image{header.width, header.height, {}};

@@ -1,4 +1,5 @@
-// Decoding the images glTF textures use (PNG and JPEG) into RGBA8 texels. The bytes are
+// Decoding the images glTF textures use (PNG, JPEG and, with EXT_texture_webp, WebP) into
+// RGBA8 texels. The bytes are
 // untrusted (docs/security.md): the format comes from the signature, the header is read
 // and its dimensions checked before anything is decoded, and a truncated or corrupt image
 // is a vkpt::Error, never a crash, a hang or a success. Safe to call from several threads
@@ -26,7 +27,7 @@ struct TextureImageHeader {
   // when it has a tRNS chunk; a CMYK JPEG as RGB (what stb converts it to).
   uint32_t channels = 0;
   bool sixteenBit = false;  // 16 bits per channel (PNG only)
-  std::string format;       // "PNG" or "JPEG"
+  std::string format;       // "PNG", "JPEG" or "WebP"
 };
 
 // Decoded texels: RGBA8, row-major, row 0 = the first row of the file (the top; glTF's
@@ -37,7 +38,7 @@ struct Rgba8Image {
 };
 
 // Identifies the format by its signature (not by mimeType, which is used only in the
-// message when the bytes are neither PNG nor JPEG), reads the header, checks
+// message when the bytes are not PNG, JPEG or WebP), reads the header, checks
 // 1 <= width, height <= kMaxTextureSide. It also walks the whole file's structure (PNG
 // chunks, JPEG segments and scans), so an image cut short, or one with parts that would
 // trip stb (a JPEG Huffman table of more than 256 codes, an unknown critical PNG chunk),

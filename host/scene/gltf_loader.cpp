@@ -93,7 +93,9 @@ void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
           if (attr != "POSITION" && attr != "NORMAL" && attr != "TANGENT") morphedOthers.insert(attr);
   for (const std::string& attr : morphedOthers) ig.push_back("morph targets of " + attr + ": the base values are used");
   for (const std::string& ext : src.m.extensionsUsed)
-    if (!IsSupportedExtension(ext)) ig.push_back("extension " + ext);
+    if (ext == "KHR_texture_basisu")
+      ig.push_back("extension " + ext + ": KTX2 images are not decoded; each texture's fallback image is used");
+    else if (!IsSupportedExtension(ext)) ig.push_back("extension " + ext);
 }
 
 // The phases of reading a file, in the order that makes each safe: the structure is

@@ -112,6 +112,20 @@ TextureSampler ReadSampler(const GltfSource& src, int sampler) {
   }
 }
 
+// The image textures[t] draws from: its EXT_texture_webp source, else its own `source`
+// (for a KHR_texture_basisu texture, the fallback: vkpt decodes no KTX2); −1: none.
+int TextureSource(const GltfSource& src, int t) {
+  const tinygltf::Texture& tex = src.m.textures[t];
+  const auto webp = tex.extensions.find("EXT_texture_webp");
+  if (webp == tex.extensions.end()) return tex.source;
+  const std::string what = "textures[" + std::to_string(t) + "].extensions.EXT_texture_webp.source";
+  if (!webp->second.IsObject() || !webp->second.Has("source") || !webp->second.Get("source").IsInt())
+    src.Fail(what + " is missing or not an image index");
+  const int image = webp->second.Get("source").Get<int>();
+  src.CheckIndex(image, src.m.images, what);
+  return image;
+}
+
 class TextureReader {
  public:
   TextureReader(const GltfSource& src, Scene& scene) : src_(src), scene_(scene) {}
@@ -120,12 +134,13 @@ class TextureReader {
   void Read(uint32_t m, const Slot& slot, const tinygltf::TextureInfo& info) {
     if (info.index < 0) return;
     const std::string what = MaterialName(m) + "." + slot.field;
-    const tinygltf::Texture& tex = src_.m.textures[info.index];
-    if (tex.source < 0) {
-      // KHR_texture_basisu and EXT_texture_webp name their image in the extension and
-      // may leave no `source` to fall back on: vkpt decodes PNG and JPEG only.
-      scene_.warnings.push_back(what + ": textures[" + std::to_string(info.index) +
-                                "] has no PNG or JPEG source; the factor is used alone");
+    const std::string texture = "textures[" + std::to_string(info.index) + "]";
+    if (TextureSource(src_, info.index) < 0) {
+      if (src_.m.textures[info.index].extensions.count("KHR_texture_basisu"))
+        src_.Fail(what + ": " + texture +
+                  " has only a KHR_texture_basisu (KTX2) image, which vkpt cannot decode (Debian packages no KTX2 or "
+                  "Basis Universal decoder), and no PNG, JPEG or WebP source to fall back on");
+      scene_.warnings.push_back(what + ": " + texture + " has no image; the factor is used alone");
       return;
     }
     MaterialTexture ref = Transform(info, what);
@@ -219,8 +234,9 @@ class TextureReader {
     auto [it, added] = textures_.try_emplace({gltfTexture, srgb}, uint32_t(scene_.textures.size()));
     if (added) {
       const tinygltf::Texture& tex = src_.m.textures[gltfTexture];
-      scene_.textures.push_back({uint32_t(tex.source), ReadSampler(src_, tex.sampler), srgb});
-      users_.try_emplace(tex.source, what);
+      const int image = TextureSource(src_, gltfTexture);
+      scene_.textures.push_back({uint32_t(image), ReadSampler(src_, tex.sampler), srgb});
+      users_.try_emplace(image, what);
     }
     return it->second;
   }

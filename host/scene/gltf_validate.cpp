@@ -19,7 +19,7 @@ const std::set<std::string> kSupportedRequiredExtensions = {
     "KHR_materials_transmission", "KHR_materials_unlit",
     "KHR_materials_variants",     "KHR_materials_volume",
     "KHR_mesh_quantization",      "KHR_texture_transform",
-    "EXT_mesh_gpu_instancing"};
+    "EXT_mesh_gpu_instancing",    "EXT_texture_webp"};
 
 void CheckTextureRef(const GltfSource& src, int index, const std::string& what) {
   if (index != -1) src.CheckIndex(index, src.m.textures, what);
@@ -33,8 +33,11 @@ void CheckAsset(const GltfSource& src) {
   const std::string& v = src.m.asset.version;
   if (v.empty()) src.Fail("asset.version is missing");
   if (v.substr(0, v.find('.')) != "2") src.Fail("asset.version is \"" + v + "\"; vkpt reads glTF 2.x only");
+  // A required KHR_texture_basisu is refused texture by texture, where no fallback image
+  // is there to stand in for the KTX2 one (gltf_textures.cpp).
   for (const std::string& ext : src.m.extensionsRequired)
-    if (!IsSupportedExtension(ext)) src.Fail("the file requires extension " + ext + ", which vkpt does not support");
+    if (!IsSupportedExtension(ext) && ext != "KHR_texture_basisu")
+      src.Fail("the file requires extension " + ext + ", which vkpt does not support");
 }
 
 void CheckBufferViews(const GltfSource& src) {

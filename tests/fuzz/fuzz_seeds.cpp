@@ -2,7 +2,7 @@
 // OUTDIR/pfm and OUTDIR/texture (run.sh calls it; the real files of the test data are
 // read in place besides). EXR and PFM seeds come from vkpt's own writers
 // (image/image_encode.h), so they are what vkpt writes; HDR, PNG and JPEG seeds from
-// stb_image_write, in each pixel layout the decoders distinguish.
+// stb_image_write, in each pixel layout the decoders distinguish; WebP ones from libwebp.
 //   usage: fuzz_seeds OUTDIR
 #include <cmath>
 #include <cstdio>
@@ -14,6 +14,8 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_STATIC
 #include <stb_image_write.h>
+
+#include <webp/encode.h>
 
 #include "image/image.h"
 #include "image/image_encode.h"
@@ -94,5 +96,13 @@ int main(int argc, char** argv) {
     stbi_write_jpg_to_func(Append, &bytes, 6, 5, comp, texels.data(), 90);
     Write("texture/" + std::to_string(comp) + "-channel.jpg", bytes);
   }
+  // WebP lossless (RGBA) and lossy (RGB), as libwebp encodes them.
+  uint8_t* webp = nullptr;
+  size_t size = WebPEncodeLosslessRGBA(texels.data(), 6, 5, 6 * 4, &webp);
+  Write("texture/lossless.webp", std::vector<uint8_t>(webp, webp + size));
+  WebPFree(webp);
+  size = WebPEncodeRGB(texels.data(), 6, 5, 6 * 3, 80.0f, &webp);
+  Write("texture/lossy.webp", std::vector<uint8_t>(webp, webp + size));
+  WebPFree(webp);
   return 0;
 }
