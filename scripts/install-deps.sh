@@ -12,6 +12,7 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev    # glTF loading and schema checks
   libstb-dev libtinyexr-dev             # PNG and EXR writers
   libwebp-dev                           # EXT_texture_webp textures
+  libdraco-dev libmeshoptimizer-dev     # KHR_draco_mesh_compression, EXT_meshopt_compression
   libgtest-dev                          # tests
   colord-data                           # tests: the CIE 1931 matching functions (iridescence, dispersion)
   libembree-dev                         # vkpt-bench compares against Embree

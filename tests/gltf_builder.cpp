@@ -52,7 +52,9 @@ std::string GltfBuilder::Json(bool glb) const {
   if (!bin_.empty()) {
     j += ",\"buffers\":[{\"byteLength\":" + std::to_string(glb ? Padded().size() : bin_.size());
     if (!glb) j += ",\"uri\":\"data:application/octet-stream;base64," + Base64(bin_) + "\"";
-    j += "}]";
+    j += "}";
+    for (const std::string& b : extraBuffers) j += "," + b;
+    j += "]";
   }
   auto array = [&](const char* name, const std::vector<std::string>& items) {
     if (!items.empty()) j += std::string(",\"") + name + "\":[" + Join(items) + "]";
@@ -72,6 +74,16 @@ std::string GltfBuilder::Json(bool glb) const {
   array("scenes", sc);
   if (scene) j += ",\"scene\":" + std::to_string(*scene);
   return j + extraTopLevel + "}";
+}
+
+std::string GltfBuilder::Glb() const {
+  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  std::string json = Json(/*glb=*/true);
+  while (json.size() % 4) json += ' ';
+  const std::string bin = Padded();
+  std::string body = u32(uint32_t(json.size())) + "JSON" + json;
+  if (!bin.empty()) body += u32(uint32_t(bin.size())) + std::string("BIN\0", 4) + bin;
+  return "glTF" + u32(2) + u32(uint32_t(12 + body.size())) + body;
 }
 
 Scene Load(const GltfBuilder& b, const SceneChoice& choice) {

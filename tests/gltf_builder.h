@@ -47,6 +47,12 @@ class GltfBuilder {
     bin_ += bytes;
     return int(views_.size()) - 1;
   }
+  size_t BinSize() const { return bin_.size(); }
+  // A bufferView written by the test (`json`, an object); returns its index.
+  int RawView(const std::string& json) {
+    views_.push_back(json);
+    return int(views_.size()) - 1;
+  }
   int Accessor(int view, int componentType, size_t count, const std::string& type, const std::string& extra = "") {
     std::string a = "{";
     if (view >= 0) a += "\"bufferView\":" + std::to_string(view) + ",";
@@ -95,6 +101,8 @@ class GltfBuilder {
 
   // The document; with `glb`, the buffer has no uri (it is the GLB BIN chunk).
   std::string Json(bool glb = false) const;
+  // A GLB file: header + JSON chunk (space-padded) + BIN chunk (zero-padded).
+  std::string Glb() const;
   std::string Padded() const {
     std::string b = bin_;
     while (b.size() % 4) b += '\0';
@@ -105,8 +113,9 @@ class GltfBuilder {
   std::vector<std::string> extensionsUsed, extensionsRequired;
   std::string version = "2.0";
   std::optional<int> scene;
-  bool defaultScenes = true;  // scenes [{"nodes":[0]}] when none are given
-  std::string extraTopLevel;  // raw JSON members, each starting with ','
+  bool defaultScenes = true;              // scenes [{"nodes":[0]}] when none are given
+  std::string extraTopLevel;              // raw JSON members, each starting with ','
+  std::vector<std::string> extraBuffers;  // raw buffer objects after buffer 0
 
  private:
   static std::string Quoted(const std::vector<std::string>& v) {

@@ -62,6 +62,11 @@ foreach(program vkpt vkpt-bench)
     foreach(line IN LISTS ldd_lines)  # "\tlibfoo.so.1 => /lib/x86_64-linux-gnu/libfoo.so.1 (0x...)"
       if(line MATCHES "^[ \t]*([^ ]+) => ([^ ]+)" AND CMAKE_MATCH_1 STREQUAL lib)
         set(path "${CMAKE_MATCH_2}")
+      elseif(line MATCHES "^[ \t]*(/[^ ]+) \\(")  # the dynamic loader: "\t/lib64/ld-linux-x86-64.so.2 (0x...)"
+        get_filename_component(name "${CMAKE_MATCH_1}" NAME)
+        if(name STREQUAL lib)
+          set(path "${CMAKE_MATCH_1}")
+        endif()
       endif()
     endforeach()
     if(NOT path)

@@ -39,7 +39,7 @@ const auto kTimeLimit = std::chrono::seconds(static_cast<int>(5 * test::kTimeSca
 constexpr long kMemoryLimitMiB = 1024;
 
 struct Regression {
-  std::string target;  // loader, env, texture, pfm, options
+  std::string target;  // loader, env, texture, pfm, options, draco, meshopt
   std::string path;
   std::string name;  // test name
 };
@@ -48,7 +48,7 @@ void PrintTo(const Regression& r, std::ostream* os) { *os << fs::path(r.path).fi
 
 std::vector<Regression> DiscoverRegressions() {
   std::vector<Regression> out;
-  for (const char* target : {"loader", "env", "texture", "pfm", "options"}) {
+  for (const char* target : {"loader", "env", "texture", "pfm", "options", "draco", "meshopt"}) {
     const fs::path dir = test::SourcePath(std::string("tests/fuzz/regressions/") + target);
     if (!fs::is_directory(dir)) continue;
     for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
@@ -121,6 +121,8 @@ std::string Replay(const std::string& target, const std::string& bytes) {
     if (target == "env") fuzz::RunEnv(bytes);
     if (target == "texture") fuzz::RunTexture(bytes);
     if (target == "pfm") fuzz::RunPfm(bytes);
+    if (target == "draco") fuzz::RunDraco(bytes);
+    if (target == "meshopt") fuzz::RunMeshopt(bytes);
   } catch (const Error& e) {
     return std::string("vkpt::Error: ") + e.what();
   }

@@ -590,6 +590,8 @@ INSTANTIATE_TEST_SUITE_P(
         PbrModel{"GlassVaseFlowers/glTF-Binary/GlassVaseFlowers.glb", true, "gltf-ext"},
         // Its normal map parts the paths in 0.94 % of the channels.
         PbrModel{"IridescenceAbalone/glTF/IridescenceAbalone.gltf", true, "gltf-ext", 0.02},
+        // Draco-compressed geometry.
+        PbrModel{"Duck/glTF-Draco/Duck.gltf", true, "gltf-ext"},
         // Skinned, posed by an animation.
         PbrModel{"Fox/glTF-Binary/Fox.glb", true, "gltf-ext", 0.01, {.animation = "Run", .time = 0.4}},
         PbrModel{
@@ -598,6 +600,26 @@ INSTANTIATE_TEST_SUITE_P(
       std::string n = info.param.file.substr(0, info.param.file.find('/'));
       return n;
     });
+
+// A renderer of a new upload of the scene on the same device compiles nothing: its
+// kernels come from the device's PipelineCache (a frame sequence depends on it), and its
+// image is the first's, bit for bit. A change of what the kernel is specialized for (a
+// clear coat in the scene) compiles one pipeline more: the cache tells kernels apart.
+TEST_F(GpuTest, SecondRendererReusesTheCompiledPipeline) {
+  Scene s = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
+  const RenderScene first = PrepareRenderScene(s);
+  const FrameParams params = Params(first, s, 24, 24, 4, 7, 8);
+  const Image a = vk::GpuRenderer(Gpu(), first).Render(params).image;
+  const size_t compiled = Gpu().Pipelines().Compiled();
+  const RenderScene second = PrepareRenderScene(s);
+  const Image b = vk::GpuRenderer(Gpu(), second).Render(params).image;
+  EXPECT_EQ(Gpu().Pipelines().Compiled(), compiled);
+  EXPECT_EQ(a.pixels, b.pixels);
+  s.materials[0].clearcoat = 1.0f;
+  const RenderScene coated = PrepareRenderScene(s);
+  vk::GpuRenderer(Gpu(), coated).Render(params);
+  EXPECT_EQ(Gpu().Pipelines().Compiled(), compiled + 1);
+}
 
 // The Cornell box with a clear coat on every material (rough on the walls, smooth on the
 // boxes, half on the light, which dims its emission): the coat lobe, its sampling and the

@@ -236,6 +236,28 @@ TEST(Mpi, KilledRankEndsTheJobWithoutAnImage) {
   EXPECT_TRUE(dir.Listing().empty()) << "left: " << testing::PrintToString(dir.Listing());
 }
 
+// --frames under mpirun: each frame's chunks dealt among the ranks, one frame after
+// another, gives the files of one process's sequence, byte for byte; the stats list the
+// frames.
+TEST(Mpi, FrameSequenceMatchesOneProcess) {
+  const test::TempFolder dir("mpi-sequence");
+  const std::vector<std::string> extra = {"--frames", "0:2", "--orbit", "20", "--stats", dir / "stats.json"};
+  ProcessResult r = MpiRun(2, Frame(kCornell, "cpu", dir / "two.#.pfm", extra));
+  ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
+  EXPECT_NE(r.out.find("vkpt: 3 of 3 frames"), std::string::npos) << r.out;
+  const json stats = json::parse(test::ReadFile(dir / "stats.json"));
+  ASSERT_EQ(stats["frames"].size(), 3u);
+  EXPECT_EQ(stats["frames"][2]["mpi"]["ranks"], 2);
+  ProcessResult one = test::RunVkpt(Frame(kCornell, "cpu", dir / "one.#.pfm", {"--frames", "0:2", "--orbit", "20"}));
+  ASSERT_TRUE(one.ExitedWith(0)) << one.Describe();
+  for (const char* k : {"0", "1", "2"}) {
+    const std::string a = test::ReadFile(dir / (std::string("two.") + k + ".pfm"));
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, test::ReadFile(dir / (std::string("one.") + k + ".pfm"))) << "frame " << k;
+  }
+  EXPECT_NE(test::ReadFile(dir / "one.0.pfm"), test::ReadFile(dir / "one.1.pfm"));  // the camera turned
+}
+
 TEST(Mpi, SetupErrorsAreReportedOnceOrByRank) {
   const test::TempFolder dir("mpi-setup");
   ProcessResult missing = MpiRun(3, Frame(dir / "absent.gltf", "cpu", dir / "x.png"));

@@ -167,6 +167,7 @@ void CountFrameMemory(Prepared& p, const Options& o, glm::uvec2 size, uint64_t e
 void PrepareFrame(Prepared& p, const Options& o, bool report, uint32_t ranks) {
   PhaseTimer phase;
   p.asset->PoseAt(o.at.value_or(0.0));
+  if (!o.frames) p.asset->ReleaseSource();  // a single image: the file's data is done with
   phase.Lap(p.times.pose);
   uint32_t camIndex = 0;
   const Camera cam = ChooseCamera(p.scene(), o, &camIndex);

@@ -187,8 +187,6 @@ int ParseOnEveryRank(Cluster& cluster, int argc, char** argv, Options& o) {
   try {
     o = ParseOptions(argc, argv);
     if (o.compare) throw UsageError("--compare renders in one process; run it without mpirun");
-    if (o.frames)
-      throw UsageError("--frames renders in one process; under mpirun, render each frame with --animation and --at");
     if (!o.diff.empty() || o.listDevices || o.help || o.version)
       throw UsageError("--diff, --list-devices, --help and --version run in one process; run them without mpirun");
   } catch (const UsageError& e) {
@@ -196,6 +194,41 @@ int ParseOnEveryRank(Cluster& cluster, int argc, char** argv, Options& o) {
     message = e.what();
   }
   return AgreeOnOutcome(cluster, status, message, "usage error");
+}
+
+// Frame `i` of a sequence after the first: posed and built again from the loaded file.
+void NextFrame(Prepared& p, const Options& f, uint32_t ranks) {
+  p.start = std::chrono::steady_clock::now();
+  p.times = RunTimes{};  // the file was read once, for the first frame
+  PrepareFrame(p, f, false, ranks);
+}
+
+void PrintFrameLine(uint32_t number, size_t i, size_t frames, const Options& f, const Prepared& p, double seconds) {
+  std::printf("vkpt: frame %u (%zu of %zu, %.6g s): pose %.3f s, BVH and arrays %.3f s, upload %.3f s, render %.3f s\n",
+              number, i + 1, frames, f.at.value_or(0.0), p.times.pose, p.times.prepare, p.times.upload, seconds);
+  std::fflush(stdout);
+}
+
+void PrintSequenceEnd(const Options& o, size_t done, size_t frames, std::chrono::steady_clock::time_point start,
+                      const std::vector<std::string>& stats) {
+  std::printf("vkpt: %zu of %zu frames in %.3f s\n", done, frames, SecondsSince(start));
+  if (!o.stats.empty()) WriteSequenceStats(o.stats, stats);
+}
+
+// Rank 0 deals the frame's chunks to every rank (itself included), then writes it; the
+// others render the chunks dealt to them. Returns the exit status, the same on every rank.
+int RenderDealt(Cluster& cluster, const Options& o, Prepared& p, RenderBackend& backend,
+                std::string* frameStats = nullptr) {
+  const ChunkPlan plan{o.spp, o.chunkSpp};
+  int status = 0;
+  if (cluster.Rank() != 0) {
+    RenderDealtChunks(cluster, ChunkRendererOf(backend.Frame(), plan));
+  } else {
+    DealtChunks source(cluster, backend.Frame(), plan);
+    const RenderedFrame frame = Render(source, SettingsFromOptions(o, backend), o);
+    status = Finish(o, p, frame, nullptr, backend, frameStats);
+  }
+  return cluster.MaxOf(status);
 }
 
 }  // namespace
@@ -212,24 +245,14 @@ int RunSequence(const Options& o) {
   int status = 0;
   for (size_t i = 0; i < numbers.size() && status == 0; ++i) {
     const Options f = FrameOptions(o, numbers[i]);
-    if (i > 0) {
-      p.start = std::chrono::steady_clock::now();
-      p.times = RunTimes{};  // the file was read once, for the first frame
-      PrepareFrame(p, f, false);
-    }
+    if (i > 0) NextFrame(p, f, 1);
     RenderBackend backend(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
     LocalPasses source(backend.Frame(), o.chunkSpp);
     const RenderedFrame frame = Render(source, SettingsFromOptions(f, backend), f);
-    stats.emplace_back();
-    status = Finish(f, p, frame, nullptr, backend, &stats.back());
-    std::printf(
-        "vkpt: frame %u (%zu of %zu, %.6g s): pose %.3f s, BVH and arrays %.3f s, upload %.3f s, render %.3f s\n",
-        numbers[i], i + 1, numbers.size(), f.at.value_or(0.0), p.times.pose, p.times.prepare, p.times.upload,
-        frame.seconds);
-    std::fflush(stdout);
+    status = Finish(f, p, frame, nullptr, backend, &stats.emplace_back());
+    PrintFrameLine(numbers[i], i, numbers.size(), f, p, frame.seconds);
   }
-  std::printf("vkpt: %zu of %zu frames in %.3f s\n", stats.size(), numbers.size(), SecondsSince(start));
-  if (!o.stats.empty()) WriteSequenceStats(o.stats, stats);
+  PrintSequenceEnd(o, stats.size(), numbers.size(), start, stats);
   return status;
 }
 
@@ -249,35 +272,51 @@ int Run(const Options& o) {
   return Finish(o, p, frame, reference ? &*reference : nullptr, backend);
 }
 
+// Under mpirun: every rank loads the file and builds each frame; the frames' chunks are
+// dealt among the ranks one frame after another (RenderDealt).
 int RunRank(Cluster& cluster, int argc, char** argv) {
   Options o;
   if (const int status = ParseOnEveryRank(cluster, argc, argv, o)) return status;
+  const bool root = cluster.Rank() == 0;
+  const uint32_t ranks = root ? uint32_t(cluster.Size()) : 1;
+  const std::vector<uint32_t> numbers = o.frames ? FrameNumbers(*o.frames) : std::vector<uint32_t>{0};
   Prepared p;
   std::unique_ptr<RenderBackend> backend;
-  std::string message;
-  int status = Attempt(
-      [&] {
-        p = Prepare(o, cluster.Rank() == 0, cluster.Rank() == 0 ? cluster.Size() : 1);
-        backend = std::make_unique<RenderBackend>(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
-      },
-      &message);
-  if ((status = AgreeOnOutcome(cluster, status, message, "error"))) return status;
-  if (!cluster.AllEqual(FrameKey(o, p))) {
-    if (cluster.Rank() == 0)
-      PrintError("usage error",
-                 "the ranks were given different frames: only --backend, --device, --threads, --batch, "
-                 "--validation and -v may differ between ranks");
-    return 2;
+  std::vector<std::string> stats;
+  std::optional<GracefulStop> stop;  // rank 0 stops dealing at a signal; the others finish their chunk
+  std::chrono::steady_clock::time_point start;
+  int status = 0;
+  for (size_t i = 0; i < numbers.size() && status == 0; ++i) {
+    const Options f = o.frames ? FrameOptions(o, numbers[i]) : o;
+    std::string message;
+    status = Attempt(
+        [&] {
+          if (i == 0 && o.frames && root)
+            for (uint32_t k : numbers) CheckOutputPath(FramePath(o.out, k));
+          backend.reset();  // the last frame's device buffers go before the next's are made
+          if (i == 0) p = Prepare(f, root, ranks);
+          else NextFrame(p, f, ranks);
+          backend = std::make_unique<RenderBackend>(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
+        },
+        &message);
+    if ((status = AgreeOnOutcome(cluster, status, message, "error"))) return status;
+    if (i == 0) {
+      start = p.start;
+      stop.emplace();
+      if (!cluster.AllEqual(FrameKey(o, p))) {
+        if (root)
+          PrintError("usage error",
+                     "the ranks were given different frames: only --backend, --device, --threads, --batch, "
+                     "--validation and -v may differ between ranks");
+        return 2;
+      }
+    }
+    if (!o.frames) return RenderDealt(cluster, o, p, *backend);
+    status = RenderDealt(cluster, f, p, *backend, root ? &stats.emplace_back() : nullptr);
+    if (root) PrintFrameLine(numbers[i], i, numbers.size(), f, p, p.times.render);
   }
-  GracefulStop stop;  // rank 0 stops dealing at a signal; the others finish their chunk
-  const ChunkPlan plan{o.spp, o.chunkSpp};
-  if (cluster.Rank() != 0) {
-    RenderDealtChunks(cluster, ChunkRendererOf(backend->Frame(), plan));
-    return 0;
-  }
-  DealtChunks source(cluster, backend->Frame(), plan);
-  const RenderedFrame frame = Render(source, SettingsFromOptions(o, *backend), o);
-  return Finish(o, p, frame, nullptr, *backend);
+  if (root) PrintSequenceEnd(o, stats.size(), numbers.size(), start, stats);
+  return status;
 }
 
 }  // namespace vkpt

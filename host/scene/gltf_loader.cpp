@@ -5,22 +5,26 @@
 #include <algorithm>
 #include <cstring>
 #include <set>
+#include <stdexcept>
 
 #include "scene/asset_access.h"
 #include "scene/external_uris.h"
 #include "scene/geometry_budget.h"
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_animation.h"
+#include "scene/gltf_draco.h"
 #include "scene/gltf_instancing.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_meshes.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_schema.h"
 #include "scene/gltf_source.h"
 #include "scene/gltf_textures.h"
 #include "scene/gltf_validate.h"
 #include "scene/gltf_variants.h"
 #include "scene/scene_file.h"
+#include "scene/tinygltf_edits.h"
 #include "util/byte_size.h"
 #include "util/content_hash.h"
 #include "util/error.h"
@@ -35,6 +39,7 @@ struct GltfAsset::Parts {
   std::vector<NodePose> rest;                         // as the file places the nodes
   std::vector<Skin> skins;
   size_t readWarnings = 0;  // the scene's warnings from reading it; each pose adds its own
+  bool released = false;    // ReleaseSource() freed the above
 };
 
 namespace {
@@ -105,7 +110,9 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, const SceneChoi
                 GltfAsset::Parts& parts) {
   Scene& scene = parts.scene;
   CheckAsset(src);
+  DecodeMeshoptViews(src.path, parts.model, budget);
   CheckBufferViews(src);
+  DecodeDracoPrimitives(src.path, parts.model, budget);
   for (size_t i = 0; i < src.m.accessors.size(); ++i) CheckAccessor(src, int(i));
   CheckTexturesAndMaterials(src);
   const uint32_t defaultMaterial = LoadMaterials(src, scene);
@@ -140,13 +147,18 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, const SceneChoi
 }
 
 // The JSON is parsed and checked, and the files it names are listed, before tinygltf
-// opens any of them; the parse tree is freed before tinygltf builds its own.
-std::vector<ExternalUri> CheckJson(const std::string& path, std::string_view json) {
+// opens any of them; the parse tree is freed before tinygltf builds its own. A file
+// tinygltf would refuse for its compression gets its JSON edited (`edits`).
+std::vector<ExternalUri> CheckJson(const std::string& path, SceneFile& file, TinyGltfEdits& edits) {
+  const std::string_view json = file.json;
   if (json.size() >= 3 && std::memcmp(json.data(), "\xEF\xBB\xBF", 3) == 0)
     throw Error(path + ": the JSON starts with a UTF-8 byte-order mark, which glTF forbids");
   nlohmann::json doc = ParseGltfJson(path, json);
   CheckGltfSchema(path, doc);
-  return ListExternalUris(doc);
+  std::vector<ExternalUri> uris = ListExternalUris(doc);
+  edits = EditForTinyGltf(doc);
+  if (!edits.Empty()) ReplaceJson(file, doc.dump());
+  return uris;
 }
 
 tinygltf::Model ParseWithTinyGltf(const std::string& path, const SceneFile& file, AssetAccess& access,
@@ -182,12 +194,14 @@ GltfAsset::GltfAsset(const std::string& path, const LoadLimits& limits, const Sc
   MemoryBudget budget(limits.maxMemory ? limits.maxMemory : DefaultMaxMemory(), path);
   try {
     SceneFile file = ReadSceneFile(path, budget);
-    AssetAccess access(path, CheckJson(path, file.json), limits, budget);
+    ContentHash hash;
+    hash.Add({reinterpret_cast<const unsigned char*>(file.bytes.data()), file.bytes.size()});
+    TinyGltfEdits edits;
+    AssetAccess access(path, CheckJson(path, file, edits), limits, budget);
     Scene& scene = parts_->scene;
     scene.path = path;
     parts_->model = ParseWithTinyGltf(path, file, access, scene.warnings);
-    ContentHash hash;
-    hash.Add({reinterpret_cast<const unsigned char*>(file.bytes.data()), file.bytes.size()});
+    UndoTinyGltfEdits(edits, parts_->model);
     for (const tinygltf::Buffer& b : parts_->model.buffers) hash.Add(b.data);
     scene.contentHash = hash.Value();
     file = SceneFile{};
@@ -205,6 +219,7 @@ GltfAsset::GltfAsset(const std::string& path, const LoadLimits& limits, const Sc
 GltfAsset::~GltfAsset() = default;
 
 void GltfAsset::PoseAt(double time) {
+  if (parts_->released) throw std::logic_error("GltfAsset::PoseAt after ReleaseSource");
   Scene& scene = parts_->scene;
   const GltfSource src{scene.path, parts_->model};
   try {
@@ -227,6 +242,16 @@ void GltfAsset::PoseAt(double time) {
                 " (the process may have a lower limit, e.g. ulimit -v)");
   }
   if (scene.triangles.empty()) src.Fail("the scene contains no triangles to render");
+}
+
+void GltfAsset::ReleaseSource() {
+  Parts& p = *parts_;
+  p.model = tinygltf::Model{};
+  p.meshes = {};
+  p.rest = {};
+  p.skins = {};
+  p.parents = {};
+  p.released = true;
 }
 
 const Scene& GltfAsset::scene() const { return parts_->scene; }

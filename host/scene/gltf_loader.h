@@ -30,6 +30,9 @@ class GltfAsset {
   // Poses the scene `time` seconds into the chosen animation (the nodes' own transforms
   // without one): its triangles, cameras, lights and bounds are replaced.
   void PoseAt(double time);
+  // Frees the parsed file and its decoded meshes, keeping the posed scene: after the
+  // last PoseAt (a single image), before the BVH is built. PoseAt may not follow.
+  void ReleaseSource();
   const Scene& scene() const;
   Scene TakeScene();  // the asset is spent
 

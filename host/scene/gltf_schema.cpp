@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <set>
 
 #include "util/error.h"
@@ -55,7 +56,17 @@ int NestingDepth(std::string_view text) {
   return deepest;
 }
 
-void Walk(const std::string& path, const json& j, const std::string& where, bool inExtras) {
+// tinygltf keeps the numbers of extension objects as Values of `int` when they are
+// integers: a larger one would wrap, so "count": 10000000000 would read as 1410065408.
+void CheckExtensionInteger(const std::string& path, const json& v, const std::string& where) {
+  if ((v.is_number_integer() && !v.is_number_unsigned() && v.get<long long>() < INT32_MIN) ||
+      (v.is_number_unsigned() && v.get<unsigned long long>() > INT32_MAX))
+    throw Error(path + ": " + where + " is " + v.dump() +
+                ", beyond the 32-bit integers an extension's values may hold");
+}
+
+void Walk(const std::string& path, const json& j, const std::string& where, bool inExtras, bool inExtensions) {
+  if (inExtensions && !inExtras) CheckExtensionInteger(path, j, where);
   if (j.is_object()) {
     for (const auto& [key, value] : j.items()) {
       std::string at = where.empty() ? key : where + "." + key;
@@ -77,10 +88,11 @@ void Walk(const std::string& path, const json& j, const std::string& where, bool
             if (!(id.is_number_integer() && id.get<long long>() >= 0))
               throw Error(path + ": " + at + "." + name + " must be a non-negative accessor index");
       }
-      Walk(path, value, at, extras);
+      Walk(path, value, at, extras, inExtensions || key == "extensions");
     }
   } else if (j.is_array()) {
-    for (size_t i = 0; i < j.size(); ++i) Walk(path, j[i], where + "[" + std::to_string(i) + "]", inExtras);
+    for (size_t i = 0; i < j.size(); ++i)
+      Walk(path, j[i], where + "[" + std::to_string(i) + "]", inExtras, inExtensions);
   }
 }
 
@@ -106,7 +118,7 @@ json ParseGltfJson(const std::string& path, std::string_view text) {
 
 void CheckGltfSchema(const std::string& path, const json& doc) {
   if (!doc.is_object()) throw Error(path + ": the glTF JSON is not an object");
-  Walk(path, doc, "", false);
+  Walk(path, doc, "", false, false);
 }
 
 }  // namespace vkpt

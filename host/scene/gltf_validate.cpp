@@ -19,6 +19,7 @@ const std::set<std::string> kSupportedRequiredExtensions = {
     "KHR_materials_transmission", "KHR_materials_unlit",
     "KHR_materials_variants",     "KHR_materials_volume",
     "KHR_mesh_quantization",      "KHR_texture_transform",
+    "KHR_draco_mesh_compression", "EXT_meshopt_compression",
     "EXT_mesh_gpu_instancing",    "EXT_texture_webp"};
 
 void CheckTextureRef(const GltfSource& src, int index, const std::string& what) {

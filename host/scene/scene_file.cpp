@@ -69,4 +69,28 @@ SceneFile ReadSceneFile(const std::string& path, MemoryBudget& budget) {
   return scene;
 }
 
+void ReplaceJson(SceneFile& file, const std::string& json) {
+  if (!file.binary) {
+    file.bytes = json;
+    file.json = file.bytes;
+    return;
+  }
+  // 12-byte header, then the JSON chunk's 8-byte header and text, then the other chunks.
+  const size_t rest = 20 + file.json.size();
+  std::string padded = json;
+  padded.resize((padded.size() + 3) / 4 * 4, ' ');
+  std::string glb = file.bytes.substr(0, 12);
+  const auto put32 = [&](size_t at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) glb[at + i] = char(v >> (8 * i));
+  };
+  glb += std::string(8, '\0');
+  put32(12, uint32_t(padded.size()));
+  glb.replace(16, 4, file.bytes, 16, 4);  // the chunk type, "JSON"
+  glb += padded;
+  glb.append(file.bytes, rest);
+  put32(8, uint32_t(glb.size()));
+  file.bytes = std::move(glb);
+  file.json = std::string_view(file.bytes).substr(20, padded.size());
+}
+
 }  // namespace vkpt

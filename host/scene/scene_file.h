@@ -20,4 +20,8 @@ struct SceneFile {
 // `budget` can take (the JSON's parse costs a multiple of its size; see the .cpp).
 SceneFile ReadSceneFile(const std::string& path, MemoryBudget& budget);
 
+// Puts `json` in place of the file's JSON text: the whole file, or a GLB's JSON chunk
+// (padded with spaces, the container's lengths updated, the BIN chunk kept).
+void ReplaceJson(SceneFile& file, const std::string& json);
+
 }  // namespace vkpt

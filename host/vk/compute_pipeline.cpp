@@ -3,65 +3,11 @@
 #include <map>
 
 #include "vk/buffer.h"
+#include "vk/pipeline_cache.h"
 #include "vk/vk_check.h"
 
 namespace vkpt::vk {
 namespace {
-
-VkShaderModule CreateShaderModule(VkDevice dev, const uint32_t* spirv, size_t spirvBytes) {
-  VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  moduleInfo.codeSize = spirvBytes;
-  moduleInfo.pCode = spirv;
-  VkShaderModule module = VK_NULL_HANDLE;
-  VKPT_VK_CHECK(vkCreateShaderModule(dev, &moduleInfo, nullptr, &module));
-  return module;
-}
-
-// Set 0: one descriptor per binding, for the compute stage.
-VkDescriptorSetLayout CreateDescriptorLayout(VkDevice dev, const std::vector<BufferBinding>& bindings) {
-  std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-  for (const BufferBinding& b : bindings)
-    layoutBindings.push_back({b.binding, b.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  setInfo.bindingCount = uint32_t(layoutBindings.size());
-  setInfo.pBindings = layoutBindings.data();
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VKPT_VK_CHECK(vkCreateDescriptorSetLayout(dev, &setInfo, nullptr, &setLayout));
-  return setLayout;
-}
-
-VkPipelineLayout CreatePipelineLayout(VkDevice dev, VkDescriptorSetLayout setLayout, uint32_t pushConstantBytes) {
-  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout;
-  VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
-  if (pushConstantBytes) {
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &range;
-  }
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  VKPT_VK_CHECK(vkCreatePipelineLayout(dev, &layoutInfo, nullptr, &layout));
-  return layout;
-}
-
-// `specialization[i]` becomes the 32-bit specialization constant constant_id = i.
-VkPipeline CreatePipeline(VkDevice dev, VkShaderModule module, VkPipelineLayout layout,
-                          const std::vector<uint32_t>& specialization) {
-  VkComputePipelineCreateInfo pipeInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  pipeInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  pipeInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  pipeInfo.stage.module = module;
-  pipeInfo.stage.pName = "main";
-  std::vector<VkSpecializationMapEntry> entries(specialization.size());
-  for (uint32_t i = 0; i < entries.size(); ++i) entries[i] = {i, i * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)};
-  VkSpecializationInfo specInfo{uint32_t(entries.size()), entries.data(), specialization.size() * sizeof(uint32_t),
-                                specialization.data()};
-  if (!specialization.empty()) pipeInfo.stage.pSpecializationInfo = &specInfo;
-  pipeInfo.layout = layout;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  VKPT_VK_CHECK(vkCreateComputePipelines(dev, VK_NULL_HANDLE, 1, &pipeInfo, nullptr, &pipeline));
-  return pipeline;
-}
 
 // A pool holding exactly one set of `bindings`: as many descriptors of each type as
 // they have.
@@ -114,14 +60,14 @@ ComputePipeline::ComputePipeline(const Context& ctx, const uint32_t* spirv, size
     : ctx_(ctx), pushConstantBytes_(pushConstantBytes) {
   VkDevice dev = ctx.Device();
   try {
-    module_ = CreateShaderModule(dev, spirv, spirvBytes);
-    ctx.Name(VK_OBJECT_TYPE_SHADER_MODULE, uint64_t(module_), name.c_str());
-    setLayout_ = CreateDescriptorLayout(dev, bindings);
-    layout_ = CreatePipelineLayout(dev, setLayout_, pushConstantBytes);
-    pipeline_ = CreatePipeline(dev, module_, layout_, specialization);
-    ctx.Name(VK_OBJECT_TYPE_PIPELINE, uint64_t(pipeline_), name.c_str());
+    std::vector<std::pair<uint32_t, VkDescriptorType>> types;
+    for (const BufferBinding& b : bindings) types.emplace_back(b.binding, b.type);
+    const CompiledPipeline& compiled =
+        ctx.Pipelines().Get(ctx, spirv, spirvBytes, types, name.c_str(), pushConstantBytes, specialization);
+    layout_ = compiled.layout;
+    pipeline_ = compiled.pipeline;
     pool_ = CreateDescriptorPool(dev, bindings);
-    set_ = AllocateDescriptorSet(dev, pool_, setLayout_);
+    set_ = AllocateDescriptorSet(dev, pool_, compiled.setLayout);
     WriteDescriptorSet(dev, set_, bindings);
   } catch (...) {
     // Destroys what was made so far; a handle whose creation threw is still null.
@@ -134,16 +80,8 @@ ComputePipeline::~ComputePipeline() { Destroy(); }
 
 void ComputePipeline::Destroy() {
   VkDevice dev = ctx_.Device();
-  if (pool_) vkDestroyDescriptorPool(dev, pool_, nullptr);  // frees set_
-  if (pipeline_) vkDestroyPipeline(dev, pipeline_, nullptr);
-  if (layout_) vkDestroyPipelineLayout(dev, layout_, nullptr);
-  if (setLayout_) vkDestroyDescriptorSetLayout(dev, setLayout_, nullptr);
-  if (module_) vkDestroyShaderModule(dev, module_, nullptr);
+  if (pool_) vkDestroyDescriptorPool(dev, pool_, nullptr);  // frees set_; the pipeline is the cache's
   pool_ = VK_NULL_HANDLE;
-  pipeline_ = VK_NULL_HANDLE;
-  layout_ = VK_NULL_HANDLE;
-  setLayout_ = VK_NULL_HANDLE;
-  module_ = VK_NULL_HANDLE;
 }
 
 void ComputePipeline::Dispatch(VkCommandBuffer cb, uint32_t x, uint32_t y, uint32_t z, const void* push) const {

@@ -1,5 +1,6 @@
-// A compute pipeline with one descriptor set of buffers and texel buffers (set 0):
-// shader module, layouts, pool and set, owned together.
+// A compute pipeline with one descriptor set of buffers and texel buffers (set 0): the
+// compiled pipeline comes from the device's PipelineCache (pipeline_cache.h), the pool
+// and set that bind this pipeline's buffers are its own.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -44,8 +45,6 @@ class ComputePipeline {
  private:
   void Destroy();
   const Context& ctx_;
-  VkShaderModule module_ = VK_NULL_HANDLE;
-  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;

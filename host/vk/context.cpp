@@ -169,6 +169,7 @@ Context::Context(const ContextOptions& options) {
     device_ = CreateDevice(physical_, queueFamily_);
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
     pool_ = CreateCommandPool(device_, queueFamily_);
+    pipelines_ = std::make_unique<PipelineCache>(device_);
   } catch (...) {
     Destroy();
     throw;
@@ -180,6 +181,7 @@ Context::~Context() { Destroy(); }
 void Context::Destroy() {
   if (device_) {
     vkDeviceWaitIdle(device_);
+    pipelines_.reset();
     if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);
     vkDestroyDevice(device_, nullptr);
   }

@@ -7,9 +7,12 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "vk/pipeline_cache.h"
 
 namespace vkpt::vk {
 
@@ -44,6 +47,9 @@ class Context {
   const VkPhysicalDeviceMemoryProperties& MemoryProperties() const { return memProps_; }
   std::string DeviceName() const { return props_.deviceName; }
 
+  // The pipelines compiled on this device (pipeline_cache.h).
+  PipelineCache& Pipelines() const { return *pipelines_; }
+
   // Validation messages (warnings + errors) reported so far; 0 without validation.
   uint32_t ValidationMessages() const { return validationMessages_.load(); }
 
@@ -77,6 +83,7 @@ class Context {
   VkPhysicalDeviceMemoryProperties memProps_{};
   PFN_vkSetDebugUtilsObjectNameEXT setName_ = nullptr;
   std::atomic<uint32_t> validationMessages_{0};
+  std::unique_ptr<PipelineCache> pipelines_;
 };
 
 // Every physical device the loader reports (empty when there is none or no loader).

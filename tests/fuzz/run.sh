@@ -5,8 +5,9 @@
 #            every target, SECONDS split among them in equal shares (at least 1 s each)
 #          tests/fuzz/run.sh --all SECONDS [BUILD_DIR=build-fuzz]
 #            every target for SECONDS each
-#          tests/fuzz/run.sh --only TARGET SECONDS [BUILD_DIR=build-fuzz]
-#            one target (loader, env, texture, pfm or options)
+#          tests/fuzz/run.sh --only TARGET[,TARGET...] SECONDS [BUILD_DIR=build-fuzz]
+#            the targets named (loader, env, texture, pfm, options, draco, meshopt),
+#            SECONDS split among them in equal shares
 # $VKPT_FUZZ_TIMEOUT (default 5) is the seconds an input may take: libFuzzer measures
 # wall-clock time, so a long run on a machine busy with other work may raise it (a hang
 # still ends the run; CI keeps 5).
@@ -15,12 +16,16 @@
 #   loader   every .gltf/.glb of gltf-corpus/, the PBR feature models under 4 MB
 #            (gltf-pbr/: textures, alpha, material extensions), the extension models
 #            under 4 MB (gltf-ext/: clear coat, sheen, variants, skins...) and
-#            scenes/*.gltf
+#            scenes/*.gltf, and the kept findings of tests/fuzz/regressions/loader/
 #   env      gltf-pbr/environments/*.hdr, and small .hdr/.exr files fuzz_seeds writes
 #   texture  the PNG and JPEG files under 64 KB of gltf-pbr/ and gltf-corpus/, and small
 #            ones fuzz_seeds writes in each pixel layout
 #   pfm      small little- and big-endian PFM files fuzz_seeds writes
 #   options  the command lines of tests/fuzz/options.seeds, NUL-separated
+#   draco    Draco meshes fuzz_seeds encodes (sequential, edgebreaker, quantized), each
+#            behind the small header of RunDraco (fuzz_bodies.h)
+#   meshopt  meshoptimizer streams fuzz_seeds encodes (each mode and filter), each behind
+#            the small header of RunMeshopt (fuzz_bodies.h)
 # Generated seeds and the corpus each run grows go to a scratch directory outside the
 # repository. Any finding (crash, sanitizer report, exception other than the target's
 # documented error type, an input slower than $VKPT_FUZZ_TIMEOUT, over 1 GiB in one allocation or 2 GiB
@@ -29,11 +34,11 @@
 # Prints one line per target: "fuzz: <target>: executions N (R/s), coverage …".
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-targets=(loader env texture pfm options)
+targets=(loader env texture pfm options draco meshopt)
 mode=split
 case "${1:-}" in
   --all) mode=all; shift ;;
-  --only) targets=("${2:?--only needs a target}"); shift 2 ;;
+  --only) IFS=, read -ra targets <<< "${2:?--only needs a target}"; shift 2 ;;
 esac
 seconds=${1:-90}
 build=${2:-build-fuzz}
@@ -70,7 +75,10 @@ seeds_of() {
     loader)
       find "$corpus/valid" "$corpus/invalid" scenes -type f \( -name '*.gltf' -o -name '*.glb' \)
       if [ -d "$pbr" ]; then find "$pbr" -type f \( -name '*.gltf' -o -name '*.glb' \) -size -4M; fi
-      if [ -d "$ext" ]; then find "$ext" -type f \( -name '*.gltf' -o -name '*.glb' \) -size -4M; fi ;;
+      if [ -d "$ext" ]; then find "$ext" -type f \( -name '*.gltf' -o -name '*.glb' \) -size -4M; fi
+      # the kept findings too: one is a GLB with a Draco primitive, which no single-file
+      # model of the shared data has (Duck's Draco variant needs its .bin)
+      find tests/fuzz/regressions/loader -type f ;;
     env)
       if [ -d "$pbr/environments" ]; then find "$pbr/environments" -type f -name '*.hdr'; fi
       find "$scratch/generated/env" -type f ;;
