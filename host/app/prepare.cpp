@@ -166,7 +166,10 @@ void CountFrameMemory(Prepared& p, const Options& o, glm::uvec2 size, uint64_t e
 
 void PrepareFrame(Prepared& p, const Options& o, bool report, uint32_t ranks) {
   PhaseTimer phase;
-  p.asset->PoseAt(o.at.value_or(0.0));
+  // A sequence without an animation (a turntable) poses the same scene every frame: only
+  // the camera moves, so the first frame's arrays serve them all.
+  const bool sameScene = o.frames && p.built && p.scene().animation < 0;
+  if (!sameScene) p.asset->PoseAt(o.at.value_or(0.0));
   if (!o.frames) p.asset->ReleaseSource();  // a single image: the file's data is done with
   phase.Lap(p.times.pose);
   uint32_t camIndex = 0;
@@ -176,8 +179,11 @@ void PrepareFrame(Prepared& p, const Options& o, bool report, uint32_t ranks) {
   const bool keep = o.frames.has_value();
   CountFrameMemory(p, o, size, p.environmentBytes * (keep ? 2 : 1), ranks);
   phase.Restart();
-  p.rs = RenderScene{};  // the last frame's arrays go before the next's are built
-  p.rs = PrepareForRender(p.scene(), o, p.ctx != nullptr, keep ? p.environment : std::move(p.environment));
+  if (!sameScene) {
+    p.rs = RenderScene{};  // the last frame's arrays go before the next's are built
+    p.rs = PrepareForRender(p.scene(), o, p.ctx != nullptr, keep ? p.environment : std::move(p.environment));
+    p.built = true;
+  }
   phase.Lap(p.times.prepare);
   if (report && o.verbose) {
     PrintLoadReport(p.scene(), p.rs, cam, camIndex);

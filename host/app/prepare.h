@@ -26,6 +26,7 @@ struct Prepared {
   uint64_t environmentBytes = 0;
   std::unique_ptr<vk::Context> ctx;  // null: the CPU renders
   RenderScene rs;
+  bool built = false;  // rs holds a posed scene's arrays
   shader::FrameParams params;
   std::vector<MemoryPart> frameParts;  // the frame's memory, per pixel (session/frame_memory.h)
   uint64_t frameMemory = 0;            // and in all, counted against --max-memory
