@@ -63,7 +63,7 @@ TEST(Cli, HelpListsEveryOption) {
                             "--splits",       "--stats",       "-v",           "--verbose",      "--help",
                             "--version",      "--texture-lod", "--time",       "--noise-target", "--adaptive",
                             "--no-adaptive",  "--checkpoint",  "--look-from",  "--look-at",      "--up",
-                            "--fov",          "--orbit"})
+                            "--fov",          "--orbit",       "--view"})
       EXPECT_NE(r.out.find(opt), std::string::npos) << flag << " output does not mention " << opt;
     EXPECT_NE(r.out.find(".png"), std::string::npos);
     EXPECT_NE(r.out.find(".pfm"), std::string::npos);
@@ -114,6 +114,7 @@ TEST(Cli, BadValuesAreUsageErrors) {
       {"--background", "a"},
       {"--leaf-size", "16"},
       {"--exposure", "nan"},
+      {"--view", "filmic"},
       {"--seed", "-1"},
       {"--max-depth", "1.5"},
       {"--camera", "x"},

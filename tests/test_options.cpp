@@ -39,7 +39,7 @@ TEST(Options, StatsObjectOfTheDefaults) {
     "orbit": null, "exposure": 0, "background": null, "env": "", "env_rotation": 0,
     "env_intensity": 1, "texture_lod": "cones", "leaf_size": 8, "splits": "auto", "max_memory": 0,
     "max_texels": 0, "allow_external_uris": false, "aov": [], "denoise": false, "stats": "",
-    "variant": "", "animation": "", "at": null, "frames": null, "fps": 24, "verbose": false})"));
+    "variant": "", "animation": "", "at": null, "frames": null, "fps": 24, "verbose": false, "view": "neutral"})"));
 }
 
 TEST(Options, StatsObjectOfEveryOptionGiven) {
@@ -49,7 +49,8 @@ TEST(Options, StatsObjectOfEveryOptionGiven) {
       "--scene s.glb --out x.exr --width 10 --height 20 --spp 5 --time 2.5 --noise-target 0.01 --checkpoint 3 --seed 9 "
       "--chunk 8 --max-depth 4 --rr-depth 2 --backend cpu --device lav --threads 3 --batch 7 --validation --camera 1 "
       "--look-from 1,2,3 --look-at 0,0.5,-1 --up 0,0,1 --fov 35 --orbit -90 "
-      "--exposure 0.1 --env e.hdr --env-rotation 90 --env-intensity 2 --variant beach --animation Walk --at 0.5 --fps "
+      "--exposure 0.1 --view agx --env e.hdr --env-rotation 90 --env-intensity 2 --variant beach --animation Walk --at "
+      "0.5 --fps "
       "30 "
       "--texture-lod none --leaf-size 4 "
       "--splits "
@@ -64,7 +65,7 @@ TEST(Options, StatsObjectOfEveryOptionGiven) {
     "fov": 35, "orbit": -90, "exposure": 0.10000000149011612, "background": null, "env": "e.hdr",
     "env_rotation": 90, "env_intensity": 2, "texture_lod": "none", "leaf_size": 4, "splits": "spatial",
     "max_memory": 67108864, "max_texels": 1024, "allow_external_uris": true, "aov": ["normal", "depth"],
-    "denoise": true, "stats": "s.json", "variant": "beach", "animation": "Walk", "at": 0.5, "fps": 30, "frames": null, "verbose": true})"));
+    "denoise": true, "stats": "s.json", "variant": "beach", "animation": "Walk", "at": 0.5, "fps": 30, "frames": null, "verbose": true, "view": "agx"})"));
 }
 
 TEST(Options, StatsObjectOfBackgroundCompareAndBudgets) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bvh/bvh.h"
+#include "image/view_transform.h"
 #include "scene/load_limits.h"
 #include "session/aov.h"
 #include "session/chunked_frame.h"
@@ -51,7 +52,9 @@ struct Options {
   // axis through the look-at point (Orbit).
   std::optional<std::array<float, 3>> lookFrom, lookAt, up;
   std::optional<double> fov, orbit;
-  float exposure = 0.0f;
+  float exposure = 0.0f;       // --exposure: stops, PNG only
+  View view = View::kNeutral;  // --view: how a PNG shows radiance
+  DisplayTransform Display() const { return {view, exposure}; }
   // Constant environment radiance; absent: white (1,1,1) for a scene without emissive
   // triangles (so any model is visible), black otherwise.
   std::optional<std::array<float, 3>> background;

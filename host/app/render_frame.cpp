@@ -28,7 +28,7 @@ SessionSettings SettingsFromOptions(const Options& o, const RenderBackend& backe
   b.checkpointSeconds = o.checkpoint;
   b.chunkSpp = o.chunkSpp;
   s.checkpointPath = o.out;
-  s.exposure = o.exposure;
+  s.display = o.Display();
   s.aovPass = std::any_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass);
   if (o.denoise) s.denoise = backend.MakeDenoiser();
   return s;
@@ -75,10 +75,10 @@ namespace {
 std::vector<std::string> WriteFiles(const RenderedFrame& frame, const Options& o) {
   std::vector<std::string> files =
       WriteImageWithAovs(frame.denoised ? *frame.denoised : frame.image,
-                         ResolveAovs(o.aovs, frame.aovs, frame.sums, frame.image), o.out, o.exposure);
+                         ResolveAovs(o.aovs, frame.aovs, frame.sums, frame.image), o.out, o.Display());
   if (frame.denoised) {
     files.push_back(SiblingPath(o.out, "raw"));
-    WriteImage(frame.image, files.back(), o.exposure);
+    WriteImage(frame.image, files.back(), o.Display());
   }
   return files;
 }

@@ -45,12 +45,12 @@ uint8_t LinearToSrgb8(float linear) {
   return uint8_t(std::lround(s * 255.0f));
 }
 
-void WriteImage(const Image& image, const std::string& path, float exposure) {
+void WriteImage(const Image& image, const std::string& path, const DisplayTransform& display) {
   ImageFormat format = FormatFromPath(path);
   if (image.pixels.empty()) throw Error(path + ": refusing to write an empty image");
   std::vector<uint8_t> bytes;
   switch (format) {
-    case ImageFormat::Png: bytes = EncodePng(image, exposure); break;
+    case ImageFormat::Png: bytes = EncodePng(image, display); break;
     case ImageFormat::Pfm: bytes = EncodePfm(image); break;
     case ImageFormat::Exr: bytes = EncodeExr(image, path); break;
   }

@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include "image/view_transform.h"
+
 namespace vkpt {
 
 struct Image {
@@ -33,8 +35,8 @@ void CheckOutputPath(const std::string& path);
 // Encodes in memory, then writes atomically (util/atomic_write.h): every write checked,
 // fsynced, renamed over `path` only when complete. On failure vkpt::Error names `path`
 // and the OS error, and neither a partial file nor a temporary is left behind.
-// `exposure` (stops) applies to PNG only; float formats stay linear and unscaled.
-void WriteImage(const Image& image, const std::string& path, float exposure = 0.0f);
+// `display` applies to PNG only; float formats stay linear and unscaled.
+void WriteImage(const Image& image, const std::string& path, const DisplayTransform& display = {});
 
 // Reads a .pfm written by WriteImage (or any 3-channel little/big-endian PFM).
 Image ReadPfm(const std::string& path);

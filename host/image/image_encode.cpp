@@ -21,11 +21,12 @@
 
 namespace vkpt {
 
-std::vector<uint8_t> EncodePng(const Image& img, float exposure) {
-  const float scale = std::exp2(exposure);
+std::vector<uint8_t> EncodePng(const Image& img, const DisplayTransform& display) {
   std::vector<uint8_t> rgb(size_t(img.width) * img.height * 3);
-  for (size_t i = 0; i < img.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = LinearToSrgb8(img.pixels[i][c] * scale);
+  for (size_t i = 0; i < img.pixels.size(); ++i) {
+    const glm::vec3 shown = display.Apply(img.pixels[i]);
+    for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = LinearToSrgb8(shown[c]);
+  }
   return EncodePngRgb8(img.width, img.height, rgb);
 }
 

@@ -7,11 +7,12 @@
 #include <vector>
 
 #include "image/image.h"
+#include "image/view_transform.h"
 
 namespace vkpt {
 
-// 8-bit sRGB, pixels scaled by 2^exposure before the transfer curve.
-std::vector<uint8_t> EncodePng(const Image& image, float exposure);
+// 8-bit sRGB of the pixels as `display` shows them.
+std::vector<uint8_t> EncodePng(const Image& image, const DisplayTransform& display);
 
 // 8-bit RGB bytes (row-major from the top row, three per pixel) as they are.
 std::vector<uint8_t> EncodePngRgb8(uint32_t width, uint32_t height, const std::vector<uint8_t>& rgb);

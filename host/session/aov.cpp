@@ -148,10 +148,10 @@ std::string SiblingPath(const std::string& out, const std::string& tag) {
 std::string AovPath(const std::string& out, Aov aov) { return SiblingPath(out, AovName(aov)); }
 
 std::vector<std::string> WriteImageWithAovs(const Image& image, const std::vector<AovLayer>& layers,
-                                            const std::string& out, float exposure) {
+                                            const std::string& out, const DisplayTransform& display) {
   const ImageFormat format = FormatFromPath(out);
   if (format != ImageFormat::Exr || layers.empty()) {
-    WriteImage(image, out, exposure);
+    WriteImage(image, out, display);
     std::vector<std::string> files = {out};
     for (const AovLayer& layer : layers) {
       const std::string path = AovPath(out, layer.aov);

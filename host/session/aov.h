@@ -59,6 +59,6 @@ std::string AovPath(const std::string& out, Aov aov);
 // values, a single channel repeated in R, G and B). Each file is written atomically.
 // Returns the files written, `out` first.
 std::vector<std::string> WriteImageWithAovs(const Image& image, const std::vector<AovLayer>& layers,
-                                            const std::string& out, float exposure);
+                                            const std::string& out, const DisplayTransform& display);
 
 }  // namespace vkpt

@@ -80,7 +80,7 @@ class FrameLoop {
     // A checkpoint that cannot be written (a full disk) leaves the last one in place; the
     // render goes on, and the final write will fail, or succeed, on its own.
     try {
-      WriteImage(ResolveFilm(sums_), settings_.checkpointPath, settings_.exposure);
+      WriteImage(ResolveFilm(sums_), settings_.checkpointPath, settings_.display);
     } catch (const Error& e) {
       if (++checkpointFailures_ == 1 && hooks_.warning)
         hooks_.warning(std::string("a checkpoint could not be written, the render goes on: ") + e.what());

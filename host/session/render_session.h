@@ -50,7 +50,7 @@ using Denoiser = std::function<std::vector<glm::vec4>(const DenoiseInput&)>;
 struct SessionSettings {
   RenderBudget budget;
   std::string checkpointPath;  // --checkpoint writes the image so far here (with budget.checkpointSeconds)
-  float exposure = 0.0f;       // of the checkpoint's PNG
+  DisplayTransform display;    // of the checkpoint's PNG
   bool aovPass = false;        // render the AOV pass after the frame (--aov, --denoise)
   Denoiser denoise;            // --denoise: filter the image (needs the AOV pass)
 };
