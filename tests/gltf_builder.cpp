@@ -130,4 +130,16 @@ GltfBuilder TriangleModel() {
   return b;
 }
 
+std::string SlidingTriangle() {
+  GltfBuilder b = TriangleModel();
+  b.materials = {R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.3,0.2,1]}})"};
+  b.meshes[0].insert(b.meshes[0].rfind("}]"), R"(,"material":0)");
+  b.Node(R"({"mesh":0})");
+  const int in = b.Accessor(b.View(Bytes(std::vector<float>{0, 1})), kFloat, 2, "SCALAR", ",\"min\":[0],\"max\":[1]");
+  const int out = b.Accessor(b.View(Bytes(std::vector<float>{0, 0, 0, 1, 0, 0})), kFloat, 2, "VEC3");
+  b.animations = {R"({"name":"slide","samplers":[{"input":)" + std::to_string(in) + ",\"output\":" +
+                  std::to_string(out) + R"(}],"channels":[{"sampler":0,"target":{"node":0,"path":"translation"}}]})"};
+  return b.Json();
+}
+
 }  // namespace vkpt::test

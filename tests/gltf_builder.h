@@ -163,4 +163,8 @@ extern const std::vector<glm::vec3> kUnitTriangle;
 // One triangle mesh (mesh 0) under the nodes the test adds.
 GltfBuilder TriangleModel();
 
+// The unit triangle before a white background that animation "slide" moves LINEAR from
+// x = 0 at 0 s to x = 1 at 1 s: the file's JSON.
+std::string SlidingTriangle();
+
 }  // namespace vkpt::test

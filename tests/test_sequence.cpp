@@ -28,20 +28,6 @@ TEST(Sequence, FramePathsFollowTheirPattern) {
   EXPECT_EQ(FrameNumbers({4, 4, 1}), (std::vector<uint32_t>{4}));
 }
 
-// A triangle before a white background that animation "slide" moves LINEAR from x = 0 at
-// 0 s to x = 1 at 1 s, under a point light.
-std::string SlidingTriangle() {
-  GltfBuilder b = TriangleModel();
-  b.materials = {R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.3,0.2,1]}})"};
-  b.meshes[0].insert(b.meshes[0].rfind("}]"), R"(,"material":0)");
-  b.Node(R"({"mesh":0})");
-  const int in = b.Accessor(b.View(Bytes(std::vector<float>{0, 1})), kFloat, 2, "SCALAR", ",\"min\":[0],\"max\":[1]");
-  const int out = b.Accessor(b.View(Bytes(std::vector<float>{0, 0, 0, 1, 0, 0})), kFloat, 2, "VEC3");
-  b.animations = {R"({"name":"slide","samplers":[{"input":)" + std::to_string(in) + ",\"output\":" +
-                  std::to_string(out) + R"(}],"channels":[{"sampler":0,"target":{"node":0,"path":"translation"}}]})"};
-  return b.Json();
-}
-
 std::vector<std::string> Render(const std::string& scene, const std::string& out, std::vector<std::string> extra) {
   std::vector<std::string> args = {"--scene",     scene,       "--backend", "cpu",      "--width", "24",
                                    "--height",    "16",        "--spp",     "4",        "--out",   out,

@@ -9,14 +9,13 @@
 #include <vector>
 
 #include "bvh/bvh.h"
+#include "engine/settings.h"
 #include "image/view_transform.h"
 #include "scene/load_limits.h"
 #include "session/aov.h"
 #include "session/chunked_frame.h"
 
 namespace vkpt {
-
-enum class Backend { Auto, Cpu, Vulkan };
 
 // --frames FIRST:LAST[:STEP]: the frame numbers FIRST, FIRST + STEP, … up to LAST.
 struct FrameRange {

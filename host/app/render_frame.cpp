@@ -61,8 +61,9 @@ RenderedFrame Render(SampleSource& source, const SessionSettings& settings, cons
 }
 
 RenderedFrame RenderReference(const Prepared& p, const Options& o) {
-  RenderBackend cpu(nullptr, p.rs, p.params, 0, o.threads);
-  LocalPasses source(cpu.Frame(), o.chunkSpp);
+  const RenderBackend cpu(nullptr, p.rs(), o.threads);
+  const std::unique_ptr<FrameRenderer> frame = cpu.BeginFrame(p.frame.params, 0);
+  LocalPasses source(*frame, o.chunkSpp);
   SessionSettings settings;
   settings.budget.maxSpp = o.spp;
   settings.budget.chunkSpp = o.chunkSpp;
@@ -87,8 +88,7 @@ std::vector<std::string> WriteFiles(const RenderedFrame& frame, const Options& o
 
 int Finish(const Options& o, Prepared& p, const RenderedFrame& frame, const RenderedFrame* reference,
            const RenderBackend& backend, std::string* frameStats) {
-  RunTimes& times = p.times;
-  times.upload = backend.UploadSeconds();
+  RunTimes& times = p.times();
   times.render = frame.seconds;
   times.aov = frame.aovSeconds;
   times.denoise = frame.denoiseSeconds;
@@ -96,8 +96,9 @@ int Finish(const Options& o, Prepared& p, const RenderedFrame& frame, const Rend
   const std::vector<std::string> files = WriteFiles(frame, o);
   phase.Lap(times.write);
   int status = reference ? CompareBackends(*reference, frame, o) : 0;
-  PrintRenderReport(p.scene(), p.rs, frame, o, files, backend.DenoiserName());
-  const uint32_t validationMessages = p.ctx ? p.ctx->ValidationMessages() : 0;
+  PrintRenderReport(p.scene(), p.rs(), frame, o, files, backend.DenoiserName());
+  const vk::Context* device = p.loaded->Device();
+  const uint32_t validationMessages = device ? device->ValidationMessages() : 0;
   if (validationMessages) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
     status = 3;
@@ -111,7 +112,7 @@ int Finish(const Options& o, Prepared& p, const RenderedFrame& frame, const Rend
   if (!o.stats.empty() || frameStats) {
     times.total = SecondsSince(p.start);
     const std::string json =
-        StatsJson(o, {p.scene(), p.rs, frame, reference, times, validationMessages, status, files, p.frameMemory});
+        StatsJson(o, {p.scene(), p.rs(), frame, reference, times, validationMessages, status, files, p.frame.memory});
     if (frameStats) *frameStats = json;
     else WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
   }

@@ -104,13 +104,13 @@ int ParseOnEveryRank(Cluster& cluster, int argc, char** argv, Options& o) {
 // Frame `i` of a sequence after the first: posed and built again from the loaded file.
 void NextFrame(Prepared& p, const Options& f, uint32_t ranks) {
   p.start = std::chrono::steady_clock::now();
-  p.times = RunTimes{};  // the file was read once, for the first frame
+  p.times() = RunTimes{};  // the file was read once, for the first frame
   PrepareFrame(p, f, false, ranks);
 }
 
-void PrintFrameLine(uint32_t number, size_t i, size_t frames, const Options& f, const Prepared& p, double seconds) {
+void PrintFrameLine(uint32_t number, size_t i, size_t frames, const Options& f, Prepared& p, double seconds) {
   std::printf("vkpt: frame %u (%zu of %zu, %.6g s): pose %.3f s, BVH and arrays %.3f s, upload %.3f s, render %.3f s\n",
-              number, i + 1, frames, f.at.value_or(0.0), p.times.pose, p.times.prepare, p.times.upload, seconds);
+              number, i + 1, frames, f.at.value_or(0.0), p.times().pose, p.times().prepare, p.times().upload, seconds);
   std::fflush(stdout);
 }
 
@@ -122,14 +122,15 @@ void PrintSequenceEnd(const Options& o, size_t done, size_t frames, std::chrono:
 
 // Rank 0 deals the frame's chunks to every rank (itself included), then writes it; the
 // others render the chunks dealt to them. Returns the exit status, the same on every rank.
-int RenderDealt(Cluster& cluster, const Options& o, Prepared& p, RenderBackend& backend,
+int RenderDealt(Cluster& cluster, const Options& o, Prepared& p, FrameRenderer& renderer,
                 std::string* frameStats = nullptr) {
   const ChunkPlan plan{o.spp, o.chunkSpp};
   int status = 0;
   if (cluster.Rank() != 0) {
-    RenderDealtChunks(cluster, ChunkRendererOf(backend.Frame(), plan));
+    RenderDealtChunks(cluster, ChunkRendererOf(renderer, plan));
   } else {
-    DealtChunks source(cluster, backend.Frame(), plan);
+    DealtChunks source(cluster, renderer, plan);
+    const RenderBackend& backend = p.loaded->Backend();
     const RenderedFrame frame = Render(source, SettingsFromOptions(o, backend), o);
     status = Finish(o, p, frame, nullptr, backend, frameStats);
   }
@@ -151,8 +152,9 @@ int RunSequence(const Options& o) {
   for (size_t i = 0; i < numbers.size() && status == 0; ++i) {
     const Options f = FrameOptions(o, numbers[i]);
     if (i > 0) NextFrame(p, f, 1);
-    RenderBackend backend(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
-    LocalPasses source(backend.Frame(), o.chunkSpp);
+    const std::unique_ptr<FrameRenderer> renderer = p.loaded->BeginFrame(p.frame.params, o.batch);
+    LocalPasses source(*renderer, o.chunkSpp);
+    const RenderBackend& backend = p.loaded->Backend();
     const RenderedFrame frame = Render(source, SettingsFromOptions(f, backend), f);
     status = Finish(f, p, frame, nullptr, backend, &stats.emplace_back());
     PrintFrameLine(numbers[i], i, numbers.size(), f, p, frame.seconds);
@@ -168,8 +170,9 @@ int Run(const Options& o) {
   Prepared p = Prepare(o, true);
   std::optional<RenderedFrame> reference;
   if (o.compare) reference = RenderReference(p, o);
-  RenderBackend backend(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
-  LocalPasses source(backend.Frame(), o.chunkSpp);
+  const std::unique_ptr<FrameRenderer> renderer = p.loaded->BeginFrame(p.frame.params, o.batch);
+  LocalPasses source(*renderer, o.chunkSpp);
+  const RenderBackend& backend = p.loaded->Backend();
   // From here the first SIGINT/SIGTERM stops the render after its pass, and the image of
   // the samples taken is still written.
   GracefulStop stop;
@@ -186,7 +189,7 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
   const uint32_t ranks = root ? uint32_t(cluster.Size()) : 1;
   const std::vector<uint32_t> numbers = o.frames ? FrameNumbers(*o.frames) : std::vector<uint32_t>{0};
   Prepared p;
-  std::unique_ptr<RenderBackend> backend;
+  std::unique_ptr<FrameRenderer> renderer;
   std::vector<std::string> stats;
   std::optional<GracefulStop> stop;  // rank 0 stops dealing at a signal; the others finish their chunk
   std::chrono::steady_clock::time_point start;
@@ -198,10 +201,10 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
         [&] {
           if (i == 0 && o.frames && root)
             for (uint32_t k : numbers) CheckOutputPath(FramePath(o.out, k));
-          backend.reset();  // the last frame's device buffers go before the next's are made
+          renderer.reset();  // the last frame's device buffers go before the next's are made
           if (i == 0) p = Prepare(f, root, ranks);
           else NextFrame(p, f, ranks);
-          backend = std::make_unique<RenderBackend>(p.ctx.get(), p.rs, p.params, o.batch, o.threads);
+          renderer = p.loaded->BeginFrame(p.frame.params, o.batch);
         },
         &message);
     if ((status = AgreeOnOutcome(cluster, status, message, "error"))) return status;
@@ -216,9 +219,9 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
         return 2;
       }
     }
-    if (!o.frames) return RenderDealt(cluster, o, p, *backend);
-    status = RenderDealt(cluster, f, p, *backend, root ? &stats.emplace_back() : nullptr);
-    if (root) PrintFrameLine(numbers[i], i, numbers.size(), f, p, p.times.render);
+    if (!o.frames) return RenderDealt(cluster, o, p, *renderer);
+    status = RenderDealt(cluster, f, p, *renderer, root ? &stats.emplace_back() : nullptr);
+    if (root) PrintFrameLine(numbers[i], i, numbers.size(), f, p, p.times().render);
   }
   if (root) PrintSequenceEnd(o, stats.size(), numbers.size(), start, stats);
   return status;

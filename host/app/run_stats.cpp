@@ -76,10 +76,6 @@ JsonObject MpiJson(const std::vector<RankShare>& shares, uint32_t chunkSpp) {
 
 std::string OptionsAsJson(const Options& o) { return OptionsJson(o).Text(); }
 
-double SecondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 std::string StatsJson(const Options& o, const RunOutcome& run) {
   const RenderedFrame& p = run.frame;
   const Image& image = p.image;

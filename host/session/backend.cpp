@@ -1,25 +1,20 @@
 #include "session/backend.h"
 
-#include <chrono>
-
 #include "cpu/path_tracer.h"
 #include "vk/vk_denoise.h"
 
 namespace vkpt {
 
-RenderBackend::RenderBackend(const vk::Context* ctx, const RenderScene& rs, const shader::FrameParams& params,
-                             uint32_t batch, unsigned threads)
-    : ctx_(ctx), threads_(threads) {
-  if (!ctx) {
-    frame_ = BeginCpuFrame(rs, params, threads);
-    return;
-  }
-  const auto t0 = std::chrono::steady_clock::now();
-  gpu_ = std::make_unique<vk::GpuRenderer>(*ctx, rs);
+RenderBackend::RenderBackend(const vk::Context* ctx, const RenderScene& rs, unsigned threads)
+    : ctx_(ctx), rs_(rs), threads_(threads) {
+  if (ctx) gpu_ = std::make_unique<vk::GpuRenderer>(*ctx, rs);
+}
+
+std::unique_ptr<FrameRenderer> RenderBackend::BeginFrame(const shader::FrameParams& params, uint32_t batch) const {
+  if (!gpu_) return BeginCpuFrame(rs_, params, threads_);
   vk::GpuRenderOptions options;
   options.batch = batch;
-  frame_ = gpu_->BeginFrame(params, options);
-  uploadSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return gpu_->BeginFrame(params, options);
 }
 
 Denoiser RenderBackend::MakeDenoiser() const {

@@ -1,5 +1,5 @@
-// This process's renderer of a frame: on the Vulkan device when there is one (its scene
-// uploaded, its pipeline compiled), else on the CPU; and the denoiser that goes with it.
+// This process's renderer of a scene's frames: on the Vulkan device when there is one (the
+// scene uploaded once, for every frame), else on the CPU; and the denoiser that goes with it.
 #pragma once
 
 #include <memory>
@@ -15,22 +15,20 @@ namespace vkpt {
 
 class RenderBackend {
  public:
-  // `ctx` null: the CPU with `threads` threads (0: all cores). `batch`: Vulkan samples
-  // per pixel per submission (0: automatic). `rs` must outlive this.
-  RenderBackend(const vk::Context* ctx, const RenderScene& rs, const shader::FrameParams& params, uint32_t batch,
-                unsigned threads);
+  // `ctx` null: the CPU with `threads` threads (0: all cores). `rs` must outlive this.
+  RenderBackend(const vk::Context* ctx, const RenderScene& rs, unsigned threads);
 
-  FrameRenderer& Frame() { return *frame_; }
+  // A frame of the scene (its kernels compiled on first use of the device). `batch`:
+  // Vulkan samples per pixel per submission (0: automatic). It must not outlive this.
+  std::unique_ptr<FrameRenderer> BeginFrame(const shader::FrameParams& params, uint32_t batch) const;
   Denoiser MakeDenoiser() const;
   const char* DenoiserName() const { return ctx_ ? "vulkan" : "cpu"; }
-  double UploadSeconds() const { return uploadSeconds_; }  // the scene to the device, the pipeline compiled
 
  private:
   const vk::Context* ctx_;
+  const RenderScene& rs_;
   unsigned threads_;
-  std::unique_ptr<vk::GpuRenderer> gpu_;  // keeps the device's scene alive with the frame
-  std::unique_ptr<FrameRenderer> frame_;
-  double uploadSeconds_ = 0.0;
+  std::unique_ptr<vk::GpuRenderer> gpu_;  // the scene on the device
 };
 
 }  // namespace vkpt

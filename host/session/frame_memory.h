@@ -1,5 +1,5 @@
 // The host memory a render of one frame needs beside the scene, per pixel and by part:
-// counted against --max-memory before any of it is allocated (app/prepare.cpp), like
+// counted against --max-memory before any of it is allocated (engine/loaded_scene.cpp), like
 // every part of the scene. Each part is what the code holds at once, from the sizes of
 // the structures that hold it, so the count follows the code; a test compares it with the
 // peak a render measures (tests/test_frame_memory.cpp).

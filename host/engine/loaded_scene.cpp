@@ -1,0 +1,152 @@
+#include "engine/loaded_scene.h"
+
+#include <cstdio>
+
+#include "engine/camera_choice.h"
+#include "engine/environment_load.h"
+#include "render/light_table.h"
+#include "scene/load_limits.h"
+#include "shared/sampling.h"
+#include "util/error.h"
+
+namespace vkpt {
+namespace {
+
+// The Vulkan context the settings ask for: required for Backend::Vulkan, a named device,
+// validation or a comparison; for Backend::Auto a device that does not open leaves the
+// CPU to render, with a notice saying why.
+std::unique_ptr<vk::Context> OpenDevice(const SceneSettings& s, const EngineLog& log) {
+  if (s.backend == Backend::Cpu && !s.compare) return nullptr;
+  vk::ContextOptions opt;
+  opt.validation = s.validation;
+  opt.device = s.device;
+  if (s.backend == Backend::Vulkan || s.compare || !s.device.empty() || s.validation)
+    return std::make_unique<vk::Context>(opt);
+  try {
+    return std::make_unique<vk::Context>(opt);
+  } catch (const Error& e) {
+    log.Notice(std::string(e.what()) + "\nvkpt: rendering on the CPU instead");
+    return nullptr;
+  }
+}
+
+// The BVH and the renderers' arrays, with the environment map. `gpu`: a Vulkan device will
+// render, so the shader's direction-ordered copies of the tree are built; the CPU's layout
+// only where the CPU renders (no device, or a comparison).
+RenderScene BuildArrays(const Scene& scene, const SceneSettings& s, bool gpu, EnvironmentMap env) {
+  BvhBuildOptions bvhOptions;
+  bvhOptions.maxLeafSize = s.leafSize;
+  bvhOptions.splits = s.splits;
+  bvhOptions.threads = s.threads;
+  bvhOptions.directionCopies = gpu;
+  RenderScene rs = PrepareRenderScene(scene, bvhOptions, !gpu || s.compare);
+  rs.environment = std::move(env);
+  if (rs.environment.width > 0) AddEnvironmentLight(rs, s.envIntensity);
+  return rs;
+}
+
+}  // namespace
+
+LoadedScene::LoadedScene(const SceneSettings& settings, const EngineLog& log) : settings_(settings), log_(log) {
+  PhaseTimer phase;
+  asset_ = std::make_unique<GltfAsset>(settings_.path, settings_.load, settings_.choice);
+  phase.Lap(times.load);
+  environment_ = LoadEnvironment(settings_, scene(), log_, &environmentBytes_);
+  phase.Lap(times.environment);
+  // The device before the scene's arrays: without one (Backend::Auto) the CPU renders,
+  // and only then does the scene need the CPU's BVH layout.
+  ctx_ = OpenDevice(settings_, log_);
+}
+
+LoadedScene::~LoadedScene() = default;
+
+PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
+  PhaseTimer phase;
+  // Without an animation every pose is the same: the first one's arrays serve every render.
+  const bool animated = scene().animation >= 0;
+  const bool build = !builtAt_ || (animated && *builtAt_ != request.picture.time);
+  if (build) asset_->PoseAt(request.picture.time);
+  if (settings_.once || !animated) asset_->ReleaseSource();  // no other pose will be asked for
+  phase.Lap(times.pose);
+  PreparedFrame frame;
+  frame.cameraIndex = request.camera.index.value_or(0);
+  frame.camera = ChooseCamera(scene(), request.camera, settings_.path);
+  frame.size = ImageSize(frame.camera, request.picture);
+  ChargeFrame(frame, request);
+  phase.Restart();
+  if (build) {
+    backend_.reset();  // the last pose's device buffers and arrays go before the next's are made
+    rs_ = RenderScene{};
+    // The map is copied while an animation may ask for another pose, else handed over.
+    const bool keepMap = animated && !settings_.once;
+    rs_ = BuildArrays(scene(), settings_, ctx_ != nullptr, keepMap ? environment_ : std::move(environment_));
+    builtAt_ = request.picture.time;
+    ++counts_.builds;
+  }
+  phase.Lap(times.prepare);
+  frame.params = FrameParams(frame.camera, frame.size, request.picture, request.log);
+  return frame;
+}
+
+const RenderBackend& LoadedScene::Backend() {
+  if (!backend_) {
+    backend_ = std::make_unique<RenderBackend>(ctx_.get(), rs_, settings_.threads);
+    if (ctx_) ++counts_.uploads;
+  }
+  return *backend_;
+}
+
+std::unique_ptr<FrameRenderer> LoadedScene::BeginFrame(const shader::FrameParams& params, uint32_t batch) {
+  PhaseTimer phase;
+  std::unique_ptr<FrameRenderer> frame = Backend().BeginFrame(params, batch);
+  if (ctx_) phase.Lap(times.upload);
+  return frame;
+}
+
+// A scene without light sources (HasLightSources) is lit by a white environment unless a
+// map or a background says otherwise, and a black one is warned about.
+shader::FrameParams LoadedScene::FrameParams(const Camera& cam, glm::uvec2 size, const PictureSettings& p,
+                                             const EngineLog& log) const {
+  shader::FrameParams params = MakeFrameParams(rs_, cam, size.x, size.y);
+  params.seed = p.seed;
+  params.sampleBegin = 0;
+  params.sampleCount = p.spp;
+  params.maxDepth = p.maxDepth;
+  params.rrDepth = p.rrDepth;
+  params.textureLod = p.textureLod ? 1u : 0u;
+  if (!settings_.env.empty()) {
+    SetEnvironmentParams(params, rs_.environment, p.envRotation, settings_.envIntensity);
+  } else if (p.background) {
+    params.background = *p.background;
+  } else if (!HasLightSources(rs_)) {
+    params.background = glm::vec3(1.0f);
+    log.Info(std::string("  no lights") + (rs_.lights.empty() ? "" : " but emissive textures") +
+             ": lit by a white environment (see --background)");
+  }
+  if (rs_.lights.empty() && settings_.env.empty() && shader::MaxComponent(params.background) <= 0.0f)
+    log.Warn(settings_.path + ": no lights and a black background; the image will be black");
+  return params;
+}
+
+// The frame's memory (session/frame_memory.h) on top of the scene's and the map's, against
+// the scene's memory limit, before the device or the film allocates any of it.
+void LoadedScene::ChargeFrame(PreparedFrame& frame, const FrameRequest& request) const {
+  FrameShape shape = request.shape;
+  shape.width = frame.size.x;
+  shape.height = frame.size.y;
+  shape.gpu = ctx_ != nullptr;
+  // A discrete GPU's buffers are its own; any other device's live in this process's memory.
+  shape.deviceInHost = !ctx_ || ctx_->Properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
+  frame.parts = FrameMemoryParts(shape);
+  frame.memory = BytesPerPixel(frame.parts) * shape.width * shape.height;
+  // A map kept for later poses is counted twice while the arrays hold the other copy.
+  const bool keepMap = scene().animation >= 0 && !settings_.once;
+  MemoryBudget budget(scene().memoryLimit, request.name.empty() ? settings_.path : request.name);
+  budget.Charge(scene().memoryCounted + environmentBytes_ * (keepMap ? 2 : 1), "the scene and environment");
+  budget.Charge(frame.memory,
+                "a " + std::to_string(shape.width) + " × " + std::to_string(shape.height) + " image (" +
+                    DescribeParts(frame.parts) + ")",
+                "lower --width and --height, or raise --max-memory");
+}
+
+}  // namespace vkpt

@@ -1,0 +1,96 @@
+// A glTF file loaded once, with its environment map and the device it renders on, for
+// any number of renders. Each render poses the scene (again only when an animation is
+// chosen and its time changes), builds the BVH and the renderers' arrays (once per pose),
+// uploads them to the device (once per build) and makes its frame's constants from a
+// camera and a picture's settings.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/run_times.h"
+#include "engine/settings.h"
+#include "render/environment_map.h"
+#include "render/render_scene.h"
+#include "scene/gltf_loader.h"
+#include "session/backend.h"
+#include "session/frame_memory.h"
+#include "shared/layout.h"
+#include "vk/context.h"
+
+namespace vkpt {
+
+struct FrameRequest {
+  CameraSettings camera;
+  PictureSettings picture;
+  // What the caller keeps per pixel (AOVs, a reference, MPI ranks, the output); the size
+  // and the device are filled in from the camera and the scene.
+  FrameShape shape;
+  std::string name;  // names the frame in a refusal (its output file); "": the scene's file
+  EngineLog log;     // what the frame's constants are warned about
+};
+
+// One render's camera, size and constants, and the memory counted for it.
+struct PreparedFrame {
+  Camera camera;
+  uint32_t cameraIndex = 0;
+  glm::uvec2 size{0};
+  shader::FrameParams params{};
+  std::vector<MemoryPart> parts;  // per pixel (session/frame_memory.h)
+  uint64_t memory = 0;            // in all, counted against the scene's memory limit
+};
+
+class LoadedScene {
+ public:
+  // Reads and checks the file and the environment map, then opens the device (Backend::Auto
+  // without one: the CPU, with a notice). Throws vkpt::Error naming the file at fault.
+  LoadedScene(const SceneSettings& settings, const EngineLog& log);
+  ~LoadedScene();
+  LoadedScene(const LoadedScene&) = delete;
+  LoadedScene& operator=(const LoadedScene&) = delete;
+
+  const SceneSettings& Settings() const { return settings_; }
+  const Scene& scene() const { return asset_->scene(); }
+  const vk::Context* Device() const { return ctx_.get(); }
+  const RenderScene& Arrays() const { return rs_; }
+
+  // The scene posed at the picture's time and built, the camera chosen and the frame's
+  // memory counted (before anything of the frame is allocated), its constants made. A
+  // frame begun before must end before this is called again.
+  PreparedFrame Prepare(const FrameRequest& request);
+
+  // This scene's renderer; the scene is uploaded to the device on first use after a build.
+  const RenderBackend& Backend();
+  // A frame of the last Prepare on Backend(); its time, with the upload's, goes to
+  // times.upload. `batch`: Vulkan samples per pixel per submission (0: automatic).
+  std::unique_ptr<FrameRenderer> BeginFrame(const shader::FrameParams& params, uint32_t batch);
+
+  RunTimes times;  // load, environment, pose, prepare and upload, as they happen
+
+  // How often the scene's arrays were built and uploaded to the device.
+  struct Counts {
+    uint32_t builds = 0, uploads = 0;
+  };
+  Counts Counts() const { return counts_; }
+
+ private:
+  shader::FrameParams FrameParams(const Camera& cam, glm::uvec2 size, const PictureSettings& p,
+                                  const EngineLog& log) const;
+  void ChargeFrame(PreparedFrame& frame, const FrameRequest& request) const;
+
+  SceneSettings settings_;
+  EngineLog log_;
+  std::unique_ptr<GltfAsset> asset_;
+  EnvironmentMap environment_;  // handed to the arrays once if nothing is built again
+  uint64_t environmentBytes_ = 0;
+  std::unique_ptr<vk::Context> ctx_;  // null: the CPU renders
+  std::optional<double> builtAt_;     // the pose rs_ holds
+  RenderScene rs_;
+  std::unique_ptr<RenderBackend> backend_;  // of rs_, made on first use
+  struct Counts counts_;
+};
+
+}  // namespace vkpt
