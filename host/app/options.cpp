@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "app/option_table.h"
+#include "session/budget.h"
 
 namespace vkpt {
 namespace {

@@ -81,9 +81,6 @@ struct Options {
   bool Adaptive() const { return adaptive.value_or(noiseTarget.has_value()); }
 };
 
-// The --spp bound when --time or --noise-target is given without --spp.
-constexpr uint32_t kBudgetMaxSpp = 65536;
-
 // Throws UsageError for anything malformed; the message says which option and why.
 class UsageError : public std::runtime_error {
  public:

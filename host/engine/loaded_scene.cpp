@@ -64,23 +64,28 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
   PhaseTimer phase;
   // Without an animation every pose is the same: the first one's arrays serve every render.
   const bool animated = scene().animation >= 0;
-  const bool build = !builtAt_ || (animated && *builtAt_ != request.picture.time);
-  if (build) asset_->PoseAt(request.picture.time);
-  if (settings_.once || !animated) asset_->ReleaseSource();  // no other pose will be asked for
+  const double time = request.picture.time;
+  if (!posedAt_ || (animated && *posedAt_ != time)) {
+    asset_->PoseAt(time);
+    posedAt_ = time;
+  }
   phase.Lap(times.pose);
+  // A request refused here (its camera, its memory) leaves the scene as it was.
   PreparedFrame frame;
   frame.cameraIndex = request.camera.index.value_or(0);
   frame.camera = ChooseCamera(scene(), request.camera, settings_.path);
   frame.size = ImageSize(frame.camera, request.picture);
   ChargeFrame(frame, request);
+  if (settings_.once || !animated) asset_->ReleaseSource();  // no other pose will be asked for
   phase.Restart();
-  if (build) {
+  if (!builtAt_ || *builtAt_ != *posedAt_) {
     backend_.reset();  // the last pose's device buffers and arrays go before the next's are made
     rs_ = RenderScene{};
-    // The map is copied while an animation may ask for another pose, else handed over.
-    const bool keepMap = animated && !settings_.once;
-    rs_ = BuildArrays(scene(), settings_, ctx_ != nullptr, keepMap ? environment_ : std::move(environment_));
-    builtAt_ = request.picture.time;
+    builtAt_.reset();
+    // One render hands the map over; any other keeps it for the renders after a failure
+    // or a new pose.
+    rs_ = BuildArrays(scene(), settings_, ctx_ != nullptr, settings_.once ? std::move(environment_) : environment_);
+    builtAt_ = posedAt_;
     ++counts_.builds;
   }
   phase.Lap(times.prepare);
@@ -139,8 +144,8 @@ void LoadedScene::ChargeFrame(PreparedFrame& frame, const FrameRequest& request)
   shape.deviceInHost = !ctx_ || ctx_->Properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
   frame.parts = FrameMemoryParts(shape);
   frame.memory = BytesPerPixel(frame.parts) * shape.width * shape.height;
-  // A map kept for later poses is counted twice while the arrays hold the other copy.
-  const bool keepMap = scene().animation >= 0 && !settings_.once;
+  // A map kept for later renders is counted twice while the arrays hold the other copy.
+  const bool keepMap = !settings_.once;
   MemoryBudget budget(scene().memoryLimit, request.name.empty() ? settings_.path : request.name);
   budget.Charge(scene().memoryCounted + environmentBytes_ * (keepMap ? 2 : 1), "the scene and environment");
   budget.Charge(frame.memory,

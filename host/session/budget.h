@@ -12,6 +12,9 @@
 
 namespace vkpt {
 
+// The spp bound of a render given a time or noise target but no spp.
+constexpr uint32_t kBudgetMaxSpp = 65536;
+
 struct RenderBudget {
   uint32_t maxSpp = 64;               // --spp: no pixel takes more samples
   std::optional<double> seconds;      // --time: rendering seconds

@@ -1,0 +1,168 @@
+// The library's facade: the public types of vkpt/vkpt.h mapped onto the engine's
+// (engine/loaded_scene.h), so that a Scene renders exactly what the command line renders.
+//
+// The internal headers come first and on their own: their types (vkpt::Scene, vkpt::Image,
+// vkpt::Backend) share names with the public ones of vkpt::api, so each internal header is
+// read before those exist, and below the public types are named api::… and the internal
+// ones only through the engine's structs.
+#include <algorithm>
+#include <exception>
+#include <new>
+#include <utility>
+
+#include "engine/loaded_scene.h"
+#include "session/aov.h"
+#include "session/budget.h"
+#include "session/local_passes.h"
+#include "session/render_session.h"
+
+#include "vkpt/vkpt.h"
+
+namespace vkpt {
+namespace {
+
+SceneSettings ToSettings(const std::string& path, const api::SceneOptions& o) {
+  SceneSettings s;
+  using InternalBackend = decltype(s.backend);
+  s.path = path;
+  s.load.maxMemory = o.maxMemory;
+  s.load.maxTextureTexels = o.maxTexels;
+  s.load.allowExternalUris = o.allowExternalUris;
+  s.choice.variant = o.variant;
+  s.choice.animation = o.animation;
+  s.env = o.environment;
+  s.envIntensity = o.environmentIntensity;
+  s.backend = o.backend == api::Backend::Cpu      ? InternalBackend::Cpu
+              : o.backend == api::Backend::Vulkan ? InternalBackend::Vulkan
+                                                  : InternalBackend::Auto;
+  s.device = o.device;
+  s.validation = o.validation;
+  s.threads = o.threads;
+  return s;
+}
+
+std::vector<Aov> ToAovs(const std::vector<std::string>& names) {
+  std::vector<Aov> aovs;
+  for (const std::string& name : names) {
+    std::vector<Aov> named;
+    if (name == "all") {
+      for (int k = 0; k < kAovCount; ++k) named.push_back(Aov(k));
+    } else if (const std::optional<Aov> aov = AovFromName(name)) {
+      named.push_back(*aov);
+    } else {
+      throw api::Error("unknown AOV \"" + name + "\"");
+    }
+    for (Aov aov : named)
+      if (std::find(aovs.begin(), aovs.end(), aov) == aovs.end()) aovs.push_back(aov);
+  }
+  return aovs;
+}
+
+FrameRequest ToRequest(const api::Camera& c, const api::RenderOptions& o, const std::vector<Aov>& aovs) {
+  auto vec3 = [](const std::optional<std::array<float, 3>>& v) {
+    return v ? std::optional<glm::vec3>(glm::vec3((*v)[0], (*v)[1], (*v)[2])) : std::nullopt;
+  };
+  FrameRequest r;
+  r.camera = {c.index,        vec3(c.lookFrom),
+              vec3(c.lookAt), vec3(c.up),
+              c.fovDegrees,   c.orbitDegrees != 0.0 ? std::optional<double>(c.orbitDegrees) : std::nullopt};
+  PictureSettings& p = r.picture;
+  p.width = o.width;
+  p.height = o.height;
+  p.seed = o.seed;
+  p.spp = o.spp.value_or(o.seconds || o.noiseTarget ? kBudgetMaxSpp : 64);
+  p.maxDepth = o.maxDepth;
+  p.rrDepth = o.rrDepth;
+  p.textureLod = o.textureLod;
+  p.background = vec3(o.background);
+  p.envRotation = o.environmentRotation;
+  p.time = o.time;
+  r.shape.aovPass = o.denoise || std::any_of(aovs.begin(), aovs.end(), NeedsAovPass);
+  r.shape.aovChannels = AovChannels(aovs);
+  r.shape.denoise = o.denoise;
+  return r;
+}
+
+api::Image ToImage(const std::vector<glm::vec3>& pixels, uint32_t width, uint32_t height) {
+  api::Image image{width, height, 3, {"R", "G", "B"}, {}};
+  image.data.reserve(pixels.size() * 3);
+  for (const glm::vec3& p : pixels) image.data.insert(image.data.end(), {p.r, p.g, p.b});
+  return image;
+}
+
+// Any failure inside as the one public exception, its message kept.
+template <class F>
+auto Translated(F&& f) {
+  try {
+    return f();
+  } catch (const api::Error&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw api::Error("out of memory");
+  } catch (const std::exception& e) {
+    throw api::Error(e.what());
+  }
+}
+
+}  // namespace
+
+struct api::Scene::Impl {
+  std::unique_ptr<LoadedScene> loaded;
+};
+
+api::Scene::Scene(const std::string& path, const SceneOptions& options)
+    : impl_(Translated([&] {
+        return std::make_unique<Impl>(Impl{std::make_unique<LoadedScene>(ToSettings(path, options), EngineLog{})});
+      })) {}
+
+api::Scene::~Scene() = default;
+api::Scene::Scene(Scene&&) noexcept = default;
+api::Scene& api::Scene::operator=(Scene&&) noexcept = default;
+
+uint32_t api::Scene::CameraCount() const { return uint32_t(impl_->loaded->scene().cameras.size()); }
+
+std::string api::Scene::Device() const {
+  const vk::Context* device = impl_->loaded->Device();
+  return device ? std::string(device->Properties().deviceName) : "cpu";
+}
+
+api::RenderResult api::Scene::Render(const Camera& camera, const RenderOptions& options) {
+  return Translated([&] {
+    LoadedScene& loaded = *impl_->loaded;
+    const std::vector<Aov> aovs = ToAovs(options.aovs);
+    const PreparedFrame frame = loaded.Prepare(ToRequest(camera, options, aovs));
+    const std::unique_ptr<FrameRenderer> renderer = loaded.BeginFrame(frame.params, options.batch);
+    LocalPasses source(*renderer, options.chunkSpp);
+    SessionSettings settings;
+    RenderBudget& b = settings.budget;
+    b.maxSpp = frame.params.sampleCount;
+    b.seconds = options.seconds;
+    b.noiseTarget = options.noiseTarget;
+    b.adaptive = options.adaptive.value_or(options.noiseTarget.has_value());
+    if (options.noiseTarget) b.adaptiveThreshold = *options.noiseTarget;
+    b.chunkSpp = options.chunkSpp;
+    settings.aovPass = std::any_of(aovs.begin(), aovs.end(), NeedsAovPass);
+    if (options.denoise) settings.denoise = loaded.Backend().MakeDenoiser();
+    SessionHooks hooks;
+    hooks.progress = options.progress;
+    const RenderedFrame rendered = RenderSession(source, settings, hooks);
+
+    RenderResult result;
+    const uint32_t w = frame.size.x, h = frame.size.y;
+    result.image = ToImage(rendered.denoised ? rendered.denoised->pixels : rendered.image.pixels, w, h);
+    if (rendered.denoised) result.raw = ToImage(rendered.image.pixels, w, h);
+    for (AovLayer& layer : ResolveAovs(aovs, rendered.aovs, rendered.sums, rendered.image)) {
+      const uint32_t channels = uint32_t(layer.suffixes.size());
+      result.aovs[AovName(layer.aov)] = {w, h, channels, std::move(layer.suffixes), std::move(layer.values)};
+    }
+    result.spp = rendered.spp;
+    result.samples = rendered.samples;
+    result.stoppedBy = StopReasonName(rendered.stoppedBy);
+    result.estimatedRelMse = rendered.estimatedRelMse;
+    result.seconds = rendered.seconds + rendered.aovSeconds + rendered.denoiseSeconds;
+    result.engine = rendered.engine;
+    return result;
+  });
+}
+
+}  // namespace vkpt

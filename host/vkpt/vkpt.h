@@ -1,0 +1,131 @@
+// vkpt as a library: load a glTF 2.0 scene once, with the same checks the command line
+// makes on untrusted files; render it any number of times, from any camera, on a Vulkan
+// device or the CPU; get linear float images and AOVs as arrays. Standard C++ only.
+//
+//   vkpt::Scene scene("DamagedHelmet.glb");
+//   vkpt::RenderOptions options;
+//   options.width = 640;
+//   options.aovs = {"depth", "normal"};
+//   vkpt::RenderResult a = scene.Render(vkpt::Camera{}, options);   // the file's camera
+//   vkpt::Camera turned;
+//   turned.orbitDegrees = 90;
+//   vkpt::RenderResult b = scene.Render(turned, options);           // nothing loaded again
+//
+// Renders of one Scene with the same options and seed are bit-identical to each other and
+// to the `vkpt` command's. A Scene is used by one thread at a time; Scenes on different
+// threads are independent, each with its own device context.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vkpt {
+// The public names live in an inline namespace: the library's own sources have types of
+// the same names (vkpt::Scene, vkpt::Image) that these never meet in one scope.
+inline namespace api {
+
+// Every failure: a file that cannot be read or is malformed, a setting out of range, a
+// device that is missing, memory beyond the limit. The message names what is at fault.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class Backend {
+  Auto,    // the Vulkan device when one opens, else the CPU
+  Cpu,     // the CPU reference tracer
+  Vulkan,  // a Vulkan compute device (an error if none opens)
+};
+
+struct SceneOptions {
+  Backend backend = Backend::Auto;
+  std::string device;              // a Vulkan device by index or name substring ("": the best)
+  bool validation = false;         // the Vulkan validation layer; messages are counted in stats
+  unsigned threads = 0;            // CPU threads (0: all cores)
+  uint64_t maxMemory = 0;          // bytes the scene may need, checked before reading (0: half the RAM)
+  uint64_t maxTexels = 0;          // texels of the scene's images (0: 2^28)
+  bool allowExternalUris = false;  // let the file read outside its own folder
+  std::string variant;             // KHR_materials_variants variant, by name or index
+  std::string animation;           // an animation, by name or index; RenderOptions::time poses it
+  std::string environment;         // an equirectangular .hdr or .exr lighting the scene
+  float environmentIntensity = 1.0f;
+};
+
+// The file's camera `index` (without cameras: one framing the scene), then moved to
+// lookFrom, aimed at lookAt with `up` up, turned about `up` through the look-at point (or
+// the scene's centre) and given a vertical field of view.
+struct Camera {
+  std::optional<uint32_t> index;
+  std::optional<std::array<float, 3>> lookFrom, lookAt, up;
+  std::optional<double> fovDegrees;
+  double orbitDegrees = 0.0;
+};
+
+struct RenderOptions {
+  std::optional<uint32_t> width, height;  // a missing side follows the camera's aspect (512 wide)
+  std::optional<uint32_t> spp;            // at most; default 64, or 65536 with a time or noise target
+  std::optional<double> seconds;          // stop after this much rendering
+  std::optional<double> noiseTarget;      // stop at this estimated relMSE (turns on adaptive)
+  std::optional<bool> adaptive;           // converged pixels stop taking samples
+  uint32_t seed = 0;
+  uint32_t maxDepth = 32, rrDepth = 3;
+  uint32_t chunkSpp = 16;                          // decisions fall between chunks; the image depends on it
+  uint32_t batch = 0;                              // Vulkan samples per pixel per submission (0: automatic)
+  double time = 0.0;                               // seconds into SceneOptions::animation
+  std::optional<std::array<float, 3>> background;  // radiance of rays that leave the scene
+  float environmentRotation = 0.0f;                // degrees about +Y
+  bool textureLod = true;                          // ray-cone texture filtering
+  std::vector<std::string> aovs;                   // albedo, normal, depth, position, variance, spp, heatmap; "all"
+  bool denoise = false;                            // image: denoised; raw: before the filter
+  std::function<void(double)> progress;            // finished fraction, from the rendering thread
+};
+
+// Float values, row-major from the top row, `channels` interleaved: H × W × C.
+struct Image {
+  uint32_t width = 0, height = 0, channels = 0;
+  std::vector<std::string> channelNames;  // {"R","G","B"}, {"X","Y","Z"}, {"Z"}, …
+  std::vector<float> data;
+  float At(uint32_t x, uint32_t y, uint32_t c = 0) const { return data[(size_t(y) * width + x) * channels + c]; }
+};
+
+struct RenderResult {
+  Image image;               // linear Rec.709 radiance (denoised with RenderOptions::denoise)
+  std::optional<Image> raw;  // with denoise: the image before the filter
+  std::map<std::string, Image> aovs;
+  uint32_t spp = 0;       // samples per pixel (adaptive: the most any pixel took)
+  uint64_t samples = 0;   // every pixel's samples added up
+  std::string stoppedBy;  // "spp", "time", "noise_target", "converged"
+  double estimatedRelMse = 0.0;
+  double seconds = 0.0;  // rendering, AOV pass and filter
+  std::string engine;    // the device or "cpu"
+};
+
+class Scene {
+ public:
+  // Loads and checks the file and the environment, and opens the device. Throws Error.
+  explicit Scene(const std::string& path, const SceneOptions& options = {});
+  ~Scene();
+  Scene(Scene&&) noexcept;
+  Scene& operator=(Scene&&) noexcept;
+
+  // Renders a view. The scene's BVH and device buffers are built once (again only when an
+  // animation's time changes). Throws Error.
+  RenderResult Render(const Camera& camera = {}, const RenderOptions& options = {});
+
+  uint32_t CameraCount() const;
+  std::string Device() const;  // "cpu", or the Vulkan device's name
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace api
+}  // namespace vkpt

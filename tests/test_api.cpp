@@ -1,0 +1,150 @@
+// The library API (vkpt/vkpt.h): renders of one loaded Scene equal the command line's,
+// bit for bit; a camera change equals a fresh load with that camera; Scenes render on two
+// threads at once as they do alone; every failure is a vkpt::Error naming its cause.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "image/image.h"
+#include "test_util.h"
+
+#include "vkpt/vkpt.h"
+
+namespace vkpt {
+namespace {
+
+const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
+
+api::RenderOptions Small(uint32_t seed = 0) {
+  api::RenderOptions o;
+  o.width = 24;
+  o.height = 16;
+  o.spp = o.chunkSpp = 4;  // one chunk of 4 samples per pixel
+  o.seed = seed;
+  return o;
+}
+
+api::Camera Orbit(double degrees) {
+  api::Camera c;
+  c.orbitDegrees = degrees;
+  return c;
+}
+
+// The RGB floats of the command line's render of `args` (a .pfm).
+std::vector<float> CliRender(std::vector<std::string> args, const std::string& out) {
+  args.insert(args.end(),
+              {"--scene", kCornell, "--width", "24", "--height", "16", "--spp", "4", "--chunk", "4", "--out", out});
+  const test::ProcessResult r = test::RunVkpt(args);
+  EXPECT_TRUE(r.ExitedWith(0)) << r.Describe();
+  const auto image = ReadPfm(out);  // vkpt::Image, the internal one
+  std::vector<float> rgb;
+  for (const glm::vec3& p : image.pixels) rgb.insert(rgb.end(), {p.r, p.g, p.b});
+  return rgb;
+}
+
+TEST(Api, RendersOfOneSceneEqualTheCommandLines) {
+  const std::string dir = test::FreshTempDirectory("api-cli");
+  for (const char* backend : {"cpu", "vulkan"}) {
+    api::SceneOptions options;
+    options.backend = std::string(backend) == "cpu" ? api::Backend::Cpu : api::Backend::Vulkan;
+    api::Scene scene(kCornell, options);
+    api::RenderOptions depth = Small(7);
+    depth.aovs = {"depth"};
+    const api::RenderResult a = scene.Render(api::Camera{}, depth);
+    const api::RenderResult b = scene.Render(Orbit(30.0), Small(3));
+    EXPECT_EQ(a.image.data, CliRender({"--backend", backend, "--seed", "7", "--aov", "depth"}, dir + "/a.pfm"))
+        << backend;
+    EXPECT_EQ(b.image.data, CliRender({"--backend", backend, "--seed", "3", "--orbit", "30"}, dir + "/b.pfm"))
+        << backend;
+    // The CLI's depth PFM repeats the one channel in R, G and B.
+    const auto cliDepth = ReadPfm(dir + "/a.depth.pfm");
+    const api::Image& apiDepth = a.aovs.at("depth");
+    ASSERT_EQ(apiDepth.channels, 1u);
+    ASSERT_EQ(apiDepth.data.size(), cliDepth.pixels.size());
+    for (size_t i = 0; i < apiDepth.data.size(); ++i) ASSERT_EQ(apiDepth.data[i], cliDepth.pixels[i].r) << i;
+    EXPECT_NE(a.image.data, b.image.data);
+    EXPECT_EQ(scene.Device() == "cpu", std::string(backend) == "cpu");
+  }
+}
+
+TEST(Api, CameraChangeEqualsAFreshLoad) {
+  api::SceneOptions cpu;
+  cpu.backend = api::Backend::Cpu;
+  api::Scene scene(kCornell, cpu);
+  scene.Render(api::Camera{}, Small());
+  api::Camera moved;
+  moved.lookFrom = {{278.0f, 400.0f, -600.0f}};
+  moved.fovDegrees = 50.0;
+  const api::RenderResult after = scene.Render(moved, Small());
+  EXPECT_EQ(after.image.data, api::Scene(kCornell, cpu).Render(moved, Small()).image.data);
+  EXPECT_EQ(after.image.width, 24u);
+  EXPECT_EQ(after.image.height, 16u);
+  EXPECT_EQ(after.image.channels, 3u);
+  EXPECT_EQ(after.image.data.size(), 24u * 16u * 3u);
+  EXPECT_EQ(after.spp, 4u);
+  EXPECT_EQ(scene.CameraCount(), 1u);
+}
+
+// Two Scenes (one per thread, each with its device) render at once what they render alone.
+TEST(Api, ScenesOnTwoThreadsRenderAsAlone) {
+  api::SceneOptions vulkan;
+  vulkan.backend = api::Backend::Vulkan;
+  vulkan.validation = true;
+  api::Scene a(kCornell, vulkan), b(kCornell, vulkan);
+  const std::vector<float> aloneA = a.Render(api::Camera{}, Small(1)).image.data;
+  const std::vector<float> aloneB = b.Render(Orbit(45.0), Small(2)).image.data;
+  std::vector<float> together[2];
+  std::thread ta([&] { together[0] = a.Render(api::Camera{}, Small(1)).image.data; });
+  std::thread tb([&] { together[1] = b.Render(Orbit(45.0), Small(2)).image.data; });
+  ta.join();
+  tb.join();
+  EXPECT_EQ(together[0], aloneA);
+  EXPECT_EQ(together[1], aloneB);
+}
+
+TEST(Api, FailuresAreErrorsNamingTheirCause) {
+  auto message = [](auto&& f) -> std::string {
+    try {
+      f();
+    } catch (const api::Error& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  api::SceneOptions cpu;
+  cpu.backend = api::Backend::Cpu;
+  const std::string missing = test::TempPath("no-such.glb");
+  EXPECT_NE(message([&] { api::Scene(missing, cpu); }).find(missing), std::string::npos);
+  api::Scene scene(kCornell, cpu);
+  api::RenderOptions bad = Small();
+  bad.aovs = {"depht"};
+  EXPECT_EQ(message([&] { scene.Render(api::Camera{}, bad); }), "unknown AOV \"depht\"");
+  api::Camera third;
+  third.index = 3;
+  EXPECT_NE(message([&] { scene.Render(third, Small()); }).find("out of range"), std::string::npos);
+  api::SceneOptions tiny = cpu;
+  tiny.maxMemory = 1024;
+  EXPECT_NE(message([&] { api::Scene(kCornell, tiny); }).find("memory"), std::string::npos);
+  // The scene still renders after a failed render.
+  EXPECT_EQ(scene.Render(api::Camera{}, Small()).image.data.size(), 24u * 16u * 3u);
+}
+
+TEST(Api, DenoisedImageKeepsTheRawOne) {
+  api::SceneOptions cpu;
+  cpu.backend = api::Backend::Cpu;
+  api::RenderOptions o = Small();
+  o.denoise = true;
+  o.aovs = {"all"};
+  const api::RenderResult r = api::Scene(kCornell, cpu).Render(api::Camera{}, o);
+  ASSERT_TRUE(r.raw.has_value());
+  EXPECT_NE(r.raw->data, r.image.data);
+  EXPECT_EQ(r.aovs.size(), 7u);
+  EXPECT_EQ(r.aovs.at("normal").channels, 3u);
+  EXPECT_EQ(r.aovs.at("normal").channelNames, (std::vector<std::string>{"X", "Y", "Z"}));
+}
+
+}  // namespace
+}  // namespace vkpt
