@@ -62,10 +62,14 @@ void ExpectViewsEqualFreshLoads(const SceneSettings& settings, const std::vector
   for (size_t i = 0; i < views.size(); ++i) {
     LoadedScene fresh(settings, {});
     EXPECT_TRUE(SameBits(images[i], RenderOn(fresh, views[i]))) << "view " << i;
-    if (fresh.Device()) EXPECT_EQ(fresh.Device()->ValidationMessages(), 0u);
+    if (fresh.Device()) {
+      EXPECT_EQ(fresh.Device()->ValidationMessages(), 0u);
+    }
   }
   EXPECT_FALSE(SameBits(images[0], images[1]));  // the views differ
-  if (once.Device()) EXPECT_EQ(once.Device()->ValidationMessages(), 0u);
+  if (once.Device()) {
+    EXPECT_EQ(once.Device()->ValidationMessages(), 0u);
+  }
 }
 
 TEST(Engine, ViewsOfOneLoadEqualFreshLoads) {
