@@ -88,6 +88,25 @@ TEST(Api, CameraChangeEqualsAFreshLoad) {
   EXPECT_EQ(scene.CameraCount(), 1u);
 }
 
+// The Cornell box's camera node (at (278, 273, −800), turned 180° about +Y) as a matrix
+// renders the file's camera; a matrix that places no camera is refused naming the file.
+TEST(Api, CameraMatrixPlacesTheLens) {
+  api::SceneOptions cpu;
+  cpu.backend = api::Backend::Cpu;
+  api::Scene scene(kCornell, cpu);
+  api::Camera placed;
+  placed.matrix = {{-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 278, 273, -800, 1}};
+  EXPECT_EQ(scene.Render(placed, Small()).image.data, scene.Render(api::Camera{}, Small()).image.data);
+  placed.matrix->at(10) = 0.0f;
+  try {
+    scene.Render(placed, Small());
+    ADD_FAILURE() << "a singular camera matrix was accepted";
+  } catch (const api::Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              kCornell + ": the camera matrix is singular: its −Z and +Y axes must be independent");
+  }
+}
+
 // Two Scenes (one per thread, each with its device) render at once what they render alone.
 TEST(Api, ScenesOnTwoThreadsRenderAsAlone) {
   api::SceneOptions vulkan;

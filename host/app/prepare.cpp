@@ -40,7 +40,7 @@ SceneSettings SceneSettingsFrom(const Options& o) {
 
 FrameRequest RequestFrom(const Options& o, const EngineLog& log, uint32_t ranks) {
   FrameRequest r;
-  r.camera = {o.camera, Vec3(o.lookFrom), Vec3(o.lookAt), Vec3(o.up), o.fov, o.orbit};
+  r.camera = {o.camera, std::nullopt, Vec3(o.lookFrom), Vec3(o.lookAt), Vec3(o.up), o.fov, o.orbit};
   PictureSettings& p = r.picture;
   p.width = o.width;
   p.height = o.height;

@@ -24,6 +24,14 @@ Camera SceneCamera(const Scene& scene, const CameraSettings& c, const std::strin
 
 Camera ChooseCamera(const Scene& scene, const CameraSettings& c, const std::string& path) {
   Camera cam = SceneCamera(scene, c, path);
+  if (c.matrix) {
+    try {
+      cam = PlacedByMatrix(cam, *c.matrix);
+    } catch (const Error& e) {
+      throw Error(path + ": " + e.what());
+    }
+    cam.name += " placed by a matrix";
+  }
   const glm::vec3 up = c.up.value_or(glm::vec3(0.0f, 1.0f, 0.0f));
   const glm::vec3 pivot = c.lookAt.value_or(scene.bounds.Center());
   try {

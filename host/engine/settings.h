@@ -39,7 +39,8 @@ struct SceneSettings {
 
 // A scene camera (or, in a scene without one, a camera framing it), moved and aimed.
 struct CameraSettings {
-  std::optional<uint32_t> index;  // the scene's camera (default 0)
+  std::optional<uint32_t> index;    // the scene's camera (default 0)
+  std::optional<glm::mat4> matrix;  // placed instead by this camera-to-world matrix
   std::optional<glm::vec3> lookFrom, lookAt, up;
   std::optional<double> fov;    // vertical, degrees (perspective cameras)
   std::optional<double> orbit;  // degrees about the up axis through the look-at point

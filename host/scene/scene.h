@@ -157,6 +157,11 @@ Camera DefaultCamera(const Bounds3f& bounds);
 // the image; its lens (perspective or orthographic, field of view) unchanged. Throws
 // Error when `from` and `at` coincide or `up` lies along the view.
 Camera LookAt(Camera cam, glm::vec3 from, glm::vec3 at, glm::vec3 up);
+// `cam` placed by a camera-to-world matrix (column-major, as glTF nodes hold them): at its
+// translation, looking along its −Z with its +Y up; scale and shear do not distort the
+// view. Throws Error for a matrix that is not finite and affine, or whose −Z and +Y are
+// not independent.
+Camera PlacedByMatrix(Camera cam, const glm::mat4& cameraToWorld);
 // `cam` turned by `degrees` about the axis along `up` through `pivot`, counter-clockwise
 // seen from above (from where `up` points): position, view and up turn together.
 Camera Orbit(Camera cam, glm::vec3 pivot, glm::vec3 up, float degrees);

@@ -10,6 +10,8 @@
 #include <new>
 #include <utility>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "engine/loaded_scene.h"
 #include "session/aov.h"
 #include "session/budget.h"
@@ -63,9 +65,14 @@ FrameRequest ToRequest(const api::Camera& c, const api::RenderOptions& o, const 
     return v ? std::optional<glm::vec3>(glm::vec3((*v)[0], (*v)[1], (*v)[2])) : std::nullopt;
   };
   FrameRequest r;
-  r.camera = {c.index,        vec3(c.lookFrom),
-              vec3(c.lookAt), vec3(c.up),
-              c.fovDegrees,   c.orbitDegrees != 0.0 ? std::optional<double>(c.orbitDegrees) : std::nullopt};
+  CameraSettings& camera = r.camera;
+  camera.index = c.index;
+  if (c.matrix) camera.matrix = glm::make_mat4(c.matrix->data());
+  camera.lookFrom = vec3(c.lookFrom);
+  camera.lookAt = vec3(c.lookAt);
+  camera.up = vec3(c.up);
+  camera.fov = c.fovDegrees;
+  if (c.orbitDegrees != 0.0) camera.orbit = c.orbitDegrees;
   PictureSettings& p = r.picture;
   p.width = o.width;
   p.height = o.height;

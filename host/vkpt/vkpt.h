@@ -58,11 +58,14 @@ struct SceneOptions {
   float environmentIntensity = 1.0f;
 };
 
-// The file's camera `index` (without cameras: one framing the scene), then moved to
-// lookFrom, aimed at lookAt with `up` up, turned about `up` through the look-at point (or
-// the scene's centre) and given a vertical field of view.
+// The file's camera `index` (without cameras: one framing the scene), or its lens placed by
+// `matrix`; then moved to lookFrom, aimed at lookAt with `up` up, turned about `up` through
+// the look-at point (or the scene's centre) and given a vertical field of view.
 struct Camera {
   std::optional<uint32_t> index;
+  // Camera-to-world, column-major as glTF stores node matrices: the camera stands at its
+  // translation and looks along its −Z with its +Y up.
+  std::optional<std::array<float, 16>> matrix;
   std::optional<std::array<float, 3>> lookFrom, lookAt, up;
   std::optional<double> fovDegrees;
   double orbitDegrees = 0.0;
