@@ -140,7 +140,8 @@ TEST(Api, FailuresAreErrorsNamingTheirCause) {
   api::Scene scene(kCornell, cpu);
   api::RenderOptions bad = Small();
   bad.aovs = {"depht"};
-  EXPECT_EQ(message([&] { scene.Render(api::Camera{}, bad); }), "unknown AOV \"depht\"");
+  EXPECT_EQ(message([&] { scene.Render(api::Camera{}, bad); }),
+            "unknown AOV \"depht\" (albedo, normal, depth, position, variance, spp, heatmap or all)");
   api::Camera third;
   third.index = 3;
   EXPECT_NE(message([&] { scene.Render(third, Small()); }).find("out of range"), std::string::npos);

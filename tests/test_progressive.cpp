@@ -21,6 +21,7 @@
 #include "image/image_compare.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
+#include "session/budget.h"
 #include "session/chunked_frame.h"
 #include "session/local_passes.h"
 #include "session/noise_estimate.h"
@@ -183,6 +184,23 @@ TEST(Progressive, DecisionPointsAreFixedSampleCounts) {
   for (auto [spp, next] : chunked) EXPECT_EQ(NextDecisionPoint(spp, 16), next) << spp;
   EXPECT_EQ(NextDecisionPoint(0, 40), 40u);
   EXPECT_EQ(NextDecisionPoint(40, 40), 80u);
+}
+
+// The budget the command line and the library both derive from what a user states.
+TEST(Progressive, BudgetDefaultsFollowWhatIsStated) {
+  EXPECT_EQ(BudgetFor({}).maxSpp, 64u);
+  EXPECT_FALSE(BudgetFor({}).adaptive);
+  EXPECT_EQ(BudgetFor({std::nullopt, 2.0, std::nullopt, std::nullopt}).maxSpp, kBudgetMaxSpp);
+  const RenderBudget noise = BudgetFor({std::nullopt, std::nullopt, 0.004, std::nullopt});
+  EXPECT_EQ(noise.maxSpp, kBudgetMaxSpp);
+  EXPECT_TRUE(noise.adaptive);
+  EXPECT_EQ(noise.adaptiveThreshold, 0.004);
+  const RenderBudget stated = BudgetFor({100u, 2.0, 0.004, false, 5.0, 16});
+  EXPECT_EQ(stated.maxSpp, 100u);
+  EXPECT_FALSE(stated.adaptive);
+  EXPECT_EQ(stated.seconds, 2.0);
+  EXPECT_EQ(stated.checkpointSeconds, 5.0);
+  EXPECT_EQ(stated.chunkSpp, 16u);
 }
 
 TEST(Progressive, PassPlanKeepsToTheBudgets) {

@@ -6,6 +6,7 @@
 
 #include "app/json_object.h"
 #include "util/byte_size.h"
+#include "util/error.h"
 
 namespace vkpt {
 
@@ -186,16 +187,11 @@ OptionValue AovValue() {
   std::vector<std::string> names;
   for (int k = 0; k < kAovCount; ++k) names.push_back(AovName(Aov(k)));
   names.push_back("all");
-  auto set = [names](Options& o, const GivenOption& g) {
-    o.aovs.clear();
-    for (const std::string& name : SplitCommas(g.value())) {
-      if (name == "all") {
-        for (int k = 0; k < kAovCount; ++k) o.aovs.push_back(Aov(k));
-      } else if (std::optional<Aov> aov = AovFromName(name)) {
-        if (std::find(o.aovs.begin(), o.aovs.end(), *aov) == o.aovs.end()) o.aovs.push_back(*aov);
-      } else {
-        throw UsageError(g.name + ": unknown AOV \"" + name + "\" (" + OrList(names) + ")");
-      }
+  auto set = [](Options& o, const GivenOption& g) {
+    try {
+      o.aovs = AovsFromNames(SplitCommas(g.value()));
+    } catch (const Error& e) {
+      throw UsageError(g.name + ": " + e.what());
     }
   };
   auto json = [](const Options& o) {

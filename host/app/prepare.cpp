@@ -1,6 +1,5 @@
 #include "app/prepare.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -55,7 +54,7 @@ FrameRequest RequestFrom(const Options& o, const EngineLog& log, uint32_t ranks)
   FrameShape& shape = r.shape;
   shape.compare = o.compare;
   shape.ranks = ranks;
-  shape.aovPass = o.denoise || std::any_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass);
+  shape.aovPass = o.denoise || NeedsAovPass(o.aovs);
   shape.aovChannels = AovChannels(o.aovs);
   shape.denoise = o.denoise;
   shape.exrOutput = FormatFromPath(o.out) == ImageFormat::Exr;

@@ -2,7 +2,6 @@
 
 #include <signal.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -19,17 +18,10 @@ namespace vkpt {
 
 SessionSettings SettingsFromOptions(const Options& o, const RenderBackend& backend) {
   SessionSettings s;
-  RenderBudget& b = s.budget;
-  b.maxSpp = o.spp;
-  b.seconds = o.time;
-  b.noiseTarget = o.noiseTarget;
-  b.adaptive = o.Adaptive();
-  if (o.noiseTarget) b.adaptiveThreshold = *o.noiseTarget;
-  b.checkpointSeconds = o.checkpoint;
-  b.chunkSpp = o.chunkSpp;
+  s.budget = BudgetFor({o.spp, o.time, o.noiseTarget, o.adaptive, o.checkpoint, o.chunkSpp});
   s.checkpointPath = o.out;
   s.display = o.Display();
-  s.aovPass = std::any_of(o.aovs.begin(), o.aovs.end(), NeedsAovPass);
+  s.aovPass = NeedsAovPass(o.aovs);
   if (o.denoise) s.denoise = backend.MakeDenoiser();
   return s;
 }

@@ -40,6 +40,14 @@ glm::vec3 Turbo(float x) {
       0.0f, 1.0f);
 }
 
+// "albedo, normal, … heatmap or all".
+std::string KnownNames() {
+  std::string list;
+  for (const char* name : kNames) list += std::string(name) + ", ";
+  list.resize(list.size() - 2);
+  return list + " or all";
+}
+
 uint8_t Byte(float unit) { return uint8_t(std::lround(std::clamp(unit, 0.0f, 1.0f) * 255.0f)); }
 
 // The PNG picture of an AOV: albedo through the sRGB curve; normals as n/2 + 1/2 (a
@@ -102,6 +110,27 @@ std::optional<Aov> AovFromName(std::string_view name) {
   for (int k = 0; k < kAovCount; ++k)
     if (name == kNames[k]) return Aov(k);
   return std::nullopt;
+}
+
+bool NeedsAovPass(const std::vector<Aov>& aovs) {
+  return std::any_of(aovs.begin(), aovs.end(), [](Aov aov) { return NeedsAovPass(aov); });
+}
+
+std::vector<Aov> AovsFromNames(const std::vector<std::string>& names) {
+  std::vector<Aov> aovs;
+  auto add = [&aovs](Aov aov) {
+    if (std::find(aovs.begin(), aovs.end(), aov) == aovs.end()) aovs.push_back(aov);
+  };
+  for (const std::string& name : names) {
+    if (name == "all") {
+      for (int k = 0; k < kAovCount; ++k) add(Aov(k));
+    } else if (const std::optional<Aov> aov = AovFromName(name)) {
+      add(*aov);
+    } else {
+      throw Error("unknown AOV \"" + name + "\" (" + KnownNames() + ")");
+    }
+  }
+  return aovs;
 }
 
 bool NeedsAovPass(Aov aov) { return aov != Aov::kVariance && aov != Aov::kSpp; }

@@ -28,9 +28,14 @@ constexpr int kAovCount = 7;
 const char* AovName(Aov aov);  // "albedo", …
 std::optional<Aov> AovFromName(std::string_view name);
 
+// The AOVs named, in order, each once; "all" names every AOV. Throws vkpt::Error for an
+// unknown name, listing the known ones.
+std::vector<Aov> AovsFromNames(const std::vector<std::string>& names);
+
 // Whether the AOV comes from the AOV pass (FrameRenderer::RenderAovs); variance and spp
 // come from the render's own sums.
 bool NeedsAovPass(Aov aov);
+bool NeedsAovPass(const std::vector<Aov>& aovs);  // any of them
 
 // Float channels of these AOVs' layers (3 for albedo, 1 for depth, …).
 uint32_t AovChannels(const std::vector<Aov>& aovs);

@@ -26,6 +26,18 @@ struct RenderBudget {
   bool Decisions() const { return adaptive || noiseTarget.has_value(); }
 };
 
+// A budget as a user states it, the command line and the library alike; what is not
+// stated takes its default here.
+struct BudgetRequest {
+  std::optional<uint32_t> spp;  // default 64, or kBudgetMaxSpp given a time or noise target
+  std::optional<double> seconds;
+  std::optional<double> noiseTarget;
+  std::optional<bool> adaptive;  // default: on with a noise target, whose threshold it takes
+  double checkpointSeconds = 0.0;
+  uint32_t chunkSpp = 1;
+};
+RenderBudget BudgetFor(const BudgetRequest& request);
+
 // kConverged: adaptive sampling without a noise target found every pixel below its
 // threshold before --spp.
 enum class StopReason { kSpp, kTime, kNoiseTarget, kConverged, kSignal };

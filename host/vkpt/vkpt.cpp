@@ -5,7 +5,6 @@
 // vkpt::Backend) share names with the public ones of vkpt::api, so each internal header is
 // read before those exist, and below the public types are named api::… and the internal
 // ones only through the engine's structs.
-#include <algorithm>
 #include <exception>
 #include <new>
 #include <utility>
@@ -43,21 +42,8 @@ SceneSettings ToSettings(const std::string& path, const api::SceneOptions& o) {
   return s;
 }
 
-std::vector<Aov> ToAovs(const std::vector<std::string>& names) {
-  std::vector<Aov> aovs;
-  for (const std::string& name : names) {
-    std::vector<Aov> named;
-    if (name == "all") {
-      for (int k = 0; k < kAovCount; ++k) named.push_back(Aov(k));
-    } else if (const std::optional<Aov> aov = AovFromName(name)) {
-      named.push_back(*aov);
-    } else {
-      throw api::Error("unknown AOV \"" + name + "\"");
-    }
-    for (Aov aov : named)
-      if (std::find(aovs.begin(), aovs.end(), aov) == aovs.end()) aovs.push_back(aov);
-  }
-  return aovs;
+RenderBudget ToBudget(const api::RenderOptions& o) {
+  return BudgetFor({o.spp, o.seconds, o.noiseTarget, o.adaptive, 0.0, o.chunkSpp});
 }
 
 FrameRequest ToRequest(const api::Camera& c, const api::RenderOptions& o, const std::vector<Aov>& aovs) {
@@ -77,14 +63,14 @@ FrameRequest ToRequest(const api::Camera& c, const api::RenderOptions& o, const 
   p.width = o.width;
   p.height = o.height;
   p.seed = o.seed;
-  p.spp = o.spp.value_or(o.seconds || o.noiseTarget ? kBudgetMaxSpp : 64);
+  p.spp = ToBudget(o).maxSpp;
   p.maxDepth = o.maxDepth;
   p.rrDepth = o.rrDepth;
   p.textureLod = o.textureLod;
   p.background = vec3(o.background);
   p.envRotation = o.environmentRotation;
   p.time = o.time;
-  r.shape.aovPass = o.denoise || std::any_of(aovs.begin(), aovs.end(), NeedsAovPass);
+  r.shape.aovPass = o.denoise || NeedsAovPass(aovs);
   r.shape.aovChannels = AovChannels(aovs);
   r.shape.denoise = o.denoise;
   return r;
@@ -136,19 +122,13 @@ std::string api::Scene::Device() const {
 api::RenderResult api::Scene::Render(const Camera& camera, const RenderOptions& options) {
   return Translated([&] {
     LoadedScene& loaded = *impl_->loaded;
-    const std::vector<Aov> aovs = ToAovs(options.aovs);
+    const std::vector<Aov> aovs = AovsFromNames(options.aovs);
     const PreparedFrame frame = loaded.Prepare(ToRequest(camera, options, aovs));
     const std::unique_ptr<FrameRenderer> renderer = loaded.BeginFrame(frame.params, options.batch);
     LocalPasses source(*renderer, options.chunkSpp);
     SessionSettings settings;
-    RenderBudget& b = settings.budget;
-    b.maxSpp = frame.params.sampleCount;
-    b.seconds = options.seconds;
-    b.noiseTarget = options.noiseTarget;
-    b.adaptive = options.adaptive.value_or(options.noiseTarget.has_value());
-    if (options.noiseTarget) b.adaptiveThreshold = *options.noiseTarget;
-    b.chunkSpp = options.chunkSpp;
-    settings.aovPass = std::any_of(aovs.begin(), aovs.end(), NeedsAovPass);
+    settings.budget = ToBudget(options);
+    settings.aovPass = NeedsAovPass(aovs);
     if (options.denoise) settings.denoise = loaded.Backend().MakeDenoiser();
     SessionHooks hooks;
     hooks.progress = options.progress;
