@@ -4,6 +4,12 @@
 # installs appends its own to the global property VKPT_PACKAGE_DEPENDS beside its link
 # line (host/CMakeLists.txt, bench/CMakeLists.txt). The test Package.Deb checks the list
 # against what the installed programs really load.
+# The CMake package of the library (host/CMakeLists.txt installs its targets).
+include(CMakePackageConfigHelpers)
+write_basic_package_version_file("${CMAKE_BINARY_DIR}/vkptConfigVersion.cmake" COMPATIBILITY SameMajorVersion)
+install(FILES cmake/vkptConfig.cmake "${CMAKE_BINARY_DIR}/vkptConfigVersion.cmake"
+        DESTINATION "${CMAKE_INSTALL_LIBDIR}/cmake/vkpt")
+
 get_property(depends GLOBAL PROPERTY VKPT_PACKAGE_DEPENDS)
 list(REMOVE_DUPLICATES depends)
 list(SORT depends)

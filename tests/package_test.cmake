@@ -1,13 +1,14 @@
 # cmake -DCPACK=<cpack> -DCONFIG=<build>/CPackConfig.cmake -DVERSION=<x.y.z> -DWORK=<scratch dir>
-#       -P tests/package_test.cmake
+#       -DSOURCE_DIR=<checkout> -P tests/package_test.cmake
 #
 # The Debian package is built and used as a user would: `cpack -G DEB`, unpacked with
 # `dpkg -x` into a scratch root (no root rights, nothing installed on the machine), and
 # the unpacked vkpt must run. Fails if the install rules are missing (no programs in the
 # package), and if a shared library the programs load comes from a Debian package the
-# package's Depends does not list.
+# package's Depends does not list. The library's CMake package in it must build the C++
+# example of docs/api.md (docs/examples/cpp), which then renders the Cornell box.
 cmake_minimum_required(VERSION 3.25)
-foreach(var CPACK CONFIG VERSION WORK)
+foreach(var CPACK CONFIG VERSION WORK SOURCE_DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "package_test.cmake: -D${var}=... is required")
   endif()
@@ -37,6 +38,12 @@ foreach(program vkpt vkpt-bench)
     message(FATAL_ERROR "the package has no /usr/bin/${program} (are its install() rules missing?)")
   endif()
 endforeach()
+file(GLOB_RECURSE library "${root}/usr/lib*/libvkpt.so")
+foreach(file "${root}/usr/include/vkpt/vkpt.h" "${library}")
+  if(NOT EXISTS "${file}")
+    message(FATAL_ERROR "the package has no libvkpt.so or include/vkpt/vkpt.h (are its install() rules missing?)")
+  endif()
+endforeach()
 run("${root}/usr/bin/vkpt" --version)
 if(NOT out MATCHES "^vkpt ${VERSION}")
   message(FATAL_ERROR "`vkpt --version` from the package printed \"${out}\", not \"vkpt ${VERSION}\"")
@@ -50,10 +57,11 @@ string(REGEX REPLACE " *\\([^)]*\\)" "" depends "${out}")  # drop version constr
 string(REGEX REPLACE "[ \n]" "" depends "${depends}")
 string(REPLACE "," ";" depends "${depends}")
 set(missing "")
-foreach(program vkpt vkpt-bench)
-  run(readelf -d "${root}/usr/bin/${program}")
+foreach(file "${root}/usr/bin/vkpt" "${root}/usr/bin/vkpt-bench" "${library}")
+  get_filename_component(program "${file}" NAME)
+  run(readelf -d "${file}")
   string(REGEX MATCHALL "\\(NEEDED\\)[^[]*\\[[^]]+\\]" needed "${out}")
-  run(ldd "${root}/usr/bin/${program}")
+  run(ldd "${file}")
   set(ldd "${out}")
   string(REPLACE "\n" ";" ldd_lines "${ldd}")
   foreach(entry IN LISTS needed)
@@ -99,4 +107,15 @@ if(missing)
                       "VKPT_PACKAGE_DEPENDS beside the link line (see cmake/Package.cmake)")
 endif()
 string(REPLACE ";" ", " depends "${depends}")
+
+# A program built against the package's CMake config (find_package(vkpt)) renders.
+set(example "${SOURCE_DIR}/docs/examples/cpp")
+run("${CMAKE_COMMAND}" -S "${example}" -B "${WORK}/example" "-DCMAKE_PREFIX_PATH=${root}/usr")
+run("${CMAKE_COMMAND}" --build "${WORK}/example")
+run("${WORK}/example/render_views" "${SOURCE_DIR}/scenes/cornell.gltf" "${WORK}/views" cpu)
+foreach(view 0 1 2 3)
+  if(NOT EXISTS "${WORK}/views.${view}.exr" OR NOT out MATCHES "views.${view}.exr: 128 x 128, 16 spp on cpu")
+    message(FATAL_ERROR "render_views built against the package did not render view ${view}:\n${out}")
+  endif()
+endforeach()
 message(STATUS "${debs}: vkpt ${VERSION} runs from the unpacked package; Depends: ${depends}")

@@ -12,10 +12,16 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "engine/loaded_scene.h"
+#include "image/image.h"
+#include "image/view_transform.h"
 #include "session/aov.h"
 #include "session/budget.h"
 #include "session/local_passes.h"
 #include "session/render_session.h"
+
+namespace vkpt {
+using InternalImage = Image;  // vkpt::Image is ambiguous once api::Image exists
+}  // namespace vkpt
 
 #include "vkpt/vkpt.h"
 
@@ -81,6 +87,25 @@ api::Image ToImage(const std::vector<glm::vec3>& pixels, uint32_t width, uint32_
   image.data.reserve(pixels.size() * 3);
   for (const glm::vec3& p : pixels) image.data.insert(image.data.end(), {p.r, p.g, p.b});
   return image;
+}
+
+// The internal image of a public one's RGB values (no variance: files do not hold it).
+InternalImage ToInternal(const api::Image& image) {
+  if (image.channels != 3 || image.data.size() != size_t(image.width) * image.height * 3)
+    throw api::Error("an image to save needs 3 channels of width × height values");
+  InternalImage internal(image.width, image.height);
+  for (size_t i = 0; i < internal.pixels.size(); ++i)
+    internal.pixels[i] = glm::vec3(image.data[3 * i], image.data[3 * i + 1], image.data[3 * i + 2]);
+  return internal;
+}
+
+AovLayer ToLayer(const std::string& name, const api::Image& aov, const api::Image& image) {
+  const std::optional<Aov> known = AovFromName(name);
+  if (!known) throw api::Error("cannot save an AOV named \"" + name + "\"");
+  if (aov.width != image.width || aov.height != image.height || aov.channelNames.size() != aov.channels ||
+      aov.data.size() != size_t(aov.width) * aov.height * aov.channels)
+    throw api::Error("AOV \"" + name + "\" does not match the image's size");
+  return {*known, aov.channelNames, aov.data};
 }
 
 // Any failure inside as the one public exception, its message kept.
@@ -149,6 +174,23 @@ api::RenderResult api::Scene::Render(const Camera& camera, const RenderOptions& 
     result.seconds = rendered.seconds + rendered.aovSeconds + rendered.denoiseSeconds;
     result.engine = rendered.engine;
     return result;
+  });
+}
+
+std::vector<std::string> api::Save(const RenderResult& result, const std::string& path, const std::string& view,
+                                   float exposure) {
+  return Translated([&] {
+    const std::optional<View> known = ViewFromName(view);
+    if (!known) throw api::Error("unknown view \"" + view + "\" (neutral, agx, aces or clamp)");
+    const DisplayTransform display{*known, exposure};
+    std::vector<AovLayer> layers;
+    for (const auto& [name, aov] : result.aovs) layers.push_back(ToLayer(name, aov, result.image));
+    std::vector<std::string> files = WriteImageWithAovs(ToInternal(result.image), layers, path, display);
+    if (result.raw) {
+      files.push_back(SiblingPath(path, "raw"));
+      WriteImage(ToInternal(*result.raw), files.back(), display);
+    }
+    return files;
   });
 }
 

@@ -26,6 +26,13 @@
 #include <string>
 #include <vector>
 
+// What the shared library libvkpt.so exports: these declarations and nothing else.
+#if defined(__GNUC__)
+#define VKPT_API __attribute__((visibility("default")))
+#else
+#define VKPT_API
+#endif
+
 namespace vkpt {
 // The public names live in an inline namespace: the library's own sources have types of
 // the same names (vkpt::Scene, vkpt::Image) that these never meet in one scope.
@@ -33,7 +40,7 @@ inline namespace api {
 
 // Every failure: a file that cannot be read or is malformed, a setting out of range, a
 // device that is missing, memory beyond the limit. The message names what is at fault.
-class Error : public std::runtime_error {
+class VKPT_API Error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
@@ -110,7 +117,7 @@ struct RenderResult {
   std::string engine;    // the device or "cpu"
 };
 
-class Scene {
+class VKPT_API Scene {
  public:
   // Loads and checks the file and the environment, and opens the device. Throws Error.
   explicit Scene(const std::string& path, const SceneOptions& options = {});
@@ -129,6 +136,15 @@ class Scene {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// Writes a render as the command line writes it, by the extension of `path`: .exr holds the
+// image and its AOVs as layers ("depth.Z", …); beside a .pfm or .png each AOV goes to
+// NAME.<aov>.EXT; with RenderOptions::denoise the raw image goes to NAME.raw.EXT. A PNG shows
+// the radiance after `exposure` stops through `view` ("neutral": Khronos PBR Neutral,
+// "agx", "aces" or "clamp"). Each file is written whole or not at all. Returns the paths
+// written, `path` first. Throws Error.
+VKPT_API std::vector<std::string> Save(const RenderResult& result, const std::string& path,
+                                       const std::string& view = "neutral", float exposure = 0.0f);
 
 }  // namespace api
 }  // namespace vkpt

@@ -1,0 +1,102 @@
+// vkpt::Save writes a library render as the command line writes the same render: the
+// same bytes in EXR (with AOV layers), PNG (through the default view, AOV pictures
+// beside it) and PFM, and the raw image beside a denoised one.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "test_util.h"
+
+#include "vkpt/vkpt.h"
+
+namespace vkpt {
+namespace {
+
+const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
+
+api::RenderOptions Small() {
+  api::RenderOptions o;
+  o.width = 24;
+  o.height = 16;
+  o.spp = o.chunkSpp = 4;
+  o.seed = 5;
+  return o;
+}
+
+// The command line's render of the Cornell box on the CPU with `extra`, into `out`.
+void CliRender(std::vector<std::string> extra, const std::string& out) {
+  std::vector<std::string> args = {"--scene", kCornell, "--backend", "cpu", "--width", "24", "--height", "16",
+                                   "--spp",   "4",      "--chunk",   "4",   "--seed",  "5",  "--out",    out};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const test::ProcessResult r = test::RunVkpt(args);
+  ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
+}
+
+api::Scene CpuScene() {
+  api::SceneOptions cpu;
+  cpu.backend = api::Backend::Cpu;
+  return api::Scene(kCornell, cpu);
+}
+
+TEST(ApiSave, FilesEqualTheCommandLines) {
+  const std::string dir = test::FreshTempDirectory("api-save");
+  api::Scene scene = CpuScene();
+  api::RenderOptions options = Small();
+  options.aovs = {"normal", "depth", "albedo"};
+  const api::RenderResult result = scene.Render(api::Camera{}, options);
+  for (const std::string ext : {"exr", "png", "pfm"}) {
+    CliRender({"--aov", "normal,depth,albedo"}, dir + "/cli." + ext);
+    const std::vector<std::string> files = Save(result, dir + "/api." + ext);
+    const std::vector<std::string> tags =
+        ext == "exr" ? std::vector<std::string>{""} : std::vector<std::string>{"", ".albedo", ".normal", ".depth"};
+    EXPECT_EQ(files.size(), tags.size()) << ext;
+    for (const std::string& tag : tags)
+      EXPECT_EQ(test::ReadFile(dir + "/api" + tag + "." + ext), test::ReadFile(dir + "/cli" + tag + "." + ext))
+          << tag << "." << ext;
+  }
+  // Another view and exposure change the picture, as --view and --exposure do.
+  CliRender({"--view", "agx", "--exposure", "1.5"}, dir + "/agx.png");
+  Save(scene.Render(api::Camera{}, Small()), dir + "/api-agx.png", "agx", 1.5f);
+  EXPECT_EQ(test::ReadFile(dir + "/api-agx.png"), test::ReadFile(dir + "/agx.png"));
+  EXPECT_NE(test::ReadFile(dir + "/api-agx.png"), test::ReadFile(dir + "/api.png"));
+}
+
+TEST(ApiSave, DenoisedRenderKeepsItsRawImageBeside) {
+  const std::string dir = test::FreshTempDirectory("api-save-denoise");
+  api::Scene scene = CpuScene();
+  api::RenderOptions options = Small();
+  options.denoise = true;
+  const std::vector<std::string> files = Save(scene.Render(api::Camera{}, options), dir + "/api.pfm");
+  ASSERT_EQ(files, (std::vector<std::string>{dir + "/api.pfm", dir + "/api.raw.pfm"}));
+  CliRender({"--denoise"}, dir + "/cli.pfm");
+  EXPECT_EQ(test::ReadFile(dir + "/api.pfm"), test::ReadFile(dir + "/cli.pfm"));
+  EXPECT_EQ(test::ReadFile(dir + "/api.raw.pfm"), test::ReadFile(dir + "/cli.raw.pfm"));
+}
+
+TEST(ApiSave, RefusesWhatItCannotWrite) {
+  const std::string dir = test::FreshTempDirectory("api-save-errors");
+  api::Scene scene = CpuScene();
+  api::RenderResult result = scene.Render(api::Camera{}, Small());
+  auto message = [&](const std::string& path, const std::string& view = "neutral") {
+    try {
+      Save(result, path, view);
+    } catch (const api::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(dir + "/a.png", "filmic"), "unknown view \"filmic\" (neutral, agx, aces or clamp)");
+  EXPECT_NE(message(dir + "/a.jpg").find("a.jpg"), std::string::npos) << message(dir + "/a.jpg");
+  result.aovs["depth"] = {2, 2, 1, {"Z"}, std::vector<float>(4, 1.0f)};
+  EXPECT_EQ(message(dir + "/a.exr"), "AOV \"depth\" does not match the image's size");
+  result.aovs.clear();
+  result.image.data.pop_back();
+  EXPECT_EQ(message(dir + "/a.exr"), "an image to save needs 3 channels of width × height values");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/a.exr"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/a.png"));
+}
+
+}  // namespace
+}  // namespace vkpt
