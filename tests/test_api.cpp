@@ -166,5 +166,26 @@ TEST(Api, DenoisedImageKeepsTheRawOne) {
   EXPECT_EQ(r.aovs.at("normal").channelNames, (std::vector<std::string>{"X", "Y", "Z"}));
 }
 
+// A cancel ends the render between passes; the image is the render of the samples taken.
+TEST(Api, CancelEndsTheRenderWithTheSamplesTaken) {
+  api::SceneOptions cpu;
+  cpu.backend = api::Backend::Cpu;
+  api::Scene scene(kCornell, cpu);
+  api::RenderOptions o = Small();
+  o.spp = 256;
+  int asked = 0;
+  o.cancel = [&asked] { return ++asked == 3; };
+  const api::RenderResult cancelled = scene.Render(api::Camera{}, o);
+  EXPECT_EQ(asked, 3);
+  EXPECT_EQ(cancelled.stoppedBy, "cancelled");
+  ASSERT_GT(cancelled.spp, 0u);
+  ASSERT_LT(cancelled.spp, 256u);
+  api::RenderOptions fixed = Small();
+  fixed.spp = cancelled.spp;
+  const api::RenderResult whole = scene.Render(api::Camera{}, fixed);
+  EXPECT_EQ(whole.stoppedBy, "spp");
+  EXPECT_EQ(cancelled.image.data, whole.image.data);
+}
+
 }  // namespace
 }  // namespace vkpt

@@ -16,6 +16,13 @@
 
 namespace vkpt {
 
+namespace {
+
+// SIGINT and SIGTERM end a render between passes (util/graceful_stop.h).
+bool SignalArrived() { return GracefulStop::Signal() != 0; }
+
+}  // namespace
+
 SessionSettings SettingsFromOptions(const Options& o, const RenderBackend& backend) {
   SessionSettings s;
   s.budget = BudgetFor({o.spp, o.time, o.noiseTarget, o.adaptive, o.checkpoint, o.chunkSpp});
@@ -23,6 +30,7 @@ SessionSettings SettingsFromOptions(const Options& o, const RenderBackend& backe
   s.display = o.Display();
   s.aovPass = NeedsAovPass(o.aovs);
   if (o.denoise) s.denoise = backend.MakeDenoiser();
+  s.stop = SignalArrived;
   return s;
 }
 
@@ -59,6 +67,7 @@ RenderedFrame RenderReference(const Prepared& p, const Options& o) {
   SessionSettings settings;
   settings.budget.maxSpp = o.spp;
   settings.budget.chunkSpp = o.chunkSpp;
+  settings.stop = SignalArrived;
   return Render(source, settings, Options{});
 }
 

@@ -8,6 +8,7 @@
 
 #include "image/image_compare.h"
 #include "util/byte_size.h"
+#include "util/graceful_stop.h"
 
 namespace vkpt {
 namespace {
@@ -64,7 +65,7 @@ std::string StopReasonText(const RenderedFrame& frame, const Options& o) {
     case StopReason::kNoiseTarget: std::snprintf(why, sizeof why, "--noise-target %g", *o.noiseTarget); break;
     case StopReason::kConverged: std::snprintf(why, sizeof why, "every pixel converged (--adaptive)"); break;
     case StopReason::kSignal:
-      std::snprintf(why, sizeof why, "%s", frame.signal == SIGTERM ? "SIGTERM" : "SIGINT");
+      std::snprintf(why, sizeof why, "%s", GracefulStop::Signal() == SIGTERM ? "SIGTERM" : "SIGINT");
       break;
     default: std::snprintf(why, sizeof why, "--spp %u", o.spp); break;
   }

@@ -4,7 +4,6 @@
 #include <chrono>
 
 #include "session/chunked_frame.h"
-#include "util/graceful_stop.h"
 
 namespace vkpt {
 
@@ -19,9 +18,10 @@ uint32_t DealtChunks::Advance(const SampleRequest& request) {
   if (request.done >= request.limit) return 0;
   const uint32_t limit = (request.limit + plan_.chunkSpp - 1) / plan_.chunkSpp;  // chunks before it
   dealer_.Open(limit, std::vector<uint8_t>(request.active.begin(), request.active.end()));
-  // A signal or the deadline stops the dealing; the chunks dealt still come back.
+  // A stop or the deadline ends the dealing; the chunks dealt still come back.
   const auto stopDealing = [&request] {
-    return GracefulStop::Signal() != 0 || (request.deadline && std::chrono::steady_clock::now() >= *request.deadline);
+    return (request.stop && request.stop()) ||
+           (request.deadline && std::chrono::steady_clock::now() >= *request.deadline);
   };
   const uint32_t chunk = request.done / plan_.chunkSpp;
   std::optional<FrameSums> sums = dealer_.Next(stopDealing);

@@ -4,8 +4,6 @@
 #include <chrono>
 #include <cmath>
 
-#include "util/graceful_stop.h"
-
 namespace vkpt {
 namespace {
 
@@ -31,8 +29,8 @@ uint32_t NextPassSpp(const PassPlan& plan, uint32_t limit, std::optional<double>
 }
 
 uint32_t LocalPasses::Advance(const SampleRequest& request) {
-  // A signal ends the render between passes: the pass under way is always finished.
-  if (GracefulStop::Signal()) return 0;
+  // A stop ends the render between passes: the pass under way is always finished.
+  if (request.stop && request.stop()) return 0;
   plan_.done = request.done;
   std::optional<double> secondsLeft;
   if (request.deadline) secondsLeft = -Since(*request.deadline);

@@ -8,7 +8,6 @@
 #include "image/image.h"
 #include "session/noise_estimate.h"
 #include "util/error.h"
-#include "util/graceful_stop.h"
 
 namespace vkpt {
 namespace {
@@ -31,9 +30,7 @@ class FrameLoop {
       const uint32_t point = budget_.Decisions() ? NextDecisionPoint(done_, budget_.chunkSpp) : UINT32_MAX;
       const uint32_t n = Step(std::min(budget_.maxSpp, point));
       if (n == 0) {
-        stoppedBy_ = done_ >= budget_.maxSpp  ? StopReason::kSpp
-                     : GracefulStop::Signal() ? StopReason::kSignal
-                                              : StopReason::kTime;
+        stoppedBy_ = done_ >= budget_.maxSpp ? StopReason::kSpp : stopped_ ? StopReason::kSignal : StopReason::kTime;
         break;
       }
       std::string line = PassLine(n);
@@ -45,9 +42,16 @@ class FrameLoop {
   }
 
  private:
+  // Whether settings_.stop has said to stop: once it has, the render stays stopped.
+  bool Stopped() {
+    if (!stopped_) stopped_ = settings_.stop();
+    return stopped_;
+  }
+
   // Asks the source for samples before `limit`: how many it added.
   uint32_t Step(uint32_t limit) {
-    SampleRequest request{done_, limit, active_, deadline_, {}};
+    SampleRequest request{done_, limit, active_, deadline_, {}, {}};
+    if (settings_.stop) request.stop = [this] { return Stopped(); };
     if (hooks_.progress) request.progress = [this](double spp) { hooks_.progress(Fraction(spp)); };
     const auto t0 = Clock::now();
     const uint32_t n = source_.Advance(request);
@@ -114,7 +118,6 @@ class FrameLoop {
     r.sums = std::move(sums_);
     r.ranks = source_.Finish();
     r.stoppedBy = *stoppedBy_;
-    r.signal = GracefulStop::Signal();
     r.sppPerPass = std::move(passes_);
     r.spp = done_;
     r.engine = source_.Engine();
@@ -135,6 +138,7 @@ class FrameLoop {
   const Clock::time_point start_ = Clock::now();
   std::optional<Clock::time_point> deadline_;
   std::optional<StopReason> stoppedBy_;
+  bool stopped_ = false;  // settings_.stop said so
   uint32_t done_ = 0;
   std::vector<uint32_t> passes_;
   double stepSeconds_ = 0.0;

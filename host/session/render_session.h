@@ -32,7 +32,6 @@ struct RenderedFrame {
   uint32_t spp = 0;      // samples per pixel of the passes (adaptive: the most any pixel has)
   uint64_t samples = 0;  // every pixel's samples added up
   StopReason stoppedBy = StopReason::kSpp;
-  int signal = 0;                   // kSignal: which one
   double estimatedRelMse = 0.0;     // of the final sums (session/noise_estimate.h)
   uint64_t activePixels = 0;        // adaptive: pixels still taking samples at the end
   uint32_t checkpoints = 0;         // images written during the render
@@ -53,6 +52,8 @@ struct SessionSettings {
   DisplayTransform display;    // of the checkpoint's PNG
   bool aovPass = false;        // render the AOV pass after the frame (--aov, --denoise)
   Denoiser denoise;            // --denoise: filter the image (needs the AOV pass)
+  // Whether to stop between passes (a signal, a caller's cancel): kSignal. Empty: never.
+  std::function<bool()> stop;
 };
 
 struct SessionHooks {

@@ -27,14 +27,17 @@ struct SampleRequest {
   std::optional<std::chrono::steady_clock::time_point> deadline;
   // The frame's samples per pixel so far, fractional within a step, now and then.
   std::function<void(double spp)> progress;
+  // Whether to stop (a signal, a caller's cancel): asked between passes, so every sample
+  // begun is added. Empty: never.
+  std::function<bool()> stop;
 };
 
 class SampleSource {
  public:
   virtual ~SampleSource() = default;
   // Adds the next samples [done, done + n) with done + n ≤ limit and returns n; 0 when
-  // no more will come (the limit is reached, the deadline has passed, or a GracefulStop
-  // signal arrived and every sample begun has been added).
+  // no more will come (the limit is reached, the deadline has passed, or `stop` said so
+  // and every sample begun has been added).
   virtual uint32_t Advance(const SampleRequest& request) = 0;
   virtual FrameSums Sums() = 0;  // the frame's sums so far
   // The AOVs of samples [0, samples) of every pixel (render/film.h), on this process.

@@ -154,6 +154,7 @@ api::RenderResult api::Scene::Render(const Camera& camera, const RenderOptions& 
     SessionSettings settings;
     settings.budget = ToBudget(options);
     settings.aovPass = NeedsAovPass(aovs);
+    settings.stop = options.cancel;
     if (options.denoise) settings.denoise = loaded.Backend().MakeDenoiser();
     SessionHooks hooks;
     hooks.progress = options.progress;
@@ -169,7 +170,7 @@ api::RenderResult api::Scene::Render(const Camera& camera, const RenderOptions& 
     }
     result.spp = rendered.spp;
     result.samples = rendered.samples;
-    result.stoppedBy = StopReasonName(rendered.stoppedBy);
+    result.stoppedBy = rendered.stoppedBy == StopReason::kSignal ? "cancelled" : StopReasonName(rendered.stoppedBy);
     result.estimatedRelMse = rendered.estimatedRelMse;
     result.seconds = rendered.seconds + rendered.aovSeconds + rendered.denoiseSeconds;
     result.engine = rendered.engine;

@@ -95,6 +95,9 @@ struct RenderOptions {
   std::vector<std::string> aovs;                   // albedo, normal, depth, position, variance, spp, heatmap; "all"
   bool denoise = false;                            // image: denoised; raw: before the filter
   std::function<void(double)> progress;            // finished fraction, from the rendering thread
+  // Asked between passes from the rendering thread; true ends the render there with the
+  // samples taken so far (stoppedBy "cancelled"), whose image is returned as any other.
+  std::function<bool()> cancel;
 };
 
 // Float values, row-major from the top row, `channels` interleaved: H × W × C.
@@ -111,7 +114,7 @@ struct RenderResult {
   std::map<std::string, Image> aovs;
   uint32_t spp = 0;       // samples per pixel (adaptive: the most any pixel took)
   uint64_t samples = 0;   // every pixel's samples added up
-  std::string stoppedBy;  // "spp", "time", "noise_target", "converged"
+  std::string stoppedBy;  // "spp", "time", "noise_target", "converged", "cancelled"
   double estimatedRelMse = 0.0;
   double seconds = 0.0;  // rendering, AOV pass and filter
   std::string engine;    // the device or "cpu"
