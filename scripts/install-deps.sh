@@ -13,6 +13,10 @@ packages=(
   libstb-dev libtinyexr-dev             # PNG and EXR writers
   libwebp-dev                           # EXT_texture_webp textures
   libdraco-dev libmeshoptimizer-dev     # KHR_draco_mesh_compression, EXT_meshopt_compression
+  pybind11-dev python3-dev              # the Python module (import vkpt)
+  python3-numpy                         # its arrays
+  python3-pytest python3-venv           # its tests, and installing it into a virtual environment
+  python3-setuptools python3-wheel      # pip install build/python
   libgtest-dev                          # tests
   colord-data                           # tests: the CIE 1931 matching functions (iridescence, dispersion)
   libembree-dev                         # vkpt-bench compares against Embree

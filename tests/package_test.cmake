@@ -108,8 +108,15 @@ if(missing)
 endif()
 string(REPLACE ";" ", " depends "${depends}")
 
-# A program built against the package's CMake config (find_package(vkpt)) renders.
+# A program built against the package's CMake config (find_package(vkpt)) renders: the
+# example docs/api.md shows, verbatim.
 set(example "${SOURCE_DIR}/docs/examples/cpp")
+file(READ "${example}/render_views.cpp" code)
+file(READ "${SOURCE_DIR}/docs/api.md" doc)
+string(FIND "${doc}" "```cpp\n${code}```" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "docs/api.md does not show docs/examples/cpp/render_views.cpp as it is")
+endif()
 run("${CMAKE_COMMAND}" -S "${example}" -B "${WORK}/example" "-DCMAKE_PREFIX_PATH=${root}/usr")
 run("${CMAKE_COMMAND}" --build "${WORK}/example")
 run("${WORK}/example/render_views" "${SOURCE_DIR}/scenes/cornell.gltf" "${WORK}/views" cpu)

@@ -271,7 +271,8 @@ TEST(Cli, FovIsForPerspectiveCameras) {
   const std::string out = TempPath("cli-fov.png");
   ProcessResult ortho = RunVkpt({"--scene", file.path, "--spp", "1", "--width", "8", "--fov", "30", "--out", out});
   EXPECT_TRUE(ortho.ExitedWith(1)) << ortho.Describe();
-  EXPECT_NE(ortho.err.find("--fov is for perspective cameras, and camera 0 is orthographic"), std::string::npos)
+  EXPECT_NE(ortho.err.find("a field of view is for perspective cameras, and camera 0 is orthographic"),
+            std::string::npos)
       << ortho.err;
   EXPECT_FALSE(fs::exists(out));
   ProcessResult wide = RenderCornell(out, {"--fov", "75", "-v"});

@@ -11,11 +11,11 @@ namespace {
 Camera SceneCamera(const Scene& scene, const CameraSettings& c, const std::string& path) {
   const uint32_t index = c.index.value_or(0);
   if (scene.cameras.empty()) {
-    if (c.index) throw Error(path + ": --camera " + std::to_string(index) + " given, but the scene has no cameras");
+    if (c.index) throw Error(path + ": camera " + std::to_string(index) + " asked for, but the scene has no cameras");
     return DefaultCamera(scene.bounds);
   }
   if (index >= scene.cameras.size())
-    throw Error(path + ": --camera " + std::to_string(index) + " is out of range; the scene has " +
+    throw Error(path + ": camera " + std::to_string(index) + " is out of range; the scene has " +
                 std::to_string(scene.cameras.size()) + " camera(s)");
   return scene.cameras[index];
 }
@@ -50,8 +50,8 @@ Camera ChooseCamera(const Scene& scene, const CameraSettings& c, const std::stri
   }
   if (c.fov) {
     if (cam.orthographic)
-      throw Error(path + ": --fov is for perspective cameras, and camera " + std::to_string(c.index.value_or(0)) +
-                  " is orthographic");
+      throw Error(path + ": a field of view is for perspective cameras, and camera " +
+                  std::to_string(c.index.value_or(0)) + " is orthographic");
     cam.yfov = float(*c.fov * 3.14159265358979323846 / 180.0);
   }
   return cam;

@@ -51,6 +51,9 @@ LoadedScene::LoadedScene(const SceneSettings& settings, const EngineLog& log) : 
   PhaseTimer phase;
   asset_ = std::make_unique<GltfAsset>(settings_.path, settings_.load, settings_.choice);
   phase.Lap(times.load);
+  // Posed at once, so that the scene's cameras and bounds are known before a render.
+  asset_->PoseAt(posedAt_);
+  phase.Lap(times.pose);
   environment_ = LoadEnvironment(settings_, scene(), log_, &environmentBytes_);
   phase.Lap(times.environment);
   // The device before the scene's arrays: without one (Backend::Auto) the CPU renders,
@@ -65,11 +68,11 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
   // Without an animation every pose is the same: the first one's arrays serve every render.
   const bool animated = scene().animation >= 0;
   const double time = request.picture.time;
-  if (!posedAt_ || (animated && *posedAt_ != time)) {
+  if (animated && posedAt_ != time) {
     asset_->PoseAt(time);
     posedAt_ = time;
+    phase.Lap(times.pose);
   }
-  phase.Lap(times.pose);
   // A request refused here (its camera, its memory) leaves the scene as it was.
   PreparedFrame frame;
   frame.cameraIndex = request.camera.index.value_or(0);
@@ -78,7 +81,7 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
   ChargeFrame(frame, request);
   if (settings_.once || !animated) asset_->ReleaseSource();  // no other pose will be asked for
   phase.Restart();
-  if (!builtAt_ || *builtAt_ != *posedAt_) {
+  if (!builtAt_ || *builtAt_ != posedAt_) {
     backend_.reset();  // the last pose's device buffers and arrays go before the next's are made
     rs_ = RenderScene{};
     builtAt_.reset();

@@ -1,0 +1,46 @@
+// The pieces of the Python module (module.cpp): option values from Python objects, the
+// Camera type, and a render's result whose images are NumPy arrays.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "vkpt/vkpt.h"
+
+namespace vkpt::python {
+
+namespace py = pybind11;
+
+// "auto", "cpu" or "vulkan"; ValueError for anything else.
+Backend BackendFrom(const std::string& name);
+
+// None (the file's first camera), an int (the file's camera of that index) or a
+// vkpt.Camera; TypeError for anything else.
+Camera CameraFrom(const py::object& camera);
+
+// vkpt.Camera: keyword construction, fields read and written as Python values; the matrix
+// as a 4 × 4 NumPy array M with M @ (x, y, z, 1) in world space.
+void BindCamera(py::module_& m);
+
+// vkpt.Render: one render's images and figures. Its arrays are float32 views of the
+// result's memory (H × W × C, row 0 at the top), which they keep alive.
+class PyRender {
+ public:
+  explicit PyRender(std::shared_ptr<RenderResult> result) : result_(std::move(result)) {}
+  py::array ImageArray() const;
+  py::object RawArray() const;  // None without denoise
+  py::dict AovArrays() const;   // name → array
+  py::dict Channels() const;    // name → channel names ("image", "raw" and each AOV)
+  const RenderResult& Result() const { return *result_; }
+
+ private:
+  py::array View(Image& image) const;
+  std::shared_ptr<RenderResult> result_;
+};
+
+void BindRender(py::module_& m);
+
+}  // namespace vkpt::python

@@ -1,0 +1,167 @@
+// The Python module vkpt._vkpt, which the package vkpt (python/vkpt/__init__.py) re-exports:
+// the library API of vkpt/vkpt.h with images as NumPy arrays (docs/python.md). Renders
+// release the GIL; Ctrl-C or an exception from a progress callback cancels a render
+// between passes and is raised when it returns.
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "python/bindings.h"
+#include "vkpt/vkpt.h"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace vkpt::python {
+namespace {
+
+// A Scene for Python: renders on one Scene are serialised, as the library requires (Python
+// threads may call render at once, the GIL being released while it runs).
+struct PyScene {
+  explicit PyScene(Scene s) : scene(std::move(s)) {}
+  Scene scene;
+  std::mutex rendering;
+};
+
+// One render's callbacks into Python, from the rendering thread: each takes the GIL. The
+// first exception (KeyboardInterrupt from Ctrl-C, or one the progress callback raised)
+// cancels the render and is raised once it has returned.
+class Callbacks {
+ public:
+  explicit Callbacks(py::object progress) : progress_(std::move(progress)) {}
+
+  void Progress(double fraction) {
+    py::gil_scoped_acquire gil;
+    if (error_ || progress_.is_none()) return;
+    try {
+      progress_(fraction);
+    } catch (py::error_already_set& e) {
+      error_.emplace(std::move(e));
+    }
+  }
+
+  bool Cancel() {
+    py::gil_scoped_acquire gil;
+    if (!error_ && PyErr_CheckSignals() != 0) error_.emplace();  // takes the pending exception
+    return error_.has_value();
+  }
+
+  void RaiseAny() {
+    if (error_) {
+      py::error_already_set e = std::move(*error_);
+      error_.reset();
+      throw e;
+    }
+  }
+
+ private:
+  py::object progress_;
+  std::optional<py::error_already_set> error_;
+};
+
+PyRender Render(PyScene& self, const py::object& camera, RenderOptions options, const py::object& progress) {
+  const Camera view = CameraFrom(camera);
+  auto callbacks = std::make_shared<Callbacks>(progress);
+  options.progress = [callbacks](double f) { callbacks->Progress(f); };
+  options.cancel = [callbacks] { return callbacks->Cancel(); };
+  auto result = std::make_shared<RenderResult>();
+  {
+    py::gil_scoped_release released;
+    std::lock_guard<std::mutex> lock(self.rendering);
+    *result = self.scene.Render(view, options);
+  }
+  callbacks->RaiseAny();
+  return PyRender(std::move(result));
+}
+
+void BindScene(py::module_& m) {
+  py::class_<PyScene>(m, "Scene", R"(A glTF 2.0 scene loaded once and rendered any number of times.
+
+Scene(path, *, backend="auto", device="", validation=False, threads=0, max_memory=0,
+      max_texels=0, allow_external_uris=False, variant="", animation="",
+      environment="", environment_intensity=1.0)
+
+backend: "auto" (the Vulkan device when one opens, else the CPU), "cpu" or "vulkan".
+Raises vkpt.Error naming the file and the problem.)")
+      .def(py::init([](const std::string& path, const std::string& backend, const std::string& device, bool validation,
+                       unsigned threads, uint64_t maxMemory, uint64_t maxTexels, bool allowExternalUris,
+                       const std::string& variant, const std::string& animation, const std::string& environment,
+                       float environmentIntensity) {
+             SceneOptions o;
+             o.backend = BackendFrom(backend);
+             o.device = device;
+             o.validation = validation;
+             o.threads = threads;
+             o.maxMemory = maxMemory;
+             o.maxTexels = maxTexels;
+             o.allowExternalUris = allowExternalUris;
+             o.variant = variant;
+             o.animation = animation;
+             o.environment = environment;
+             o.environmentIntensity = environmentIntensity;
+             py::gil_scoped_release released;
+             return std::make_unique<PyScene>(Scene(path, o));
+           }),
+           "path"_a, py::kw_only(), "backend"_a = "auto", "device"_a = "", "validation"_a = false, "threads"_a = 0,
+           "max_memory"_a = 0, "max_texels"_a = 0, "allow_external_uris"_a = false, "variant"_a = "",
+           "animation"_a = "", "environment"_a = "", "environment_intensity"_a = 1.0f)
+      .def_property_readonly("camera_count", [](PyScene& s) { return s.scene.CameraCount(); })
+      .def_property_readonly("device", [](PyScene& s) { return s.scene.Device(); })
+      .def(
+          "render",
+          [](PyScene& self, const py::object& camera, std::optional<uint32_t> width, std::optional<uint32_t> height,
+             std::optional<uint32_t> spp, std::optional<double> seconds, std::optional<double> noiseTarget,
+             std::optional<bool> adaptive, uint32_t seed, uint32_t maxDepth, uint32_t rrDepth, uint32_t chunkSpp,
+             uint32_t batch, double time, std::optional<std::array<float, 3>> background, float environmentRotation,
+             bool textureLod, std::vector<std::string> aovs, bool denoise, const py::object& progress) {
+            RenderOptions o;
+            o.width = width;
+            o.height = height;
+            o.spp = spp;
+            o.seconds = seconds;
+            o.noiseTarget = noiseTarget;
+            o.adaptive = adaptive;
+            o.seed = seed;
+            o.maxDepth = maxDepth;
+            o.rrDepth = rrDepth;
+            o.chunkSpp = chunkSpp;
+            o.batch = batch;
+            o.time = time;
+            o.background = background;
+            o.environmentRotation = environmentRotation;
+            o.textureLod = textureLod;
+            o.aovs = std::move(aovs);
+            o.denoise = denoise;
+            return Render(self, camera, std::move(o), progress);
+          },
+          "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(), "height"_a = py::none(), "spp"_a = py::none(),
+          "seconds"_a = py::none(), "noise_target"_a = py::none(), "adaptive"_a = py::none(), "seed"_a = 0,
+          "max_depth"_a = 32, "rr_depth"_a = 3, "chunk_spp"_a = 16, "batch"_a = 0, "time"_a = 0.0,
+          "background"_a = py::none(), "environment_rotation"_a = 0.0f, "texture_lod"_a = true,
+          "aovs"_a = std::vector<std::string>{}, "denoise"_a = false, "progress"_a = py::none(),
+          R"(Renders a view and returns a vkpt.Render (np.asarray(render) is the image).
+
+camera: None (the file's first camera), an int (the file's camera of that index) or a
+vkpt.Camera. The GIL is released while rendering; progress(fraction) is called now and
+then. aovs: albedo, normal, depth, position, variance, spp, heatmap, or "all".)");
+}
+
+}  // namespace
+}  // namespace vkpt::python
+
+PYBIND11_MODULE(_vkpt, m) {
+  using namespace vkpt::python;
+  m.doc() = "vkpt: a physically based path tracer for glTF 2.0 scenes, on Vulkan or the CPU";
+  m.attr("__version__") = VKPT_VERSION;
+  py::register_exception<vkpt::Error>(m, "Error", PyExc_RuntimeError);
+  BindCamera(m);
+  BindRender(m);
+  BindScene(m);
+}

@@ -1,0 +1,89 @@
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <pybind11/stl.h>
+
+#include "python/bindings.h"
+
+namespace vkpt::python {
+
+using namespace pybind11::literals;
+
+py::array PyRender::View(Image& image) const {
+  // The capsule holds a reference to the result: the array outlives the Render object.
+  auto* owner = new std::shared_ptr<RenderResult>(result_);
+  py::capsule base(owner, [](void* p) { delete static_cast<std::shared_ptr<RenderResult>*>(p); });
+  return py::array_t<float>({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(image.channels)},
+                            image.data.data(), base);
+}
+
+py::array PyRender::ImageArray() const { return View(result_->image); }
+
+py::object PyRender::RawArray() const { return result_->raw ? py::object(View(*result_->raw)) : py::none(); }
+
+py::dict PyRender::AovArrays() const {
+  py::dict aovs;
+  for (auto& [name, image] : result_->aovs) aovs[py::str(name)] = View(image);
+  return aovs;
+}
+
+py::dict PyRender::Channels() const {
+  py::dict channels;
+  channels["image"] = py::cast(result_->image.channelNames);
+  if (result_->raw) channels["raw"] = py::cast(result_->raw->channelNames);
+  for (const auto& [name, image] : result_->aovs) channels[py::str(name)] = py::cast(image.channelNames);
+  return channels;
+}
+
+namespace {
+
+std::string Describe(const PyRender& r) {
+  const RenderResult& result = r.Result();
+  std::string aovs;
+  for (const auto& [name, image] : result.aovs) aovs += (aovs.empty() ? ", aovs: " : ", ") + name;
+  char text[160];
+  std::snprintf(text, sizeof text, "<vkpt.Render %u x %u, %u spp on %s, stopped by %s%s>", result.image.width,
+                result.image.height, result.spp, result.engine.c_str(), result.stoppedBy.c_str(), aovs.c_str());
+  return text;
+}
+
+}  // namespace
+
+void BindRender(py::module_& m) {
+  py::class_<PyRender>(m, "Render", R"(One render: its image, AOVs and figures.
+
+image: linear Rec.709 radiance, float32 H x W x 3 (denoised with denoise=True);
+raw: the image before the filter (None without denoise); aovs: name -> H x W x C array;
+np.asarray(render) is the image. The arrays are views of the render's memory.)")
+      .def_property_readonly("image", &PyRender::ImageArray)
+      .def_property_readonly("raw", &PyRender::RawArray)
+      .def_property_readonly("aovs", &PyRender::AovArrays)
+      .def_property_readonly("channels", &PyRender::Channels, "channel names of the image, raw and each AOV")
+      .def_property_readonly("spp", [](const PyRender& r) { return r.Result().spp; })
+      .def_property_readonly("samples", [](const PyRender& r) { return r.Result().samples; })
+      .def_property_readonly("stopped_by", [](const PyRender& r) { return r.Result().stoppedBy; })
+      .def_property_readonly("estimated_rel_mse", [](const PyRender& r) { return r.Result().estimatedRelMse; })
+      .def_property_readonly("seconds", [](const PyRender& r) { return r.Result().seconds; })
+      .def_property_readonly("engine", [](const PyRender& r) { return r.Result().engine; })
+      .def(
+          "save",
+          [](const PyRender& r, const std::string& path, const std::string& view, float exposure) {
+            py::gil_scoped_release released;
+            return Save(r.Result(), path, view, exposure);
+          },
+          "path"_a, "view"_a = "neutral", "exposure"_a = 0.0f,
+          R"(Writes the render as the vkpt command does, by the extension: .exr (AOVs as layers),
+.pfm or .png (AOVs beside it as NAME.<aov>.EXT; PNG through `view`: neutral, agx, aces
+or clamp, after `exposure` stops). Returns the paths written.)")
+      .def(
+          "__array__",
+          [](const PyRender& r, const py::object& dtype) {
+            py::array image = r.ImageArray();
+            return dtype.is_none() ? image : py::array(image.attr("astype")(dtype));
+          },
+          "dtype"_a = py::none())
+      .def("__repr__", &Describe);
+}
+
+}  // namespace vkpt::python

@@ -1,0 +1,15 @@
+"""vkpt: a physically based path tracer for glTF 2.0 scenes, on Vulkan or the CPU.
+
+    import vkpt
+    scene = vkpt.Scene("DamagedHelmet.glb")
+    render = scene.render(spp=64, aovs=["depth", "normal"])
+    image = render.image            # float32, height x width x 3, linear radiance
+    depth = render.aovs["depth"]    # float32, height x width x 1
+    render.save("helmet.exr")       # the image with its AOVs as EXR layers
+
+See docs/python.md.
+"""
+
+from ._vkpt import Camera, Error, Render, Scene, __version__
+
+__all__ = ["Camera", "Error", "Render", "Scene", "__version__"]
