@@ -87,6 +87,9 @@ TEST_F(DenoiseGpu, FiltersAsTheCpuDoes) {
 }
 
 TEST(Denoise, LowersTheCornellBoxRelMse) {
+#if defined(VKPT_ADDRESS_SANITIZER)
+  GTEST_SKIP() << "21 s under AddressSanitizer for a statistic; the filter runs under it in the other Denoise tests";
+#endif
   // At 16 and 64 spp on the CPU against the bench's 16,384-spp reference (256²).
   const Scene scene = LoadGltf(test::SourcePath("scenes/cornell.gltf"));
   const RenderScene rs = PrepareRenderScene(scene);

@@ -457,6 +457,9 @@ TEST_F(GpuTest, FurnaceCatchesBothMutants) {
 class GpuCorpus : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(GpuCorpus, RendersOnTheGpu) {
+#if defined(VKPT_ADDRESS_SANITIZER)
+  GTEST_SKIP() << "25 models, 110 s under AddressSanitizer; CorpusValid loads each under it, other GPU tests upload";
+#endif
   VKPT_REQUIRE_SHARED_DATA();
   Scene s = LoadGltf(test::CorpusPath("valid/" + GetParam()));
   RenderScene rs = PrepareRenderScene(s);
@@ -552,6 +555,9 @@ void ExpectBackendsAgree(const RenderScene& rs, FrameParams p, const std::string
 class GpuPbrCorpus : public GpuTest, public ::testing::WithParamInterface<PbrModel> {};
 
 TEST_P(GpuPbrCorpus, LoadsAndRendersAlikeOnBothBackends) {
+#if defined(VKPT_ADDRESS_SANITIZER)
+  GTEST_SKIP() << "22 models, 109 s under AddressSanitizer; their loading and upload run under it in other tests";
+#endif
   VKPT_REQUIRE_SHARED_DATA();
   const std::string path = test::SharedData(GetParam().collection + "/" + GetParam().file);
   ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing";
