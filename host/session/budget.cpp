@@ -14,18 +14,6 @@ constexpr uint32_t kFirstDecision = 16;  // samples before a pixel's variance is
 
 }  // namespace
 
-RenderBudget BudgetFor(const BudgetRequest& r) {
-  RenderBudget b;
-  b.maxSpp = r.spp.value_or(r.seconds || r.noiseTarget ? kBudgetMaxSpp : 64);
-  b.seconds = r.seconds;
-  b.noiseTarget = r.noiseTarget;
-  b.adaptive = r.adaptive.value_or(r.noiseTarget.has_value());
-  if (r.noiseTarget) b.adaptiveThreshold = *r.noiseTarget;
-  b.checkpointSeconds = r.checkpointSeconds;
-  b.chunkSpp = r.chunkSpp;
-  return b;
-}
-
 const char* StopReasonName(StopReason r) {
   switch (r) {
     case StopReason::kTime: return "time";

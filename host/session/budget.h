@@ -36,7 +36,18 @@ struct BudgetRequest {
   double checkpointSeconds = 0.0;
   uint32_t chunkSpp = 1;
 };
-RenderBudget BudgetFor(const BudgetRequest& request);
+// Inline: the command line's option parsing (and its fuzz target) needs it alone.
+inline RenderBudget BudgetFor(const BudgetRequest& r) {
+  RenderBudget b;
+  b.maxSpp = r.spp.value_or(r.seconds || r.noiseTarget ? kBudgetMaxSpp : 64);
+  b.seconds = r.seconds;
+  b.noiseTarget = r.noiseTarget;
+  b.adaptive = r.adaptive.value_or(r.noiseTarget.has_value());
+  if (r.noiseTarget) b.adaptiveThreshold = *r.noiseTarget;
+  b.checkpointSeconds = r.checkpointSeconds;
+  b.chunkSpp = r.chunkSpp;
+  return b;
+}
 
 // kConverged: adaptive sampling without a noise target found every pixel below its
 // threshold before --spp.
