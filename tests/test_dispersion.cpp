@@ -197,7 +197,12 @@ TEST(Dispersion, DispersiveGlassSphereInAWhiteFurnaceReturnsOne) {
                 roughness, mean.x, mean.y, mean.z);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], 1.0, 0.01) << "roughness " << roughness << ", channel " << c;
   }
-  // The weight compounds over the path's crossings: far off, or beyond binary32.
+}
+
+// The weight compounds over the path's crossings: far off, or beyond binary32.
+TEST(Dispersion, MutantWeightingEveryVertexLeavesTheFurnace) {
+  VKPT_REQUIRE_PATH_VARIANTS();
+  uint64_t nonFinite = 0;
   const glm::dvec3 mutant = DispersiveFurnace(0.0f, test::RenderMutantWavelengthWeightEveryVertex, &nonFinite);
   const double off = std::max({std::abs(mutant.x - 1.0), std::abs(mutant.y - 1.0), std::abs(mutant.z - 1.0)});
   std::printf(

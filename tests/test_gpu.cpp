@@ -422,10 +422,12 @@ TEST_F(GpuTest, IndependentCornellAgreesStatistically) {
 }
 
 TEST_F(GpuTest, MutantWithoutLightCosineIsCaught) {
+  VKPT_SKIP_UNDER_ADDRESS_SANITIZER("a mutant's rejection, 6 s");
   EXPECT_FALSE(IndependentComparison(kPathTraceMutantNoLightCosine, "mutant: no cos at the light").statisticallyAgree);
 }
 
 TEST_F(GpuTest, MutantRouletteWithoutDivisionIsCaught) {
+  VKPT_SKIP_UNDER_ADDRESS_SANITIZER("a mutant's rejection, 6 s");
   EXPECT_FALSE(IndependentComparison(kPathTraceMutantRouletteWithoutDivision, "mutant: roulette without 1/P")
                    .statisticallyAgree);
 }
@@ -447,6 +449,7 @@ TEST_F(GpuTest, FurnaceMatchesClosedForm) {
 }
 
 TEST_F(GpuTest, FurnaceCatchesBothMutants) {
+  VKPT_SKIP_UNDER_ADDRESS_SANITIZER("two mutants' rejection, 13 s");
   glm::dvec3 expected;
   test::ZTest a = GpuFurnace(kPathTraceMutantNoLightCosine, &expected);
   EXPECT_FALSE(test::Agrees(a, expected, 1e-3, "GPU furnace, mutant no light cosine (must fail)"));

@@ -258,6 +258,11 @@ TEST_F(LightTransport, SpotLightCone) {
 
 TEST_F(LightTransport, DirectionalLightOverLambertPlane) { ExpectAnalytic(DirectionalLight()); }
 
+class LightTransportMutants : public ::testing::Test {
+ protected:
+  void SetUp() override { VKPT_REQUIRE_PATH_VARIANTS(); }
+};
+
 // A mutant of lights.h (path_variants.h) rendered on the CPU as ExpectAnalytic renders:
 // the case's closed form must reject it.
 void ExpectMutantRejected(const AnalyticCase& c, PathVariantRenderer mutant, const char* mutantName) {
@@ -271,19 +276,19 @@ void ExpectMutantRejected(const AnalyticCase& c, PathVariantRenderer mutant, con
   EXPECT_GT(st.failures, 0) << what << " passes";
 }
 
-TEST(LightTransportMutants, SpotFalloffNotSquaredIsRejected) {
+TEST_F(LightTransportMutants, SpotFalloffNotSquaredIsRejected) {
   ExpectMutantRejected(SpotLight(), RenderMutantSpotFalloffLinear, "cone falloff linear, not squared");
 }
 
-TEST(LightTransportMutants, SquaredRangeWindowIsRejected) {
+TEST_F(LightTransportMutants, SquaredRangeWindowIsRejected) {
   ExpectMutantRejected(PointLightWithRange(), RenderMutantRangeWindowSquared, "range window squared");
 }
 
-TEST(LightTransportMutants, PointLightWithoutInverseSquareIsRejected) {
+TEST_F(LightTransportMutants, PointLightWithoutInverseSquareIsRejected) {
   ExpectMutantRejected(PointLight(), RenderMutantPointNoInverseSquare, "no 1/r^2");
 }
 
-TEST(LightTransportMutants, DirectionalLightWithExtraCosineIsRejected) {
+TEST_F(LightTransportMutants, DirectionalLightWithExtraCosineIsRejected) {
   ExpectMutantRejected(DirectionalLight(), RenderMutantDirectionalExtraCosine, "E cos, then cos again");
 }
 
@@ -373,6 +378,7 @@ void PrintMeanZ(const Image& a, const Image& b, const char* what) {
 // .exr holding c/4 at --env-intensity 4. The background is not a light (BSDF sampling
 // alone finds it); the map is sampled by MIS with the BSDF: the same expectation.
 TEST_F(LightTransport, ConstantEnvironmentEqualsBackground) {
+  VKPT_SKIP_UNDER_ADDRESS_SANITIZER("four statistics on both backends, 20 s");
   const std::string dir = FreshTempDirectory("env-constant");
   const std::string hdr = dir + "/sky.hdr", exr = dir + "/quarter.exr";
   std::ofstream(hdr, std::ios::binary) << ConstantHdr(6, 3, std::string("\x20\x40\x80\x82", 4));

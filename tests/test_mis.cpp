@@ -198,7 +198,13 @@ Verdict CompareEstimators(const Estimators& e, uint32_t spp, Scene (*makeScene)(
 // that, and a bias only stands out more with more samples.
 constexpr uint32_t kSpp = 512 / kSampleDivisor, kMutantSpp = 128;
 
-TEST(Mis, LightBsdfAndMisEstimatesAgreeAtThreeRoughnesses) {
+// Every test renders the estimator's variants (path_variants.h).
+class Mis : public ::testing::Test {
+ protected:
+  void SetUp() override { VKPT_REQUIRE_PATH_VARIANTS(); }
+};
+
+TEST_F(Mis, LightBsdfAndMisEstimatesAgreeAtThreeRoughnesses) {
   Verdict v = CompareEstimators(Estimators{}, kSpp);
   EXPECT_EQ(v.failures, 0);
 }
@@ -206,13 +212,13 @@ TEST(Mis, LightBsdfAndMisEstimatesAgreeAtThreeRoughnesses) {
 // Light sampled through the surface (shadow ray from its far side, BSDF transmission
 // lobe evaluated and its pdf in the MIS weight) against transmitted BSDF samples that hit
 // the light.
-TEST(Mis, LightThroughAThinWallAgreesAtThreeRoughnesses) {
+TEST_F(Mis, LightThroughAThinWallAgreesAtThreeRoughnesses) {
   Verdict v = CompareEstimators(Estimators{}, kSpp, LightBehindThinWall);
   EXPECT_EQ(v.failures, 0);
 }
 
 // kRoughness doubles as the share transmitted: 0.1, 0.3 and 0.7.
-TEST(Mis, DiffuseTransmissionAgreesAtThreeShares) {
+TEST_F(Mis, DiffuseTransmissionAgreesAtThreeShares) {
   Verdict v = CompareEstimators(Estimators{}, kSpp, LightBehindDiffuseWall);
   EXPECT_EQ(v.failures, 0);
 }
@@ -221,7 +227,7 @@ TEST(Mis, DiffuseTransmissionAgreesAtThreeShares) {
 // the sampled point), as BSDF sampling reads it where its ray hits.
 // A quarter of kSpp: the estimators differ here only in where they read the texture, and
 // the mutant below is caught with |z| > 100 at half of this.
-TEST(Mis, TexturedLightAgreesAtThreeRoughnesses) {
+TEST_F(Mis, TexturedLightAgreesAtThreeRoughnesses) {
   Verdict v = CompareEstimators(Estimators{}, kMutantSpp, GlossyPlaneUnderTexturedLight);
   EXPECT_EQ(v.failures, 0);
 }
@@ -236,7 +242,7 @@ Estimators WithLightSampleMutant(PathVariantRenderer mutant, const char* name) {
 }
 
 // Light samples that take the emissive factor for the emission, texture ignored.
-TEST(Mis, MutantLightSampleWithoutTextureIsCaught) {
+TEST_F(Mis, MutantLightSampleWithoutTextureIsCaught) {
   const Estimators e =
       WithLightSampleMutant(RenderMutantLightSampleWithoutTexture, "mutant: light samples ignore the emissive texture");
   EXPECT_GT(CompareEstimators(e, kMutantSpp / 2, GlossyPlaneUnderTexturedLight).failures, 0);
@@ -256,7 +262,7 @@ Scene CoatedPlaneUnderCoatedLight(double roughness) {
   return Load(b);
 }
 
-TEST(Mis, ClearcoatAgreesAtThreeRoughnesses) {
+TEST_F(Mis, ClearcoatAgreesAtThreeRoughnesses) {
   Verdict v = CompareEstimators(Estimators{}, kSpp, CoatedPlaneUnderCoatedLight);
   EXPECT_EQ(v.failures, 0);
 }
@@ -271,20 +277,20 @@ Scene SheenedPlaneUnderLight(double roughness) {
       1.5f, {"KHR_materials_sheen"}));
 }
 
-TEST(Mis, SheenAgreesAtThreeRoughnesses) {
+TEST_F(Mis, SheenAgreesAtThreeRoughnesses) {
   Verdict v = CompareEstimators(Estimators{}, kSpp, SheenedPlaneUnderLight);
   EXPECT_EQ(v.failures, 0);
 }
 
 // Light samples that take the coated emitter's emission undimmed.
-TEST(Mis, MutantLightSampleWithoutCoatIsCaught) {
+TEST_F(Mis, MutantLightSampleWithoutCoatIsCaught) {
   const Estimators e = WithLightSampleMutant(RenderMutantLightSampleWithoutCoat,
                                              "mutant: light samples ignore the emitter's clear coat");
   EXPECT_GT(CompareEstimators(e, kMutantSpp, CoatedPlaneUnderCoatedLight).failures, 0);
 }
 
 // Both strategies counted in full: the light's reflection twice.
-TEST(Mis, MutantWeightOneIsCaught) {
+TEST_F(Mis, MutantWeightOneIsCaught) {
   Estimators e;
   e.mis = RenderMutantMisWeightOne;
   e.name = "mutant: MIS weights 1 (double counting)";
@@ -292,7 +298,7 @@ TEST(Mis, MutantWeightOneIsCaught) {
 }
 
 // The light sample weighted by the BSDF sample's weight: the weights no longer sum to one.
-TEST(Mis, MutantSwappedPdfsIsCaught) {
+TEST_F(Mis, MutantSwappedPdfsIsCaught) {
   Estimators e;
   e.mis = RenderMutantMisSwappedPdfs;
   e.name = "mutant: light sample's power heuristic with swapped pdfs";
@@ -301,7 +307,7 @@ TEST(Mis, MutantSwappedPdfsIsCaught) {
 
 // GgxReflectionPdf without 1/(4 ωo·h), in every estimator that uses it (light sampling
 // alone evaluates the BSDF, never its pdf, and stays correct).
-TEST(Mis, MutantMissingJacobianIsCaught) {
+TEST_F(Mis, MutantMissingJacobianIsCaught) {
   Estimators e;
   e.bsdfOnly = RenderMutantNoJacobianBsdfOnly;
   e.mis = RenderMutantNoJacobian;

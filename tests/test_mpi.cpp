@@ -147,6 +147,7 @@ TEST(Mpi, DynamicBalancingKeepsTheImage) {
 // stops at the same sample count with the same pixels active and the same bytes — also
 // when a slowed rank makes the ranks take unequal chunk counts.
 TEST(Mpi, NoiseTargetAndAdaptiveSamplingKeepTheImage) {
+  VKPT_SKIP_UNDER_ADDRESS_SANITIZER("a 1,000-spp adaptive render on both backends, 29 s");
   const test::TempFolder dir("mpi-adaptive");
   for (const char* backend : {"cpu", "vulkan"}) {
     const std::vector<std::string> budget = {"--spp", "1000", "--noise-target", "0.005"};

@@ -81,6 +81,7 @@ TEST(Render, FurnaceHonoursDepthCapWithoutRoulette) {
 // Proof of teeth: the same test must reject an estimator that is 2 % off. Rendering
 // with albedo scaled by 0.98 while expecting the true answer must fail the check.
 TEST(Render, FurnaceTestDetectsATwoPercentError) {
+  VKPT_SKIP_UNDER_ADDRESS_SANITIZER("a mutant's rejection, 8 s");
   Scene scene = LoadGltf(test::SourcePath("scenes/furnace.gltf"));
   glm::dvec3 expected = FurnaceExpected(scene, 200);
   scene.materials[0].baseColor *= 0.98f;

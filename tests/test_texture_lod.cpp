@@ -85,6 +85,7 @@ TEST_F(TextureLod, MutantFilteringEverythingIsCaught) {
 #if defined(VKPT_ADDRESS_SANITIZER)
   GTEST_SKIP() << "the convergence test's mutant, 15 s under AddressSanitizer; the plain build runs it";
 #endif
+  VKPT_REQUIRE_PATH_VARIANTS();
   VKPT_REQUIRE_SHARED_DATA();
   int caught = 0;
   for (const LodModel& m : kModels) {

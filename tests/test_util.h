@@ -29,6 +29,13 @@ constexpr double kTimeScale = VKPT_TIME_SCALE;
 #define VKPT_SAMPLE_DIVISOR 1
 #endif
 constexpr uint32_t kSampleDivisor = VKPT_SAMPLE_DIVISOR;
+// A mutant's rejection or a long statistic adds nothing under AddressSanitizer (the code
+// it runs is run there by other tests) and costs several times its plain time: it skips.
+#if defined(VKPT_ADDRESS_SANITIZER)
+#define VKPT_SKIP_UNDER_ADDRESS_SANITIZER(why) GTEST_SKIP() << why << " under AddressSanitizer; the plain build runs it"
+#else
+#define VKPT_SKIP_UNDER_ADDRESS_SANITIZER(why) static_cast<void>(0)
+#endif
 
 std::string SourcePath(const std::string& relative);  // <repo>/relative
 
