@@ -144,7 +144,7 @@ OptionValue SppValue() {
 
 OptionValue AdaptiveValue(bool on) {
   OptionValue v{"", [on](Options& o, const GivenOption&) { o.adaptive = on; }, nullptr};
-  if (on) v.json = [](const Options& o) { return std::string(o.Adaptive() ? "true" : "false"); };
+  if (on) v.json = [](const Options& o) { return std::string(o.Budget().adaptive ? "true" : "false"); };
   return v;
 }
 

@@ -13,6 +13,7 @@
 #include "image/view_transform.h"
 #include "scene/load_limits.h"
 #include "session/aov.h"
+#include "session/budget.h"
 #include "session/chunked_frame.h"
 
 namespace vkpt {
@@ -78,7 +79,8 @@ struct Options {
   bool help = false;
   bool version = false;
 
-  bool Adaptive() const { return adaptive.value_or(noiseTarget.has_value()); }
+  // The render's budget; spp is already the bound (options.cpp fills it in from the others).
+  RenderBudget Budget() const { return BudgetFor({spp, time, noiseTarget, adaptive, checkpoint, chunkSpp}); }
 };
 
 // Throws UsageError for anything malformed; the message says which option and why.

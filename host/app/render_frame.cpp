@@ -25,7 +25,7 @@ bool SignalArrived() { return GracefulStop::Signal() != 0; }
 
 SessionSettings SettingsFromOptions(const Options& o, const RenderBackend& backend) {
   SessionSettings s;
-  s.budget = BudgetFor({o.spp, o.time, o.noiseTarget, o.adaptive, o.checkpoint, o.chunkSpp});
+  s.budget = o.Budget();
   s.checkpointPath = o.out;
   s.display = o.Display();
   s.aovPass = NeedsAovPass(o.aovs);

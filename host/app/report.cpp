@@ -183,7 +183,7 @@ void PrintRenderReport(const Scene& scene, const RenderScene& rs, const Rendered
   std::printf("  stopped by %s after %zu pass(es); estimated relMSE %.4g", StopReasonText(frame, o).c_str(),
               frame.sppPerPass.size(), frame.estimatedRelMse);
   const double samples = double(frame.samples);
-  if (o.Adaptive())
+  if (o.Budget().adaptive)
     std::printf("; adaptive: %.2f spp per pixel on average, %llu pixels still active", samples / image.pixels.size(),
                 (unsigned long long)frame.activePixels);
   std::printf("\n  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", frame.seconds,
