@@ -23,7 +23,7 @@ SceneSettings SceneSettingsFrom(const Options& o) {
   SceneSettings s;
   s.path = o.scene;
   s.load = o.load;
-  s.choice = SceneChoice{o.variant, o.animation};
+  s.choice = SceneChoice{o.variant, o.animation, o.at.value_or(0.0)};  // the first frame's pose
   s.env = o.env;
   s.envIntensity = o.envIntensity;
   s.leafSize = o.leafSize;

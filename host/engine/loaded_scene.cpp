@@ -51,7 +51,9 @@ LoadedScene::LoadedScene(const SceneSettings& settings, const EngineLog& log) : 
   PhaseTimer phase;
   asset_ = std::make_unique<GltfAsset>(settings_.path, settings_.load, settings_.choice);
   phase.Lap(times.load);
-  // Posed at once, so that the scene's cameras and bounds are known before a render.
+  // Posed at once, at the time the caller expects to render first, so that the scene's
+  // cameras and bounds are known (and its faults reported) before a render.
+  posedAt_ = settings_.choice.time;
   asset_->PoseAt(posedAt_);
   phase.Lap(times.pose);
   environment_ = LoadEnvironment(settings_, scene(), log_, &environmentBytes_);

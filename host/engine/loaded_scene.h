@@ -87,7 +87,7 @@ class LoadedScene {
   EnvironmentMap environment_;  // handed to the arrays once if nothing is built again
   uint64_t environmentBytes_ = 0;
   std::unique_ptr<vk::Context> ctx_;  // null: the CPU renders
-  double posedAt_ = 0.0;              // the time the scene is posed at
+  double posedAt_ = 0.0;              // the time the scene is posed at (first settings_.choice.time)
   std::optional<double> builtAt_;     // the pose rs_ holds
   RenderScene rs_;
   std::unique_ptr<RenderBackend> backend_;  // of rs_, made on first use

@@ -14,7 +14,7 @@ namespace vkpt {
 struct SceneChoice {
   std::string variant{};    // a KHR_materials_variants variant, by name or index; "": the primitives' own materials
   std::string animation{};  // an animation, by name or index; "": the nodes' own transforms
-  double time = 0.0;        // seconds into the animation
+  double time = 0.0;        // seconds into the animation (LoadedScene: of its first pose)
 };
 
 // A glTF file read, checked and decoded once — materials, textures, meshes, skins and
