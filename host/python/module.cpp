@@ -30,7 +30,8 @@ struct PyScene {
   std::mutex rendering;
 };
 
-// One render's callbacks into Python, from the rendering thread: each takes the GIL. The
+// One render's callbacks into Python, from the rendering thread: each takes the GIL (the
+// progress hook is set only when there is a callback to call). The
 // first exception (KeyboardInterrupt from Ctrl-C, or one the progress callback raised)
 // cancels the render and is raised once it has returned.
 class Callbacks {
@@ -39,7 +40,7 @@ class Callbacks {
 
   void Progress(double fraction) {
     py::gil_scoped_acquire gil;
-    if (error_ || progress_.is_none()) return;
+    if (error_) return;
     try {
       progress_(fraction);
     } catch (py::error_already_set& e) {
@@ -69,7 +70,7 @@ class Callbacks {
 PyRender Render(PyScene& self, const py::object& camera, RenderOptions options, const py::object& progress) {
   const Camera view = CameraFrom(camera);
   auto callbacks = std::make_shared<Callbacks>(progress);
-  options.progress = [callbacks](double f) { callbacks->Progress(f); };
+  if (!progress.is_none()) options.progress = [callbacks](double f) { callbacks->Progress(f); };
   options.cancel = [callbacks] { return callbacks->Cancel(); };
   auto result = std::make_shared<RenderResult>();
   {
