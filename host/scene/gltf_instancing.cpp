@@ -34,6 +34,8 @@ class Instancer {
     if (src_.m.defaultScene != -1) src_.CheckIndex(src_.m.defaultScene, src_.m.scenes, "scene");
     if (src_.m.scenes.empty() && std::count(parents_.begin(), parents_.end(), -1) > 0)
       scene_.warnings.push_back("the file defines no scene; rendering all root nodes");
+    scene_.nodeNames = Names(src_.m.nodes, "nodes");
+    scene_.meshNames = Names(src_.m.meshes, "meshes");
     for (int r : SceneRoots(src_, parents_)) InstantiateTree(r);
     if (unweighted_)
       scene_.warnings.push_back(std::to_string(unweighted_) +
@@ -41,6 +43,16 @@ class Instancer {
   }
 
  private:
+  // Each object's name, or "<array>[i]" where it has none.
+  template <class T>
+  static std::vector<std::string> Names(const std::vector<T>& objects, const std::string& array) {
+    std::vector<std::string> names;
+    names.reserve(objects.size());
+    for (size_t i = 0; i < objects.size(); ++i)
+      names.push_back(objects[i].name.empty() ? array + "[" + std::to_string(i) + "]" : objects[i].name);
+    return names;
+  }
+
   void AddCamera(int cameraIndex, const glm::dmat4& world, const std::string& nodeName) {
     const tinygltf::Camera& in = src_.m.cameras[cameraIndex];
     Camera cam;
@@ -104,20 +116,27 @@ class Instancer {
     std::vector<glm::dmat4> placements = InstanceTransforms(src_, nodeIndex);
     if (!placements.empty() && n.skin != -1) src_.Fail(name + " is skinned and instanced (EXT_mesh_gpu_instancing)");
     if (placements.empty()) placements.push_back(glm::dmat4(1.0));
+    const uint32_t firstInstance = uint32_t(scene_.meshInstances.size());
+    for (uint32_t k = 0; k < placements.size(); ++k)
+      scene_.meshInstances.push_back({uint32_t(nodeIndex), uint32_t(n.mesh), k});
     for (const DecodedPrimitive& base : meshes_[n.mesh]) {
       DecodedPrimitive displaced;
       if (morphed) displaced = Morphed(base, weights);
       const DecodedPrimitive& prim = morphed ? displaced : base;
       if (n.skin != -1 && !prim.joints[0].empty()) {
-        AddPrimitive(prim, PoseSkinned(src_, prim, joints, what, unweighted_));
+        AddPrimitive(prim, PoseSkinned(src_, prim, joints, what, unweighted_), firstInstance);
         continue;
       }
-      for (const glm::dmat4& placement : placements) AddPrimitive(prim, PoseRigid(src_, prim, world * placement, what));
+      for (uint32_t k = 0; k < placements.size(); ++k)
+        AddPrimitive(prim, PoseRigid(src_, prim, world * placements[k], what), firstInstance + k);
     }
   }
 
-  // One primitive of a mesh instance, `posed` in world space: its triangles.
-  void AddPrimitive(const DecodedPrimitive& prim, const PosedPrimitive& posed) {
+  // One primitive of mesh instance `instance`, `posed` in world space: its triangles.
+  void AddPrimitive(const DecodedPrimitive& prim, const PosedPrimitive& posed, uint32_t instance) {
+    std::vector<TriangleRun>& runs = scene_.triangleRuns;
+    if (!prim.indices.empty() && (runs.empty() || runs.back().instance != instance))
+      runs.push_back({uint32_t(scene_.triangles.size()), instance});
     const bool perCorner = !prim.cornerTangents.empty();
     const std::vector<glm::vec4>& tw = posed.tangents;
     for (size_t k = 0; k < prim.indices.size(); k += 3) {

@@ -230,6 +230,8 @@ void GltfAsset::PoseAt(double time) {
     scene.tangents.clear();
     scene.cameras.clear();
     scene.lights.clear();
+    scene.meshInstances.clear();
+    scene.triangleRuns.clear();
     scene.bounds = Bounds3f{};
     scene.warnings.resize(parts_->readWarnings);
     ScenePose pose{parts_->rest, {}, parts_->skins};

@@ -98,6 +98,18 @@ struct PunctualLight {
   std::string name;
 };
 
+// One placement of a glTF node's mesh: the node's own, or one per EXT_mesh_gpu_instancing
+// instance (`placement`, 0 without). Its index in Scene::meshInstances is its instance id.
+struct MeshInstance {
+  uint32_t node = 0, mesh = 0, placement = 0;
+};
+
+// Scene triangles [firstTriangle, the next run's firstTriangle) belong to mesh instance
+// `instance`.
+struct TriangleRun {
+  uint32_t firstTriangle = 0, instance = 0;
+};
+
 // A glTF animation: its name ("" when it has none) and its length in seconds.
 struct AnimationSummary {
   std::string name;
@@ -132,6 +144,13 @@ struct Scene {
   double animationTime = 0.0;
   std::vector<PunctualLight> lights;  // in scene-graph order, one per light node
   Bounds3f bounds;
+  // Where the triangles came from (the id AOVs, scene/scene_ids.h): the mesh instances in
+  // scene-graph order, the runs of triangles each placed, in triangle order, and the file's
+  // node and mesh names ("nodes[i]", "meshes[i]" where it has none). Empty for a scene made
+  // in code.
+  std::vector<MeshInstance> meshInstances;
+  std::vector<TriangleRun> triangleRuns;
+  std::vector<std::string> nodeNames, meshNames;
 
   // What a user should know about what was (not) loaded; printed by -v.
   uint32_t generatedTangentPrimitives = 0;  // normal-mapped primitives given MikkTSpace tangents
