@@ -15,6 +15,8 @@ layout(std140, binding = kBindingParams) uniform Params { FrameParams params; };
 // Per pixel, kAovSumsPerPixel vec4 (layout.h): (Σ albedo, Σ depth), (Σ normal, hits),
 // (Σ position, Σ box tests).
 layout(std430, binding = kBindingAovSums) buffer AovSums { vec4 aovSums[]; };
+// Per pixel, the scene triangle the id AOVs name, written by sample 0.
+layout(std430, binding = kBindingAovTriangles) buffer AovTriangles { uint aovTriangles[]; };
 // This dispatch adds AOV sample `sampleIndex`.
 layout(push_constant) uniform Push { uint sampleIndex; };
 
@@ -45,6 +47,7 @@ void main() {
   // the image add what they found.
   bool inside = pixel.x < params.width && pixel.y < params.height;
   AovSample a = TraceAovSample(params, min(pixel.x, params.width - 1u), min(pixel.y, params.height - 1u), sampleIndex);
+  if (inside && sampleIndex == 0u) aovTriangles[pixel.y * params.width + pixel.x] = a.triangle;
   if (!inside || !IsFinite(a.albedo) || !IsFinite(a.normal) || !IsFinite(a.position) || isnan(a.depth) ||
       isinf(a.depth))
     return;

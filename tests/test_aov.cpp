@@ -16,6 +16,7 @@
 #include "session/aov.h"
 #include "session/noise_estimate.h"
 #include "test_util.h"
+#include "util/error.h"
 #include "vk/vk_renderer.h"
 
 namespace vkpt {
@@ -201,7 +202,7 @@ TEST(Aov, SppLayerFollowsTheNoise) {
   budget.adaptive = true;
   budget.adaptiveThreshold = 4e-3;
   const RenderedFrame r = test::RenderUnderBudget(*adaptive, budget);
-  const std::vector<AovLayer> layers = ResolveAovs({Aov::kSpp}, {}, r.sums, ResolveFilm(r.sums));
+  const std::vector<AovLayer> layers = ResolveAovs({Aov::kSpp}, {}, r.sums, ResolveFilm(r.sums), {});
   const float* spp = layers.at(0).values.data();
   std::vector<std::pair<double, float>> byNoise;
   for (size_t i = 0; i < reference.pixels.size(); ++i) {
@@ -217,6 +218,26 @@ TEST(Aov, SppLayerFollowsTheNoise) {
   }
   std::printf("spp AOV: quietest quarter %.1f spp, noisiest quarter %.1f spp\n", quiet, noisy);
   EXPECT_GT(noisy, 1.3 * quiet);
+}
+
+TEST(Aov, IdsBeyondFloat32sIntegersAreRefused) {
+  AovSums sums;
+  sums.samples = 1;
+  sums.pixels.resize(1);
+  Image image(1, 1);
+  const int64_t largest = int64_t(1) << 24;
+  const std::vector<AovLayer> fine = ResolveAovs({Aov::kInstanceId}, sums, {}, image, [&](uint32_t) {
+    return std::array<int64_t, 3>{0, 0, largest};
+  });
+  EXPECT_EQ(fine.at(0).values, std::vector<float>{float(largest)});
+  try {
+    ResolveAovs({Aov::kInstanceId}, sums, {}, image, [&](uint32_t) {
+      return std::array<int64_t, 3>{0, 0, largest + 1};
+    });
+    ADD_FAILURE() << "id 2^24 + 1 was stored";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("instance_id AOV: id 16777217"), std::string::npos) << e.what();
+  }
 }
 
 // The channel names of an EXR file.
@@ -240,11 +261,13 @@ TEST(AovCli, ExrHoldsNamedLayers) {
       test::RunVkpt({"--scene", test::SourcePath("scenes/cornell.gltf"), "--backend", "cpu", "--width", "16",
                      "--height", "16", "--spp", "4", "--aov", "all", "--out", dir + "/c.exr"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(test::DirectoryListing(dir), std::vector<std::string>{"c.exr"});
-  const std::vector<std::string> expected = {"B",          "G",          "R",          "albedo.B",   "albedo.G",
-                                             "albedo.R",   "depth.Z",    "heatmap.Y",  "normal.X",   "normal.Y",
-                                             "normal.Z",   "position.X", "position.Y", "position.Z", "spp.Y",
-                                             "variance.B", "variance.G", "variance.R"};
+  EXPECT_EQ(test::DirectoryListing(dir), (std::vector<std::string>{"c.exr", "c.ids.json"}));
+  const std::vector<std::string> expected = {
+      "B",          "G",          "R",         "albedo.B",       "albedo.G",
+      "albedo.R",   "depth.Z",    "heatmap.Y", "instance_id.ID", "material_id.ID",
+      "normal.X",   "normal.Y",   "normal.Z",  "object_id.ID",   "position.X",
+      "position.Y", "position.Z", "spp.Y",     "variance.B",     "variance.G",
+      "variance.R"};
   EXPECT_EQ(ExrChannels(dir + "/c.exr"), expected);
   // The layers' values: every pixel of the Cornell box took 4 samples.
   float* rgba = nullptr;

@@ -142,7 +142,8 @@ TEST(Api, FailuresAreErrorsNamingTheirCause) {
   api::RenderOptions bad = Small();
   bad.aovs = {"depht"};
   EXPECT_EQ(message([&] { scene.Render(api::Camera{}, bad); }),
-            "unknown AOV \"depht\" (albedo, normal, depth, position, variance, spp, heatmap or all)");
+            "unknown AOV \"depht\" (albedo, normal, depth, position, variance, spp, heatmap, object_id, material_id, "
+            "instance_id or all)");
   api::Camera third;
   third.index = 3;
   // The message names no command-line option.
@@ -164,7 +165,7 @@ TEST(Api, DenoisedImageKeepsTheRawOne) {
   const api::RenderResult r = api::Scene(kCornell, cpu).Render(api::Camera{}, o);
   ASSERT_TRUE(r.raw.has_value());
   EXPECT_NE(r.raw->data, r.image.data);
-  EXPECT_EQ(r.aovs.size(), 7u);
+  EXPECT_EQ(r.aovs.size(), 10u);
   EXPECT_EQ(r.aovs.at("normal").channels, 3u);
   EXPECT_EQ(r.aovs.at("normal").channelNames, (std::vector<std::string>{"X", "Y", "Z"}));
 }

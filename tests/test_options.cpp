@@ -75,7 +75,8 @@ TEST(Options, StatsObjectOfBackgroundCompareAndBudgets) {
   EXPECT_EQ(j["compare"], true);
   EXPECT_EQ(j["splits"], "object");
   EXPECT_EQ(StatsOptions({"--scene", "s", "--aov=all"})["aov"],
-            json::parse(R"(["albedo", "normal", "depth", "position", "variance", "spp", "heatmap"])"));
+            json::parse(R"(["albedo", "normal", "depth", "position", "variance", "spp", "heatmap",
+                         "object_id", "material_id", "instance_id"])"));
   EXPECT_EQ(StatsOptions({"--scene", "s", "--background", "2"})["background"], json::parse("[2, 2, 2]"));
   // --frames excludes --at, which the test above gives.
   EXPECT_EQ(StatsOptions({"--scene", "s", "--frames", "2:10:4"})["frames"], json::parse("[2, 10, 4]"));
@@ -187,7 +188,8 @@ TEST(Options, RangeErrorsReadAsPeopleWriteThem) {
   EXPECT_EQ(ErrorOf({"--splits", "sbvh"}), "--splits must be auto, object or spatial, got \"sbvh\"");
   EXPECT_EQ(ErrorOf({"--texture-lod", "auto"}), "--texture-lod must be cones or none, got \"auto\"");
   EXPECT_EQ(ErrorOf({"--aov", "albedo,glow"}),
-            "--aov: unknown AOV \"glow\" (albedo, normal, depth, position, variance, spp, heatmap or all)");
+            "--aov: unknown AOV \"glow\" (albedo, normal, depth, position, variance, spp, heatmap, object_id, "
+            "material_id, instance_id or all)");
   EXPECT_EQ(ErrorOf({"--device", ""}), "--device needs a device index or name");
   EXPECT_EQ(ErrorOf({"--env-intensity", "1e30", "--env", "e.hdr"}), "");
 }

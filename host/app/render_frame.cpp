@@ -73,11 +73,13 @@ RenderedFrame RenderReference(const Prepared& p, const Options& o) {
 
 namespace {
 
-// The image files: --out (denoised with --denoise, the raw one beside it) and its AOVs.
-std::vector<std::string> WriteFiles(const RenderedFrame& frame, const Options& o) {
+// The image files: --out (denoised with --denoise, the raw one beside it), its AOVs and
+// the names of their ids.
+std::vector<std::string> WriteFiles(const RenderedFrame& frame, const Options& o, const LoadedScene& scene) {
   std::vector<std::string> files =
       WriteImageWithAovs(frame.denoised ? *frame.denoised : frame.image,
-                         ResolveAovs(o.aovs, frame.aovs, frame.sums, frame.image), o.out, o.Display());
+                         ResolveAovs(o.aovs, frame.aovs, frame.sums, frame.image, scene.IdsOf()), o.out, o.Display(),
+                         WantsIds(o.aovs) ? scene.IdsJson() : "");
   if (frame.denoised) {
     files.push_back(SiblingPath(o.out, "raw"));
     WriteImage(frame.image, files.back(), o.Display());
@@ -94,7 +96,7 @@ int Finish(const Options& o, Prepared& p, const RenderedFrame& frame, const Rend
   times.aov = frame.aovSeconds;
   times.denoise = frame.denoiseSeconds;
   PhaseTimer phase;
-  const std::vector<std::string> files = WriteFiles(frame, o);
+  const std::vector<std::string> files = WriteFiles(frame, o, *p.loaded);
   phase.Lap(times.write);
   int status = reference ? CompareBackends(*reference, frame, o) : 0;
   PrintRenderReport(p.scene(), p.rs(), frame, o, files, backend.DenoiserName());

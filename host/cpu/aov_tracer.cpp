@@ -38,6 +38,7 @@ AovSums RenderAovsCpu(const RenderScene& scene, const shader::FrameParams& param
       AovPixelSums& p = sums.pixels[y * params.width + x];
       for (uint32_t s = 0; s < samples; ++s) {
         const shader::AovSample a = shader::TraceAovSample(scene, params, x, uint32_t(y), s);
+        if (s == 0) p.triangle = a.triangle;
         if (!IsFinite(a.albedo) || !IsFinite(a.normal) || !IsFinite(a.position) || !std::isfinite(a.depth)) {
           ++dropped;
           continue;

@@ -6,6 +6,7 @@
 #include "engine/environment_load.h"
 #include "render/light_table.h"
 #include "scene/load_limits.h"
+#include "scene/scene_ids.h"
 #include "shared/sampling.h"
 #include "util/error.h"
 
@@ -105,6 +106,15 @@ const RenderBackend& LoadedScene::Backend() {
   }
   return *backend_;
 }
+
+TriangleIdsOf LoadedScene::IdsOf() const {
+  return [&scene = scene()](uint32_t triangle) {
+    const TriangleIds ids = IdsOfTriangle(scene, triangle);
+    return std::array<int64_t, 3>{ids.object, ids.material, ids.instance};
+  };
+}
+
+std::string LoadedScene::IdsJson() const { return vkpt::IdsJson(scene()); }
 
 std::unique_ptr<FrameRenderer> LoadedScene::BeginFrame(const shader::FrameParams& params, uint32_t batch) {
   PhaseTimer phase;

@@ -16,6 +16,7 @@
 #include "render/environment_map.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
+#include "session/aov.h"
 #include "session/backend.h"
 #include "session/frame_memory.h"
 #include "shared/layout.h"
@@ -67,6 +68,11 @@ class LoadedScene {
   // A frame of the last Prepare on Backend(); its time, with the upload's, goes to
   // times.upload. `batch`: Vulkan samples per pixel per submission (0: automatic).
   std::unique_ptr<FrameRenderer> BeginFrame(const shader::FrameParams& params, uint32_t batch);
+
+  // What the id AOVs report for a scene triangle, and what the ids name (JSON), of the
+  // scene as posed (scene/scene_ids.h).
+  TriangleIdsOf IdsOf() const;
+  std::string IdsJson() const;
 
   RunTimes times;  // load, environment, pose, prepare and upload, as they happen
 

@@ -151,7 +151,8 @@ Raises vkpt.Error naming the file and the problem.)")
 
 camera: None (the file's first camera), an int (the file's camera of that index) or a
 vkpt.Camera. The GIL is released while rendering; progress(fraction) is called now and
-then. aovs: albedo, normal, depth, position, variance, spp, heatmap, or "all".)");
+then. aovs: albedo, normal, depth, position, variance, spp, heatmap, object_id,
+material_id, instance_id, or "all".)");
 }
 
 }  // namespace

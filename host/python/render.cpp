@@ -55,10 +55,17 @@ void BindRender(py::module_& m) {
 
 image: linear Rec.709 radiance, float32 H x W x 3 (denoised with denoise=True);
 raw: the image before the filter (None without denoise); aovs: name -> H x W x C array;
-np.asarray(render) is the image. The arrays are views of the render's memory.)")
+ids: with an id AOV, what its ids name (a dict), else None; np.asarray(render) is the
+image. The arrays are views of the render's memory.)")
       .def_property_readonly("image", &PyRender::ImageArray)
       .def_property_readonly("raw", &PyRender::RawArray)
       .def_property_readonly("aovs", &PyRender::AovArrays)
+      .def_property_readonly("ids",
+                             [](const PyRender& r) -> py::object {
+                               const std::string& ids = r.Result().ids;
+                               if (ids.empty()) return py::none();
+                               return py::module_::import("json").attr("loads")(ids);
+                             })
       .def_property_readonly("channels", &PyRender::Channels, "channel names of the image, raw and each AOV")
       .def_property_readonly("spp", [](const PyRender& r) { return r.Result().spp; })
       .def_property_readonly("samples", [](const PyRender& r) { return r.Result().samples; })

@@ -87,6 +87,7 @@ struct AovPixelSums {
   double depth = 0.0;
   double boxTests = 0.0;
   uint32_t hits = 0;
+  uint32_t triangle = 0xFFFFFFFFu;  // the scene triangle at the pixel's centre (shared/aov.h); none: kInvalidIndex
 };
 
 // The AOV sums of a frame: samples [0, samples) of every pixel.

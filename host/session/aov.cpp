@@ -11,8 +11,11 @@
 namespace vkpt {
 namespace {
 
-constexpr std::array<const char*, kAovCount> kNames = {"albedo",   "normal", "depth",  "position",
-                                                       "variance", "spp",    "heatmap"};
+constexpr std::array<const char*, kAovCount> kNames = {"albedo", "normal",  "depth",     "position",    "variance",
+                                                       "spp",    "heatmap", "object_id", "material_id", "instance_id"};
+
+// Float32 holds every integer up to this one exactly.
+constexpr int64_t kLargestExactId = int64_t(1) << 24;
 
 // The channel suffixes of each AOV, in kNames order.
 std::vector<std::string> Suffixes(Aov aov) {
@@ -22,6 +25,9 @@ std::vector<std::string> Suffixes(Aov aov) {
     case Aov::kNormal:
     case Aov::kPosition: return {"X", "Y", "Z"};
     case Aov::kDepth: return {"Z"};
+    case Aov::kObjectId:
+    case Aov::kMaterialId:
+    case Aov::kInstanceId: return {"ID"};
     default: return {"Y"};
   }
 }
@@ -50,10 +56,20 @@ std::string KnownNames() {
 
 uint8_t Byte(float unit) { return uint8_t(std::lround(std::clamp(unit, 0.0f, 1.0f) * 255.0f)); }
 
+// The PNG colour of an id: black for −1 (nothing), else a bright colour hashed from the
+// id (a PCG step), so that neighbouring ids stand apart.
+glm::vec3 IdColour(float id) {
+  if (id < 0.0f) return glm::vec3(0.0f);
+  uint32_t h = uint32_t(id) * 747796405u + 2891336453u;
+  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+  h = (h >> 22u) ^ h;
+  return glm::vec3(0.25f) + 0.75f * glm::vec3(h & 0xFFu, (h >> 8) & 0xFFu, (h >> 16) & 0xFFu) / 255.0f;
+}
+
 // The PNG picture of an AOV: albedo through the sRGB curve; normals as n/2 + 1/2 (a
 // normal map's colours); positions scaled per axis to the image's range; depth as grey
 // from black (0) to white (the farthest); variance (the channels' mean), spp and the
-// heat map through Turbo from 0 to the image's largest value.
+// heat map through Turbo from 0 to the image's largest value; ids as colours (IdColour).
 std::vector<uint8_t> Picture(const AovLayer& layer, size_t pixels) {
   const size_t channels = layer.suffixes.size();
   std::vector<uint8_t> rgb(pixels * 3);
@@ -86,6 +102,9 @@ std::vector<uint8_t> Picture(const AovLayer& layer, size_t pixels) {
           rgb[3 * i + c] = Byte(hi[c] > lo[c] ? (layer.values[3 * i + c] - lo[c]) / (hi[c] - lo[c]) : 0.0f);
         continue;
       case Aov::kDepth: bytes = glm::vec3(scalar(i) * scale); break;
+      case Aov::kObjectId:
+      case Aov::kMaterialId:
+      case Aov::kInstanceId: bytes = IdColour(scalar(i)); break;
       default: bytes = Turbo(scalar(i) * scale); break;
     }
     for (int c = 0; c < 3; ++c) rgb[3 * i + c] = Byte(bytes[c]);
@@ -100,6 +119,43 @@ Image AsImage(const AovLayer& layer, uint32_t width, uint32_t height) {
   for (size_t i = 0; i < im.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c) im.pixels[i][c] = layer.values[i * channels + (channels == 1 ? 0 : c)];
   return im;
+}
+
+// `out` split into NAME and .EXT (.EXT empty when its last component has no dot).
+std::pair<std::string, std::string> StemAndExtension(const std::string& out) {
+  const size_t dot = out.find_last_of('.');
+  const size_t slash = out.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {out, ""};
+  return {out.substr(0, dot), out.substr(dot)};
+}
+
+// WriteImageWithAovs without the ids' names.
+std::vector<std::string> WriteImageAndLayers(const Image& image, const std::vector<AovLayer>& layers,
+                                             const std::string& out, const DisplayTransform& display) {
+  const ImageFormat format = FormatFromPath(out);
+  if (format != ImageFormat::Exr || layers.empty()) {
+    WriteImage(image, out, display);
+    std::vector<std::string> files = {out};
+    for (const AovLayer& layer : layers) {
+      const std::string path = AovPath(out, layer.aov);
+      if (format == ImageFormat::Png)
+        WriteFileAtomically(path, EncodePngRgb8(image.width, image.height, Picture(layer, image.pixels.size())));
+      else WriteImage(AsImage(layer, image.width, image.height), path);
+      files.push_back(path);
+    }
+    return files;
+  }
+  std::vector<ExrChannel> channels = RgbChannels(image);
+  for (const AovLayer& layer : layers) {
+    const size_t n = layer.suffixes.size();
+    for (size_t c = 0; c < n; ++c) {
+      ExrChannel ch{std::string(AovName(layer.aov)) + "." + layer.suffixes[c], std::vector<float>(image.pixels.size())};
+      for (size_t i = 0; i < image.pixels.size(); ++i) ch.values[i] = layer.values[i * n + c];
+      channels.push_back(std::move(ch));
+    }
+  }
+  WriteFileAtomically(out, EncodeExrChannels(image.width, image.height, std::move(channels), out));
+  return {out};
 }
 
 }  // namespace
@@ -135,6 +191,10 @@ std::vector<Aov> AovsFromNames(const std::vector<std::string>& names) {
 
 bool NeedsAovPass(Aov aov) { return aov != Aov::kVariance && aov != Aov::kSpp; }
 
+bool IsIdAov(Aov aov) { return aov == Aov::kObjectId || aov == Aov::kMaterialId || aov == Aov::kInstanceId; }
+
+bool WantsIds(const std::vector<Aov>& aovs) { return std::any_of(aovs.begin(), aovs.end(), IsIdAov); }
+
 uint32_t AovChannels(const std::vector<Aov>& aovs) {
   uint32_t n = 0;
   for (Aov aov : aovs) n += uint32_t(Suffixes(aov).size());
@@ -142,13 +202,22 @@ uint32_t AovChannels(const std::vector<Aov>& aovs) {
 }
 
 std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums& aovSums, const FrameSums& sums,
-                                  const Image& image) {
+                                  const Image& image, const TriangleIdsOf& idsOf) {
   const size_t pixels = size_t(image.width) * image.height;
   std::vector<AovLayer> layers;
   for (Aov aov : wanted) {
     AovLayer layer{aov, Suffixes(aov), {}};
     layer.values.reserve(pixels * layer.suffixes.size());
     auto put = [&layer](glm::vec3 v) { layer.values.insert(layer.values.end(), {v.x, v.y, v.z}); };
+    // Which of the triangle's ids the layer holds, stored as an exact float.
+    const size_t which = aov == Aov::kObjectId ? 0 : aov == Aov::kMaterialId ? 1 : 2;
+    auto putId = [&](uint32_t triangle) {
+      const int64_t id = idsOf(triangle)[which];
+      if (id > kLargestExactId)
+        throw Error(std::string("the ") + AovName(aov) + " AOV: id " + std::to_string(id) +
+                    " is beyond the integers float32 holds exactly (2^24)");
+      layer.values.push_back(float(id));
+    };
     for (size_t i = 0; i < pixels; ++i) {
       const AovPixel a = NeedsAovPass(aov) ? ResolveAovPixel(aovSums.pixels.at(i), aovSums.samples) : AovPixel{};
       switch (aov) {
@@ -159,6 +228,9 @@ std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums&
         case Aov::kVariance: put(image.variance.empty() ? glm::vec3(0.0f) : image.variance[i]); break;
         case Aov::kSpp: layer.values.push_back(float(sums.pixels.at(i).samples)); break;
         case Aov::kHeatmap: layer.values.push_back(a.boxTests); break;
+        case Aov::kObjectId:
+        case Aov::kMaterialId:
+        case Aov::kInstanceId: putId(aovSums.pixels.at(i).triangle); break;
       }
     }
     layers.push_back(std::move(layer));
@@ -167,41 +239,23 @@ std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums&
 }
 
 std::string SiblingPath(const std::string& out, const std::string& tag) {
-  const size_t dot = out.find_last_of('.');
-  const size_t slash = out.find_last_of('/');
-  const bool hasExtension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-  const std::string stem = hasExtension ? out.substr(0, dot) : out;
-  return stem + "." + tag + (hasExtension ? out.substr(dot) : "");
+  const auto [stem, extension] = StemAndExtension(out);
+  return stem + "." + tag + extension;
 }
 
 std::string AovPath(const std::string& out, Aov aov) { return SiblingPath(out, AovName(aov)); }
 
+std::string IdsPath(const std::string& out) { return StemAndExtension(out).first + ".ids.json"; }
+
 std::vector<std::string> WriteImageWithAovs(const Image& image, const std::vector<AovLayer>& layers,
-                                            const std::string& out, const DisplayTransform& display) {
-  const ImageFormat format = FormatFromPath(out);
-  if (format != ImageFormat::Exr || layers.empty()) {
-    WriteImage(image, out, display);
-    std::vector<std::string> files = {out};
-    for (const AovLayer& layer : layers) {
-      const std::string path = AovPath(out, layer.aov);
-      if (format == ImageFormat::Png)
-        WriteFileAtomically(path, EncodePngRgb8(image.width, image.height, Picture(layer, image.pixels.size())));
-      else WriteImage(AsImage(layer, image.width, image.height), path);
-      files.push_back(path);
-    }
-    return files;
+                                            const std::string& out, const DisplayTransform& display,
+                                            const std::string& idsJson) {
+  std::vector<std::string> files = WriteImageAndLayers(image, layers, out, display);
+  if (!idsJson.empty()) {
+    files.push_back(IdsPath(out));
+    WriteFileAtomically(files.back(), {reinterpret_cast<const uint8_t*>(idsJson.data()), idsJson.size()});
   }
-  std::vector<ExrChannel> channels = RgbChannels(image);
-  for (const AovLayer& layer : layers) {
-    const size_t n = layer.suffixes.size();
-    for (size_t c = 0; c < n; ++c) {
-      ExrChannel ch{std::string(AovName(layer.aov)) + "." + layer.suffixes[c], std::vector<float>(image.pixels.size())};
-      for (size_t i = 0; i < image.pixels.size(); ++i) ch.values[i] = layer.values[i * n + c];
-      channels.push_back(std::move(ch));
-    }
-  }
-  WriteFileAtomically(out, EncodeExrChannels(image.width, image.height, std::move(channels), out));
-  return {out};
+  return files;
 }
 
 }  // namespace vkpt

@@ -9,9 +9,14 @@
 //   variance  RGB   variance of the pixel's mean radiance (the image's noise)
 //   spp       Y     samples the pixel took (adaptive sampling varies it)
 //   heatmap   Y     BVH boxes tested per camera ray (the backend's own walk)
+//   object_id, material_id, instance_id
+//             ID    the glTF node, material and mesh instance of what a ray through the
+//                   pixel's centre hits first, an exact integer (−1: nothing)
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,8 +27,19 @@
 
 namespace vkpt {
 
-enum class Aov : uint8_t { kAlbedo, kNormal, kDepth, kPosition, kVariance, kSpp, kHeatmap };
-constexpr int kAovCount = 7;
+enum class Aov : uint8_t {
+  kAlbedo,
+  kNormal,
+  kDepth,
+  kPosition,
+  kVariance,
+  kSpp,
+  kHeatmap,
+  kObjectId,
+  kMaterialId,
+  kInstanceId
+};
+constexpr int kAovCount = 10;
 
 const char* AovName(Aov aov);  // "albedo", …
 std::optional<Aov> AovFromName(std::string_view name);
@@ -37,6 +53,14 @@ std::vector<Aov> AovsFromNames(const std::vector<std::string>& names);
 bool NeedsAovPass(Aov aov);
 bool NeedsAovPass(const std::vector<Aov>& aovs);  // any of them
 
+// Whether the AOV is an id (object_id, material_id, instance_id); any of them.
+bool IsIdAov(Aov aov);
+bool WantsIds(const std::vector<Aov>& aovs);
+
+// The ids of a scene triangle (AovPixelSums::triangle) for the id AOVs: object, material,
+// instance, −1 for none; the caller knows the scene (engine/loaded_scene.h).
+using TriangleIdsOf = std::function<std::array<int64_t, 3>(uint32_t triangle)>;
+
 // Float channels of these AOVs' layers (3 for albedo, 1 for depth, …).
 uint32_t AovChannels(const std::vector<Aov>& aovs);
 
@@ -49,9 +73,10 @@ struct AovLayer {
 };
 
 // The requested AOVs of a render: `aovSums` (read only if some AOV needs the pass),
-// the render's sums and its image (for the variance).
+// the render's sums and its image (for the variance), the ids of a triangle (called only
+// for an id AOV). Throws Error for an id beyond float32's exact integers (2^24).
 std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums& aovSums, const FrameSums& sums,
-                                  const Image& image);
+                                  const Image& image, const TriangleIdsOf& idsOf);
 
 // A file beside the image `out` = NAME.EXT: NAME.<tag>.EXT (NAME.raw.png, …).
 std::string SiblingPath(const std::string& out, const std::string& tag);
@@ -59,11 +84,15 @@ std::string SiblingPath(const std::string& out, const std::string& tag);
 // Where AOV `aov` of the image `out` goes when `out` is not an EXR: NAME.albedo.EXT beside it.
 std::string AovPath(const std::string& out, Aov aov);
 
+// Where the names of the ids go: NAME.ids.json beside the image `out` = NAME.EXT.
+std::string IdsPath(const std::string& out);
+
 // Writes the image to `out` and the AOVs with it: as layers of the same EXR when `out`
 // is .exr, else each to AovPath (PNG: a picture of the values, see aov.cpp; PFM: the
-// values, a single channel repeated in R, G and B). Each file is written atomically.
-// Returns the files written, `out` first.
+// values, a single channel repeated in R, G and B); `idsJson`, unless empty, to IdsPath.
+// Each file is written atomically. Returns the files written, `out` first.
 std::vector<std::string> WriteImageWithAovs(const Image& image, const std::vector<AovLayer>& layers,
-                                            const std::string& out, const DisplayTransform& display);
+                                            const std::string& out, const DisplayTransform& display,
+                                            const std::string& idsJson = "");
 
 }  // namespace vkpt

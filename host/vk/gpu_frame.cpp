@@ -133,22 +133,27 @@ class GpuFrame final : public FrameRenderer {
     const uint64_t pixels = uint64_t(frame_.width) * frame_.height;
     Buffer sums = StorageBuffer(ctx_, pixels * shader::kAovSumsPerPixel * sizeof(glm::vec4), "AOV sum");
     Buffer sumsHost = ReadbackBuffer(ctx_, sums.Size(), "AOV readback");
+    Buffer triangles = StorageBuffer(ctx_, pixels * sizeof(uint32_t), "AOV triangle");
+    Buffer trianglesHost = ReadbackBuffer(ctx_, triangles.Size(), "AOV triangle readback");
     std::unique_ptr<ComputePipeline> aov =
         kernels_(kAovSpirv, sizeof(kAovSpirv),
                  {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b_.params.Handle()},
-                  {shader::kBindingAovSums, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sums.Handle()}},
+                  {shader::kBindingAovSums, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sums.Handle()},
+                  {shader::kBindingAovTriangles, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, triangles.Handle()}},
                  "aov", sizeof(uint32_t));
     std::memcpy(b_.params.Mapped(), &frame_, sizeof frame_);  // every earlier submission has finished
     ctx_.Submit([&](VkCommandBuffer cb) {
       vkCmdFillBuffer(cb, sums.Handle(), 0, VK_WHOLE_SIZE, 0);
+      vkCmdFillBuffer(cb, triangles.Handle(), 0, VK_WHOLE_SIZE, shader::kInvalidIndex);
       for (uint32_t s = 0; s < samples; ++s) {
         ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
         aov->Dispatch(cb, (frame_.width + kWorkgroup - 1) / kWorkgroup, (frame_.height + kWorkgroup - 1) / kWorkgroup,
                       1, &s);
       }
-      CopyToHost(cb, {{&sums, &sumsHost}});
+      CopyToHost(cb, {{&sums, &sumsHost}, {&triangles, &trianglesHost}});
     });
     const auto* v = static_cast<const glm::vec4*>(sumsHost.Mapped());
+    const auto* t = static_cast<const uint32_t*>(trianglesHost.Mapped());
     AovSums a;
     a.width = frame_.width;
     a.height = frame_.height;
@@ -161,7 +166,8 @@ class GpuFrame final : public FrameRenderer {
                      glm::dvec3(glm::vec3(p[2])),
                      double(p[0].w),
                      double(p[2].w),
-                     uint32_t(p[1].w)};
+                     uint32_t(p[1].w),
+                     t[i]};
     }
     return a;
   }

@@ -164,10 +164,11 @@ api::RenderResult api::Scene::Render(const Camera& camera, const RenderOptions& 
     const uint32_t w = frame.size.x, h = frame.size.y;
     result.image = ToImage(rendered.denoised ? rendered.denoised->pixels : rendered.image.pixels, w, h);
     if (rendered.denoised) result.raw = ToImage(rendered.image.pixels, w, h);
-    for (AovLayer& layer : ResolveAovs(aovs, rendered.aovs, rendered.sums, rendered.image)) {
+    for (AovLayer& layer : ResolveAovs(aovs, rendered.aovs, rendered.sums, rendered.image, loaded.IdsOf())) {
       const uint32_t channels = uint32_t(layer.suffixes.size());
       result.aovs[AovName(layer.aov)] = {w, h, channels, std::move(layer.suffixes), std::move(layer.values)};
     }
+    if (WantsIds(aovs)) result.ids = loaded.IdsJson();
     result.spp = rendered.spp;
     result.samples = rendered.samples;
     result.stoppedBy = rendered.stoppedBy == StopReason::kSignal ? "cancelled" : StopReasonName(rendered.stoppedBy);
@@ -186,7 +187,7 @@ std::vector<std::string> api::Save(const RenderResult& result, const std::string
     const DisplayTransform display{*known, exposure};
     std::vector<AovLayer> layers;
     for (const auto& [name, aov] : result.aovs) layers.push_back(ToLayer(name, aov, result.image));
-    std::vector<std::string> files = WriteImageWithAovs(ToInternal(result.image), layers, path, display);
+    std::vector<std::string> files = WriteImageWithAovs(ToInternal(result.image), layers, path, display, result.ids);
     if (result.raw) {
       files.push_back(SiblingPath(path, "raw"));
       WriteImage(ToInternal(*result.raw), files.back(), display);

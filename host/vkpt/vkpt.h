@@ -92,9 +92,11 @@ struct RenderOptions {
   std::optional<std::array<float, 3>> background;  // radiance of rays that leave the scene
   float environmentRotation = 0.0f;                // degrees about +Y
   bool textureLod = true;                          // ray-cone texture filtering
-  std::vector<std::string> aovs;                   // albedo, normal, depth, position, variance, spp, heatmap; "all"
-  bool denoise = false;                            // image: denoised; raw: before the filter
-  std::function<void(double)> progress;            // finished fraction, from the rendering thread
+  // albedo, normal, depth, position, variance, spp, heatmap, object_id, material_id,
+  // instance_id; "all"
+  std::vector<std::string> aovs;
+  bool denoise = false;                  // image: denoised; raw: before the filter
+  std::function<void(double)> progress;  // finished fraction, from the rendering thread
   // Asked between passes from the rendering thread; true ends the render there with the
   // samples taken so far (stoppedBy "cancelled"), whose image is returned as any other.
   std::function<bool()> cancel;
@@ -112,6 +114,10 @@ struct RenderResult {
   Image image;               // linear Rec.709 radiance (denoised with RenderOptions::denoise)
   std::optional<Image> raw;  // with denoise: the image before the filter
   std::map<std::string, Image> aovs;
+  // With an id AOV: what its ids name, as JSON ({"none": -1, "object_id": [{"id", "name",
+  // "mesh"}…], "material_id": [{"id", "name"}…], "instance_id": [{"id", "object_id",
+  // "placement"}…]}); else empty.
+  std::string ids;
   uint32_t spp = 0;       // samples per pixel (adaptive: the most any pixel took)
   uint64_t samples = 0;   // every pixel's samples added up
   std::string stoppedBy;  // "spp", "time", "noise_target", "converged", "cancelled"
@@ -142,7 +148,8 @@ class VKPT_API Scene {
 
 // Writes a render as the command line writes it, by the extension of `path`: .exr holds the
 // image and its AOVs as layers ("depth.Z", …); beside a .pfm or .png each AOV goes to
-// NAME.<aov>.EXT; with RenderOptions::denoise the raw image goes to NAME.raw.EXT. A PNG shows
+// NAME.<aov>.EXT; with RenderOptions::denoise the raw image goes to NAME.raw.EXT, and the
+// names of the ids (RenderResult::ids) to NAME.ids.json. A PNG shows
 // the radiance after `exposure` stops through `view` ("neutral": Khronos PBR Neutral,
 // "agx", "aces" or "clamp"). Each file is written whole or not at all. Returns the paths
 // written, `path` first. Throws Error.

@@ -53,6 +53,9 @@ const uint kBindingActive = 23u;
 // host; it reuses the scene bindings above and kBindingParams.
 const uint kBindingAovSums = 24u;
 const uint kAovSumsPerPixel = 3u;
+// aov.comp: per pixel one uint, AovSample::triangle of sample 0 (filled with kInvalidIndex
+// before the pass).
+const uint kBindingAovTriangles = 27u;
 
 // Descriptor bindings of the denoiser (denoise.comp, shared/denoise.h), one vec4 per pixel each.
 const uint kBindingDenoiseColor = 0u;   // readonly: this iteration's input (RGB, luminance variance)

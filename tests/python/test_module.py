@@ -1,7 +1,8 @@
 """`import vkpt`: arrays of the right shape and type, the command line's pixels and files,
-determinism, cameras, errors as exceptions, the GIL released while rendering, progress,
-cancellation by Ctrl-C or a callback's exception."""
+determinism, the id AOVs and their names, cameras, errors as exceptions, the GIL released
+while rendering, progress, cancellation by Ctrl-C or a callback's exception."""
 import _thread
+import json
 import threading
 import time
 
@@ -16,10 +17,13 @@ def test_arrays_have_the_image_shape_and_float32(cpu_scene):
     r = cpu_scene.render(**SMALL, aovs=["all"])
     assert r.image.shape == (16, 24, 3) and r.image.dtype == np.float32 and r.image.flags.c_contiguous
     assert np.array_equal(np.asarray(r), r.image)
-    assert sorted(r.aovs) == ["albedo", "depth", "heatmap", "normal", "position", "spp", "variance"]
+    ids = ["instance_id", "material_id", "object_id"]
+    assert sorted(r.aovs) == sorted(["albedo", "depth", "heatmap", "normal", "position", "spp", "variance"] + ids)
     channels = {name: a.shape[2] for name, a in r.aovs.items()}
-    assert channels == dict(albedo=3, depth=1, heatmap=1, normal=3, position=3, spp=1, variance=3)
+    assert channels == dict(albedo=3, depth=1, heatmap=1, normal=3, position=3, spp=1, variance=3,
+                            instance_id=1, material_id=1, object_id=1)
     assert r.channels["normal"] == ["X", "Y", "Z"] and r.channels["depth"] == ["Z"]
+    assert r.channels["object_id"] == ["ID"]
     assert all(a.dtype == np.float32 for a in r.aovs.values())
     assert r.spp == 4 and r.samples == 4 * 24 * 16 and r.stopped_by == "spp" and r.raw is None
     assert np.all(r.aovs["spp"] == 4.0)
@@ -51,6 +55,19 @@ def test_pixels_and_aovs_equal_the_command_lines(backend, tmp_path):
     run_vkpt("--backend", backend, "--aov", "depth,normal", "--out", str(tmp_path / "cli.exr"))
     assert r.save(str(tmp_path / "py.exr")) == [str(tmp_path / "py.exr")]
     assert (tmp_path / "py.exr").read_bytes() == (tmp_path / "cli.exr").read_bytes()
+
+
+def test_id_aovs_and_their_names_equal_the_command_lines(cpu_scene, tmp_path):
+    r = cpu_scene.render(**SMALL, aovs=["object_id", "material_id"])
+    assert r.aovs["object_id"].shape == (16, 24, 1)
+    run_vkpt("--backend", "cpu", "--aov", "object_id,material_id", "--out", str(tmp_path / "cli.pfm"))
+    for name in ("object_id", "material_id"):
+        assert np.array_equal(r.aovs[name][..., 0], read_pfm(tmp_path / f"cli.{name}.pfm")[..., 0])
+    assert r.ids == json.loads((tmp_path / "cli.ids.json").read_text())
+    names = {o["id"]: o["name"] for o in r.ids["object_id"]}
+    assert {names[int(i)] for i in np.unique(r.aovs["object_id"]) if i >= 0} >= {"floor", "backWall", "tallBox"}
+    assert str(tmp_path / "py.ids.json") in r.save(str(tmp_path / "py.exr"))
+    assert cpu_scene.render(**SMALL).ids is None
 
 
 def test_cameras(cpu_scene, tmp_path):
