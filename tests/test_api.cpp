@@ -151,7 +151,16 @@ TEST(Api, FailuresAreErrorsNamingTheirCause) {
             kCornell + ": camera 3 is out of range; the scene has 1 camera(s)");
   api::SceneOptions tiny = cpu;
   tiny.maxMemory = 1024;
-  EXPECT_NE(message([&] { api::Scene(kCornell, tiny); }).find("memory"), std::string::npos);
+  // The engine's messages name the API's settings, not the command line's options.
+  const std::string tooBig = message([&] { api::Scene(kCornell, tiny); });
+  EXPECT_NE(tooBig.find("more than SceneOptions::maxMemory 1 KiB allows (raise SceneOptions::maxMemory"),
+            std::string::npos)
+      << tooBig;
+  api::SceneOptions ninth;
+  ninth.backend = api::Backend::Vulkan;
+  ninth.device = "9";
+  EXPECT_EQ(message([&] { api::Scene(kCornell, ninth); }),
+            "SceneOptions::device 9: there are only 1 Vulkan device(s) (`vkpt --list-devices` lists them)");
   // The scene still renders after a failed render.
   EXPECT_EQ(scene.Render(api::Camera{}, Small()).image.data.size(), 24u * 16u * 3u);
 }

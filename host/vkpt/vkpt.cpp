@@ -18,6 +18,7 @@
 #include "session/budget.h"
 #include "session/local_passes.h"
 #include "session/render_session.h"
+#include "vkpt/api_terms.h"
 
 namespace vkpt {
 using InternalImage = Image;  // vkpt::Image is ambiguous once api::Image exists
@@ -108,7 +109,7 @@ AovLayer ToLayer(const std::string& name, const api::Image& aov, const api::Imag
   return {*known, aov.channelNames, aov.data};
 }
 
-// Any failure inside as the one public exception, its message kept.
+// Any failure inside as the one public exception, its message in the API's terms.
 template <class F>
 auto Translated(F&& f) {
   try {
@@ -118,7 +119,7 @@ auto Translated(F&& f) {
   } catch (const std::bad_alloc&) {
     throw api::Error("out of memory");
   } catch (const std::exception& e) {
-    throw api::Error(e.what());
+    throw api::Error(InApiTerms(e.what()));
   }
 }
 

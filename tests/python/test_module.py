@@ -108,6 +108,14 @@ def test_errors_are_exceptions_with_vkpts_message(cpu_scene, tmp_path):
         vkpt.Camera(matrix=np.eye(3))
     with pytest.raises(TypeError):
         cpu_scene.render(**dict(SMALL, spp=-1))
+    # The library's messages name Python's keywords.
+    assert vkpt._vkpt._python_terms("use a smaller RenderOptions::width/height or Backend::Cpu; "
+                                     "SceneOptions::allowExternalUris") == (
+        'use a smaller width/height or backend="cpu"; allow_external_uris')
+    with pytest.raises(vkpt.Error, match=r"more than max_memory 1 KiB allows \(raise max_memory"):
+        vkpt.Scene(CORNELL, max_memory=1024)
+    with pytest.raises(vkpt.Error, match="^device 9: there are only 1 Vulkan device"):
+        vkpt.Scene(CORNELL, backend="vulkan", device="9")
     with pytest.raises(vkpt.Error, match='unknown view "filmic"'):
         cpu_scene.render(**SMALL).save(str(tmp_path / "a.png"), view="filmic")
     # The scene renders after every failure.
