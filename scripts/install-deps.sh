@@ -24,6 +24,7 @@ packages=(
   clang-format                          # scripts/check-format.sh
   clang-14 libclang-rt-14-dev           # the loader fuzzer: clang++ and libFuzzer's runtime
   llvm-14                               # llvm-symbolizer: sanitizer reports with file:line
+  ccache                                # CI: the build without MPI reuses the plain build's objects
 )
 # (g++'s AddressSanitizer and UBSan runtimes, libasan8 and libubsan1, come with g++.)
 
