@@ -46,6 +46,7 @@ std::vector<float> CliRender(std::vector<std::string> args, const std::string& o
 }
 
 TEST(Api, RendersOfOneSceneEqualTheCommandLines) {
+  VKPT_SKIP_UNDER_ADDRESS_SANITIZER("eight command-line renders against the library's, 20 s");
   const std::string dir = test::FreshTempDirectory("api-cli");
   for (const char* backend : {"cpu", "vulkan"}) {
     api::SceneOptions options;

@@ -387,6 +387,7 @@ TEST(Cli, PfmHasRequestedSizeAndFiniteMeanNearSummary) {
 }
 
 TEST(Cli, MissingSideFollowsCameraAspectRatio) {
+  VKPT_SKIP_UNDER_ADDRESS_SANITIZER("a dozen renders of image sizes, 10 s");
   // A triangle seen by a camera of aspectRatio 1.5 (as the corpus's Duck has).
   test::GltfBuilder b = test::TriangleModel();
   b.cameras.push_back(R"({"type":"perspective","perspective":{"yfov":0.8,"aspectRatio":1.5,"znear":0.1}})");

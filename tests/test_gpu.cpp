@@ -342,6 +342,7 @@ void ExpectArraysInTwoBuffersRenderTheSameImage(vk::Context& gpu, const Scene& s
 }
 
 TEST_F(GpuTest, ArraysInTwoBuffersRenderTheSameImage) {
+  VKPT_SKIP_UNDER_ADDRESS_SANITIZER("a bit-identity of the buffer split, 13 s (its textured twin skips too)");
   const std::string cornell = test::SourcePath("scenes/cornell.gltf");
   ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), LoadGltf(cornell), cornell);
   ExpectArraysInTwoBuffersRenderTheSameImage(Gpu(), test::TexturedQuadScene(), "the textured square");
