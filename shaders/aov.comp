@@ -15,10 +15,14 @@ layout(std140, binding = kBindingParams) uniform Params { FrameParams params; };
 // Per pixel, kAovSumsPerPixel vec4 (layout.h): (Σ albedo, Σ depth), (Σ normal, hits),
 // (Σ position, Σ box tests).
 layout(std430, binding = kBindingAovSums) buffer AovSums { vec4 aovSums[]; };
-// Per pixel, the scene triangle the id AOVs name, written by sample 0.
+// Per pixel, the scene triangle the id AOVs name (PixelCentreTriangle): written with
+// `ids` by the dispatch of sample 0; without, the buffer is a stand-in of one uint.
 layout(std430, binding = kBindingAovTriangles) buffer AovTriangles { uint aovTriangles[]; };
 // This dispatch adds AOV sample `sampleIndex`.
-layout(push_constant) uniform Push { uint sampleIndex; };
+layout(push_constant) uniform Push {
+  uint sampleIndex;
+  uint ids;
+};
 
 #include "scene_constants.glsl"
 #define VKPT_COUNT_BOX_TESTS
@@ -46,8 +50,12 @@ void main() {
   // Every lane runs the walk (subgroup operations count its loop passes); only those in
   // the image add what they found.
   bool inside = pixel.x < params.width && pixel.y < params.height;
-  AovSample a = TraceAovSample(params, min(pixel.x, params.width - 1u), min(pixel.y, params.height - 1u), sampleIndex);
-  if (inside && sampleIndex == 0u) aovTriangles[pixel.y * params.width + pixel.x] = a.triangle;
+  uvec2 traced = min(pixel, uvec2(params.width, params.height) - 1u);
+  if (ids != 0u && sampleIndex == 0u) {
+    uint triangle = PixelCentreTriangle(params, traced.x, traced.y);
+    if (inside) aovTriangles[pixel.y * params.width + pixel.x] = triangle;
+  }
+  AovSample a = TraceAovSample(params, traced.x, traced.y, sampleIndex);
   if (!inside || !IsFinite(a.albedo) || !IsFinite(a.normal) || !IsFinite(a.position) || isnan(a.depth) ||
       isinf(a.depth))
     return;

@@ -6,13 +6,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "cpu/path_tracer.h"
 #include "gpu_test.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
+#include "scene/scene_ids.h"
 #include "session/aov.h"
 #include "session/noise_estimate.h"
 #include "test_util.h"
@@ -94,7 +98,7 @@ TEST(Aov, BoxFacesGiveExactAlbedoNormalDepthAndPosition) {
   const shader::FrameParams p = box.Frame(48);
   std::unique_ptr<FrameRenderer> frame = BeginCpuFrame(box.cpu, p);
   frame->AddSamples(0, 1, {}, {});
-  const AovSums aovs = frame->RenderAovs(16);
+  const AovSums aovs = frame->RenderAovs({16});
   ASSERT_EQ(aovs.samples, 16u);
   EXPECT_EQ(aovs.nonFinite, 0u);
   int exact = 0, background = 0, straddling = 0;
@@ -143,7 +147,7 @@ TEST(Aov, MirrorShowsWhatItReflects) {
   mirror.ior = 1.5f;
   const Box box(&mirror);
   const shader::FrameParams p = box.Frame(32);
-  const AovSums aovs = BeginCpuFrame(box.cpu, p)->RenderAovs(4);
+  const AovSums aovs = BeginCpuFrame(box.cpu, p)->RenderAovs({4});
   int onMirror = 0;
   for (const AovPixelSums& a : aovs.pixels) {
     if (a.hits != 4) continue;
@@ -161,15 +165,24 @@ class AovGpu : public test::ValidatedGpuTest {};
 TEST_F(AovGpu, MatchesTheCpu) {
   const Box box;
   const shader::FrameParams p = box.Frame(40);
-  const AovSums cpu = BeginCpuFrame(box.cpu, p)->RenderAovs(8);
+  const AovSums cpu = BeginCpuFrame(box.cpu, p)->RenderAovs({8, true});
   vk::GpuRenderer renderer(test::Gpu(), box.gpu);
-  const AovSums gpu = renderer.BeginFrame(p)->RenderAovs(8);
+  const std::unique_ptr<FrameRenderer> frame = renderer.BeginFrame(p);
+  const AovSums gpu = frame->RenderAovs({8, true});
   ASSERT_EQ(gpu.pixels.size(), cpu.pixels.size());
   ASSERT_EQ(gpu.samples, 8u);
-  int heatDiffers = 0;
+  // Without ids no pixel's triangle is found, and every sum is the same.
+  const AovSums withoutIds = frame->RenderAovs({8, false});
+  int heatDiffers = 0, centresHit = 0;
   for (size_t i = 0; i < cpu.pixels.size(); ++i) {
-    const AovPixelSums &c = cpu.pixels[i], &g = gpu.pixels[i];
+    const AovPixelSums &c = cpu.pixels[i], &g = gpu.pixels[i], &n = withoutIds.pixels[i];
     ASSERT_EQ(c.hits, g.hits) << i;  // the same camera rays find the same surfaces
+    ASSERT_EQ(c.triangle, g.triangle) << i;
+    centresHit += g.triangle != shader::kInvalidIndex;
+    ASSERT_EQ(n.triangle, shader::kInvalidIndex) << i;
+    ASSERT_EQ(std::tie(n.albedo, n.normal, n.position, n.depth, n.boxTests, n.hits),
+              std::tie(g.albedo, g.normal, g.position, g.depth, g.boxTests, g.hits))
+        << i;
     for (int k = 0; k < 3; ++k) {
       EXPECT_NEAR(c.albedo[k], g.albedo[k], 1e-5) << i;
       EXPECT_NEAR(c.normal[k], g.normal[k], 1e-5) << i;
@@ -180,6 +193,7 @@ TEST_F(AovGpu, MatchesTheCpu) {
     EXPECT_GE(g.boxTests, 8.0) << i;
     heatDiffers += c.boxTests != g.boxTests;
   }
+  EXPECT_GT(centresHit, 40 * 40 / 2);
   std::printf("box 40²: heat maps differ in %d pixels (different walks)\n", heatDiffers);
 }
 
@@ -230,13 +244,20 @@ TEST(Aov, IdsBeyondFloat32sIntegersAreRefused) {
     return std::array<int64_t, 3>{0, 0, largest};
   });
   EXPECT_EQ(fine.at(0).values, std::vector<float>{float(largest)});
-  try {
-    ResolveAovs({Aov::kInstanceId}, sums, {}, image, [&](uint32_t) {
-      return std::array<int64_t, 3>{0, 0, largest + 1};
-    });
-    ADD_FAILURE() << "id 2^24 + 1 was stored";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("instance_id AOV: id 16777217"), std::string::npos) << e.what();
+  // Ids 0 … 2^24 are exact; one more node, material or instance is refused, before a render.
+  const uint64_t most = uint64_t(largest) + 1;
+  EXPECT_NO_THROW(CheckIdsAreExact({most, most, most}, "big.glb"));
+  const std::pair<IdCounts, const char*> beyond[] = {{{most + 1, 1, 1}, "16777218 nodes"},
+                                                     {{1, most + 1, 1}, "16777218 materials"},
+                                                     {{1, 1, most + 1}, "16777218 mesh instances"}};
+  for (const auto& [counts, what] : beyond) {
+    try {
+      CheckIdsAreExact(counts, "big.glb");
+      ADD_FAILURE() << what << " were accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), std::string("big.glb: the id AOVs cannot label ") + what +
+                                           ": ids beyond 2^24 are not exact in float32");
+    }
   }
 }
 

@@ -99,7 +99,7 @@ TEST(Denoise, LowersTheCornellBoxRelMse) {
   p.rrDepth = 3;
   p.seed = 3;
   std::unique_ptr<FrameRenderer> frame = BeginCpuFrame(rs, p);
-  const AovSums aovs = frame->RenderAovs(16);
+  const AovSums aovs = frame->RenderAovs({16});
   uint32_t done = 0;
   for (uint32_t spp : {16u, 64u}) {
     frame->AddSamples(done, spp - done, {}, {});

@@ -55,6 +55,7 @@ FrameRequest RequestFrom(const Options& o, const EngineLog& log, uint32_t ranks)
   shape.compare = o.compare;
   shape.ranks = ranks;
   shape.aovPass = o.denoise || NeedsAovPass(o.aovs);
+  shape.aovIds = WantsIds(o.aovs);
   shape.aovChannels = AovChannels(o.aovs);
   shape.denoise = o.denoise;
   shape.exrOutput = FormatFromPath(o.out) == ImageFormat::Exr;

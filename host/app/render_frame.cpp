@@ -29,6 +29,7 @@ SessionSettings SettingsFromOptions(const Options& o, const RenderBackend& backe
   s.checkpointPath = o.out;
   s.display = o.Display();
   s.aovPass = NeedsAovPass(o.aovs);
+  s.aovIds = WantsIds(o.aovs);
   if (o.denoise) s.denoise = backend.MakeDenoiser();
   s.stop = SignalArrived;
   return s;

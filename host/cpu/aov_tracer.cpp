@@ -25,7 +25,9 @@ bool IsFinite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && 
 
 }  // namespace
 
-AovSums RenderAovsCpu(const RenderScene& scene, const shader::FrameParams& params, uint32_t samples, unsigned threads) {
+AovSums RenderAovsCpu(const RenderScene& scene, const shader::FrameParams& params, const AovRequest& request,
+                      unsigned threads) {
+  const uint32_t samples = request.samples;
   AovSums sums;
   sums.width = params.width;
   sums.height = params.height;
@@ -36,9 +38,9 @@ AovSums RenderAovsCpu(const RenderScene& scene, const shader::FrameParams& param
     uint64_t dropped = 0;
     for (uint32_t x = 0; x < params.width; ++x) {
       AovPixelSums& p = sums.pixels[y * params.width + x];
+      if (request.ids) p.triangle = shader::PixelCentreTriangle(scene, params, x, uint32_t(y));
       for (uint32_t s = 0; s < samples; ++s) {
         const shader::AovSample a = shader::TraceAovSample(scene, params, x, uint32_t(y), s);
-        if (s == 0) p.triangle = a.triangle;
         if (!IsFinite(a.albedo) || !IsFinite(a.normal) || !IsFinite(a.position) || !std::isfinite(a.depth)) {
           ++dropped;
           continue;

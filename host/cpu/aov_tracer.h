@@ -8,8 +8,9 @@
 
 namespace vkpt {
 
-// Samples [0, samples) of every pixel's AOVs, each pixel's summed in sample order (the
-// same sums for any thread count). `scene` must be prepared for the CPU.
-AovSums RenderAovsCpu(const RenderScene& scene, const shader::FrameParams& params, uint32_t samples, unsigned threads);
+// The AOV pass of every pixel (render/film.h's AovRequest), each pixel's samples summed in
+// sample order (the same sums for any thread count). `scene` must be prepared for the CPU.
+AovSums RenderAovsCpu(const RenderScene& scene, const shader::FrameParams& params, const AovRequest& request,
+                      unsigned threads);
 
 }  // namespace vkpt

@@ -94,7 +94,7 @@ class CpuFrame final : public FrameRenderer {
     sums_.pixels.assign(sums_.pixels.size(), PixelSums{});
     sums_.rays = sums_.nonFinite = sums_.cutShort = 0;
   }
-  AovSums RenderAovs(uint32_t samples) override { return RenderAovsCpu(scene_, params_, samples, threads_); }
+  AovSums RenderAovs(const AovRequest& request) override { return RenderAovsCpu(scene_, params_, request, threads_); }
   std::string Engine() const override { return "cpu (" + std::to_string(threads_) + " threads)"; }
   unsigned Threads() const { return threads_; }
 

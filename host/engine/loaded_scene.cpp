@@ -81,6 +81,7 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
   frame.cameraIndex = request.camera.index.value_or(0);
   frame.camera = ChooseCamera(scene(), request.camera, settings_.path);
   frame.size = ImageSize(frame.camera, request.picture);
+  if (request.shape.aovIds) CheckIdsAreExact(IdCountsOf(scene()), settings_.path);
   ChargeFrame(frame, request);
   if (settings_.once || !animated) asset_->ReleaseSource();  // no other pose will be asked for
   phase.Restart();

@@ -90,6 +90,14 @@ struct AovPixelSums {
   uint32_t triangle = 0xFFFFFFFFu;  // the scene triangle at the pixel's centre (shared/aov.h); none: kInvalidIndex
 };
 
+// What an AOV pass renders: the first `samples` samples of every pixel, and with `ids` the
+// scene triangle at each pixel's centre (the id AOVs; else AovPixelSums::triangle stays
+// kInvalidIndex and no ray is traced for it).
+struct AovRequest {
+  uint32_t samples = 0;
+  bool ids = false;
+};
+
 // The AOV sums of a frame: samples [0, samples) of every pixel.
 struct AovSums {
   uint32_t width = 0, height = 0;
@@ -127,9 +135,9 @@ class FrameRenderer {
   }
   // Zeroes the sums and counters: the next samples start new sums (a chunk's, chunked_frame.h).
   virtual void Clear() = 0;
-  // The AOVs of samples [0, samples) of every pixel, the camera rays of the render's
-  // first `samples` samples (shaders/shared/aov.h); independent of the passes so far.
-  virtual AovSums RenderAovs(uint32_t samples) = 0;
+  // The AOVs of samples [0, request.samples) of every pixel, the camera rays of the
+  // render's first samples (shaders/shared/aov.h); independent of the passes so far.
+  virtual AovSums RenderAovs(const AovRequest& request) = 0;
   virtual std::string Engine() const = 0;  // for reports: "cpu (2 threads)", "vulkan: <device> (…)"
 };
 

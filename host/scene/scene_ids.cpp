@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/error.h"
+
 namespace vkpt {
 
 TriangleIds IdsOfTriangle(const Scene& scene, uint32_t triangle) {
@@ -19,6 +21,19 @@ TriangleIds IdsOfTriangle(const Scene& scene, uint32_t triangle) {
   ids.instance = instance;
   ids.object = scene.meshInstances.at(instance).node;
   return ids;
+}
+
+IdCounts IdCountsOf(const Scene& scene) {
+  return {scene.nodeNames.size(), scene.materials.size(), scene.meshInstances.size()};
+}
+
+void CheckIdsAreExact(const IdCounts& counts, const std::string& file) {
+  const std::pair<const char*, uint64_t> kinds[] = {
+      {"nodes", counts.objects}, {"materials", counts.materials}, {"mesh instances", counts.instances}};
+  for (const auto& [kind, count] : kinds)
+    if (count > uint64_t(kLargestExactId) + 1)
+      throw Error(file + ": the id AOVs cannot label " + std::to_string(count) + " " + kind +
+                  ": ids beyond 2^24 are not exact in float32");
 }
 
 std::string IdsJson(const Scene& scene) {

@@ -21,6 +21,19 @@ struct TriangleIds {
 // shader's kInvalidIndex where nothing was hit).
 TriangleIds IdsOfTriangle(const Scene& scene, uint32_t triangle);
 
+// How many ids of each kind a scene has: ids run from 0 to one less.
+struct IdCounts {
+  uint64_t objects = 0, materials = 0, instances = 0;
+};
+IdCounts IdCountsOf(const Scene& scene);
+
+// Float32 holds every integer up to this one exactly: the largest id an id AOV stores.
+constexpr int64_t kLargestExactId = int64_t(1) << 24;
+
+// Throws vkpt::Error naming `file` if an id would be beyond kLargestExactId: checked when a
+// render with an id AOV is prepared, so that no render is refused after it has run.
+void CheckIdsAreExact(const IdCounts& counts, const std::string& file);
+
 // What the ids name, as a JSON object:
 //   {"none": -1,
 //    "object_id": [{"id": node, "name": node name, "mesh": mesh name}, …],  nodes with a mesh

@@ -14,9 +14,6 @@ namespace {
 constexpr std::array<const char*, kAovCount> kNames = {"albedo", "normal",  "depth",     "position",    "variance",
                                                        "spp",    "heatmap", "object_id", "material_id", "instance_id"};
 
-// Float32 holds every integer up to this one exactly.
-constexpr int64_t kLargestExactId = int64_t(1) << 24;
-
 // The channel suffixes of each AOV, in kNames order.
 std::vector<std::string> Suffixes(Aov aov) {
   switch (aov) {
@@ -209,15 +206,10 @@ std::vector<AovLayer> ResolveAovs(const std::vector<Aov>& wanted, const AovSums&
     AovLayer layer{aov, Suffixes(aov), {}};
     layer.values.reserve(pixels * layer.suffixes.size());
     auto put = [&layer](glm::vec3 v) { layer.values.insert(layer.values.end(), {v.x, v.y, v.z}); };
-    // Which of the triangle's ids the layer holds, stored as an exact float.
+    // Which of the triangle's ids the layer holds, an exact float (scene/scene_ids.h's
+    // CheckIdsAreExact is asked before the render).
     const size_t which = aov == Aov::kObjectId ? 0 : aov == Aov::kMaterialId ? 1 : 2;
-    auto putId = [&](uint32_t triangle) {
-      const int64_t id = idsOf(triangle)[which];
-      if (id > kLargestExactId)
-        throw Error(std::string("the ") + AovName(aov) + " AOV: id " + std::to_string(id) +
-                    " is beyond the integers float32 holds exactly (2^24)");
-      layer.values.push_back(float(id));
-    };
+    auto putId = [&](uint32_t triangle) { layer.values.push_back(float(idsOf(triangle)[which])); };
     for (size_t i = 0; i < pixels; ++i) {
       const AovPixel a = NeedsAovPass(aov) ? ResolveAovPixel(aovSums.pixels.at(i), aovSums.samples) : AovPixel{};
       switch (aov) {

@@ -29,7 +29,7 @@ class ChunkedFrame final : public FrameRenderer {
                   const std::function<void(double)>& progress) override;
   void AddSumsTo(FrameSums& into) override;
   void Clear() override;
-  AovSums RenderAovs(uint32_t samples) override { return inner_.RenderAovs(samples); }
+  AovSums RenderAovs(const AovRequest& request) override { return inner_.RenderAovs(request); }
   std::string Engine() const override { return inner_.Engine(); }
 
  private:

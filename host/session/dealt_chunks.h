@@ -21,7 +21,7 @@ class DealtChunks final : public SampleSource {
 
   uint32_t Advance(const SampleRequest& request) override;
   FrameSums Sums() override { return sums_; }
-  AovSums RenderAovs(uint32_t samples) override { return frame_.RenderAovs(samples); }
+  AovSums RenderAovs(const AovRequest& request) override { return frame_.RenderAovs(request); }
   std::vector<RankShare> Finish() override { return dealer_.Finish(); }
   std::string Engine() const override;
 

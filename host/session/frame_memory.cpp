@@ -34,10 +34,11 @@ uint64_t SumsBytes(const FrameShape& s) {
 // The AOV pass's sums, kept to the end (RenderedFrame::aovs).
 uint64_t AovSumsBytes(const FrameShape& s) { return s.aovPass ? sizeof(AovPixelSums) : 0; }
 
-// The GPU's AOV sums and triangles while the pass runs: on the device and read back.
+// The GPU's AOV sums, and triangles for the ids, while the pass runs: on the device and
+// read back.
 uint64_t AovPassBytes(const FrameShape& s) {
   if (!s.aovPass || !s.gpu) return 0;
-  return (shader::kAovSumsPerPixel * kVec4 + sizeof(uint32_t)) * (s.deviceInHost ? 2 : 1);
+  return (shader::kAovSumsPerPixel * kVec4 + (s.aovIds ? sizeof(uint32_t) : 0)) * (s.deviceInHost ? 2 : 1);
 }
 
 // While the denoiser runs: DenoiseInput (colour, guide, albedo) and the two images the

@@ -19,6 +19,7 @@ struct FrameShape {
   bool compare = false;      // --compare: a CPU reference frame as well
   uint32_t ranks = 1;        // an MPI job's ranks (rank 0 holds the chunks in flight)
   bool aovPass = false;      // an AOV pass (some AOV needs it, or --denoise)
+  bool aovIds = false;       // the AOV pass finds each pixel's triangle (an id AOV)
   uint32_t aovChannels = 0;  // float channels of the AOV layers written
   bool denoise = false;      // --denoise (the raw image is written as well)
   bool exrOutput = false;    // --out is an EXR: the image and its AOV layers in one file

@@ -32,7 +32,7 @@ class LocalPasses final : public SampleSource {
 
   uint32_t Advance(const SampleRequest& request) override;
   FrameSums Sums() override { return chunked_.Sums(); }
-  AovSums RenderAovs(uint32_t samples) override { return chunked_.RenderAovs(samples); }
+  AovSums RenderAovs(const AovRequest& request) override { return chunked_.RenderAovs(request); }
   std::string Engine() const override { return chunked_.Engine(); }
 
  private:

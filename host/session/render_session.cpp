@@ -158,7 +158,7 @@ RenderedFrame RenderSession(SampleSource& source, const SessionSettings& setting
   RenderedFrame frame = FrameLoop(source, settings, hooks).Run();
   if (settings.aovPass || settings.denoise) {
     const auto t0 = Clock::now();
-    frame.aovs = source.RenderAovs(std::min(kAovSamples, frame.spp));
+    frame.aovs = source.RenderAovs({std::min(kAovSamples, frame.spp), settings.aovIds});
     frame.aovSeconds = Since(t0);
   }
   if (settings.denoise) {

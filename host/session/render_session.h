@@ -51,6 +51,7 @@ struct SessionSettings {
   std::string checkpointPath;  // --checkpoint writes the image so far here (with budget.checkpointSeconds)
   DisplayTransform display;    // of the checkpoint's PNG
   bool aovPass = false;        // render the AOV pass after the frame (--aov, --denoise)
+  bool aovIds = false;         // the AOV pass finds each pixel centre's triangle (the id AOVs)
   Denoiser denoise;            // --denoise: filter the image (needs the AOV pass)
   // Whether to stop between passes (a signal, a caller's cancel): kSignal. Empty: never.
   std::function<bool()> stop;

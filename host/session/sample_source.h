@@ -40,8 +40,8 @@ class SampleSource {
   // and every sample begun has been added).
   virtual uint32_t Advance(const SampleRequest& request) = 0;
   virtual FrameSums Sums() = 0;  // the frame's sums so far
-  // The AOVs of samples [0, samples) of every pixel (render/film.h), on this process.
-  virtual AovSums RenderAovs(uint32_t samples) = 0;
+  // The AOV pass of every pixel (render/film.h's AovRequest), on this process.
+  virtual AovSums RenderAovs(const AovRequest& request) = 0;
   // After the last Advance: what each rank of an MPI job did (empty for one process).
   virtual std::vector<RankShare> Finish() { return {}; }
   virtual std::string Engine() const = 0;  // for reports: "cpu (2 threads)", "mpi: 2 ranks, rank 0 …"

@@ -129,26 +129,28 @@ class GpuFrame final : public FrameRenderer {
 
   void Clear() override { ClearSums(ctx_, b_); }
 
-  AovSums RenderAovs(uint32_t samples) override {
+  AovSums RenderAovs(const AovRequest& request) override {
     const uint64_t pixels = uint64_t(frame_.width) * frame_.height;
     Buffer sums = StorageBuffer(ctx_, pixels * shader::kAovSumsPerPixel * sizeof(glm::vec4), "AOV sum");
     Buffer sumsHost = ReadbackBuffer(ctx_, sums.Size(), "AOV readback");
-    Buffer triangles = StorageBuffer(ctx_, pixels * sizeof(uint32_t), "AOV triangle");
+    // Without ids the shader writes no triangle: one uint stands in for the binding.
+    Buffer triangles = StorageBuffer(ctx_, (request.ids ? pixels : 1) * sizeof(uint32_t), "AOV triangle");
     Buffer trianglesHost = ReadbackBuffer(ctx_, triangles.Size(), "AOV triangle readback");
     std::unique_ptr<ComputePipeline> aov =
         kernels_(kAovSpirv, sizeof(kAovSpirv),
                  {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b_.params.Handle()},
                   {shader::kBindingAovSums, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sums.Handle()},
                   {shader::kBindingAovTriangles, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, triangles.Handle()}},
-                 "aov", sizeof(uint32_t));
+                 "aov", 2 * sizeof(uint32_t));
     std::memcpy(b_.params.Mapped(), &frame_, sizeof frame_);  // every earlier submission has finished
     ctx_.Submit([&](VkCommandBuffer cb) {
       vkCmdFillBuffer(cb, sums.Handle(), 0, VK_WHOLE_SIZE, 0);
       vkCmdFillBuffer(cb, triangles.Handle(), 0, VK_WHOLE_SIZE, shader::kInvalidIndex);
-      for (uint32_t s = 0; s < samples; ++s) {
+      for (uint32_t s = 0; s < request.samples; ++s) {
         ComputeBarrier(cb);  // each dispatch adds to what the previous one wrote
+        const uint32_t push[2] = {s, request.ids};
         aov->Dispatch(cb, (frame_.width + kWorkgroup - 1) / kWorkgroup, (frame_.height + kWorkgroup - 1) / kWorkgroup,
-                      1, &s);
+                      1, push);
       }
       CopyToHost(cb, {{&sums, &sumsHost}, {&triangles, &trianglesHost}});
     });
@@ -157,7 +159,7 @@ class GpuFrame final : public FrameRenderer {
     AovSums a;
     a.width = frame_.width;
     a.height = frame_.height;
-    a.samples = samples;
+    a.samples = request.samples;
     a.pixels.resize(pixels);
     for (size_t i = 0; i < pixels; ++i) {
       const glm::vec4* p = v + shader::kAovSumsPerPixel * i;
@@ -167,7 +169,7 @@ class GpuFrame final : public FrameRenderer {
                      double(p[0].w),
                      double(p[2].w),
                      uint32_t(p[1].w),
-                     t[i]};
+                     request.ids ? t[i] : shader::kInvalidIndex};
     }
     return a;
   }

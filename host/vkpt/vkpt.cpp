@@ -78,6 +78,7 @@ FrameRequest ToRequest(const api::Camera& c, const api::RenderOptions& o, const 
   p.envRotation = o.environmentRotation;
   p.time = o.time;
   r.shape.aovPass = o.denoise || NeedsAovPass(aovs);
+  r.shape.aovIds = WantsIds(aovs);
   r.shape.aovChannels = AovChannels(aovs);
   r.shape.denoise = o.denoise;
   return r;
@@ -155,6 +156,7 @@ api::RenderResult api::Scene::Render(const Camera& camera, const RenderOptions& 
     SessionSettings settings;
     settings.budget = ToBudget(options);
     settings.aovPass = NeedsAovPass(aovs);
+    settings.aovIds = WantsIds(aovs);
     settings.stop = options.cancel;
     if (options.denoise) settings.denoise = loaded.Backend().MakeDenoiser();
     SessionHooks hooks;

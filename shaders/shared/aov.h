@@ -19,10 +19,10 @@
 //                    walk ends otherwise gives 0 to both
 //   boxTests         BVH boxes the camera ray's traversal tested (the heat map), counted
 //                    by each side's own walk (the two walks differ: host/cpu/traversal.h)
-//   triangle         sample 0 only: the scene triangle (Triangle::sourceIndex) that a ray
-//                    through the pixel's centre hits first, kInvalidIndex if none; the id
-//                    AOVs name its node, material and instance, so an id is never a blend
-//                    of two objects' ids at an edge
+// Apart from the samples, for the id AOVs only, PixelCentreTriangle finds the scene
+// triangle (Triangle::sourceIndex) that a ray through the pixel's centre hits first; the
+// ids name its node, material and instance, so an id is never a blend of two objects' ids
+// at an edge.
 // Every sum is finite: the specular weight is that of a sampled BSDF direction, which
 // path.h guards in the same way, and non-finite samples are dropped by the callers.
 //
@@ -50,7 +50,6 @@ struct AovSample {
   uint hit;  // 1 if the camera ray hit a surface
   vec3 position;
   uint boxTests;
-  uint triangle;  // sample 0: the pixel centre's first hit; else kInvalidIndex
 };
 
 // The random numbers of the AOV walk's specular bounce k: apart from every stream of the
@@ -62,8 +61,9 @@ VKPT_FN bool IsAovSpecular(Bsdf bsdf) {
 }
 
 // The scene triangle a ray through the centre of pixel (px, py) hits first, with the alpha
-// decisions of the pixel's sample 0 (`alphaKey`); kInvalidIndex if none.
-VKPT_FN uint PixelCentreTriangle(VKPT_SCENE_PARAM FrameParams params, uint px, uint py, uint alphaKey) {
+// decisions of the pixel's sample 0; kInvalidIndex if none.
+VKPT_FN uint PixelCentreTriangle(VKPT_SCENE_PARAM FrameParams params, uint px, uint py) {
+  uint alphaKey = RayAlphaKey(VKPT_SCENE_ARG params, StartPath(params, px, py, 0u), false);
   Ray centre = GenerateCameraRay(params, px, py, 0.5f, 0.5f);
   HitRecord hit = TraceClosest(VKPT_SCENE_ARG centre.origin, centre.dir, kInfinity, alphaKey);
   return hit.t < 0.0f ? kInvalidIndex : VKPT_TRIANGLE(hit.triangle).sourceIndex;
@@ -78,9 +78,6 @@ VKPT_FN AovSample TraceAovSample(VKPT_SCENE_PARAM FrameParams params, uint px, u
   a.position = vec3(0.0f);
   a.boxTests = 0u;
   PathState s = StartPath(params, px, py, sampleIndex);
-  a.triangle = sampleIndex == 0u
-                   ? PixelCentreTriangle(VKPT_SCENE_ARG params, px, py, RayAlphaKey(VKPT_SCENE_ARG params, s, false))
-                   : kInvalidIndex;
   vec3 weight = vec3(1.0f);
   for (uint bounce = 0u; bounce <= kAovSpecularBounces; ++bounce) {
     uint alphaKey = RayAlphaKey(VKPT_SCENE_ARG params, s, false);
