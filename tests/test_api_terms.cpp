@@ -47,5 +47,15 @@ TEST(ApiTerms, OptionsBecomeSettings) {
   EXPECT_EQ(InApiTerms("no option here -- or here"), "no option here -- or here");
 }
 
+TEST(ApiTerms, PythonReadsItsKeywords) {
+  const std::string cpp = InApiTerms("use a smaller --width/--height or --backend cpu; --allow-external-uris; --orbit");
+  EXPECT_EQ(cpp,
+            "use a smaller RenderOptions::width/height or Backend::Cpu; SceneOptions::allowExternalUris; "
+            "Camera::orbitDegrees");
+  EXPECT_EQ(InTerms(cpp, Terms::kCpp, Terms::kPython),
+            "use a smaller width/height or backend=\"cpu\"; allow_external_uris; Camera.orbit");
+  EXPECT_EQ(InTerms("SceneOptions::maxMemory", Terms::kCpp, Terms::kCommandLine), "--max-memory");
+}
+
 }  // namespace
 }  // namespace vkpt

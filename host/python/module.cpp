@@ -2,11 +2,9 @@
 // the library API of vkpt/vkpt.h with images as NumPy arrays (docs/python.md). Renders
 // release the GIL; Ctrl-C or an exception from a progress callback cancels a render
 // between passes and is raised when it returns.
-#include <cctype>
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include "python/bindings.h"
+#include "vkpt/api_terms.h"
 #include "vkpt/vkpt.h"
 
 namespace py = pybind11;
@@ -23,31 +22,6 @@ using namespace pybind11::literals;
 
 namespace vkpt::python {
 namespace {
-
-// `message` with the library's settings (SceneOptions::maxMemory, Backend::Cpu) named as
-// Python's keywords (max_memory, backend="cpu").
-std::string PythonTerms(const std::string& message) {
-  static const std::regex setting("(SceneOptions|RenderOptions)::([A-Za-z]+)");
-  std::string out;
-  auto last = message.cbegin();
-  for (std::sregex_iterator it(message.begin(), message.end(), setting), end; it != end; ++it) {
-    out.append(last, (*it)[0].first);
-    for (char c : (*it)[2].str()) {
-      if (std::isupper(static_cast<unsigned char>(c))) out += '_';
-      out += char(std::tolower(static_cast<unsigned char>(c)));
-    }
-    last = (*it)[0].second;
-  }
-  out.append(last, message.cend());
-  static const std::regex backend("Backend::(Cpu|Vulkan|Auto)");
-  std::smatch m;
-  while (std::regex_search(out, m, backend)) {
-    std::string name = m[1].str();
-    name[0] = char(std::tolower(static_cast<unsigned char>(name[0])));
-    out.replace(m.position(0), m.length(0), "backend=\"" + name + "\"");
-  }
-  return out;
-}
 
 // A Scene for Python: renders on one Scene are serialised, as the library requires (Python
 // threads may call render at once, the GIL being released while it runs).
@@ -189,17 +163,16 @@ PYBIND11_MODULE(_vkpt, m) {
   using namespace vkpt::python;
   m.doc() = "vkpt: a physically based path tracer for glTF 2.0 scenes, on Vulkan or the CPU";
   m.attr("__version__") = VKPT_VERSION;
-  // vkpt.Error, with the library's setting names in Python's (PythonTerms). Its type lives
+  // vkpt.Error, with the library's setting names in Python's (vkpt/api_terms.h). Its type lives
   // as long as the interpreter: the handle is never released.
   static const py::handle error = py::exception<vkpt::Error>(m, "Error", PyExc_RuntimeError).release();
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const vkpt::Error& e) {
-      PyErr_SetString(error.ptr(), PythonTerms(e.what()).c_str());
+      PyErr_SetString(error.ptr(), vkpt::InTerms(e.what(), vkpt::Terms::kCpp, vkpt::Terms::kPython).c_str());
     }
   });
-  m.def("_python_terms", &PythonTerms, "the library's setting names in a message as Python's (for tests)");
   BindCamera(m);
   BindRender(m);
   BindScene(m);

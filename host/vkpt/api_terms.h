@@ -1,13 +1,23 @@
 // The engine's messages name the settings by the command line's options (`--max-memory`);
-// a library user set them as fields (`SceneOptions::maxMemory`). Messages leave the API in
-// its terms.
+// a C++ program sets them as fields (`SceneOptions::maxMemory`), a Python one as keywords
+// (`max_memory`). One table spells each setting all three ways, and messages leave each
+// front end in its own terms.
 #pragma once
 
 #include <string>
+#include <utility>
 
 namespace vkpt {
 
-// `message` with every command-line option it names replaced by the API's setting.
-std::string InApiTerms(std::string message);
+// Who reads a message.
+enum class Terms { kCommandLine, kCpp, kPython };
+
+// `message` with every setting it names in `from`'s spelling put in `to`'s.
+std::string InTerms(std::string message, Terms from, Terms to);
+
+// The engine's message as the C++ API says it.
+inline std::string InApiTerms(std::string message) {
+  return InTerms(std::move(message), Terms::kCommandLine, Terms::kCpp);
+}
 
 }  // namespace vkpt

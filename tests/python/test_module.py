@@ -109,9 +109,14 @@ def test_errors_are_exceptions_with_vkpts_message(cpu_scene, tmp_path):
     with pytest.raises(TypeError):
         cpu_scene.render(**dict(SMALL, spp=-1))
     # The library's messages name Python's keywords.
-    assert vkpt._vkpt._python_terms("use a smaller RenderOptions::width/height or Backend::Cpu; "
-                                     "SceneOptions::allowExternalUris") == (
-        'use a smaller width/height or backend="cpu"; allow_external_uris')
+    (tmp_path / "inside").mkdir()
+    (tmp_path / "inside" / "a.gltf").write_text(
+        '{"asset": {"version": "2.0"}, "buffers": [{"uri": "../b.bin", "byteLength": 4}]}')
+    (tmp_path / "b.bin").write_bytes(bytes(4))
+    with pytest.raises(vkpt.Error, match=r"\(allow_external_uris lifts this rule\)"):
+        vkpt.Scene(str(tmp_path / "inside" / "a.gltf"))
+    with pytest.raises(vkpt.Error, match="lower width and height, or raise max_memory"):
+        cpu_scene.render(width=60000, height=60000)
     with pytest.raises(vkpt.Error, match=r"more than max_memory 1 KiB allows \(raise max_memory"):
         vkpt.Scene(CORNELL, max_memory=1024)
     with pytest.raises(vkpt.Error, match="^device 9: there are only 1 Vulkan device"):
