@@ -74,6 +74,10 @@ TEST(Sequence, TurntableFrameIsTheOrbitAlone) {
   ASSERT_TRUE(alone.ExitedWith(0)) << alone.Describe();
   EXPECT_TRUE(ReadFile(dir + "/alone.pfm") == ReadFile(dir + "/turn.0003.pfm")) << "frame 3 differs from --orbit 90";
   EXPECT_FALSE(ReadFile(dir + "/turn.0000.pfm") == ReadFile(dir + "/turn.0003.pfm"));
+  // Frame 0 is turned by nothing: it is the render without --orbit, bit for bit.
+  ProcessResult still = RunVkpt(Render(model.path, dir + "/still.pfm", {}));
+  ASSERT_TRUE(still.ExitedWith(0)) << still.Describe();
+  EXPECT_TRUE(ReadFile(dir + "/still.pfm") == ReadFile(dir + "/turn.0000.pfm")) << "frame 0 differs from no --orbit";
   std::filesystem::remove_all(dir);
 }
 

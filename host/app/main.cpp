@@ -1,5 +1,6 @@
-// vkpt: the command line. Parse the options, then run: one process (app/run.h prepares
-// the scene, renders a session and reports), or one rank of an MPI job. Data flows one way:
+// vkpt: the command line. Parse the options, then run: one process (app/run.h opens the
+// scene and renders it through the library, app/scene_client.h, then writes and reports),
+// or one rank of an MPI job. Data flows one way:
 //   glTF file → Scene (host/scene) → BVH + RenderScene (host/bvh, host/render)
 //   → renderer (host/cpu or host/vk) → session (host/session) → Image (host/image) → file.
 #include <signal.h>

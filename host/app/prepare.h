@@ -1,23 +1,25 @@
-// The engine's settings from the command line's options (engine/settings.h), and a frame
-// prepared from them on the scene they load.
+// The command line's scene opened through the library (app/scene_client.h) and a frame
+// of its options begun on it.
 #pragma once
 
 #include <chrono>
 #include <memory>
 
 #include "app/options.h"
-#include "engine/loaded_scene.h"
+#include "app/scene_client.h"
 
 namespace vkpt {
 
 struct Prepared {
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  std::unique_ptr<LoadedScene> loaded;
-  PreparedFrame frame;
+  std::unique_ptr<SceneClient> client;
+  ClientView settings;  // the frame's, beyond the API's render options
+  BegunView view;       // the frame: its camera, constants, memory and renderer
 
-  const Scene& scene() const { return loaded->scene(); }
-  const RenderScene& rs() const { return loaded->Arrays(); }
-  RunTimes& times() { return loaded->times; }
+  LoadedScene& loaded() { return client->Engine(); }
+  const Scene& scene() { return loaded().scene(); }
+  const RenderScene& rs() { return loaded().Arrays(); }
+  RunTimes& times() { return loaded().times; }
 };
 
 // `report`: this process prints the load report (-v) and warnings (rank 0 of an MPI job).
@@ -25,7 +27,8 @@ struct Prepared {
 Prepared Prepare(const Options& o, bool report, uint32_t ranks = 1);
 
 // The next frame of a sequence: the scene posed and the camera placed as the frame's
-// options say (--at, --orbit); its arrays built anew if its pose changed.
+// options say (--at, --orbit); its arrays built anew if its pose changed. The last
+// frame's device buffers go before the next's are made.
 void PrepareFrame(Prepared& p, const Options& o, bool report, uint32_t ranks = 1);
 
 }  // namespace vkpt

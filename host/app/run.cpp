@@ -72,7 +72,7 @@ int Attempt(const std::function<void()>& step, std::string* message) {
 }
 
 // The options that must be the same on every rank: all but where and how each renders.
-uint64_t FrameKey(const Options& o, const Prepared& p) {
+uint64_t FrameKey(const Options& o, Prepared& p) {
   Options shared = o;
   shared.backend = Backend::Auto;
   shared.device.clear();
@@ -122,17 +122,15 @@ void PrintSequenceEnd(const Options& o, size_t done, size_t frames, std::chrono:
 
 // Rank 0 deals the frame's chunks to every rank (itself included), then writes it; the
 // others render the chunks dealt to them. Returns the exit status, the same on every rank.
-int RenderDealt(Cluster& cluster, const Options& o, Prepared& p, FrameRenderer& renderer,
-                std::string* frameStats = nullptr) {
+int RenderDealt(Cluster& cluster, const Options& o, Prepared& p, std::string* frameStats = nullptr) {
   const ChunkPlan plan{o.spp, o.chunkSpp};
+  FrameRenderer& renderer = *p.view.renderer;
   int status = 0;
   if (cluster.Rank() != 0) {
     RenderDealtChunks(cluster, ChunkRendererOf(renderer, plan));
   } else {
     DealtChunks source(cluster, renderer, plan);
-    const RenderBackend& backend = p.loaded->Backend();
-    const RenderedFrame frame = Render(source, SettingsFromOptions(o, backend), o);
-    status = Finish(o, p, frame, nullptr, backend, frameStats);
+    status = Finish(o, p, p.client->Finish(p.view, source, o, p.settings), nullptr, frameStats);
   }
   return cluster.MaxOf(status);
 }
@@ -152,12 +150,10 @@ int RunSequence(const Options& o) {
   for (size_t i = 0; i < numbers.size() && status == 0; ++i) {
     const Options f = FrameOptions(o, numbers[i]);
     if (i > 0) NextFrame(p, f, 1);
-    const std::unique_ptr<FrameRenderer> renderer = p.loaded->BeginFrame(p.frame.params, o.batch);
-    LocalPasses source(*renderer, o.chunkSpp);
-    const RenderBackend& backend = p.loaded->Backend();
-    const RenderedFrame frame = Render(source, SettingsFromOptions(f, backend), f);
-    status = Finish(f, p, frame, nullptr, backend, &stats.emplace_back());
-    PrintFrameLine(numbers[i], i, numbers.size(), f, p, frame.seconds);
+    LocalPasses source(*p.view.renderer, o.chunkSpp);
+    const RenderedView rendered = p.client->Finish(p.view, source, f, p.settings);
+    status = Finish(f, p, rendered, nullptr, &stats.emplace_back());
+    PrintFrameLine(numbers[i], i, numbers.size(), f, p, rendered.frame.seconds);
   }
   PrintSequenceEnd(o, stats.size(), numbers.size(), start, stats);
   return status;
@@ -170,14 +166,12 @@ int Run(const Options& o) {
   Prepared p = Prepare(o, true);
   std::optional<RenderedFrame> reference;
   if (o.compare) reference = RenderReference(p, o);
-  const std::unique_ptr<FrameRenderer> renderer = p.loaded->BeginFrame(p.frame.params, o.batch);
-  LocalPasses source(*renderer, o.chunkSpp);
-  const RenderBackend& backend = p.loaded->Backend();
+  LocalPasses source(*p.view.renderer, o.chunkSpp);
   // From here the first SIGINT/SIGTERM stops the render after its pass, and the image of
   // the samples taken is still written.
   GracefulStop stop;
-  const RenderedFrame frame = Render(source, SettingsFromOptions(o, backend), o);
-  return Finish(o, p, frame, reference ? &*reference : nullptr, backend);
+  const RenderedView rendered = p.client->Finish(p.view, source, o, p.settings);
+  return Finish(o, p, rendered, reference ? &*reference : nullptr);
 }
 
 // Under mpirun: every rank loads the file and builds each frame; the frames' chunks are
@@ -189,7 +183,6 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
   const uint32_t ranks = root ? uint32_t(cluster.Size()) : 1;
   const std::vector<uint32_t> numbers = o.frames ? FrameNumbers(*o.frames) : std::vector<uint32_t>{0};
   Prepared p;
-  std::unique_ptr<FrameRenderer> renderer;
   std::vector<std::string> stats;
   std::optional<GracefulStop> stop;  // rank 0 stops dealing at a signal; the others finish their chunk
   std::chrono::steady_clock::time_point start;
@@ -201,10 +194,8 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
         [&] {
           if (i == 0 && o.frames && root)
             for (uint32_t k : numbers) CheckOutputPath(FramePath(o.out, k));
-          renderer.reset();  // the last frame's device buffers go before the next's are made
           if (i == 0) p = Prepare(f, root, ranks);
           else NextFrame(p, f, ranks);
-          renderer = p.loaded->BeginFrame(p.frame.params, o.batch);
         },
         &message);
     if ((status = AgreeOnOutcome(cluster, status, message, "error"))) return status;
@@ -219,8 +210,8 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
         return 2;
       }
     }
-    if (!o.frames) return RenderDealt(cluster, o, p, *renderer);
-    status = RenderDealt(cluster, f, p, *renderer, root ? &stats.emplace_back() : nullptr);
+    if (!o.frames) return RenderDealt(cluster, o, p);
+    status = RenderDealt(cluster, f, p, root ? &stats.emplace_back() : nullptr);
     if (root) PrintFrameLine(numbers[i], i, numbers.size(), f, p, p.times().render);
   }
   if (root) PrintSequenceEnd(o, stats.size(), numbers.size(), start, stats);

@@ -1,88 +1,25 @@
-// The library's facade: the public types of vkpt/vkpt.h mapped onto the engine's
-// (engine/loaded_scene.h), so that a Scene renders exactly what the command line renders.
+// The library's facade: a Scene's render (vkpt/client.h's view, as the command line
+// renders it) given back in the public types of vkpt/vkpt.h, and Save.
 //
 // The internal headers come first and on their own: their types (vkpt::Scene, vkpt::Image,
 // vkpt::Backend) share names with the public ones of vkpt::api, so each internal header is
 // read before those exist, and below the public types are named api::… and the internal
 // ones only through the engine's structs.
-#include <exception>
-#include <new>
 #include <utility>
 
-#include <glm/gtc/type_ptr.hpp>
-
-#include "engine/loaded_scene.h"
 #include "image/image.h"
 #include "image/view_transform.h"
 #include "session/aov.h"
-#include "session/budget.h"
 #include "session/local_passes.h"
-#include "session/render_session.h"
-#include "vkpt/api_terms.h"
 
 namespace vkpt {
 using InternalImage = Image;  // vkpt::Image is ambiguous once api::Image exists
 }  // namespace vkpt
 
-#include "vkpt/vkpt.h"
+#include "vkpt/client.h"
 
 namespace vkpt {
 namespace {
-
-SceneSettings ToSettings(const std::string& path, const api::SceneOptions& o) {
-  SceneSettings s;
-  using InternalBackend = decltype(s.backend);
-  s.path = path;
-  s.load.maxMemory = o.maxMemory;
-  s.load.maxTextureTexels = o.maxTexels;
-  s.load.allowExternalUris = o.allowExternalUris;
-  s.choice.variant = o.variant;
-  s.choice.animation = o.animation;
-  s.env = o.environment;
-  s.envIntensity = o.environmentIntensity;
-  s.backend = o.backend == api::Backend::Cpu      ? InternalBackend::Cpu
-              : o.backend == api::Backend::Vulkan ? InternalBackend::Vulkan
-                                                  : InternalBackend::Auto;
-  s.device = o.device;
-  s.validation = o.validation;
-  s.threads = o.threads;
-  return s;
-}
-
-RenderBudget ToBudget(const api::RenderOptions& o) {
-  return BudgetFor({o.spp, o.seconds, o.noiseTarget, o.adaptive, 0.0, o.chunkSpp});
-}
-
-FrameRequest ToRequest(const api::Camera& c, const api::RenderOptions& o, const std::vector<Aov>& aovs) {
-  auto vec3 = [](const std::optional<std::array<float, 3>>& v) {
-    return v ? std::optional<glm::vec3>(glm::vec3((*v)[0], (*v)[1], (*v)[2])) : std::nullopt;
-  };
-  FrameRequest r;
-  CameraSettings& camera = r.camera;
-  camera.index = c.index;
-  if (c.matrix) camera.matrix = glm::make_mat4(c.matrix->data());
-  camera.lookFrom = vec3(c.lookFrom);
-  camera.lookAt = vec3(c.lookAt);
-  camera.up = vec3(c.up);
-  camera.fov = c.fovDegrees;
-  if (c.orbitDegrees != 0.0) camera.orbit = c.orbitDegrees;
-  PictureSettings& p = r.picture;
-  p.width = o.width;
-  p.height = o.height;
-  p.seed = o.seed;
-  p.spp = ToBudget(o).maxSpp;
-  p.maxDepth = o.maxDepth;
-  p.rrDepth = o.rrDepth;
-  p.textureLod = o.textureLod;
-  p.background = vec3(o.background);
-  p.envRotation = o.environmentRotation;
-  p.time = o.time;
-  r.shape.aovPass = o.denoise || NeedsAovPass(aovs);
-  r.shape.aovIds = WantsIds(aovs);
-  r.shape.aovChannels = AovChannels(aovs);
-  r.shape.denoise = o.denoise;
-  return r;
-}
 
 api::Image ToImage(const std::vector<glm::vec3>& pixels, uint32_t width, uint32_t height) {
   api::Image image{width, height, 3, {"R", "G", "B"}, {}};
@@ -110,74 +47,29 @@ AovLayer ToLayer(const std::string& name, const api::Image& aov, const api::Imag
   return {*known, aov.channelNames, aov.data};
 }
 
-// Any failure inside as the one public exception, its message in the API's terms.
-template <class F>
-auto Translated(F&& f) {
-  try {
-    return f();
-  } catch (const api::Error&) {
-    throw;
-  } catch (const std::bad_alloc&) {
-    throw api::Error("out of memory");
-  } catch (const std::exception& e) {
-    throw api::Error(InApiTerms(e.what()));
-  }
-}
-
 }  // namespace
-
-struct api::Scene::Impl {
-  std::unique_ptr<LoadedScene> loaded;
-};
-
-api::Scene::Scene(const std::string& path, const SceneOptions& options)
-    : impl_(Translated([&] {
-        return std::make_unique<Impl>(Impl{std::make_unique<LoadedScene>(ToSettings(path, options), EngineLog{})});
-      })) {}
-
-api::Scene::~Scene() = default;
-api::Scene::Scene(Scene&&) noexcept = default;
-api::Scene& api::Scene::operator=(Scene&&) noexcept = default;
-
-uint32_t api::Scene::CameraCount() const { return uint32_t(impl_->loaded->scene().cameras.size()); }
-
-std::string api::Scene::Device() const {
-  const vk::Context* device = impl_->loaded->Device();
-  return device ? std::string(device->Properties().deviceName) : "cpu";
-}
 
 api::RenderResult api::Scene::Render(const Camera& camera, const RenderOptions& options) {
   return Translated([&] {
-    LoadedScene& loaded = *impl_->loaded;
-    const std::vector<Aov> aovs = AovsFromNames(options.aovs);
-    const PreparedFrame frame = loaded.Prepare(ToRequest(camera, options, aovs));
-    const std::unique_ptr<FrameRenderer> renderer = loaded.BeginFrame(frame.params, options.batch);
-    LocalPasses source(*renderer, options.chunkSpp);
-    SessionSettings settings;
-    settings.budget = ToBudget(options);
-    settings.aovPass = NeedsAovPass(aovs);
-    settings.aovIds = WantsIds(aovs);
-    settings.stop = options.cancel;
-    if (options.denoise) settings.denoise = loaded.Backend().MakeDenoiser();
-    SessionHooks hooks;
-    hooks.progress = options.progress;
-    const RenderedFrame rendered = RenderSession(source, settings, hooks);
-
+    BegunView view = BeginView(*this, camera, options, {});
+    LocalPasses source(*view.renderer, options.chunkSpp);
+    RenderedView rendered = FinishView(*this, view, source, options, {});
+    const RenderedFrame& frame = rendered.frame;
     RenderResult result;
-    const uint32_t w = frame.size.x, h = frame.size.y;
-    result.image = ToImage(rendered.denoised ? rendered.denoised->pixels : rendered.image.pixels, w, h);
-    if (rendered.denoised) result.raw = ToImage(rendered.image.pixels, w, h);
-    for (AovLayer& layer : ResolveAovs(aovs, rendered.aovs, rendered.sums, rendered.image, loaded.IdsOf())) {
+    const uint32_t w = view.prepared.size.x, h = view.prepared.size.y;
+    result.image = ToImage(frame.denoised ? frame.denoised->pixels : frame.image.pixels, w, h);
+    if (frame.denoised) result.raw = ToImage(frame.image.pixels, w, h);
+    for (AovLayer& layer : rendered.aovs) {
       const uint32_t channels = uint32_t(layer.suffixes.size());
       result.aovs[AovName(layer.aov)] = {w, h, channels, std::move(layer.suffixes), std::move(layer.values)};
     }
-    if (WantsIds(aovs)) result.ids = loaded.IdsJson();
-    result.spp = rendered.spp;
-    result.samples = rendered.samples;
-    result.stoppedBy = rendered.stoppedBy == StopReason::kSignal ? "cancelled" : StopReasonName(rendered.stoppedBy);
-    result.estimatedRelMse = rendered.estimatedRelMse;
-    result.seconds = rendered.seconds + rendered.aovSeconds + rendered.denoiseSeconds;
-    result.engine = rendered.engine;
+    result.ids = std::move(rendered.ids);
+    result.spp = frame.spp;
+    result.samples = frame.samples;
+    result.stoppedBy = frame.stoppedBy == StopReason::kSignal ? "cancelled" : StopReasonName(frame.stoppedBy);
+    result.estimatedRelMse = frame.estimatedRelMse;
+    result.seconds = frame.seconds + frame.aovSeconds + frame.denoiseSeconds;
+    result.engine = frame.engine;
     return result;
   });
 }

@@ -126,6 +126,8 @@ struct RenderResult {
   std::string engine;    // the device or "cpu"
 };
 
+struct SceneAccess;  // the command line's door to a Scene (inside vkpt, not installed)
+
 class VKPT_API Scene {
  public:
   // Loads and checks the file and the environment, and opens the device. Throws Error.
@@ -143,6 +145,8 @@ class VKPT_API Scene {
 
  private:
   struct Impl;
+  friend struct SceneAccess;
+  explicit Scene(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

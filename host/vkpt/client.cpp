@@ -1,0 +1,151 @@
+// A Scene on the engine: the public options mapped onto the engine's settings
+// (engine/settings.h), and a view's render as the library and the command line run it.
+#include <memory>
+#include <utility>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "engine/loaded_scene.h"
+#include "session/aov.h"
+#include "session/budget.h"
+#include "vkpt/client.h"
+
+namespace vkpt {
+
+struct api::Scene::Impl {
+  std::unique_ptr<LoadedScene> loaded;
+};
+
+struct api::SceneAccess {
+  static api::Scene Make(std::unique_ptr<LoadedScene> loaded) {
+    return api::Scene(std::make_unique<api::Scene::Impl>(api::Scene::Impl{std::move(loaded)}));
+  }
+  static LoadedScene& Engine(api::Scene& scene) { return *scene.impl_->loaded; }
+  static const LoadedScene& Engine(const api::Scene& scene) { return *scene.impl_->loaded; }
+};
+
+namespace {
+
+SceneSettings ToSettings(const std::string& path, const api::SceneOptions& o, const ClientScene& client) {
+  SceneSettings s;
+  using InternalBackend = decltype(s.backend);
+  s.path = path;
+  s.load.maxMemory = o.maxMemory;
+  s.load.maxTextureTexels = o.maxTexels;
+  s.load.allowExternalUris = o.allowExternalUris;
+  s.choice.variant = o.variant;
+  s.choice.animation = o.animation;
+  s.choice.time = client.time;
+  s.env = o.environment;
+  s.envIntensity = o.environmentIntensity;
+  s.backend = o.backend == api::Backend::Cpu      ? InternalBackend::Cpu
+              : o.backend == api::Backend::Vulkan ? InternalBackend::Vulkan
+                                                  : InternalBackend::Auto;
+  s.device = o.device;
+  s.validation = o.validation;
+  s.threads = o.threads;
+  s.leafSize = client.leafSize;
+  s.splits = client.splits;
+  s.compare = client.compare;
+  s.once = client.once;
+  return s;
+}
+
+RenderBudget ToBudget(const api::RenderOptions& o, const ClientView& client) {
+  return BudgetFor({o.spp, o.seconds, o.noiseTarget, o.adaptive, client.checkpointSeconds, o.chunkSpp});
+}
+
+std::optional<glm::vec3> ToVec3(const std::optional<std::array<float, 3>>& v) {
+  return v ? std::optional<glm::vec3>(glm::vec3((*v)[0], (*v)[1], (*v)[2])) : std::nullopt;
+}
+
+FrameRequest ToRequest(const api::Camera& c, const api::RenderOptions& o, const std::vector<Aov>& aovs,
+                       const ClientView& client, bool compare) {
+  FrameRequest r;
+  CameraSettings& camera = r.camera;
+  camera.index = c.index;
+  if (c.matrix) camera.matrix = glm::make_mat4(c.matrix->data());
+  camera.lookFrom = ToVec3(c.lookFrom);
+  camera.lookAt = ToVec3(c.lookAt);
+  camera.up = ToVec3(c.up);
+  camera.fov = c.fovDegrees;
+  if (c.orbitDegrees != 0.0) camera.orbit = c.orbitDegrees;
+  PictureSettings& p = r.picture;
+  p.width = o.width;
+  p.height = o.height;
+  p.seed = o.seed;
+  p.spp = ToBudget(o, client).maxSpp;
+  p.maxDepth = o.maxDepth;
+  p.rrDepth = o.rrDepth;
+  p.textureLod = o.textureLod;
+  p.background = ToVec3(o.background);
+  p.envRotation = o.environmentRotation;
+  p.time = o.time;
+  FrameShape& shape = r.shape;
+  shape.compare = compare;
+  shape.ranks = client.ranks;
+  shape.aovPass = o.denoise || NeedsAovPass(aovs);
+  shape.aovIds = WantsIds(aovs);
+  shape.aovChannels = AovChannels(aovs);
+  shape.denoise = o.denoise;
+  shape.exrOutput = client.exrOutput;
+  r.name = client.name;
+  r.log = client.log;
+  return r;
+}
+
+}  // namespace
+
+api::Scene::Scene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+api::Scene::Scene(const std::string& path, const SceneOptions& options)
+    : Scene(Translated([&] { return std::move(OpenScene(path, options, {}).impl_); })) {}
+
+api::Scene::~Scene() = default;
+api::Scene::Scene(Scene&&) noexcept = default;
+api::Scene& api::Scene::operator=(Scene&&) noexcept = default;
+
+uint32_t api::Scene::CameraCount() const { return uint32_t(SceneAccess::Engine(*this).scene().cameras.size()); }
+
+std::string api::Scene::Device() const {
+  const vk::Context* device = SceneAccess::Engine(*this).Device();
+  return device ? std::string(device->Properties().deviceName) : "cpu";
+}
+
+api::Scene OpenScene(const std::string& path, const api::SceneOptions& options, const ClientScene& client) {
+  return api::SceneAccess::Make(std::make_unique<LoadedScene>(ToSettings(path, options, client), client.log));
+}
+
+LoadedScene& EngineOf(api::Scene& scene) { return api::SceneAccess::Engine(scene); }
+
+BegunView BeginView(api::Scene& scene, const api::Camera& camera, const api::RenderOptions& options,
+                    const ClientView& client) {
+  LoadedScene& loaded = EngineOf(scene);
+  BegunView view;
+  view.aovs = AovsFromNames(options.aovs);
+  view.prepared = loaded.Prepare(ToRequest(camera, options, view.aovs, client, loaded.Settings().compare));
+  view.renderer = loaded.BeginFrame(view.prepared.params, options.batch);
+  return view;
+}
+
+RenderedView FinishView(api::Scene& scene, BegunView& view, SampleSource& source, const api::RenderOptions& options,
+                        const ClientView& client) {
+  LoadedScene& loaded = EngineOf(scene);
+  SessionSettings settings;
+  settings.budget = ToBudget(options, client);
+  settings.checkpointPath = client.checkpointPath;
+  settings.display = client.display;
+  settings.aovPass = NeedsAovPass(view.aovs);
+  settings.aovIds = WantsIds(view.aovs);
+  settings.stop = options.cancel;
+  if (options.denoise) settings.denoise = loaded.Backend().MakeDenoiser();
+  const SessionHooks hooks{options.progress, client.report, client.warning};
+  RenderedView rendered;
+  rendered.frame = RenderSession(source, settings, hooks);
+  const RenderedFrame& f = rendered.frame;
+  rendered.aovs = ResolveAovs(view.aovs, f.aovs, f.sums, f.image, loaded.IdsOf());
+  if (WantsIds(view.aovs)) rendered.ids = loaded.IdsJson();
+  return rendered;
+}
+
+}  // namespace vkpt
