@@ -65,6 +65,10 @@ layout(constant_id = 17) const uint kSceneHasAnisotropy = 1u;
 // 0 when no triangle's material is dispersive: see shared/dispersion.h.
 layout(constant_id = 18) const uint kSceneHasDispersion = 1u;
 #define VKPT_DISPERSION (kSceneHasDispersion != 0u)
+// 1 when the device runs both sides of every branch (a CPU device: lavapipe), so that
+// texture lookups are written as one straight line: see shared/texture.h.
+layout(constant_id = 19) const uint kDeviceMasksBranches = 0u;
+#define VKPT_MASKED_BRANCHES (kDeviceMasksBranches != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG

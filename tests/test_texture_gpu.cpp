@@ -88,8 +88,10 @@ std::vector<TextureLookup> RandomLookups(const RenderScene& rs, uint32_t n, std:
 }
 
 // The lookups of RandomLookups on the GPU, with the texel store in at most
-// `texelsPerBuffer` texels per buffer (0: the device's limit); how many differ in any bit.
-uint32_t DifferingLookups(const RenderScene& rs, const std::vector<TextureLookup>& lookups, uint32_t texelsPerBuffer) {
+// `texelsPerBuffer` texels per buffer (0: the device's limit), written with branches that
+// skip work or, `maskedBranches`, as one straight line; how many differ in any bit.
+uint32_t DifferingLookups(const RenderScene& rs, const std::vector<TextureLookup>& lookups, uint32_t texelsPerBuffer,
+                          bool maskedBranches) {
   const uint32_t n = uint32_t(lookups.size());
   vk::Context& ctx = test::Gpu();
   vk::TexelBuffer textures = vk::UploadTexelBuffer(ctx, rs.textures.data(), rs.textures.size() * 16, "texture table");
@@ -109,7 +111,8 @@ uint32_t DifferingLookups(const RenderScene& rs, const std::vector<TextureLookup
                             vk::TexelBinding(shader::kBindingTexelDecode, decode),
                             {30, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, in.Handle()},
                             {31, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, out.Handle()}},
-                           "texture lookups", sizeof(uint32_t), {texels.twoBuffers ? 1u : 0u});
+                           "texture lookups", sizeof(uint32_t),
+                           {texels.twoBuffers ? 1u : 0u, maskedBranches ? 1u : 0u});
   ctx.Submit([&](VkCommandBuffer cb) {
     pipe.Dispatch(cb, n / 64, 1, 1, &texels.split);
     vk::CopyToHost(cb, {{&out, &host}});
@@ -133,16 +136,19 @@ TEST_F(TextureGpuTest, LookupsReturnTheCpusBits) {
   std::mt19937 rng(1234);
   const RenderScene rs = AllKindsOfTextures(rng);
   const std::vector<TextureLookup> lookups = RandomLookups(rs, 65536, rng);
-  const uint32_t differing = DifferingLookups(rs, lookups, 0);
-  std::printf("%zu texture lookups over %zu textures: %u differ in any bit between CPU and GPU\n", lookups.size(),
-              rs.textures.size(), differing);
-  EXPECT_EQ(differing, 0u);
-  // The store split over two texel buffers, as a device with a smaller
-  // maxTexelBufferElements would need: the second begins inside some texture's levels.
-  const uint32_t half = uint32_t(rs.texels.size() / 8);
-  const uint32_t split = DifferingLookups(rs, lookups, half);
-  std::printf("with the store split after texel %u of %zu: %u differ\n", half, (rs.texels.size() + 3) / 4, split);
-  EXPECT_EQ(split, 0u);
+  for (bool masked : {false, true}) {
+    const char* form = masked ? "as one straight line" : "with branches";
+    const uint32_t differing = DifferingLookups(rs, lookups, 0, masked);
+    std::printf("%zu texture lookups over %zu textures, %s: %u differ in any bit between CPU and GPU\n", lookups.size(),
+                rs.textures.size(), form, differing);
+    EXPECT_EQ(differing, 0u) << form;
+    // The store split over two texel buffers, as a device with a smaller
+    // maxTexelBufferElements would need: the second begins inside some texture's levels.
+    const uint32_t half = uint32_t(rs.texels.size() / 8);
+    const uint32_t split = DifferingLookups(rs, lookups, half, masked);
+    std::printf("with the store split after texel %u of %zu: %u differ\n", half, (rs.texels.size() + 3) / 4, split);
+    EXPECT_EQ(split, 0u) << form;
+  }
 }
 
 }  // namespace

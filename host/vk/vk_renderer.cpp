@@ -75,6 +75,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
       hasExtensionTextures_(
           std::any_of(scene.materials.begin(), scene.materials.end(),
                       [](const shader::Material& m) { return (m.flags & shader::kMaterialExtensionTextured) != 0u; })),
+      masksBranches_(ctx.Properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
       nodeCount_(scene.bvhStats.nodes),
       nodeCopies_(scene.nodeCopies) {
   for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
@@ -120,7 +121,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           hasDiffuseTransmission_ ? 1u : 0u,
           hasIridescence_ ? 1u : 0u,
           hasAnisotropy_ ? 1u : 0u,
-          hasDispersion_ ? 1u : 0u};
+          hasDispersion_ ? 1u : 0u,
+          masksBranches_ ? 1u : 0u};
 }
 
 std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams& frame,

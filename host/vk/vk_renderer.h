@@ -84,23 +84,26 @@ class GpuRenderer {
   // The environment map's texels and CDFs; without a map one zero texel each, so that the
   // descriptor set is complete all the same.
   TexelBuffer envRadiance_, envDistribution_;
-  // What the scene has, for pathtrace.comp's specialization constants 0-12 (the frame
+  // What the scene has, for pathtrace.comp's specialization constants 0-18 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
-  uint32_t lightTypes_ = 0;          // bit 1 << type for each type in the light table
-  bool hasGlossy_;                   // some triangle's material is not Lambertian
-  bool hasSmoothNormals_;            // some triangle has vertex normals
-  bool hasVertexColors_;             // some triangle has COLOR_0
-  bool hasVolumes_;                  // some triangle's material bounds a volume
-  bool hasClearcoat_;                // some triangle's material has a clear coat
-  bool hasSheen_;                    // some triangle's material has a sheen
-  bool hasDiffuseTransmission_;      // some triangle's material transmits diffusely
-  bool hasIridescence_;              // some triangle's material is iridescent
-  bool hasAnisotropy_;               // some triangle's material is anisotropic
-  bool hasDispersion_;               // some triangle's material is dispersive
-  bool hasTextures_;                 // some material has a texture
-  bool hasNormalMaps_;               // some material has a normal texture
-  bool hasAlpha_;                    // some triangle's material is alpha MASK or BLEND
-  bool hasExtensionTextures_;        // some material has a texture of a material extension
+  uint32_t lightTypes_ = 0;      // bit 1 << type for each type in the light table
+  bool hasGlossy_;               // some triangle's material is not Lambertian
+  bool hasSmoothNormals_;        // some triangle has vertex normals
+  bool hasVertexColors_;         // some triangle has COLOR_0
+  bool hasVolumes_;              // some triangle's material bounds a volume
+  bool hasClearcoat_;            // some triangle's material has a clear coat
+  bool hasSheen_;                // some triangle's material has a sheen
+  bool hasDiffuseTransmission_;  // some triangle's material transmits diffusely
+  bool hasIridescence_;          // some triangle's material is iridescent
+  bool hasAnisotropy_;           // some triangle's material is anisotropic
+  bool hasDispersion_;           // some triangle's material is dispersive
+  bool hasTextures_;             // some material has a texture
+  bool hasNormalMaps_;           // some material has a normal texture
+  bool hasAlpha_;                // some triangle's material is alpha MASK or BLEND
+  bool hasExtensionTextures_;    // some material has a texture of a material extension
+  // The device runs both sides of every branch, masked (a CPU device such as lavapipe):
+  // constant 19, shared/texture.h's VKPT_MASKED_BRANCHES.
+  bool masksBranches_;
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 

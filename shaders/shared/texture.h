@@ -9,11 +9,24 @@
 //   VKPT_TEXTURE(i)      Texture i
 //   VKPT_TEXEL_WORD(i)   the i-th RGBA8 texel of the store as a uint, R in the low byte
 //   VKPT_TEXEL_DECODE(i) entry i of the byte → float tables (layout.h)
+//
+// A lookup is written for two kinds of device. Where a branch skips the work it guards
+// (the CPU, a GPU whose lanes agree), nearest filtering reads one texel and a second mip
+// level is read only when its weight is not 0. Where every side of a branch runs, masked,
+// whichever way the lanes go (VKPT_MASKED_BRANCHES: lavapipe's SIMD lanes), the lookup is
+// one straight line instead: the level or two levels chosen by selects, each read as a
+// bilinear blend (nearest: all weight on the texel under the point) and always two
+// levels (the second with weight 0 where one is meant). Both give the same bits: texel
+// values are finite and ≥ 0, so a·1 + b·0 = a exactly.
 #ifndef VKPT_TEXTURE_H
 #define VKPT_TEXTURE_H
 #include "prelude.h"  // first, as in every shared header
 
 #include "layout.h"
+
+#ifndef VKPT_MASKED_BRANCHES
+#define VKPT_MASKED_BRANCHES false
+#endif
 
 VKPT_BEGIN_NAMESPACE
 
@@ -71,16 +84,19 @@ VKPT_FN TextureLevel LevelOf(VKPT_SCENE_PARAM Texture t, uint level) {
 VKPT_FN vec4 SampleLevel(VKPT_SCENE_PARAM uint mode, TextureLevel l, vec2 st, bool linear) {
   uint wrapS = (mode >> kTextureWrapSShift) & 3u;
   uint wrapT = (mode >> kTextureWrapTShift) & 3u;
-  if (!linear) {
+  if (!VKPT_MASKED_BRANCHES && !linear) {
     int x = WrapTexel(int(floor(st.x * float(l.width))), l.width, wrapS);
     int y = WrapTexel(int(floor(st.y * float(l.height))), l.height, wrapT);
     return TexelValue(VKPT_SCENE_ARG mode, l.offset + uint(y * l.width + x));
   }
-  VKPT_PRECISE float sx = st.x * float(l.width) - 0.5f;
-  VKPT_PRECISE float sy = st.y * float(l.height) - 0.5f;
+  // Nearest, on a device of masked branches: the blend below with every weight on the
+  // texel under the point (its index is the one above: st·w − 0 = st·w).
+  float centre = linear ? 0.5f : 0.0f;
+  VKPT_PRECISE float sx = st.x * float(l.width) - centre;
+  VKPT_PRECISE float sy = st.y * float(l.height) - centre;
   float x0f = floor(sx), y0f = floor(sy);
-  VKPT_PRECISE float fx = sx - x0f;
-  VKPT_PRECISE float fy = sy - y0f;
+  VKPT_PRECISE float fx = linear ? sx - x0f : 0.0f;
+  VKPT_PRECISE float fy = linear ? sy - y0f : 0.0f;
   int x0 = WrapTexel(int(x0f), l.width, wrapS), x1 = WrapTexel(int(x0f) + 1, l.width, wrapS);
   uint row0 = l.offset + uint(WrapTexel(int(y0f), l.height, wrapT) * l.width);
   uint row1 = l.offset + uint(WrapTexel(int(y0f) + 1, l.height, wrapT) * l.width);
@@ -101,21 +117,18 @@ VKPT_FN vec4 SampleLevel(VKPT_SCENE_PARAM uint mode, TextureLevel l, vec2 st, bo
 VKPT_FN vec4 SampleTexture(VKPT_SCENE_PARAM Texture t, vec2 uv, float lod) {
   vec2 st = vec2(WrapCoordinate(uv.x, (t.mode >> kTextureWrapSShift) & 3u),
                  WrapCoordinate(uv.y, (t.mode >> kTextureWrapTShift) & 3u));
-  if (!(lod > 0.0f))
-    return SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, 0u), st, (t.mode & kTextureMagLinear) != 0u);
-  bool linear = (t.mode & kTextureMinLinear) != 0u;
+  bool minify = lod > 0.0f;
+  bool linear = (t.mode & (minify ? kTextureMinLinear : kTextureMagLinear)) != 0u;
   float last = float((t.mode >> kTextureLevelShift) - 1u);
-  float level = min(lod, last);
-  if ((t.mode & kTextureMipNearest) != 0u)
-    return SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, uint(min(floor(level + 0.5f), last))), st,
-                       linear);
-  if ((t.mode & kTextureMipLinear) == 0u)
-    return SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, 0u), st, linear);
-  float l0 = floor(level);
-  VKPT_PRECISE float f = level - l0;
+  float level = minify ? min(lod, last) : 0.0f;
+  bool nearestLevel = minify && (t.mode & kTextureMipNearest) != 0u;
+  bool twoLevels = minify && !nearestLevel && (t.mode & kTextureMipLinear) != 0u;
+  // The level read (0 to magnify or without mipmaps), and the weight of the next one.
+  float l0 = nearestLevel ? min(floor(level + 0.5f), last) : (twoLevels ? floor(level) : 0.0f);
+  VKPT_PRECISE float f = twoLevels ? level - l0 : 0.0f;
   vec4 a = SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, uint(l0)), st, linear);
-  if (f == 0.0f) return a;
-  vec4 b = SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, uint(l0) + 1u), st, linear);
+  if (!VKPT_MASKED_BRANCHES && f == 0.0f) return a;
+  vec4 b = SampleLevel(VKPT_SCENE_ARG t.mode, LevelOf(VKPT_SCENE_ARG t, uint(min(l0 + 1.0f, last))), st, linear);
   VKPT_PRECISE vec4 v = a * (1.0f - f) + b * f;
   return v;
 }

@@ -9,6 +9,9 @@ layout(local_size_x = 64) in;
 // Whether the texels are split over two buffers at texelSplit (scene_fetch.glsl).
 layout(constant_id = 0) const uint kTwoTexelBuffers = 0u;
 #define VKPT_TWO_TEXEL_BUFFERS (kTwoTexelBuffers != 0u)
+// The lookup as one straight line (shared/texture.h), or with the branches that skip work.
+layout(constant_id = 1) const uint kMaskedBranches = 0u;
+#define VKPT_MASKED_BRANCHES (kMaskedBranches != 0u)
 layout(push_constant) uniform Push { uint texelSplit; };
 
 #define VKPT_SCENE_PARAM
