@@ -86,7 +86,7 @@ Scene MipQuadScene() {
   im.rgba.resize(64 * 64 * 4);
   std::mt19937 rng(5);
   for (uint8_t& b : im.rgba) b = uint8_t(rng());
-  s.textures[0] = test::TextureWithMode(0, shader::kTextureMipNearest);
+  s.textures[0] = test::TextureWithMode(0, shader::kTextureMipNearest | shader::kTextureSrgb);
   return s;
 }
 
@@ -97,7 +97,8 @@ int PixelsOffLevelTwo(const RenderScene& rs, const Image& img) {
   for (uint32_t y = 0; y < 16; ++y)
     for (uint32_t x = 0; x < 16; ++x) {
       const glm::vec2 uv((x + 0.5f) / 16.0f, (y + 0.5f) / 16.0f);
-      const glm::vec4 texel = shader::SampleTexture(rs, rs.textures[0], uv, 2.0f);
+      const glm::vec4 texel =
+          shader::SampleTexture(rs, rs.textures[0], uv, 2.0f, shader::SlotIsSrgb(shader::kSlotBaseColor));
       off += img.pixels[y * 16 + x] != glm::vec3(texel);
     }
   return off;
@@ -140,8 +141,10 @@ TEST(RayCones, LaterVerticesFilterColourOnly) {
       const shader::Ray ray{glm::vec3(2.0f * uv.x - 1.0f, 1.0f - 2.0f * uv.y, -5.0f), glm::vec3(0, 0, 1)};
       const Hit hit = IntersectClosest(rs, ray.origin, ray.dir, shader::kInfinity);
       ASSERT_GE(hit.t, 0.0f);
-      const glm::vec3 level2(shader::SampleTexture(rs, rs.textures[0], uv, 2.0f));
-      const glm::vec3 level0(shader::SampleTexture(rs, rs.textures[0], uv, 0.0f));
+      const glm::vec3 level2(
+          shader::SampleTexture(rs, rs.textures[0], uv, 2.0f, shader::SlotIsSrgb(shader::kSlotBaseColor)));
+      const glm::vec3 level0(
+          shader::SampleTexture(rs, rs.textures[0], uv, 0.0f, shader::SlotIsSrgb(shader::kSlotBaseColor)));
       offColour += shader::MakeSurfaceHit(rs, ray, hit, glm::vec2(0.125f, 0.0f)).material.baseColor != level2;
       offData += shader::MakeSurfaceHit(rs, ray, hit, glm::vec2(0.0f, 0.125f)).material.baseColor != level0;
     }

@@ -37,7 +37,8 @@ RenderScene Ramp(uint32_t w, uint32_t h, uint8_t step, uint32_t mode) {
 }
 
 glm::vec4 Lookup(const RenderScene& scene, glm::vec2 uv, float lod = 0.0f) {
-  return shader::SampleTexture(scene, scene.textures[0], uv, lod);
+  return shader::SampleTexture(scene, scene.textures[0], uv, lod,
+                               (scene.textures[0].mode & shader::kTextureSrgb) != 0u);
 }
 
 float Byte(int b) { return float(double(b) / 255.0); }
@@ -52,7 +53,7 @@ TEST(TextureFilter, ByteTablesAreExactlyRounded) {
     const long double e = b / 255.0L;
     const long double l = e <= 0.04045L ? e / 12.92L : std::pow((e + 0.055L) / 1.055L, 2.4L);
     EXPECT_EQ(table[b], float(l)) << "sRGB byte " << b;
-    EXPECT_EQ(table[shader::kTexelDecodeLinear + b], float(e)) << "linear byte " << b;
+    EXPECT_EQ(shader::UnormByte(uint32_t(b)), float(e)) << "linear byte " << b;
   }
   EXPECT_EQ(table[0], 0.0f);
   EXPECT_EQ(table[255], 1.0f);
@@ -156,7 +157,7 @@ TEST(TextureFilter, MipChainsConserveTheMean) {
       auto mean = [&](const std::vector<uint32_t>& level, int c) {
         double sum = 0.0;
         for (uint32_t w : level)
-          sum += table[(srgb && c < 3 ? 0 : shader::kTexelDecodeLinear) + ((w >> (8 * c)) & 0xFF)];
+          sum += srgb && c < 3 ? table[(w >> (8 * c)) & 0xFF] : shader::UnormByte((w >> (8 * c)) & 0xFF);
         return sum / double(level.size());
       };
       for (size_t l = 1; l < chain.size(); ++l)

@@ -121,7 +121,8 @@ uint32_t DifferingLookups(const RenderScene& rs, const std::vector<TextureLookup
   uint32_t differing = 0;
   for (uint32_t i = 0; i < n; ++i) {
     const TextureLookup& l = lookups[i];
-    const glm::vec4 cpu = shader::SampleTexture(rs, rs.textures[l.texture], l.uv, l.lod);
+    const shader::Texture& t = rs.textures[l.texture];
+    const glm::vec4 cpu = shader::SampleTexture(rs, t, l.uv, l.lod, (t.mode & shader::kTextureSrgb) != 0u);
     if (std::memcmp(&cpu, &gpu[i], sizeof cpu) == 0) continue;
     if (++differing <= 5)
       ADD_FAILURE() << "lookup " << i << ": texture " << l.texture << " mode 0x" << std::hex

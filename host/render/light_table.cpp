@@ -48,7 +48,8 @@ glm::dvec3 MeanEmissiveTexture(const RenderScene& scene, const shader::Triangle&
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
       glm::vec2 b = shader::SampleUniformTriangle((i + 0.5f) / 4.0f, (j + 0.5f) / 4.0f);
-      sum += glm::dvec3(shader::SampleTexture(scene, tex, uvAt(b.x, b.y), lod));
+      sum +=
+          glm::dvec3(shader::SampleTexture(scene, tex, uvAt(b.x, b.y), lod, shader::SlotIsSrgb(shader::kSlotEmissive)));
     }
   return sum / 16.0;
 }

@@ -1,5 +1,9 @@
 #include "render/material_packing.h"
 
+#include <string>
+
+#include "util/error.h"
+
 namespace vkpt {
 namespace {
 
@@ -85,9 +89,14 @@ shader::Material PackMaterial(const Material& m) {
   return g;
 }
 
-void PackTextureRefs(const Material& m, std::vector<shader::TextureRef>& refs) {
+void PackTextureRefs(const Material& m, const std::vector<SceneTexture>& textures,
+                     std::vector<shader::TextureRef>& refs) {
   for (const SlotTexture& s : kSlots) {
     const MaterialTexture& t = m.*s.texture;
+    const bool colour = shader::SlotIsSrgb(s.slot);
+    if (t.Present() && textures.at(t.texture).srgb != colour)
+      throw Error("texture " + std::to_string(t.texture) + " holds " + (colour ? "data" : "sRGB colour") +
+                  ", but material slot " + std::to_string(s.slot) + " reads " + (colour ? "colour" : "data"));
     refs.push_back({t.Present() ? t.texture : shader::kInvalidIndex, t.texCoord, t.transformU.x, t.transformU.y,
                     t.transformU.z, t.transformV.x, t.transformV.y, t.transformV.z});
   }
@@ -99,7 +108,7 @@ PackedMaterials PackMaterials(const Scene& scene) {
   for (const Material& m : scene.materials) packed.materials.push_back(PackMaterial(m));
   if (!HasMaterialTextures(scene)) return packed;  // the shaders then read no slots at all
   packed.textureRefs.reserve(scene.materials.size() * shader::kTextureSlots);
-  for (const Material& m : scene.materials) PackTextureRefs(m, packed.textureRefs);
+  for (const Material& m : scene.materials) PackTextureRefs(m, scene.textures, packed.textureRefs);
   return packed;
 }
 

@@ -18,8 +18,12 @@ struct PackedMaterials {
 // One material; kMaterialTextured and kMaterialExtensionTextured follow from its textures.
 shader::Material PackMaterial(const Material& m);
 
-// Its textures, in slot order (kSlotBaseColor …), appended to `refs`.
-void PackTextureRefs(const Material& m, std::vector<shader::TextureRef>& refs);
+// Its textures, in slot order (kSlotBaseColor …), appended to `refs`. The shaders decode a
+// slot's bytes as the slot's kind, colour or data (shader::kSrgbSlots); a texture of the
+// other kind in a slot (not made by the loader, which makes one texture per kind) is
+// refused (vkpt::Error).
+void PackTextureRefs(const Material& m, const std::vector<SceneTexture>& textures,
+                     std::vector<shader::TextureRef>& refs);
 
 PackedMaterials PackMaterials(const Scene& scene);
 

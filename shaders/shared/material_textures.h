@@ -72,7 +72,7 @@ VKPT_FN vec4 SampleSlot(VKPT_SCENE_PARAM uint material, uint slot, TriangleUVs u
   Texture tex = VKPT_TEXTURE(ref.texture);
   vec2 uv = TransformUV(ref, InterpolatedUV(uvs, ref.texCoord, b1, b2));
   float lod = footprint <= kLevelZero ? 0.0f : TextureLod(footprint, ref, tex, uvs);
-  return SampleTexture(VKPT_SCENE_ARG tex, uv, lod);
+  return SampleTexture(VKPT_SCENE_ARG tex, uv, lod, SlotIsSrgb(slot));
 }
 
 // `mat` (material `material`, read from the table) at the point (b1, b2) of a triangle

@@ -29,9 +29,9 @@ const uint kTextureMipNearest = 64u;  // minFilter *_MIPMAP_NEAREST: the nearest
 const uint kTextureMipLinear = 128u;  // minFilter *_MIPMAP_LINEAR: between two levels (neither: level 0)
 const uint kTextureSrgb = 256u;       // RGB bytes are sRGB-encoded (base colour, emissive, specular colour)
 const uint kTextureLevelShift = 16u;  // the number of levels, 1 + floor(log2(max(width, height)))
-// The byte → float tables: [0, 256) sRGB to linear, [256, 512) byte / 255, each exactly rounded.
-const uint kTexelDecodeSize = 512u;
-const uint kTexelDecodeLinear = 256u;
+// The byte → float table of sRGB colour: byte b's linear value, exactly rounded (a linear
+// byte's value, b / 255, is computed: texture.h's UnormByte).
+const uint kTexelDecodeSize = 256u;
 
 // A material's use of a texture (glTF textureInfo): which texture, which TEXCOORD set,
 // and the KHR_texture_transform as a 2×3 matrix, uv' = (m00 u + m01 v + m02, m10 u + m11 v + m12).
@@ -63,6 +63,14 @@ const uint kSlotDiffuseTransmissionColor = 13u;  // RGB × diffuseTransmissionCo
 const uint kSlotIridescence = 14u;               // R × iridescence (KHR_materials_iridescence)
 const uint kSlotIridescenceThickness = 15u;      // G: the film's thickness between its minimum and maximum
 const uint kSlotAnisotropy = 16u;                // RG direction, B × anisotropy (KHR_materials_anisotropy)
+// The slots whose RGB is colour, sRGB-encoded (glTF 2.0 §3.9.2 and the extensions' colour
+// textures); every other slot's bytes, and every alpha, are linear. A texture used both
+// ways is two textures (scene/gltf_textures.cpp).
+const uint kSrgbSlots = (1u << kSlotBaseColor) | (1u << kSlotEmissive) | (1u << kSlotSpecularColor) |
+                        (1u << kSlotSheenColor) | (1u << kSlotDiffuseTransmissionColor);
+// Whether slot `slot` holds colour: a constant wherever a slot is named, so that lavapipe
+// compiles only the decode the slot needs (texture.h).
+VKPT_FN bool SlotIsSrgb(uint slot) { return ((kSrgbSlots >> slot) & 1u) != 0u; }
 const uint kTextureSlots = 17u;
 
 VKPT_END_NAMESPACE

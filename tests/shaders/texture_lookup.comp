@@ -35,5 +35,6 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= uint(lookups.length())) return;
   TextureLookup l = lookups[i];
-  results[i] = SampleTexture(FetchTexture(l.texture), l.uv, l.lod);
+  Texture t = FetchTexture(l.texture);
+  results[i] = SampleTexture(t, l.uv, l.lod, (t.mode & kTextureSrgb) != 0u);
 }
