@@ -53,7 +53,8 @@ TEST(TextureFilter, ByteTablesAreExactlyRounded) {
     const long double e = b / 255.0L;
     const long double l = e <= 0.04045L ? e / 12.92L : std::pow((e + 0.055L) / 1.055L, 2.4L);
     EXPECT_EQ(table[b], float(l)) << "sRGB byte " << b;
-    EXPECT_EQ(shader::UnormByte(uint32_t(b)), float(e)) << "linear byte " << b;
+    EXPECT_EQ(table[shader::kTexelDecodeLinear + b], float(e)) << "linear byte " << b;
+    EXPECT_EQ(shader::UnormByte(uint32_t(b)), float(e)) << "linear byte " << b << ", computed";
   }
   EXPECT_EQ(table[0], 0.0f);
   EXPECT_EQ(table[255], 1.0f);

@@ -18,6 +18,7 @@
 #define VKPT_TEXTURE(i) scene.textures[i]
 #define VKPT_TEXEL_WORD(i) scene.texels[i]
 #define VKPT_TEXEL_DECODE(i) scene.texelDecode[i]
+#define VKPT_TEXEL_UNORM(b) scene.texelDecode[::vkpt::shader::kTexelDecodeLinear + (b)]
 #define VKPT_TEXTURE_REF(i) scene.textureRefs[i]
 #define VKPT_UVS_OF(i) scene.uvs[i]
 #define VKPT_NORMAL_MAPS (!scene.tangents.empty())

@@ -106,7 +106,10 @@ double LinearToSrgb(double l) { return l <= 0.0031308 ? l * 12.92 : 1.055 * std:
 
 std::vector<float> TexelDecodeTable() {
   std::vector<float> table(shader::kTexelDecodeSize);
-  for (uint32_t b = 0; b < 256; ++b) table[b] = float(SrgbToLinear(b / 255.0));
+  for (uint32_t b = 0; b < 256; ++b) {
+    table[b] = float(SrgbToLinear(b / 255.0));
+    table[shader::kTexelDecodeLinear + b] = float(b / 255.0);
+  }
   return table;
 }
 

@@ -28,8 +28,8 @@ uint32_t PackSampler(const SceneTexture& texture);
 // The mip levels of one image: level 0 as given, then down to 1 × 1; RGBA8 words.
 std::vector<std::vector<uint32_t>> MipChain(const TextureImage& image, bool srgb);
 
-// kTexelDecodeSize floats: sRGB → linear for bytes 0…255, each exactly rounded from
-// double precision (a linear byte is shared/texture.h's UnormByte).
+// kTexelDecodeSize floats: sRGB → linear for bytes 0…255, then byte / 255, each exactly
+// rounded from double precision (the GPU computes the second: shared/texture.h's UnormByte).
 std::vector<float> TexelDecodeTable();
 
 // The sRGB transfer functions (IEC 61966-2-1), in double precision.

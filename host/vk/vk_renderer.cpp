@@ -1,7 +1,9 @@
 #include "vk/vk_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "kPathTraceSpirv.h"
@@ -54,7 +56,11 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
       textures_(UploadArray<shader::Texture>(ctx, scene.textures, "texture table")),
       texels_(UploadSplitTexelBuffer(ctx, scene.texels.data(), scene.texels.size() * sizeof(uint32_t), 1,
                                      "texture texels", overrides.maxTexelsPerBuffer)),
-      texelDecode_(UploadArray<float>(ctx, scene.texelDecode, "texel decode tables")),
+      // The sRGB table alone (none without textures): the shader computes linear bytes.
+      texelDecode_(UploadArray<float>(
+          ctx,
+          std::span(scene.texelDecode).first(std::min<size_t>(scene.texelDecode.size(), shader::kTexelDecodeLinear)),
+          "sRGB decode table")),
       envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
       envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
       hasGlossy_(UsesGlossyMaterial(scene)),

@@ -64,6 +64,8 @@
 //   [capability] VKPT_IRIDESCENCE       iridescence.h: some material is iridescent
 //   [capability] VKPT_ANISOTROPY        microfacet.h: some material is anisotropic
 //   [capability] VKPT_DISPERSION        dispersion.h: some material is dispersive
+//   [capability] VKPT_TEXEL_UNORM(b)    texture.h: byte b as b / 255, exactly rounded; default
+//                                       UnormByte's arithmetic (the CPU reads its table)
 //   [capability] VKPT_MASKED_BRANCHES   texture.h: the device runs both sides of every branch
 //                                       (lavapipe); default false, lookups that skip work
 //   [capability] VKPT_ALBEDO_PAIR(k)     albedo_tables.h: pair k of the albedo tables

@@ -34,7 +34,7 @@ const uint kBindingVertexColors = 14u;  // texel buffer of TriangleColors, index
 // Textures (shared/texture.h); a 1-texel dummy of each when the scene has none.
 const uint kBindingTextures = 15u;          // texel buffer of Texture
 const uint kBindingTexels = 16u;            // RGBA8 texels of every texture's levels, four per RGBA32UI texel
-const uint kBindingTexelDecode = 17u;       // kTexelDecodeSize floats, four per texel: byte → float
+const uint kBindingTexelDecode = 17u;       // the sRGB byte → float table (kTexelDecodeLinear floats), four per texel
 const uint kBindingMaterialTextures = 18u;  // texel buffer of TextureRef, kTextureSlots per material
 const uint kBindingVertexUVs = 19u;         // texel buffer of TriangleUVs, indexed by Triangle.sourceIndex
 const uint kBindingTangents = 20u;          // texel buffer of TriangleTangents, indexed by Triangle.sourceIndex

@@ -1,8 +1,9 @@
 // Texture lookups (glTF 2.0 §3.8 textures and samplers), written once for both
 // renderers. The CPU and the shader return the same bits for the same lookup: every
 // float operation here is a single correctly rounded IEEE operation (no division, no
-// transcendental; sRGB bytes become floats through the exactly rounded kBindingTexelDecode
-// table, linear ones by integer arithmetic, UnormByte), and the values are VKPT_PRECISE so
+// transcendental; sRGB bytes become floats through an exactly rounded table, linear ones
+// through another on the CPU and by integer arithmetic on the GPU, UnormByte, with the
+// same bits: VKPT_TEXEL_UNORM), and the values are VKPT_PRECISE so
 // that no compiler fuses a multiply and an add into an FMA (lavapipe's NIR does where it
 // may). Whether a texture's RGB is sRGB is the caller's argument: a constant at every
 // material slot (kSrgbSlots), so that lavapipe compiles only the decode the slot needs.
@@ -10,7 +11,7 @@
 // Scene access, as in path.h:
 //   VKPT_TEXTURE(i)      Texture i
 //   VKPT_TEXEL_WORD(i)   the i-th RGBA8 texel of the store as a uint, R in the low byte
-//   VKPT_TEXEL_DECODE(i) entry i of the sRGB byte → float table (texture_layout.h)
+//   VKPT_TEXEL_DECODE(i) entry i of the byte → float tables (texture_layout.h)
 //
 // A lookup is written for two kinds of device. Where a branch skips the work it guards
 // (the CPU, a GPU whose lanes agree), nearest filtering reads one texel and a second mip
@@ -28,6 +29,9 @@
 
 #ifndef VKPT_MASKED_BRANCHES
 #define VKPT_MASKED_BRANCHES false
+#endif
+#ifndef VKPT_TEXEL_UNORM
+#define VKPT_TEXEL_UNORM(b) UnormByte(b)
 #endif
 
 VKPT_BEGIN_NAMESPACE
@@ -75,8 +79,8 @@ VKPT_FN vec4 TexelValue(VKPT_SCENE_PARAM uint k, bool srgb) {
   uint word = VKPT_TEXEL_WORD(k);
   uint r = word & 0xFFu, g = (word >> 8u) & 0xFFu, b = (word >> 16u) & 0xFFu;
   vec3 rgb = srgb ? vec3(VKPT_TEXEL_DECODE(r), VKPT_TEXEL_DECODE(g), VKPT_TEXEL_DECODE(b))
-                  : vec3(UnormByte(r), UnormByte(g), UnormByte(b));
-  return vec4(rgb, UnormByte(word >> 24u));
+                  : vec3(VKPT_TEXEL_UNORM(r), VKPT_TEXEL_UNORM(g), VKPT_TEXEL_UNORM(b));
+  return vec4(rgb, VKPT_TEXEL_UNORM(word >> 24u));
 }
 
 // One level of a texture: where it starts in the store and its size.

@@ -29,9 +29,11 @@ const uint kTextureMipNearest = 64u;  // minFilter *_MIPMAP_NEAREST: the nearest
 const uint kTextureMipLinear = 128u;  // minFilter *_MIPMAP_LINEAR: between two levels (neither: level 0)
 const uint kTextureSrgb = 256u;       // RGB bytes are sRGB-encoded (base colour, emissive, specular colour)
 const uint kTextureLevelShift = 16u;  // the number of levels, 1 + floor(log2(max(width, height)))
-// The byte → float table of sRGB colour: byte b's linear value, exactly rounded (a linear
-// byte's value, b / 255, is computed: texture.h's UnormByte).
-const uint kTexelDecodeSize = 256u;
+// The byte → float tables, each exactly rounded: [0, 256) sRGB colour to linear, [256,
+// 512) b / 255. The GPU reads the first only and computes b / 255 (texture.h's UnormByte,
+// the same bits); the CPU reads both, a table being faster there than the arithmetic.
+const uint kTexelDecodeSize = 512u;
+const uint kTexelDecodeLinear = 256u;
 
 // A material's use of a texture (glTF textureInfo): which texture, which TEXCOORD set,
 // and the KHR_texture_transform as a 2×3 matrix, uv' = (m00 u + m01 v + m02, m10 u + m11 v + m12).
