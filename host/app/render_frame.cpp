@@ -23,8 +23,7 @@ RenderedFrame RenderReference(Prepared& p, const Options& o) {
   SessionSettings settings;
   settings.budget.maxSpp = o.spp;
   settings.budget.chunkSpp = o.chunkSpp;
-  // SIGINT and SIGTERM end it between passes (util/graceful_stop.h).
-  settings.stop = [] { return GracefulStop::Signal() != 0; };
+  settings.stop = GracefulStop::Arrived;
   SessionHooks hooks;
   hooks.progress = ProgressLine();
   const RenderedFrame reference = RenderSession(source, settings, hooks);

@@ -130,7 +130,7 @@ int RenderDealt(Cluster& cluster, const Options& o, Prepared& p, std::string* fr
     RenderDealtChunks(cluster, ChunkRendererOf(renderer, plan));
   } else {
     DealtChunks source(cluster, renderer, plan);
-    status = Finish(o, p, p.client->Finish(p.view, source, o, p.settings), nullptr, frameStats);
+    status = Finish(o, p, p.client->Finish(p.view, source, p.settings), nullptr, frameStats);
   }
   return cluster.MaxOf(status);
 }
@@ -151,7 +151,7 @@ int RunSequence(const Options& o) {
     const Options f = FrameOptions(o, numbers[i]);
     if (i > 0) NextFrame(p, f, 1);
     LocalPasses source(*p.view.renderer, o.chunkSpp);
-    const RenderedView rendered = p.client->Finish(p.view, source, f, p.settings);
+    const RenderedView rendered = p.client->Finish(p.view, source, p.settings);
     status = Finish(f, p, rendered, nullptr, &stats.emplace_back());
     PrintFrameLine(numbers[i], i, numbers.size(), f, p, rendered.frame.seconds);
   }
@@ -170,7 +170,7 @@ int Run(const Options& o) {
   // From here the first SIGINT/SIGTERM stops the render after its pass, and the image of
   // the samples taken is still written.
   GracefulStop stop;
-  const RenderedView rendered = p.client->Finish(p.view, source, o, p.settings);
+  const RenderedView rendered = p.client->Finish(p.view, source, p.settings);
   return Finish(o, p, rendered, reference ? &*reference : nullptr);
 }
 

@@ -52,9 +52,6 @@ api::Camera CameraOf(const Options& o) {
   return c;
 }
 
-// SIGINT and SIGTERM end a render between passes (util/graceful_stop.h).
-bool SignalArrived() { return GracefulStop::Signal() != 0; }
-
 api::RenderOptions RenderOptionsOf(const Options& o) {
   api::RenderOptions r;
   r.width = o.width;
@@ -75,7 +72,7 @@ api::RenderOptions RenderOptionsOf(const Options& o) {
   for (Aov aov : o.aovs) r.aovs.emplace_back(AovName(aov));
   r.denoise = o.denoise;
   r.progress = ProgressLine();
-  r.cancel = SignalArrived;
+  r.cancel = GracefulStop::Arrived;
   return r;
 }
 
@@ -105,10 +102,11 @@ ClientView ClientViewOf(const Options& o, const EngineLog& log, uint32_t ranks) 
 
 struct SceneClient::Impl {
   api::Scene scene;
+  api::RenderOptions frame;  // the render options of the frame begun last
 };
 
 SceneClient::SceneClient(const Options& o, const EngineLog& log)
-    : impl_(std::make_unique<Impl>(Impl{OpenScene(o.scene, SceneOptionsOf(o), ClientSceneOf(o, log))})) {}
+    : impl_(std::make_unique<Impl>(Impl{OpenScene(o.scene, SceneOptionsOf(o), ClientSceneOf(o, log)), {}})) {}
 
 SceneClient::~SceneClient() = default;
 SceneClient::SceneClient(SceneClient&&) noexcept = default;
@@ -117,11 +115,12 @@ SceneClient& SceneClient::operator=(SceneClient&&) noexcept = default;
 LoadedScene& SceneClient::Engine() { return EngineOf(impl_->scene); }
 
 BegunView SceneClient::Begin(const Options& o, const ClientView& client) {
-  return BeginView(impl_->scene, CameraOf(o), RenderOptionsOf(o), client);
+  impl_->frame = RenderOptionsOf(o);
+  return BeginView(impl_->scene, CameraOf(o), impl_->frame, client);
 }
 
-RenderedView SceneClient::Finish(BegunView& view, SampleSource& source, const Options& o, const ClientView& client) {
-  RenderedView rendered = FinishView(impl_->scene, view, source, RenderOptionsOf(o), client);
+RenderedView SceneClient::Finish(BegunView& view, SampleSource& source, const ClientView& client) {
+  RenderedView rendered = FinishView(impl_->scene, view, source, impl_->frame, client);
   EndProgressLine();
   return rendered;
 }

@@ -25,8 +25,9 @@ class SceneClient {
 
   // The frame the options describe (their camera, size, --at), prepared and begun.
   BegunView Begin(const Options& o, const ClientView& client);
-  // Its render from `source`, with the progress line and ended by a signal.
-  RenderedView Finish(BegunView& view, SampleSource& source, const Options& o, const ClientView& client);
+  // The render of the frame begun last from `source`, with the progress line and ended by
+  // a signal.
+  RenderedView Finish(BegunView& view, SampleSource& source, const ClientView& client);
 
  private:
   struct Impl;

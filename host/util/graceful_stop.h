@@ -14,8 +14,9 @@ class GracefulStop {
   GracefulStop(const GracefulStop&) = delete;
   GracefulStop& operator=(const GracefulStop&) = delete;
 
-  static int Signal();   // the first signal received while one was alive, or 0
-  static bool Active();  // whether one is alive (TempFileGuard then leaves signals to it)
+  static int Signal();                             // the first signal received while one was alive, or 0
+  static bool Arrived() { return Signal() != 0; }  // a render loop's stop: ends it between passes
+  static bool Active();                            // whether one is alive (TempFileGuard then leaves signals to it)
 };
 
 }  // namespace vkpt
