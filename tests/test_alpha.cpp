@@ -71,7 +71,7 @@ Scene MaskedOccluderScene() {
   auto uv = [](glm::vec3 p) { return glm::vec2(0.5f * (p.x + 1.0f), 0.5f * (1.0f - p.y)); };
   for (const SceneTriangle& t : s.triangles) s.uvs.push_back({{uv(t.v0), uv(t.v1), uv(t.v2)}, {}});
   s.images.push_back({"mask", 2, 2, {0, 0, 0, 127, 0, 0, 0, 128, 0, 0, 0, 128, 0, 0, 0, 127}});
-  s.textures.push_back(TextureWithMode(0, shader::kTextureSrgb));
+  s.textures.push_back(TextureWithMode(0, 0u, true));
   s.materials[1].baseColorTexture.texture = 0;
   return s;
 }

@@ -64,7 +64,8 @@ TEST(MaterialTextures, BaseColorTextureWithItsSamplerAndCoordinates) {
   ASSERT_EQ(s.textures.size(), 1u);
   ASSERT_EQ(s.images.size(), 1u);
   using namespace shader;
-  EXPECT_EQ(PackSampler(s.textures[0]), kTextureSrgb | kWrapClampToEdge << kTextureWrapSShift |
+  EXPECT_TRUE(s.textures[0].srgb);
+  EXPECT_EQ(PackSampler(s.textures[0]), kWrapClampToEdge << kTextureWrapSShift |
                                             kWrapMirroredRepeat << kTextureWrapTShift | kTextureMinLinear |
                                             kTextureMipNearest);
   EXPECT_EQ(s.images[0].width, 2u);
@@ -92,7 +93,7 @@ TEST(MaterialTextures, EverySlotScalesItsFactorsByItsChannels) {
   using namespace shader;
   Scene s;
   s.images.push_back({"texel", 1, 1, {51, 102, 153, 204}});
-  s.textures = {TextureWithMode(0, 0u), TextureWithMode(0, kTextureSrgb)};
+  s.textures = {TextureWithMode(0, 0u), TextureWithMode(0, 0u, true)};
   RenderScene rs = TexturesOnly(s);
   const bool colour[kTextureSlots] = {true,  false, true,  false, false, false, true,  false, false,
                                       false, true,  false, false, true,  false, false, false};
@@ -363,7 +364,8 @@ TEST(MaterialTextures, NoSamplerMeansRepeatAndTrilinear) {
   Scene s = Load(TexturedTriangle(R"({"emissiveTexture":{"index":0}})"));
   ASSERT_EQ(s.textures.size(), 1u);
   using namespace shader;
-  EXPECT_EQ(PackSampler(s.textures[0]), kTextureSrgb | kTextureMagLinear | kTextureMinLinear | kTextureMipLinear);
+  EXPECT_TRUE(s.textures[0].srgb);
+  EXPECT_EQ(PackSampler(s.textures[0]), kTextureMagLinear | kTextureMinLinear | kTextureMipLinear);
   EXPECT_EQ(Ref(s, 0, kSlotEmissive).texture, 0u);
 }
 

@@ -86,7 +86,7 @@ Scene MipQuadScene() {
   im.rgba.resize(64 * 64 * 4);
   std::mt19937 rng(5);
   for (uint8_t& b : im.rgba) b = uint8_t(rng());
-  s.textures[0] = test::TextureWithMode(0, shader::kTextureMipNearest | shader::kTextureSrgb);
+  s.textures[0] = test::TextureWithMode(0, shader::kTextureMipNearest, true);
   return s;
 }
 

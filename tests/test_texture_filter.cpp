@@ -36,9 +36,9 @@ RenderScene Ramp(uint32_t w, uint32_t h, uint8_t step, uint32_t mode) {
   return OneTexture(w, h, bytes, mode);
 }
 
-glm::vec4 Lookup(const RenderScene& scene, glm::vec2 uv, float lod = 0.0f) {
-  return shader::SampleTexture(scene, scene.textures[0], uv, lod,
-                               (scene.textures[0].mode & shader::kTextureSrgb) != 0u);
+// The first texture at `uv` and level of detail `lod`, its RGB read as colour (`srgb`) or data.
+glm::vec4 Lookup(const RenderScene& scene, glm::vec2 uv, float lod = 0.0f, bool srgb = false) {
+  return shader::SampleTexture(scene, scene.textures[0], uv, lod, srgb);
 }
 
 float Byte(int b) { return float(double(b) / 255.0); }
@@ -103,15 +103,15 @@ TEST(TextureFilter, BilinearBlendsTheFourTexelsAroundThePoint) {
 TEST(TextureFilter, SrgbTexturesAreDecodedBeforeFiltering) {
   using namespace shader;
   const std::vector<float> table = TexelDecodeTable();
-  RenderScene tex = OneTexture(2, 1, {0, 0, 0, 0, 255, 255, 255, 255},
-                               Wrap(kWrapClampToEdge, kWrapClampToEdge) | kLinearFilters | kTextureSrgb);
+  RenderScene tex =
+      OneTexture(2, 1, {0, 0, 0, 0, 255, 255, 255, 255}, Wrap(kWrapClampToEdge, kWrapClampToEdge) | kLinearFilters);
   // Halfway between black and white is linear 0.5 (not sRGB 0.5, which is linear 0.214),
   // and alpha stays linear.
-  glm::vec4 v = Lookup(tex, {0.5f, 0.5f});
+  glm::vec4 v = Lookup(tex, {0.5f, 0.5f}, 0.0f, true);
   EXPECT_EQ(v.r, 0.5f);
   EXPECT_EQ(v.a, 0.5f);
-  RenderScene grey = OneTexture(1, 1, {128, 64, 200, 128}, kTextureSrgb);
-  EXPECT_EQ(Lookup(grey, {0.3f, 0.3f}), glm::vec4(table[128], table[64], table[200], Byte(128)));
+  RenderScene grey = OneTexture(1, 1, {128, 64, 200, 128}, 0u);
+  EXPECT_EQ(Lookup(grey, {0.3f, 0.3f}, 0.0f, true), glm::vec4(table[128], table[64], table[200], Byte(128)));
 }
 
 TEST(TextureFilter, MipSelectionFollowsTheMinificationFilter) {

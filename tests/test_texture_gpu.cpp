@@ -1,6 +1,6 @@
 // Texture lookups on the GPU return the CPU's bits: 65,536 random lookups (texture
-// coordinate, level of detail, texture) over textures of every wrap mode, filter and
-// colour space, run by tests/shaders/texture_lookup.comp and by the C++ build of
+// coordinate, level of detail, texture, colour or data) over textures of every wrap mode,
+// filter and size, run by tests/shaders/texture_lookup.comp and by the C++ build of
 // shared/texture.h.
 #include <gtest/gtest.h>
 
@@ -27,12 +27,14 @@ struct TextureLookup {  // as in texture_lookup.comp (std430)
   glm::vec2 uv;
   float lod;
   uint32_t texture;
+  uint32_t srgb;  // the texture's RGB read as colour (1) or data (0)
+  uint32_t pad;
 };
 
 class TextureGpuTest : public test::ValidatedGpuTest {};
 
 // Textures of every combination of wrap S, wrap T, magnification and minification
-// filter, half of them sRGB, over random images of sizes that halve evenly and not.
+// filter, over random images of sizes that halve evenly and not.
 RenderScene AllKindsOfTextures(std::mt19937& rng) {
   Scene s;
   const glm::uvec2 sizes[] = {{1, 1}, {2, 2}, {7, 5}, {64, 32}, {33, 17}, {1, 40}, {128, 128}};
@@ -52,10 +54,9 @@ RenderScene AllKindsOfTextures(std::mt19937& rng) {
     for (uint32_t wrapT = 0; wrapT < 3; ++wrapT)
       for (uint32_t mag : {0u, kTextureMagLinear})
         for (uint32_t min : minFilters) {
-          const uint32_t srgb = rng() % 2 ? kTextureSrgb : 0u;
           const uint32_t image = uint32_t(rng() % s.images.size());
-          s.textures.push_back(test::TextureWithMode(
-              image, wrapS << kTextureWrapSShift | wrapT << kTextureWrapTShift | mag | min | srgb));
+          s.textures.push_back(
+              test::TextureWithMode(image, wrapS << kTextureWrapSShift | wrapT << kTextureWrapTShift | mag | min));
         }
   return test::TexturesOnly(s);
 }
@@ -70,6 +71,7 @@ std::vector<TextureLookup> RandomLookups(const RenderScene& rs, uint32_t n, std:
   std::vector<TextureLookup> lookups(n);
   for (TextureLookup& l : lookups) {
     l.texture = uint32_t(rng() % rs.textures.size());
+    l.srgb = rng() % 2;
     const shader::Texture& t = rs.textures[l.texture];
     for (int c = 0; c < 2; ++c) {
       const uint32_t size = c == 0 ? t.width : t.height;
@@ -122,13 +124,14 @@ uint32_t DifferingLookups(const RenderScene& rs, const std::vector<TextureLookup
   for (uint32_t i = 0; i < n; ++i) {
     const TextureLookup& l = lookups[i];
     const shader::Texture& t = rs.textures[l.texture];
-    const glm::vec4 cpu = shader::SampleTexture(rs, t, l.uv, l.lod, (t.mode & shader::kTextureSrgb) != 0u);
+    const glm::vec4 cpu = shader::SampleTexture(rs, t, l.uv, l.lod, l.srgb != 0u);
     if (std::memcmp(&cpu, &gpu[i], sizeof cpu) == 0) continue;
     if (++differing <= 5)
       ADD_FAILURE() << "lookup " << i << ": texture " << l.texture << " mode 0x" << std::hex
-                    << rs.textures[l.texture].mode << std::dec << ", uv (" << l.uv.x << ", " << l.uv.y << "), lod "
-                    << l.lod << ": CPU (" << cpu.r << ", " << cpu.g << ", " << cpu.b << ", " << cpu.a << "), GPU ("
-                    << gpu[i].r << ", " << gpu[i].g << ", " << gpu[i].b << ", " << gpu[i].a << ")";
+                    << rs.textures[l.texture].mode << std::dec << (l.srgb ? " sRGB" : "") << ", uv (" << l.uv.x << ", "
+                    << l.uv.y << "), lod " << l.lod << ": CPU (" << cpu.r << ", " << cpu.g << ", " << cpu.b << ", "
+                    << cpu.a << "), GPU (" << gpu[i].r << ", " << gpu[i].g << ", " << gpu[i].b << ", " << gpu[i].a
+                    << ")";
   }
   return differing;
 }

@@ -446,9 +446,10 @@ Scene TexturedQuadScene() {
       im.rgba.insert(im.rgba.end(), {t.r, t.g, t.b, t.a});
     }
   s.images.push_back(im);
-  s.textures.push_back(TextureWithMode(0, shader::kTextureSrgb |
-                                              shader::kWrapClampToEdge << shader::kTextureWrapSShift |
-                                              shader::kWrapClampToEdge << shader::kTextureWrapTShift));
+  s.textures.push_back(TextureWithMode(
+      0,
+      shader::kWrapClampToEdge << shader::kTextureWrapSShift | shader::kWrapClampToEdge << shader::kTextureWrapTShift,
+      true));
   s.materials[0].baseColorTexture.texture = 0;
   s.cameras.push_back(OrthographicAlongMinusZ(2.0f, 1.0f));
   return s;
@@ -475,7 +476,7 @@ shader::FrameParams TestFrame(const RenderScene& rs, const Scene& s, uint32_t si
   return p;
 }
 
-SceneTexture TextureWithMode(uint32_t image, uint32_t mode) {
+SceneTexture TextureWithMode(uint32_t image, uint32_t mode, bool srgb) {
   using Wrap = TextureSampler::Wrap;
   const Wrap wraps[3] = {Wrap::kRepeat, Wrap::kClampToEdge, Wrap::kMirroredRepeat};
   SceneTexture t;
@@ -487,7 +488,7 @@ SceneTexture TextureWithMode(uint32_t image, uint32_t mode) {
   t.sampler.mip = (mode & shader::kTextureMipNearest)  ? TextureSampler::Mip::kNearest
                   : (mode & shader::kTextureMipLinear) ? TextureSampler::Mip::kLinear
                                                        : TextureSampler::Mip::kNone;
-  t.srgb = (mode & shader::kTextureSrgb) != 0u;
+  t.srgb = srgb;
   EXPECT_EQ(PackSampler(t), mode) << "not a sampler's mode bits";
   return t;
 }

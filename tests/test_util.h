@@ -195,10 +195,10 @@ int PixelsOffTexturedQuad(const Image& image);
 shader::FrameParams TestFrame(const RenderScene& rs, const Scene& s, uint32_t size, uint32_t spp, uint32_t seed,
                               uint32_t depth);
 
-// A texture of `image` sampled as shader::Texture `mode` bits (wrap modes, filters,
-// kTextureSrgb) say: the inverse of PackSampler, for tests that name samplers as the
-// shaders see them.
-SceneTexture TextureWithMode(uint32_t image, uint32_t mode);
+// A texture of `image` sampled as shader::Texture `mode` bits (wrap modes, filters) say,
+// its RGB colour (sRGB) or data: the inverse of PackSampler, for tests that name samplers
+// as the shaders see them.
+SceneTexture TextureWithMode(uint32_t image, uint32_t mode, bool srgb = false);
 
 // A RenderScene with the textures of `s` (TextureStore) and nothing else: what
 // shared/texture.h's lookups read.

@@ -144,7 +144,7 @@ uint32_t PackSampler(const SceneTexture& texture) {
   if (s.minLinear) bits |= shader::kTextureMinLinear;
   if (s.mip == TextureSampler::Mip::kNearest) bits |= shader::kTextureMipNearest;
   if (s.mip == TextureSampler::Mip::kLinear) bits |= shader::kTextureMipLinear;
-  return texture.srgb ? bits | shader::kTextureSrgb : bits;
+  return bits;
 }
 
 TextureStore BuildTextureStore(const Scene& scene, unsigned threads) {

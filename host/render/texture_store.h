@@ -21,7 +21,7 @@ struct TextureStore {
 // colour is decoded first and encoded again), then rounded to bytes.
 TextureStore BuildTextureStore(const Scene& scene, unsigned threads);
 
-// The texture's sampler as shader::Texture mode bits (wrap modes, filters, kTextureSrgb);
+// The texture's sampler as shader::Texture mode bits (wrap modes, filters);
 // the level count is BuildTextureStore's to add.
 uint32_t PackSampler(const SceneTexture& texture);
 

@@ -135,7 +135,7 @@ VKPT_FN vec4 SampleLevel(VKPT_SCENE_PARAM uint mode, TextureLevel l, vec2 st, bo
 // The filtered value of texture t at uv for level of detail `lod` (log2 of the texels
 // a footprint spans on level 0): magnification when lod ≤ 0 (or NaN), minification
 // otherwise, from level 0, the nearest level or the two around lod by the sampler's
-// minFilter (OpenGL 4.6 §8.14). `srgb`: the texture's RGB is colour (t.mode's kTextureSrgb).
+// minFilter (OpenGL 4.6 §8.14). `srgb`: the texture's RGB is colour (the slot's, kSrgbSlots).
 VKPT_FN vec4 SampleTexture(VKPT_SCENE_PARAM Texture t, vec2 uv, float lod, bool srgb) {
   vec2 st = vec2(WrapCoordinate(uv.x, (t.mode >> kTextureWrapSShift) & 3u),
                  WrapCoordinate(uv.y, (t.mode >> kTextureWrapTShift) & 3u));

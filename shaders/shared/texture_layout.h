@@ -15,7 +15,7 @@ struct Texture {
   uint offset;  // in words (RGBA8 texels) of the store
   uint width;
   uint height;
-  uint mode;  // kTextureWrapS* | kTextureWrapT* | filters | kTextureSrgb | levels << kTextureLevelShift
+  uint mode;  // kTextureWrapS* | kTextureWrapT* | filters | levels << kTextureLevelShift
 };
 // Wrap modes (glTF sampler wrapS/wrapT), 2 bits each.
 const uint kWrapRepeat = 0u;
@@ -27,7 +27,6 @@ const uint kTextureMagLinear = 16u;   // magFilter LINEAR (else NEAREST)
 const uint kTextureMinLinear = 32u;   // minFilter *LINEAR* within a level (else NEAREST)
 const uint kTextureMipNearest = 64u;  // minFilter *_MIPMAP_NEAREST: the nearest level
 const uint kTextureMipLinear = 128u;  // minFilter *_MIPMAP_LINEAR: between two levels (neither: level 0)
-const uint kTextureSrgb = 256u;       // RGB bytes are sRGB-encoded (base colour, emissive, specular colour)
 const uint kTextureLevelShift = 16u;  // the number of levels, 1 + floor(log2(max(width, height)))
 // The byte → float tables, each exactly rounded: [0, 256) sRGB colour to linear, [256,
 // 512) b / 255. The GPU reads the first only and computes b / 255 (texture.h's UnormByte,

@@ -26,6 +26,7 @@ struct TextureLookup {
   vec2 uv;
   float lod;
   uint texture;
+  uint srgb;  // the texture's RGB read as colour (1) or data (0)
 };
 layout(std430, binding = 30) readonly buffer In { TextureLookup lookups[]; };
 layout(std430, binding = 31) writeonly buffer Out { vec4 results[]; };
@@ -36,5 +37,5 @@ void main() {
   if (i >= uint(lookups.length())) return;
   TextureLookup l = lookups[i];
   Texture t = FetchTexture(l.texture);
-  results[i] = SampleTexture(t, l.uv, l.lod, (t.mode & kTextureSrgb) != 0u);
+  results[i] = SampleTexture(t, l.uv, l.lod, l.srgb != 0u);
 }
