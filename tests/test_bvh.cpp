@@ -1,4 +1,5 @@
 // BVH invariants and closest-hit traversal against brute force.
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -91,6 +92,77 @@ uint32_t CheckSubtree(const RenderScene& rs, uint32_t i, uint32_t skip, uint32_t
   return CheckSubtree(rs, b, skip, maxLeaf, seen, leafTriangles, spatial);
 }
 
+// The CPU's wide layout of copy 0 (bvh/wide_layout.h): every node reached once, after its
+// parent; each used lane's box contains its child's boxes or its leaf's triangles (with
+// spatial splits: meets them), packets copy their triangles exactly, and every leaf-order
+// triangle sits in exactly one packet lane; unused lanes hold the empty box, and a node
+// has fewer than four children only when all of them are leaves (the collapse goes on
+// while one is inner).
+void CheckWideLayout(const RenderScene& rs, bool spatial) {
+  const BvhWideLayout& w = rs.wideLayout;
+  std::vector<int> inPackets(rs.triangles.size(), 0);
+  auto checkLeaf = [&](uint32_t code, const Bounds3f& box) {
+    const uint32_t count = code & 15u;
+    ASSERT_LE((code >> 4) + (count + 3) / 4, w.packets.size());
+    for (uint32_t k = 0; k < (count + 3) / 4 * 4; ++k) {
+      const TrianglePacket& p = w.packets[(code >> 4) + k / 4];
+      const uint32_t lane = k % 4, i = p.index[lane];
+      if (k >= count) {
+        EXPECT_EQ(i, shader::kInvalidIndex);
+        continue;
+      }
+      ASSERT_LT(i, rs.triangles.size());
+      ++inPackets[i];
+      const shader::Triangle& t = rs.triangles[i];
+      for (int axis = 0; axis < 3; ++axis)
+        EXPECT_TRUE(p.v0[axis][lane] == t.v0[axis] && p.e1[axis][lane] == t.e1[axis] && p.e2[axis][lane] == t.e2[axis]);
+      const Bounds3f tb = TriBounds(t);
+      if (box.Empty()) continue;  // the root leaf: no box
+      if (spatial) EXPECT_FALSE((Bounds3f{glm::max(box.lo, tb.lo), glm::min(box.hi, tb.hi)}.Empty()));
+      else EXPECT_TRUE(box.Contains(tb));
+    }
+  };
+  if (w.nodes.empty()) {
+    ASSERT_TRUE(IsLeafCode(w.rootLeaf));
+    checkLeaf(w.rootLeaf, Bounds3f{});
+  } else {
+    EXPECT_EQ(w.rootLeaf, 0u);
+    std::vector<int> reached(w.nodes.size(), 0);
+    std::vector<std::pair<uint32_t, Bounds3f>> stack = {{0u, Bounds3f{rs.nodes[0].lo, rs.nodes[0].hi}}};
+    while (!stack.empty()) {
+      const auto [index, parentBox] = stack.back();
+      stack.pop_back();
+      ASSERT_LT(index, w.nodes.size());
+      ++reached[index];
+      const BvhWideNode& n = w.nodes[index];
+      int used = 0, inner = 0;
+      for (int k = 0; k < 4; ++k) {
+        const Bounds3f box{{n.lo[0][k], n.lo[1][k], n.lo[2][k]}, {n.hi[0][k], n.hi[1][k], n.hi[2][k]}};
+        if (n.child[k] == 0u) {
+          EXPECT_EQ(box.lo, glm::vec3(INFINITY)) << "node " << index << " lane " << k;
+          EXPECT_EQ(box.hi, glm::vec3(-INFINITY)) << "node " << index << " lane " << k;
+          continue;
+        }
+        EXPECT_EQ(used++, k) << "node " << index << ": used lanes come first";
+        EXPECT_TRUE(parentBox.Contains(box)) << "node " << index << " lane " << k;
+        if (IsLeafCode(n.child[k])) {
+          checkLeaf(n.child[k], box);
+        } else {
+          ++inner;
+          EXPECT_GT(n.child[k] >> 4, index) << "a child follows its parent";
+          stack.push_back({n.child[k] >> 4, box});
+        }
+      }
+      EXPECT_GE(used, 2) << "node " << index;
+      if (used < 4) {
+        EXPECT_EQ(inner, 0) << "node " << index << " has room for an inner child's children";
+      }
+    }
+    for (size_t i = 0; i < reached.size(); ++i) ASSERT_EQ(reached[i], 1) << "wide node " << i;
+  }
+  for (size_t i = 0; i < inPackets.size(); ++i) ASSERT_EQ(inPackets[i], 1) << "leaf-order triangle " << i;
+}
+
 // Every copy of the tree (one per ray octant) must be a complete, valid tree of its own.
 // Each triangle appears once (spatial splits: at least once) unless degenerate.
 void CheckInvariants(const RenderScene& rs, const std::vector<SceneTriangle>& input, uint32_t maxLeaf,
@@ -116,6 +188,62 @@ void CheckInvariants(const RenderScene& rs, const std::vector<SceneTriangle>& in
       else ASSERT_EQ(seen[i], 1) << "triangle " << i;
     }
   }
+  CheckWideLayout(rs, spatial);
+}
+
+// What CheckWideLayout reports about `rs`: its failure messages, joined.
+std::string WideLayoutFailures(const RenderScene& rs) {
+  ::testing::TestPartResultArray results;
+  {
+    ::testing::ScopedFakeTestPartResultReporter reporter(
+        ::testing::ScopedFakeTestPartResultReporter::INTERCEPT_ONLY_CURRENT_THREAD, &results);
+    CheckWideLayout(rs, false);
+  }
+  std::string all;
+  for (int i = 0; i < results.size(); ++i) all += results.GetTestPartResult(i).message();
+  return all;
+}
+
+// CheckWideLayout has teeth: each kind of broken wide layout fails it, for its reason.
+TEST(Bvh, WideLayoutCheckFindsEachKindOfDamage) {
+  const RenderScene good = Prepare(test::RandomSoup(500, 3), 4);
+  EXPECT_EQ(WideLayoutFailures(good), "");
+  ASSERT_GT(good.wideLayout.nodes.size(), 4u);
+  auto damaged = [&](auto&& damage) {
+    RenderScene rs = good;
+    damage(rs.wideLayout);
+    return WideLayoutFailures(rs);
+  };
+  const BvhWideNode& root = good.wideLayout.nodes[0];
+  const int inner = IsLeafCode(root.child[0]) ? 1 : 0;  // a root lane with an inner child
+  ASSERT_FALSE(IsLeafCode(root.child[inner]));
+  // A child's box outside its lane's.
+  EXPECT_NE(damaged([&](BvhWideLayout& w) { w.nodes[0].hi[1][inner] -= 0.1f; }).find("parentBox.Contains"),
+            std::string::npos);
+  // A packet that is not its triangle.
+  EXPECT_NE(damaged([&](BvhWideLayout& w) { w.packets[3].v0[2][0] += 1e-3f; }).find("p.v0"), std::string::npos);
+  // A triangle listed twice, another never.
+  EXPECT_NE(
+      damaged([&](BvhWideLayout& w) { w.packets[0].index[0] = w.packets[0].index[1]; }).find("leaf-order triangle"),
+      std::string::npos);
+  // An unused lane that a ray could enter.
+  EXPECT_NE(damaged([&](BvhWideLayout& w) {
+              for (BvhWideNode& n : w.nodes)
+                if (n.child[3] == 0u) n.hi[0][3] = 0.0f;
+            }).find("box.hi"),
+            std::string::npos);
+  // An unused lane between used ones.
+  auto clearLane = [](BvhWideNode& n, int k) {
+    n.child[k] = 0u;
+    for (int axis = 0; axis < 3; ++axis) n.lo[axis][k] = INFINITY, n.hi[axis][k] = -INFINITY;
+  };
+  EXPECT_NE(damaged([&](BvhWideLayout& w) {
+              for (BvhWideNode& n : w.nodes)
+                if (n.child[2] != 0u) clearLane(n, 1);
+            }).find("used lanes come first"),
+            std::string::npos);
+  // A node with room left while a child is inner (the root's last lane dropped).
+  EXPECT_NE(damaged([&](BvhWideLayout& w) { clearLane(w.nodes[0], 3); }).find("has room"), std::string::npos);
 }
 
 // In copy k, an inner node's first child is the nearer one for rays in octant k, along

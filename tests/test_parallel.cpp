@@ -103,22 +103,23 @@ TEST(Parallel, ExceptionsOnAnyThreadReachTheCaller) {
   }
 }
 
-// A RenderScene whose CPU tree is a chain of 100 pairs, each with the next pair and an
-// empty leaf as children, both boxes covering everything: every ray defers 100 leaves,
-// more than the traversal's inline stack holds, so it allocates (and the leaves hold
-// nothing, so every ray misses).
+// A RenderScene whose CPU tree is a chain of 100 wide nodes, each with the next node and
+// three empty leaves as children, every box covering everything: every ray defers 300
+// leaves, more than the traversal's inline stack holds, so it allocates (and the leaves
+// hold nothing, so every ray misses).
 RenderScene ChainScene() {
   RenderScene rs = PrepareRenderScene(LoadGltf(test::SourcePath("scenes/cornell.gltf")));
-  constexpr uint32_t kPairs = 100, kEmptyLeaf = (0u << 4) | 1u;
-  rs.pairLayout = {};
-  rs.pairLayout.packets.resize(1);
-  for (uint32_t& index : rs.pairLayout.packets[0].index) index = shader::kInvalidIndex;
-  for (uint32_t i = 0; i < kPairs; ++i) {
-    BvhPairNode p{};
-    for (auto& axis : p.bounds) axis[0] = axis[1] = -1e30f, axis[2] = axis[3] = 1e30f;
-    p.child[0] = i + 1 < kPairs ? (i + 1) << 4 : kEmptyLeaf;
-    p.child[1] = kEmptyLeaf;
-    rs.pairLayout.pairs.push_back(p);
+  constexpr uint32_t kNodes = 100, kEmptyLeaf = (0u << 4) | 1u;
+  rs.wideLayout = {};
+  rs.wideLayout.packets.resize(1);
+  for (uint32_t& index : rs.wideLayout.packets[0].index) index = shader::kInvalidIndex;
+  for (uint32_t i = 0; i < kNodes; ++i) {
+    BvhWideNode n{};
+    for (int axis = 0; axis < 3; ++axis)
+      for (int k = 0; k < 4; ++k) n.lo[axis][k] = -1e30f, n.hi[axis][k] = 1e30f;
+    n.child[0] = i + 1 < kNodes ? (i + 1) << 4 : kEmptyLeaf;
+    n.child[1] = n.child[2] = n.child[3] = kEmptyLeaf;
+    rs.wideLayout.nodes.push_back(n);
   }
   return rs;
 }

@@ -57,7 +57,7 @@ class CpuFrame final : public FrameRenderer {
         params_(params),
         threads_(std::min<unsigned>(ThreadCount(threads), params.height)),
         estimator_(ChooseEstimator(scene, params)) {
-    if (scene.pairLayout.pairs.empty() && scene.pairLayout.packets.empty())
+    if (scene.wideLayout.nodes.empty() && scene.wideLayout.packets.empty())
       throw Error("the CPU renderer needs a RenderScene prepared with forCpu = true");
     sums_.width = params.width;
     sums_.height = params.height;

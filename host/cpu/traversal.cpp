@@ -15,25 +15,25 @@ struct RaySlabs {
   Float4 origin[3];
   Float4 dir[3];
   Float4 invDir[3];
+  // Per axis, where in a BvhWideNode the near and far planes of the four boxes lie: the
+  // lo row for a positive direction, the hi row for a negative one (the ray meets that
+  // plane first), so a slab test needs no min/max of the two planes' distances.
+  uint32_t nearRow[3], farRow[3];
 };
 
-// The slab test of shader::IntersectBox (same operations, so the same decisions) on both
-// children at once. Lanes hold {lo0, lo1, hi0, hi1} per axis; after (b − o)·(1/d), the
-// per-lane min/max against the half-swapped vector gives each child's near and far slab
-// distance in lanes 0 and 1. Returns a 2-bit hit mask; tEnter gets the entry distances.
-int IntersectPair(const BvhPairNode& p, const RaySlabs& r, float tMax, float tEnter[2]) {
+// The slab test of the four boxes of `n` at once: a 4-bit hit mask, the entry distances
+// in tEnter. The exit distance has the 1 + 2γ₃ slack of shader::IntersectBox. An unused
+// lane (lo = +∞, hi = −∞) enters at +∞ and leaves at −∞.
+int IntersectNode(const BvhWideNode& n, const RaySlabs& r, float tMax, Float4& tEnter) {
+  const float* planes = &n.lo[0][0];
   Float4 enter = Splat4(0.0f), exit = Splat4(tMax);
   for (int axis = 0; axis < 3; ++axis) {
-    Float4 t = (Load4(p.bounds[axis]) - r.origin[axis]) * r.invDir[axis];
-    Float4 s = SwapHalves4(t);
-    enter = Max4(enter, Min4(t, s));
-    exit = Min4(exit, Max4(t, s));
+    enter = Max4(enter, (Load4(planes + r.nearRow[axis]) - r.origin[axis]) * r.invDir[axis]);
+    exit = Min4(exit, (Load4(planes + r.farRow[axis]) - r.origin[axis]) * r.invDir[axis]);
   }
-  exit *= Splat4(1.0000004f);  // the 1 + 2γ₃ slack of IntersectBox
-  Int4 hit = enter <= exit;
-  tEnter[0] = enter[0];
-  tEnter[1] = enter[1];
-  return (hit[0] & 1) | (hit[1] & 2);
+  exit *= Splat4(1.0000004f);
+  tEnter = enter;
+  return Mask4(enter <= exit);
 }
 
 // shader::IntersectTriangle (Möller–Trumbore) on the four triangles of a packet: the same
@@ -70,11 +70,14 @@ RaySlabs MakeSlabs(glm::vec3 origin, glm::vec3 dir) {
     slabs.origin[axis] = Splat4(origin[axis]);
     slabs.dir[axis] = Splat4(dir[axis]);
     slabs.invDir[axis] = Splat4(inv[axis]);
+    const uint32_t lo = 4 * axis, hi = 12 + 4 * axis;  // rows of BvhWideNode's planes
+    slabs.nearRow[axis] = inv[axis] < 0.0f ? hi : lo;
+    slabs.farRow[axis] = inv[axis] < 0.0f ? lo : hi;
   }
   return slabs;
 }
 
-// The deferred far children of the walk (pair index << 4, or a leaf code) with their
+// The deferred farther children of the walk (node index << 4, or a leaf code) with their
 // entry distances, so that one beyond the closest hit found since is dropped without
 // another box test. The first kInline entries live on the call stack; the builder bounds
 // nothing about depth, so deeper ones (pathological trees only) go to the heap.
@@ -141,7 +144,7 @@ struct Query {
 // (the scalar loop's result), narrowing tMax. True when an any-hit query has its hit.
 template <bool kAnyHit, bool kAlpha, bool kCount>
 bool TestLeaf(const Query<kAnyHit, kAlpha, kCount>& q, uint32_t code, const RaySlabs& slabs, float& tMax, Hit& hit) {
-  const std::vector<TrianglePacket>& packets = q.scene.pairLayout.packets;
+  const std::vector<TrianglePacket>& packets = q.scene.wideLayout.packets;
   for (uint32_t k = code >> 4, e = k + ((code & 15u) + 3) / 4; k < e; ++k) {
     Float4 t, b1, b2;
     const int mask = IntersectPacket(packets[k], slabs, tMax, t, b1, b2);
@@ -156,39 +159,49 @@ bool TestLeaf(const Query<kAnyHit, kAlpha, kCount>& q, uint32_t code, const RayS
   return false;
 }
 
-// The ordered walk over the child pairs: both children's boxes at once, the nearer
-// entered first, the farther deferred.
+// The ordered walk over the wide nodes: a node's four boxes at once, the nearest child
+// hit entered next, the others deferred, nearer ones on top.
 template <bool kAnyHit, bool kAlpha, bool kCount>
 Hit Traverse(const Query<kAnyHit, kAlpha, kCount>& q, glm::vec3 origin, glm::vec3 dir, float tMax) {
   const RenderScene& scene = q.scene;
   Hit hit{-1.0f, 0.0f, 0.0f, shader::kInvalidIndex};
-  const std::vector<BvhPairNode>& pairs = scene.pairLayout.pairs;
+  const std::vector<BvhWideNode>& nodes = scene.wideLayout.nodes;
   const RaySlabs slabs = MakeSlabs(origin, dir);
   DeferredStack deferred;
   // The root's own box is not tested: its children's boxes cull as well. A single-leaf
-  // tree has no pairs; its leaf is the whole walk.
-  uint32_t code = scene.pairLayout.rootLeaf;
+  // tree has no nodes; its leaf is the whole walk.
+  uint32_t code = scene.wideLayout.rootLeaf;
   for (;;) {
     if (IsLeafCode(code)) {
       if (TestLeaf(q, code, slabs, tMax, hit)) return hit;
     } else {
-      const BvhPairNode& p = pairs[code >> 4];
-      if constexpr (kCount) *q.boxTests += 2;
-      float t[2];
-      switch (IntersectPair(p, slabs, tMax, t)) {
-        case 1: code = p.child[0]; continue;
-        case 2: code = p.child[1]; continue;
-        case 3: {
-          int nearChild = t[1] < t[0] ? 1 : 0;
-          uint32_t far = p.child[1 - nearChild];
-          // Its record is needed only after the near subtree: fetch it meanwhile. (Far
-          // leaves' triangles are not prefetched: docs/design-notes.md, "CPU prefetch".)
-          if (!IsLeafCode(far)) __builtin_prefetch(&pairs[far >> 4]);
-          deferred.Push(far, t[1 - nearChild]);  // revisited later unless a closer hit culls it
-          code = p.child[nearChild];
-          continue;
+      const BvhWideNode& n = nodes[code >> 4];
+      Float4 tEnter;
+      int mask = IntersectNode(n, slabs, tMax, tEnter);
+      if constexpr (kCount) *q.boxTests += 4;
+      if (mask != 0) {
+        // The children hit, sorted by entry distance (insertion sort of at most four).
+        uint32_t kids[4];
+        float ts[4];
+        int count = 0;
+        for (; mask != 0; mask &= mask - 1) {
+          const int lane = __builtin_ctz(unsigned(mask));
+          int k = count++;
+          for (; k > 0 && ts[k - 1] > tEnter[lane]; --k) {
+            kids[k] = kids[k - 1];
+            ts[k] = ts[k - 1];
+          }
+          kids[k] = n.child[lane];
+          ts[k] = tEnter[lane];
         }
-        default: break;
+        for (int k = count - 1; k > 0; --k) {
+          // Its record is needed only after the nearer subtrees: fetch it meanwhile. (Far
+          // leaves' triangles are not prefetched: docs/design-notes.md, "CPU prefetch".)
+          if (!IsLeafCode(kids[k])) __builtin_prefetch(&nodes[kids[k] >> 4]);
+          deferred.Push(kids[k], ts[k]);  // revisited later unless a closer hit culls it
+        }
+        code = kids[0];
+        continue;
       }
     }
     if (!deferred.PopInFront(tMax, code)) break;

@@ -1,6 +1,6 @@
 // Closest-hit and any-hit queries for the CPU reference tracer: an ordered, stack-based
-// walk over the child-pair layout (bvh/pair_layout.h), both child boxes tested at once
-// and the nearer child entered first. Independent of the skip-link walk the shader uses,
+// walk over the four-wide layout (bvh/wide_layout.h), a node's four child boxes tested at
+// once and the nearest child entered first. Independent of the skip-link walk the shader uses,
 // so one traversal bug cannot hide in both renderers.
 #pragma once
 
@@ -24,7 +24,7 @@ Hit IntersectClosestAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 
 bool OccludedAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax, uint32_t alphaKey);
 
 // The closest hit with an open tMax, alpha tested where the scene has MASK or BLEND
-// materials, adding the boxes the walk tested (two per child pair) to `boxTests`: the
+// materials, adding the boxes the walk tested (four per wide node) to `boxTests`: the
 // heat map AOV (shaders/shared/aov.h).
 Hit IntersectClosestCounted(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, uint32_t alphaKey,
                             uint32_t& boxTests);

@@ -235,7 +235,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   rs.materials = std::move(packed.materials);
   rs.textureRefs = std::move(packed.textureRefs);
   rs.triangles = LeafOrderTriangles(scene, bvh.primOrder, in.kept);
-  if (forCpu) rs.pairLayout = BuildPairLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
+  if (forCpu) rs.wideLayout = BuildWideLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
   AddTextures(scene, options.threads, rs);  // before the light table, which reads emissive textures
   BuildLightTable(scene, rs);
   rs.shading = TriangleShadings(scene, options.threads);

@@ -1,5 +1,5 @@
 // What a renderer consumes: the Scene's triangles in BVH leaf order as shader::Triangle,
-// the BVH in two layouts (flattened skip links for the GPU, child pairs for the CPU),
+// the BVH in two layouts (flattened skip links for the GPU, four-wide nodes for the CPU),
 // materials, the light table for light sampling, per-triangle shading normals, vertex
 // colours and texture coordinates, and the textures. The
 // shader-layout vectors are uploaded verbatim by the Vulkan backend; the CPU reference
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "bvh/bvh.h"
-#include "bvh/pair_layout.h"
+#include "bvh/wide_layout.h"
 #include "render/environment_map.h"
 #include "scene/scene.h"
 #include "shared/layout.h"
@@ -20,7 +20,7 @@ struct RenderScene {
   std::vector<shader::Triangle> triangles;  // BVH leaf order
   HugeVector<shader::BvhNode> nodes;  // nodeCopies copies of bvhStats.nodes nodes (see Bvh)
   uint32_t nodeCopies = 1;
-  BvhPairLayout pairLayout;  // the first copy of `nodes`, for the CPU tracer (if asked for)
+  BvhWideLayout wideLayout;  // the first copy of `nodes`, for the CPU tracer (if asked for)
   std::vector<shader::Material> materials;
   std::vector<shader::Light> lights;  // empty: the scene is dark (render/light_table.h)
   // One per Scene triangle, degenerate ones included, so that Triangle::sourceIndex
@@ -74,7 +74,7 @@ bool UsesDispersion(const RenderScene& scene);
 // nothing without a light).
 bool HasLightSources(const RenderScene& scene);
 
-// `forCpu`: also lay the tree out for the CPU tracer (pairLayout). A render on the GPU alone
+// `forCpu`: also lay the tree out for the CPU tracer (wideLayout). A render on the GPU alone
 // skips it: on a large scene it costs time and memory that nothing would read.
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {}, bool forCpu = true);
 

@@ -1,6 +1,6 @@
 // Four floats in one SSE/NEON register through the compiler's generic vector extension
-// (GCC and Clang): portable; only min/max name SSE instructions, with a generic fallback. Used where a loop handles x, y, z (and a
-// spare lane) at once: the CPU traversal's child-pair test and the BVH builder's binning.
+// (GCC and Clang): portable; only min/max name SSE instructions, with a generic fallback. Used where a loop handles x,
+// y, z (and a spare lane) at once: the CPU traversal's box and triangle tests and the BVH builder's binning.
 #pragma once
 
 #include <cstdint>

@@ -1,0 +1,55 @@
+// The CPU tracer's layout of the BVH: the binary tree collapsed into nodes of up to four
+// children (Embree's BVH4; Wald et al. 2008, "Getting Rid of Packets"), each node holding
+// its children's boxes axis by axis so that one ray tests all four with 4-wide vector
+// arithmetic, and each leaf's triangles in packets of four, coordinates lane by lane,
+// tested together. Derived from the flattened skip-link tree (first copy) and the
+// leaf-ordered triangles, which stay what the GPU reads; the builder knows neither layout.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "shared/layout.h"
+#include "util/float4.h"
+
+namespace vkpt {
+
+struct alignas(64) BvhWideNode {
+  // Child k's box is (lo[0][k], lo[1][k], lo[2][k]) – (hi[0][k], hi[1][k], hi[2][k]). An
+  // unused lane holds the empty box lo = +∞, hi = −∞, which no ray enters.
+  float lo[3][4];
+  float hi[3][4];
+  // Per child: (node index << 4) for an inner child, or its leaf code (first packet << 4)
+  // | triangle count, count in 1..15, in ⌈count / 4⌉ packets; 0 in an unused lane.
+  uint32_t child[4];
+  uint32_t pad[4];
+};
+static_assert(sizeof(BvhWideNode) == 128);
+
+// Up to four triangles of one leaf as v0, e1, e2 per axis (lane k: the k-th triangle).
+// Unused lanes hold a zero-area triangle at the origin, which no ray hits (det = 0).
+struct TrianglePacket {
+  Float4 v0[3], e1[3], e2[3];
+  uint32_t index[4];  // leaf-order triangle (RenderScene::triangles), kInvalidIndex if unused
+};
+static_assert(sizeof(TrianglePacket) == 160);
+
+inline bool IsLeafCode(uint32_t code) { return (code & 15u) != 0u; }
+
+struct BvhWideLayout {
+  // Node 0 is the root. Empty when the root itself is a leaf (rootLeaf).
+  std::vector<BvhWideNode> nodes;
+  std::vector<TrianglePacket> packets;
+  uint32_t rootLeaf = 0;  // the root's leaf code when the whole tree is one leaf, else 0
+};
+
+// From `nodeCount` flattened nodes starting at nodes[0] (one copy of the tree) and the
+// triangles their leaves index. An inner node takes its binary children and, while it
+// has fewer than four and one of them is inner, replaces the inner child of the largest
+// surface area by that child's two children: the nodes a ray is likeliest to enter are
+// the ones merged away (Wald et al. 2008; Embree's BVH4 collapse).
+BvhWideLayout BuildWideLayout(std::span<const shader::BvhNode> nodes, uint32_t nodeCount,
+                              const std::vector<shader::Triangle>& triangles);
+
+}  // namespace vkpt
