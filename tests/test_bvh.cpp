@@ -96,7 +96,7 @@ uint32_t CheckSubtree(const RenderScene& rs, uint32_t i, uint32_t skip, uint32_t
 // parent; each used lane's box contains its child's boxes or its leaf's triangles (with
 // spatial splits: meets them), packets copy their triangles exactly, and every leaf-order
 // triangle sits in exactly one packet lane; unused lanes hold the empty box, and a node
-// has fewer than four children only when all of them are leaves (the collapse goes on
+// has fewer than kBvhWidth children only when all of them are leaves (the collapse goes on
 // while one is inner).
 void CheckWideLayout(const RenderScene& rs, bool spatial) {
   const BvhWideLayout& w = rs.wideLayout;
@@ -136,7 +136,7 @@ void CheckWideLayout(const RenderScene& rs, bool spatial) {
       ++reached[index];
       const BvhWideNode& n = w.nodes[index];
       int used = 0, inner = 0;
-      for (int k = 0; k < 4; ++k) {
+      for (int k = 0; k < kBvhWidth; ++k) {
         const Bounds3f box{{n.lo[0][k], n.lo[1][k], n.lo[2][k]}, {n.hi[0][k], n.hi[1][k], n.hi[2][k]}};
         if (n.child[k] == 0u) {
           EXPECT_EQ(box.lo, glm::vec3(INFINITY)) << "node " << index << " lane " << k;
@@ -154,7 +154,7 @@ void CheckWideLayout(const RenderScene& rs, bool spatial) {
         }
       }
       EXPECT_GE(used, 2) << "node " << index;
-      if (used < 4) {
+      if (used < kBvhWidth) {
         EXPECT_EQ(inner, 0) << "node " << index << " has room for an inner child's children";
       }
     }
@@ -229,7 +229,7 @@ TEST(Bvh, WideLayoutCheckFindsEachKindOfDamage) {
   // An unused lane that a ray could enter.
   EXPECT_NE(damaged([&](BvhWideLayout& w) {
               for (BvhWideNode& n : w.nodes)
-                if (n.child[3] == 0u) n.hi[0][3] = 0.0f;
+                if (n.child[kBvhWidth - 1] == 0u) n.hi[0][kBvhWidth - 1] = 0.0f;
             }).find("box.hi"),
             std::string::npos);
   // An unused lane between used ones.
@@ -243,7 +243,8 @@ TEST(Bvh, WideLayoutCheckFindsEachKindOfDamage) {
             }).find("used lanes come first"),
             std::string::npos);
   // A node with room left while a child is inner (the root's last lane dropped).
-  EXPECT_NE(damaged([&](BvhWideLayout& w) { clearLane(w.nodes[0], 3); }).find("has room"), std::string::npos);
+  EXPECT_NE(damaged([&](BvhWideLayout& w) { clearLane(w.nodes[0], kBvhWidth - 1); }).find("has room"),
+            std::string::npos);
 }
 
 // In copy k, an inner node's first child is the nearer one for rays in octant k, along
@@ -421,13 +422,14 @@ BruteHit BruteForce(const RenderScene& rs, glm::vec3 o, glm::vec3 d) {
 }
 
 // Traversal must find exactly the brute-force closest hit; a different triangle is
-// accepted only on a true tie (the same t).
+// accepted only on a true tie (the same t). Every walk this CPU can run (portable, AVX2)
+// returns the same bits for every query.
 void CompareWithBruteForce(const RenderScene& rs, uint32_t rays, uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   Bounds3f b{rs.nodes[0].lo, rs.nodes[0].hi};
   glm::vec3 ext = b.Diagonal();
-  uint32_t hits = 0, ties = 0, mismatches = 0, occlusionMismatches = 0;
+  uint32_t hits = 0, ties = 0, mismatches = 0, occlusionMismatches = 0, walksDiffer = 0;
   for (uint32_t i = 0; i < rays; ++i) {
     glm::vec3 o = b.lo - 0.25f * ext + 1.5f * ext * glm::vec3(u(rng), u(rng), u(rng));
     glm::vec3 d;
@@ -457,12 +459,22 @@ void CompareWithBruteForce(const RenderScene& rs, uint32_t rays, uint32_t seed) 
     // Any-hit must agree with the closest hit about whether something is in the way.
     float tMax = ref.t >= 0.0f ? ref.t * 1.5f : 100.0f;
     bool expectOccluded = ref.t >= 0.0f;
-    if (Occluded(rs, o, d, tMax) != expectOccluded) ++occlusionMismatches;
+    const bool occluded = Occluded(rs, o, d, tMax);
+    if (occluded != expectOccluded) ++occlusionMismatches;
+    for (WalkIsa isa : {WalkIsa::kPortable, WalkIsa::kAvx2}) {
+      if (!WalkIsaSupported(isa)) continue;
+      const Hit w = IntersectClosest(isa, rs, o, d, shader::kInfinity);
+      walksDiffer += std::memcmp(&w, &h, sizeof h) != 0 || Occluded(isa, rs, o, d, tMax) != occluded;
+    }
   }
-  std::printf("%u rays: %u hits, %u ties, %u mismatches, %u occlusion mismatches\n", rays, hits, ties, mismatches,
-              occlusionMismatches);
+  std::printf(
+      "%u rays: %u hits, %u ties, %u mismatches, %u occlusion mismatches; %u differ between the portable "
+      "and AVX2 walks%s\n",
+      rays, hits, ties, mismatches, occlusionMismatches, walksDiffer,
+      WalkIsaSupported(WalkIsa::kAvx2) ? "" : " (this CPU has no AVX2: the portable walk alone)");
   EXPECT_EQ(mismatches, 0u);
   EXPECT_EQ(occlusionMismatches, 0u);
+  EXPECT_EQ(walksDiffer, 0u);
   EXPECT_GT(hits, rays / 4) << "the test must exercise hits, not only misses";
 }
 

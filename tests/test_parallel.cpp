@@ -104,8 +104,8 @@ TEST(Parallel, ExceptionsOnAnyThreadReachTheCaller) {
 }
 
 // A RenderScene whose CPU tree is a chain of 100 wide nodes, each with the next node and
-// three empty leaves as children, every box covering everything: every ray defers 300
-// leaves, more than the traversal's inline stack holds, so it allocates (and the leaves
+// empty leaves as its other children, every box covering everything: every ray defers
+// 700 leaves, more than the traversal's inline stack holds, so it allocates (and the leaves
 // hold nothing, so every ray misses).
 RenderScene ChainScene() {
   RenderScene rs = PrepareRenderScene(LoadGltf(test::SourcePath("scenes/cornell.gltf")));
@@ -115,10 +115,11 @@ RenderScene ChainScene() {
   for (uint32_t& index : rs.wideLayout.packets[0].index) index = shader::kInvalidIndex;
   for (uint32_t i = 0; i < kNodes; ++i) {
     BvhWideNode n{};
-    for (int axis = 0; axis < 3; ++axis)
-      for (int k = 0; k < 4; ++k) n.lo[axis][k] = -1e30f, n.hi[axis][k] = 1e30f;
+    for (int k = 0; k < kBvhWidth; ++k) {
+      for (int axis = 0; axis < 3; ++axis) n.lo[axis][k] = -1e30f, n.hi[axis][k] = 1e30f;
+      n.child[k] = kEmptyLeaf;
+    }
     n.child[0] = i + 1 < kNodes ? (i + 1) << 4 : kEmptyLeaf;
-    n.child[1] = n.child[2] = n.child[3] = kEmptyLeaf;
     rs.wideLayout.nodes.push_back(n);
   }
   return rs;

@@ -36,9 +36,9 @@ float HalfArea(const shader::BvhNode& n) {
   return d.x * d.y + d.y * d.z + d.z * d.x;
 }
 
-// Up to four binary nodes: the children a wide node takes.
+// Up to kBvhWidth binary nodes: the children a wide node takes.
 struct Children {
-  uint32_t node[4];
+  uint32_t node[kBvhWidth];
   int count = 0;
 };
 
@@ -47,7 +47,7 @@ Children ChildrenOf(std::span<const shader::BvhNode> nodes, uint32_t i) {
   kids.node[0] = FirstChild(i);
   kids.node[1] = SecondChild(nodes, i);
   kids.count = 2;
-  while (kids.count < 4) {
+  while (kids.count < kBvhWidth) {
     int widest = -1;
     for (int k = 0; k < kids.count; ++k)
       if (!IsLeaf(nodes[kids.node[k]]) &&
@@ -95,7 +95,7 @@ BvhWideLayout BuildWideLayout(std::span<const shader::BvhNode> nodes, uint32_t n
     const Children kids = ChildrenOf(nodes, e.binary);
     BvhWideNode node{};
     for (int axis = 0; axis < 3; ++axis)
-      for (int k = 0; k < 4; ++k) {
+      for (int k = 0; k < kBvhWidth; ++k) {
         const bool used = k < kids.count;
         node.lo[axis][k] = used ? nodes[kids.node[k]].lo[axis] : std::numeric_limits<float>::infinity();
         node.hi[axis][k] = used ? nodes[kids.node[k]].hi[axis] : -std::numeric_limits<float>::infinity();

@@ -1,8 +1,8 @@
-// The CPU tracer's layout of the BVH: the binary tree collapsed into nodes of up to four
-// children (Embree's BVH4; Wald et al. 2008, "Getting Rid of Packets"), each node holding
-// its children's boxes axis by axis so that one ray tests all four with 4-wide vector
-// arithmetic, and each leaf's triangles in packets of four, coordinates lane by lane,
-// tested together. Derived from the flattened skip-link tree (first copy) and the
+// The CPU tracer's layout of the BVH: the binary tree collapsed into nodes of up to eight
+// children (Embree's BVH8; Wald et al. 2008, "Getting Rid of Packets"), each node holding
+// its children's boxes axis by axis so that one ray tests all eight with one 8-wide AVX
+// step (or two 4-wide ones), and each leaf's triangles in packets of four, coordinates
+// lane by lane, tested together. Derived from the flattened skip-link tree (first copy) and the
 // leaf-ordered triangles, which stay what the GPU reads; the builder knows neither layout.
 #pragma once
 
@@ -15,17 +15,20 @@
 
 namespace vkpt {
 
+// Children per node. Eight rather than four: a tree of half as many levels, so half as
+// many nodes' worth of waiting on memory per ray (docs/design-notes.md, "CPU: wide nodes").
+constexpr int kBvhWidth = 8;
+
 struct alignas(64) BvhWideNode {
   // Child k's box is (lo[0][k], lo[1][k], lo[2][k]) – (hi[0][k], hi[1][k], hi[2][k]). An
   // unused lane holds the empty box lo = +∞, hi = −∞, which no ray enters.
-  float lo[3][4];
-  float hi[3][4];
+  float lo[3][kBvhWidth];
+  float hi[3][kBvhWidth];
   // Per child: (node index << 4) for an inner child, or its leaf code (first packet << 4)
   // | triangle count, count in 1..15, in ⌈count / 4⌉ packets; 0 in an unused lane.
-  uint32_t child[4];
-  uint32_t pad[4];
+  uint32_t child[kBvhWidth];
 };
-static_assert(sizeof(BvhWideNode) == 128);
+static_assert(sizeof(BvhWideNode) == 256);
 
 // Up to four triangles of one leaf as v0, e1, e2 per axis (lane k: the k-th triangle).
 // Unused lanes hold a zero-area triangle at the origin, which no ray hits (det = 0).
@@ -46,7 +49,7 @@ struct BvhWideLayout {
 
 // From `nodeCount` flattened nodes starting at nodes[0] (one copy of the tree) and the
 // triangles their leaves index. An inner node takes its binary children and, while it
-// has fewer than four and one of them is inner, replaces the inner child of the largest
+// has fewer than kBvhWidth and one of them is inner, replaces the inner child of the largest
 // surface area by that child's two children: the nodes a ray is likeliest to enter are
 // the ones merged away (Wald et al. 2008; Embree's BVH4 collapse).
 BvhWideLayout BuildWideLayout(std::span<const shader::BvhNode> nodes, uint32_t nodeCount,

@@ -1,6 +1,7 @@
 // Closest-hit and any-hit queries for the CPU reference tracer: an ordered, stack-based
-// walk over the four-wide layout (bvh/wide_layout.h), a node's four child boxes tested at
-// once and the nearest child entered first. Independent of the skip-link walk the shader uses,
+// walk over the wide layout (bvh/wide_layout.h), a node's eight child boxes tested at
+// once (one AVX2 step where the CPU has AVX2, else two 4-wide ones) and the nearest child
+// entered first. Both forms give the same bits. Independent of the skip-link walk the shader uses,
 // so one traversal bug cannot hide in both renderers.
 #pragma once
 
@@ -24,9 +25,17 @@ Hit IntersectClosestAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 
 bool OccludedAlpha(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax, uint32_t alphaKey);
 
 // The closest hit with an open tMax, alpha tested where the scene has MASK or BLEND
-// materials, adding the boxes the walk tested (four per wide node) to `boxTests`: the
+// materials, adding the boxes the walk tested (kBvhWidth per wide node) to `boxTests`: the
 // heat map AOV (shaders/shared/aov.h).
 Hit IntersectClosestCounted(const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, uint32_t alphaKey,
                             uint32_t& boxTests);
+
+// The walk's instruction set: AVX2 where the CPU has it (chosen once, at the first
+// query), else the portable one. Tests name one to compare them.
+enum class WalkIsa { kPortable, kAvx2 };
+bool WalkIsaSupported(WalkIsa isa);
+WalkIsa BestWalkIsa();
+Hit IntersectClosest(WalkIsa isa, const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax);
+bool Occluded(WalkIsa isa, const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax);
 
 }  // namespace vkpt

@@ -1,5 +1,5 @@
 // What a renderer consumes: the Scene's triangles in BVH leaf order as shader::Triangle,
-// the BVH in two layouts (flattened skip links for the GPU, four-wide nodes for the CPU),
+// the BVH in two layouts (flattened skip links for the GPU, eight-wide nodes for the CPU),
 // materials, the light table for light sampling, per-triangle shading normals, vertex
 // colours and texture coordinates, and the textures. The
 // shader-layout vectors are uploaded verbatim by the Vulkan backend; the CPU reference
