@@ -30,9 +30,10 @@ fi
 # Benchmarks
 
 `build/vkpt-bench` traces the same rays with every tracer vkpt has — the CPU reference's
-ordered stack traversal, the GLSL stackless traversal (trace.comp) on the Vulkan device —
-and with Intel Embree 3 (`rtcIntersect1`, build quality MEDIUM) when it was found at
-configure time; it cross-checks their closest hits and reports full path-tracing rates.
+ordered stack traversal of eight-wide nodes, the GLSL stackless traversal (trace.comp) on
+the Vulkan device — and with Intel Embree 3 (`rtcIntersect1` through its HIGH-quality
+tree) when it was found at configure time; it cross-checks their closest hits and reports
+full path-tracing rates.
 
 ```sh
 build/vkpt-bench --procedural 1000000 --threads 1          # human-readable, with % of Embree
@@ -45,13 +46,14 @@ every hit ("diffuse"). Mrays/s; path tracing in Msamples/s at 256×256 × 16 spp
 32. `--threads` applies to every tracer (CPU threads, Embree's thread count, and
 `LP_NUM_THREADS` for lavapipe). "mismatches": rays whose hit distance differs between
 tracers by more than 1e-4 relative (grazing hits on shared edges). Build rates are the
-best of three builds, vkpt's with `--threads` threads and Embree's (BUILD_QUALITY_MEDIUM)
-with one; `--json` also gives vkpt's one-thread rate from the same run
+best of three builds, vkpt's with `--threads` threads and Embree's (BUILD_QUALITY_MEDIUM,
+its binned SAH) with one; `--json` also gives vkpt's one-thread rate from the same run
 (`build_mtris_per_s_1t`) and the run's peak host memory (`peak_rss_mib`: scene, trees,
 ray sets, lavapipe and Embree together; "GPU bytes per triangle" is what is uploaded). SAH costs count a node visit as 4 triangle tests (vkpt's
 default); `--leaf-size N` and `--traversal-cost C` change the tree for tuning runs.
 Trees use object splits unless a row says otherwise (`--splits spatial|auto`): that is
-the builder compared with Embree's; `vkpt` itself renders with `--splits auto`, which
+the builder compared with Embree's MEDIUM one; Embree traces every row through its HIGH
+tree (spatial splits), so the "spatial splits" rows compare the walks like for like; `vkpt` itself renders with `--splits auto`, which
 builds both trees and keeps the one with the lower SAH cost (here: the object tree for
 the procedural scene and the Cornell box, the spatial one for 2CylinderEngine).
 
@@ -127,11 +129,91 @@ as a 343 MiB GLB (`--write-glb`, 3.2 s, 1.1 GiB peak) rendered by `build/vkpt` a
 | vkpt, lavapipe | 3.95 GiB | 9.6 s (both trees, the GPU's 8 copies), load 2.9 s, upload 1.8 s | 59.4 | 0.266 M |
 
 A tree this large keeps one copy (the eight direction-ordered copies only below 128 MiB),
-so the GPU holds 48 bytes per triangle and 32 per node. The first device limit a bigger
-scene meets is lavapipe's `maxTexelBufferElements`, 2^27 texels of 16 bytes: the triangle
-array (3 texels each) reaches it at 44.7 M triangle references, where vkpt refuses the
-Vulkan backend with an error naming that limit and `--backend cpu`. Host memory (about
-420 bytes per triangle at the peak) would allow about 60 M triangles in 24 GiB.
+so the GPU holds 48 bytes per triangle and 32 per node.
+
+**Past one texel buffer** (2026-12-03, by hand): `--procedural 46500000 --write-glb` (a
+1.6 GiB GLB, written in 24 s at 5.1 GiB peak) has 46,484,614 triangle references, 139.5 M
+texels against lavapipe's `maxTexelBufferElements` of 2^27 = 134.2 M, so its triangles
+take two texel buffers. `build/vkpt --splits object --max-memory 40G` at 256²:
+
+| run | peak host memory | load | BVH build | upload | samples/s |
+|---|---|---|---|---|---|
+| lavapipe, 4 spp | 9.07 GiB | 34.9 s | 9.2 s (16.7 M nodes) | 7.8 s | 0.191 M |
+| `--compare`, 16 spp | 11.6 GiB | — | 11.9 s | — | CPU 0.305 M, lavapipe 0.140 M |
+
+The two images agree: 0.22 % of channels beyond 1e-3 in lockstep (the limit is 1 %) and
+none of 768 region tests significant. `--max-memory` had to be raised: the loader counts
+560 bytes per triangle before reading (both trees of `--splits auto`, with normals), 32 GiB
+here, while the peak was 196 bytes per triangle; with the default budget of half the RAM a
+24 GiB machine refuses scenes above about 17 M triangles, naming `--max-memory`. On
+lavapipe the triangles and texture coordinates stop at two buffers, 89.4 M triangles; the
+next one-buffer limits are 2^27 texels for the BVH nodes (67 M nodes, about 190 M
+triangles of this scene) and for vertex colours (2 texels per triangle: 67 M).
+
+## What the material extensions cost scenes without them
+
+Samples/s of `vkpt` before clear coat, sheen and diffuse transmission (33ee8ec) and after
+(3c775dc), three alternating runs each in one session, 2 cores, lavapipe with
+`LP_NUM_THREADS=2` (`--stats` `samples_per_s`; Cornell box 160², 128 spp; MetalRoughSpheres
+under potsdamer_platz_1k.hdr 160², 64 spp). Both images are bit-identical before and after.
+
+| scene | backend | before (M samples/s) | after | after / before |
+|---|---|---|---|---|
+| Cornell box | CPU | 2.25 | 2.40 | 1.07 |
+| MetalRoughSpheres | CPU | 2.05 | 2.00 | 0.97 |
+| Cornell box | lavapipe | 1.36 | 1.36 | 1.00 |
+| MetalRoughSpheres | lavapipe | 1.08 | 1.07 | 0.99 |
+
+One binary's runs spread by up to ±12 % on this machine: no cost is measurable. The extensions cost
+the material table 32 bytes per material (8 texels instead of 6) and nothing else where
+no material uses them (specialization constants 13–15 on the GPU, the simple estimator
+on the CPU).
+
+Iridescence and anisotropy (15d5c34 against e18a4a1 and its out-of-line rare paths),
+measured the same way and then one thread at a time, best of six alternating runs
+(MetalRoughSpheres 128², 64 spp, `--splits object`), since two-thread runs spread by
+±12 %:
+
+| scene | backend | before | after | after / before |
+|---|---|---|---|---|
+| Cornell box | CPU, CPU seconds for 160² × 256 spp (median of 5) | 6.02 s | 6.07 s | 1.01 |
+| MetalRoughSpheres | CPU, 1 thread, best of 6 (M samples/s) | 1.045 | 0.920 | 0.88 |
+| Cornell box | lavapipe, median of 4 (M samples/s) | 1.31 | 1.35 | 1.03 |
+| MetalRoughSpheres | lavapipe, median of 3 | 1.14 | 1.11 | 0.97 |
+
+The images are bit-identical. On lavapipe the specialization constants 16 and 17 drop the
+film and the anisotropic lobe, and their material texels are not fetched: no cost is
+measurable. The CPU's glossy estimator decided per material at run time, and its timings
+above differ by up to 12 %, within what one binary's runs spread. Instructions do not
+spread: counted by callgrind over the render alone (`valgrind --tool=callgrind
+--toggle-collect='*RunThreads*'`, MetalRoughSpheres under potsdamer_platz_1k.hdr, 48²,
+16 spp, one thread, `--splits object`; the images bit-identical):
+
+| CPU estimator | instructions (M) | / before |
+|---|---|---|
+| before iridescence and anisotropy (15d5c34) | 127.89 | 1.000 |
+| general, with them and dispersion (ddaac2f) | 130.56 | 1.021 |
+| general, all six layered extensions compiled out (a test build) | 125.67 | 0.983 |
+| `core_path.cpp`: the estimator without them, chosen for scenes that use none | 127.03 | 0.993 |
+
+So the CPU now picks, as lavapipe does, an estimator compiled for what the scene uses:
+the simple one (Lambert-only scenes), the core one (no clear coat, sheen, diffuse
+transmission, iridescence, anisotropy or dispersion on any triangle), or the general one.
+The core one runs the general one's bits (`Render.CoreSceneEstimatorEqualsTheGeneralOne`)
+and costs 0.7 % fewer instructions than before the film and the anisotropic lobe.
+Dispersion (ddaac2f) adds a specialization constant on the GPU and one branch per hit on
+the general CPU estimator; the Cornell box and DamagedHelmet render bit-identically.
+
+## What position-independent code costs
+
+Since libvkpt.so and the Python module link the same layers as the `vkpt` executable,
+everything is compiled with `-fPIC`, hidden visibility and `-fno-semantic-interposition`
+(CMakeLists.txt). Measured in one run, the two builds' executables alternating three times
+(CPU backend, 2 threads, 256 × 256, wall seconds with load): Cornell box at 256 spp 7.98 s
+(median; 7.94–8.15) before and 8.13 s (7.87–8.25) after, ratio 1.02 with the ranges
+overlapping; DamagedHelmet at 32 spp 1.07 s (1.04–1.25) and 1.12 s (1.06–1.16). The images
+are bit-identical (Cornell c5762c21, DamagedHelmet b34cf897 on the CPU; dc58ee5f and
+b5941bf5 on lavapipe).
 MODEL
 } > "$out"
 echo "wrote $out"
