@@ -78,7 +78,6 @@ BvhWideLayout BuildWideLayout(std::span<const shader::BvhNode> nodes, uint32_t n
     if (IsLeaf(nodes[i])) packets += (LeafCount(nodes[i]) + 3) / 4;
   if (packets >= (1u << 28)) throw Error("BuildWideLayout: too many packets for the 28-bit index");
   layout.packets.reserve(packets);
-  layout.nodes.reserve(nodeCount / 2);
   // Depth first, a node's first inner child right after it in memory (as the flattened
   // tree keeps near subtrees close); packets follow the same order. Each entry: a binary
   // inner node and the lane of the wide node that points to it.
