@@ -1,9 +1,9 @@
 #include "bvh/wide_layout.h"
 
-#include <algorithm>
 #include <limits>
 
 #include "bvh/bvh.h"
+#include "util/bounds.h"
 #include "util/error.h"
 
 namespace vkpt {
@@ -31,11 +31,6 @@ uint32_t AddLeaf(uint32_t leaf, const std::vector<shader::Triangle>& triangles, 
   return code;
 }
 
-float HalfArea(const shader::BvhNode& n) {
-  const glm::vec3 d = n.hi - n.lo;
-  return d.x * d.y + d.y * d.z + d.z * d.x;
-}
-
 // Up to kBvhWidth binary nodes: the children a wide node takes.
 struct Children {
   uint32_t node[kBvhWidth];
@@ -49,10 +44,12 @@ Children ChildrenOf(std::span<const shader::BvhNode> nodes, uint32_t i) {
   kids.count = 2;
   while (kids.count < kBvhWidth) {
     int widest = -1;
-    for (int k = 0; k < kids.count; ++k)
-      if (!IsLeaf(nodes[kids.node[k]]) &&
-          (widest < 0 || HalfArea(nodes[kids.node[k]]) > HalfArea(nodes[kids.node[widest]])))
-        widest = k;
+    float widestArea = 0.0f;
+    for (int k = 0; k < kids.count; ++k) {
+      const shader::BvhNode& c = nodes[kids.node[k]];
+      const float area = Bounds3f{c.lo, c.hi}.SurfaceArea();
+      if (!IsLeaf(c) && (widest < 0 || area > widestArea)) widest = k, widestArea = area;
+    }
     if (widest < 0) break;
     const uint32_t n = kids.node[widest];
     for (int k = kids.count; k > widest + 1; --k) kids.node[k] = kids.node[k - 1];

@@ -2,8 +2,9 @@
 // children (Embree's BVH8; Wald et al. 2008, "Getting Rid of Packets"), each node holding
 // its children's boxes axis by axis so that one ray tests all eight with one 8-wide AVX
 // step (or two 4-wide ones), and each leaf's triangles in packets of four, coordinates
-// lane by lane, tested together. Derived from the flattened skip-link tree (first copy) and the
-// leaf-ordered triangles, which stay what the GPU reads; the builder knows neither layout.
+// lane by lane, tested together. Derived from the flattened skip-link tree (first copy)
+// and the leaf-ordered triangles, which stay what the GPU reads; the builder knows
+// neither layout.
 #pragma once
 
 #include <cstdint>
@@ -49,9 +50,9 @@ struct BvhWideLayout {
 
 // From `nodeCount` flattened nodes starting at nodes[0] (one copy of the tree) and the
 // triangles their leaves index. An inner node takes its binary children and, while it
-// has fewer than kBvhWidth and one of them is inner, replaces the inner child of the largest
-// surface area by that child's two children: the nodes a ray is likeliest to enter are
-// the ones merged away (Wald et al. 2008; Embree's BVH4 collapse).
+// has fewer than kBvhWidth and one of them is inner, replaces the inner child of the
+// largest surface area by that child's two children: the nodes a ray is likeliest to
+// enter are the ones merged away (Wald et al. 2008; Embree's collapse).
 BvhWideLayout BuildWideLayout(std::span<const shader::BvhNode> nodes, uint32_t nodeCount,
                               const std::vector<shader::Triangle>& triangles);
 
