@@ -3,6 +3,8 @@
 
   cornell.gltf/.bin  - the GAMES101 homework-7 Cornell box (models/cornellbox/*.obj)
   furnace.gltf/.bin  - closed emissive+diffuse sphere with an analytic answer
+  many_lights.gltf/.bin - a hall lit by 1,000 small emissive quads of varied power and
+                       orientation (light sampling among many lights)
 
 Usage: python3 make_scenes.py [--out DIR]   (default: this script's directory)
 
@@ -265,6 +267,65 @@ def furnace(out_dir):
     g.save(out_dir, 'furnace')
 
 
+def many_lights(out_dir):
+    # A 40 x 6 x 20 hall with pillars, lit only by 1,000 small quads (2,000 emissive
+    # triangles, 6 to 20 cm wide) hung at varied heights and tilts, of radiances spread
+    # over 128x: from any
+    # point most of the light comes from a few nearby quads, which choosing by power
+    # alone rarely picks. A fixed linear congruential generator places them, so the
+    # file is the same on every machine.
+    state = [12345]
+
+    def rand():
+        state[0] = (state[0] * 1103515245 + 12345) % 2**31
+        return state[0] / 2**31
+
+    g = Gltf()
+    wall = g.material('wall', (0.7, 0.7, 0.7))
+    floor = g.material('floor', (0.5, 0.45, 0.4))
+    pillar = g.material('pillar', (0.6, 0.3, 0.2))
+    tints = [(1.0, 0.85, 0.6), (0.7, 0.8, 1.0), (1.0, 1.0, 1.0), (1.0, 0.6, 0.5)]
+    lamps = [g.material('lamp%d' % k, (0.8, 0.8, 0.8), emissive=tints[k % 4], strength=2.0 ** (k + 1))
+             for k in range(8)]
+    W, H, D = 40.0, 6.0, 20.0
+    centre = (W / 2, H / 2, D / 2)
+    g.mesh('floor', orient_quads([[(0, 0, 0), (W, 0, 0), (W, 0, D), (0, 0, D)]],
+                                 lambda p: (0.0, 1.0, 0.0)), floor)
+    shell = [[(0, H, 0), (W, H, 0), (W, H, D), (0, H, D)],
+             [(0, 0, 0), (W, 0, 0), (W, H, 0), (0, H, 0)], [(0, 0, D), (W, 0, D), (W, H, D), (0, H, D)],
+             [(0, 0, 0), (0, 0, D), (0, H, D), (0, H, 0)], [(W, 0, 0), (W, 0, D), (W, H, D), (W, H, 0)]]
+    g.mesh('walls', orient_quads(shell, lambda p: sub(centre, p)), wall)
+    pillars = []
+    for i in range(7):
+        for j in range(2):
+            x, z, r = 5.0 * (i + 1), 6.5 + 7.0 * j, 0.4
+            c = (x, H / 2, z)
+            pillars += orient_quads([[(x - r, 0, z - r), (x + r, 0, z - r), (x + r, H, z - r), (x - r, H, z - r)],
+                                     [(x - r, 0, z + r), (x + r, 0, z + r), (x + r, H, z + r), (x - r, H, z + r)],
+                                     [(x - r, 0, z - r), (x - r, 0, z + r), (x - r, H, z + r), (x - r, H, z - r)],
+                                     [(x + r, 0, z - r), (x + r, 0, z + r), (x + r, H, z + r), (x + r, H, z - r)]],
+                                    lambda p, c=c: sub(p, (c[0], p[1], c[2])))
+    g.mesh('pillars', pillars, pillar)
+    quads = [[] for _ in lamps]
+    for k in range(1000):
+        x, z = 0.5 + (W - 1.0) * rand(), 0.5 + (D - 1.0) * rand()
+        y, size = 2.5 + 3.3 * rand(), 0.03 + 0.07 * rand()
+        # Facing down, tilted up to 60 degrees about a random horizontal axis.
+        tilt, turn = math.radians(60.0) * rand(), 2.0 * math.pi * rand()
+        n = (math.sin(tilt) * math.cos(turn), -math.cos(tilt), math.sin(tilt) * math.sin(turn))
+        u = cross(n, (0.0, 0.0, 1.0))
+        u = tuple(c / math.sqrt(dot(u, u)) for c in u)
+        v = cross(n, u)
+        corner = lambda a, b: tuple(c + size * (a * uu + b * vv) for c, uu, vv in zip((x, y, z), u, v))
+        quad = [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)]
+        quads[int(8 * rand())].append(orient_quads([quad], lambda p, n=n: n))
+    for k, lamp in enumerate(lamps):
+        g.mesh('lamps%d' % k, [t for q in quads[k] for t in q], lamp)
+    # At one end of the hall, looking along it (glTF cameras look down local -Z).
+    g.camera(math.radians(60.0), translation=(2.0, 1.7, D / 2), rotation=(0.0, -0.7071068, 0.0, 0.7071068))
+    g.save(out_dir, 'many_lights')
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument('--out', default=os.path.dirname(os.path.abspath(__file__)),
@@ -273,6 +334,7 @@ def main():
     os.makedirs(out_dir, exist_ok=True)
     cornell(out_dir)
     furnace(out_dir)
+    many_lights(out_dir)
 
 
 if __name__ == '__main__':
