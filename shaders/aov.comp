@@ -45,6 +45,7 @@ void main() {
   gNodeCopies = params.nodeCopies;
   gTexelSplit = params.texelSplit;
   gTriangleSplit = params.triangleSplit;
+  gLightNodeBase = kTexelsPerLight * params.lightCount;
   gUvSplit = params.uvSplit;
   uvec2 pixel = gl_GlobalInvocationID.xy;
   // Every lane runs the walk (subgroup operations count its loop passes); only those in

@@ -49,6 +49,7 @@ void main() {
   gNodeCopies = params.nodeCopies;
   gTexelSplit = params.texelSplit;
   gTriangleSplit = params.triangleSplit;
+  gLightNodeBase = kTexelsPerLight * params.lightCount;
   gUvSplit = params.uvSplit;
   // lavapipe hands each thread one contiguous range of workgroups (the top and bottom
   // half of the image with two threads), so costly regions would leave a thread idle:
@@ -104,9 +105,11 @@ void main() {
       }
     }
   }
-  // Loops outside traversal: this loop (≤ one pass per ray) and the light binary
-  // search (≤ log2(lights) + 2 per ray), bounded per lane and summed.
-  uint smallLoops = rays * (3u + uint(findMSB(max(params.lightCount, 1u))));
+  // Loops outside traversal: this loop (≤ one pass per ray), the light binary search
+  // (≤ log2(lights) + 2 per ray) and the light tree's two descents (a light sample's and
+  // an emitter's pmf: ≤ its depth + 1 passes each per ray), bounded per lane and summed.
+  uint treePasses = params.treeLights > 0u ? 2u * (params.treeDepth + 1u) : 0u;
+  uint smallLoops = rays * (3u + uint(findMSB(max(params.lightCount, 1u))) + treePasses);
   uint groupPasses = subgroupAdd(gLoopIterations) + subgroupAdd(smallLoops);
   if (subgroupElect()) atomicMax(maxPassesPerSample, (groupPasses + samples - 1u) / samples);
   if (!inside) return;

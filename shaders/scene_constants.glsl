@@ -69,6 +69,9 @@ layout(constant_id = 18) const uint kSceneHasDispersion = 1u;
 // texture lookups are written as one straight line: see shared/texture.h.
 layout(constant_id = 19) const uint kDeviceMasksBranches = 0u;
 #define VKPT_MASKED_BRANCHES (kDeviceMasksBranches != 0u)
+// 1 when the scene chooses among its finite lights by a light tree: see shared/light_tree.h.
+layout(constant_id = 20) const uint kSceneHasLightTree = 0u;
+#define VKPT_LIGHT_TREE (kSceneHasLightTree != 0u)
 
 #define VKPT_SCENE_PARAM
 #define VKPT_SCENE_ARG
@@ -76,6 +79,7 @@ layout(constant_id = 19) const uint kDeviceMasksBranches = 0u;
 #define VKPT_MATERIAL(i) FetchMaterial(i)
 #define VKPT_LIGHT(i) FetchLight(i)
 #define VKPT_LIGHT_CDF(i) FetchLightCdf(i)
+#define VKPT_LIGHT_NODE(i) FetchLightNode(i)
 #define VKPT_ALBEDO_PAIR(k) FetchAlbedoPair(k)
 #define VKPT_SHADING(i) FetchShading(i)
 #define VKPT_VERTEX_COLORS_OF(i) FetchColors(i)

@@ -162,6 +162,27 @@ Light FetchLight(uint i) {
 // The binary search over the CDF reads one texel per step.
 float FetchLightCdf(uint i) { return uintBitsToFloat(texelFetch(lightTexels, int(kTexelsPerLight * i + 3u)).x); }
 
+// The light tree's nodes follow the lights in the same texel buffer, from texel
+// gLightNodeBase on (kTexelsPerLight · FrameParams::lightCount, set by main()).
+uint gLightNodeBase = 0u;
+
+LightTreeNode FetchLightNode(uint i) {
+  int base = int(gLightNodeBase + kTexelsPerLightNode * i);
+  uvec4 a = texelFetch(lightTexels, base);
+  uvec4 b = texelFetch(lightTexels, base + 1);
+  uvec4 c = texelFetch(lightTexels, base + 2);
+  LightTreeNode n;
+  n.center = uintBitsToFloat(a.xyz);
+  n.radius = uintBitsToFloat(a.w);
+  n.axis = uintBitsToFloat(b.xyz);
+  n.intensity = uintBitsToFloat(b.w);
+  n.cosThetaO = uintBitsToFloat(c.x);
+  n.sinThetaO = uintBitsToFloat(c.y);
+  n.cosThetaE = uintBitsToFloat(c.z);
+  n.split = c.w;
+  return n;
+}
+
 // Pair k of shared/albedo_tables.h's kAlbedoTables (two pairs per texel).
 vec2 FetchAlbedoPair(uint k) {
   uvec4 t = texelFetch(albedoTableTexels, int(k >> 1u));

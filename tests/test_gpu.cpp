@@ -631,6 +631,27 @@ TEST_F(GpuTest, SecondRendererReusesTheCompiledPipeline) {
   EXPECT_EQ(Gpu().Pipelines().Compiled(), compiled + 1);
 }
 
+// The generated hall of 2,000 emissive triangles, with point and spot lights hung among
+// them, lit through the light tree: its descent and the emitters' tree pmfs in lockstep
+// on both backends, and in statistics with other seeds.
+TEST_F(GpuTest, LightTreeAgreesOnBothBackends) {
+  Scene s = LoadGltf(test::SourcePath("scenes/many_lights.gltf"));
+  for (int i = 0; i < 16; ++i) {
+    PunctualLight l;
+    l.type = i % 2 ? PunctualLight::Type::kSpot : PunctualLight::Type::kPoint;
+    l.position = glm::vec3(2.5f * i + 1.0f, 3.0f + 0.1f * i, 3.0f + (i % 5) * 3.0f);
+    l.direction = glm::normalize(glm::vec3(0.3f * (i % 3) - 0.3f, -1.0f, 0.2f));
+    l.intensity = glm::vec3(1.0f + i, 2.0f, 3.0f);
+    l.cosOuter = 0.6f;
+    l.cosInner = 0.9f;
+    s.lights.push_back(l);
+  }
+  RenderScene rs = PrepareRenderScene(s);
+  ChooseLightSampler(rs, LightSampler::kTree);
+  ASSERT_EQ(rs.treeLights, 2016u);
+  ExpectBackendsAgree(rs, Params(rs, s, 48, 48, 16, 1, 8), "many_lights hall through the light tree");
+}
+
 // The Cornell box with a clear coat on every material (rough on the walls, smooth on the
 // boxes, half on the light, which dims its emission): the coat lobe, its sampling and the
 // dimmed emission in lockstep on both backends, and in statistics with other seeds.

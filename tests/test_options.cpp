@@ -37,7 +37,7 @@ TEST(Options, StatsObjectOfTheDefaults) {
     "rr_depth": 3, "backend": "auto", "device": "", "threads": 0, "batch": 0, "compare": false,
     "validation": false, "camera": null, "look_from": null, "look_at": null, "up": null, "fov": null,
     "orbit": null, "exposure": 0, "background": null, "env": "", "env_rotation": 0,
-    "env_intensity": 1, "texture_lod": "cones", "leaf_size": 8, "splits": "auto", "max_memory": 0,
+    "env_intensity": 1, "texture_lod": "cones", "light_sampler": "auto", "leaf_size": 8, "splits": "auto", "max_memory": 0,
     "max_texels": 0, "allow_external_uris": false, "aov": [], "denoise": false, "stats": "",
     "variant": "", "animation": "", "at": null, "frames": null, "fps": 24, "verbose": false, "view": "neutral"})"));
 }
@@ -52,7 +52,7 @@ TEST(Options, StatsObjectOfEveryOptionGiven) {
       "--exposure 0.1 --view agx --env e.hdr --env-rotation 90 --env-intensity 2 --variant beach --animation Walk --at "
       "0.5 --fps "
       "30 "
-      "--texture-lod none --leaf-size 4 "
+      "--texture-lod none --light-sampler power --leaf-size 4 "
       "--splits "
       "spatial --max-memory 64M --max-texels 1K --allow-external-uris --aov normal,depth,normal --denoise --stats "
       "s.json -v --no-adaptive");
@@ -63,7 +63,7 @@ TEST(Options, StatsObjectOfEveryOptionGiven) {
     "rr_depth": 2, "backend": "cpu", "device": "lav", "threads": 3, "batch": 7, "compare": false,
     "validation": true, "camera": 1, "look_from": [1, 2, 3], "look_at": [0, 0.5, -1], "up": [0, 0, 1],
     "fov": 35, "orbit": -90, "exposure": 0.10000000149011612, "background": null, "env": "e.hdr",
-    "env_rotation": 90, "env_intensity": 2, "texture_lod": "none", "leaf_size": 4, "splits": "spatial",
+    "env_rotation": 90, "env_intensity": 2, "texture_lod": "none", "light_sampler": "power", "leaf_size": 4, "splits": "spatial",
     "max_memory": 67108864, "max_texels": 1024, "allow_external_uris": true, "aov": ["normal", "depth"],
     "denoise": true, "stats": "s.json", "variant": "beach", "animation": "Walk", "at": 0.5, "fps": 30, "frames": null, "verbose": true, "view": "agx"})"));
 }

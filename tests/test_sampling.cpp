@@ -129,8 +129,15 @@ TEST(Sampling, LightSelectionFollowsPower) {
     expected.push_back(kSamples * double(rs.lights[k].pmf));
   }
   EXPECT_EQ(rs.lights.back().cdf, 1.0f);
-  for (uint32_t i = 0; i < kSamples; ++i)
-    observed[PickLight(rs, uint32_t(rs.lights.size()), Random4(1u, i, 0u, 1u).x)] += 1.0;
+  FrameParams params{};
+  params.lightCount = uint32_t(rs.lights.size());
+  int misreported = 0;
+  for (uint32_t i = 0; i < kSamples; ++i) {
+    LightChoice c = ChooseLight(rs, params, vec3(0.0f), vec3(0.0f), Random4(1u, i, 0u, 1u).x);
+    observed[c.light] += 1.0;
+    misreported += c.pmf != rs.lights[c.light].pmf;
+  }
+  EXPECT_EQ(misreported, 0);
   double stat;
   int dof;
   double p = test::ChiSquareTest(observed, expected, &stat, &dof);

@@ -120,6 +120,12 @@ std::vector<OptionDef> SceneRows() {
       Row({"--texture-lod"}, "MODE",
           "mip levels of colour textures after the camera's hit: by each path's ray cone, or level 0 everywhere",
           "cones", Choice(&O::textureLod, {{"cones", true}, {"none", false}})),
+      Row({"--light-sampler"}, "MODE",
+          "how light sampling chooses among emissive triangles, point and spot lights: `tree` (by how much each may "
+          "light the shading point: a light tree), `power` (by power alone) or `auto` (the tree from 8 such lights on)",
+          "auto",
+          Choice(&O::lightSampler,
+                 {{"auto", LightSampler::kAuto}, {"power", LightSampler::kPower}, {"tree", LightSampler::kTree}})),
       Row({"--leaf-size"}, "N", "maximum triangles per BVH leaf", "8", Number(&O::leafSize, {1, 15})),
       Row({"--splits"}, "MODE",
           "how the BVH divides the scene: `object`, `spatial` (SBVH) or `auto` (the lower SAH cost)", "auto",

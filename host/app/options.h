@@ -70,6 +70,7 @@ struct Options {
   float envIntensity = 1.0f;  // --env-intensity: radiance scale
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;  // --splits
+  LightSampler lightSampler = LightSampler::kAuto;  // --light-sampler
   bool textureLod = true;               // --texture-lod cones (true) or none
   LoadLimits load;                      // --max-memory, --allow-external-uris
   std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)

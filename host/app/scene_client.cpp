@@ -12,6 +12,7 @@
 
 namespace vkpt {
 using CliBackend = Backend;  // vkpt::Backend is ambiguous once api::Backend exists
+using CliLightSampler = LightSampler;  // likewise
 }  // namespace vkpt
 
 #include "vkpt/client.h"
@@ -34,6 +35,9 @@ api::SceneOptions SceneOptionsOf(const Options& o) {
   s.animation = o.animation;
   s.environment = o.env;
   s.environmentIntensity = o.envIntensity;
+  s.lightSampler = o.lightSampler == CliLightSampler::kTree    ? api::LightSampler::Tree
+                   : o.lightSampler == CliLightSampler::kPower ? api::LightSampler::Power
+                                                               : api::LightSampler::Auto;
   return s;
 }
 

@@ -43,6 +43,7 @@ RenderScene BuildArrays(const Scene& scene, const SceneSettings& s, bool gpu, En
   RenderScene rs = PrepareRenderScene(scene, bvhOptions, !gpu || s.compare);
   rs.environment = std::move(env);
   if (rs.environment.width > 0) AddEnvironmentLight(rs, s.envIntensity);
+  ChooseLightSampler(rs, s.lightSampler);  // after the environment, which joins the table last
   return rs;
 }
 

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "bvh/bvh.h"
+#include "render/light_tree.h"
 #include "scene/gltf_loader.h"
 #include "scene/load_limits.h"
 
@@ -25,6 +26,7 @@ struct SceneSettings {
   SceneChoice choice;  // variant and animation (its time is each render's)
   std::string env;     // equirectangular environment map (.hdr, .exr); "": none
   float envIntensity = 1.0f;
+  LightSampler lightSampler = LightSampler::kAuto;
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;
   Backend backend = Backend::Auto;  // Auto: Vulkan when a device opens, else the CPU

@@ -17,6 +17,9 @@ namespace py = pybind11;
 // "auto", "cpu" or "vulkan"; ValueError for anything else.
 Backend BackendFrom(const std::string& name);
 
+// "auto", "power" or "tree"; ValueError for anything else.
+LightSampler LightSamplerFrom(const std::string& name);
+
 // None (the file's first camera), an int (the file's camera of that index) or a
 // vkpt.Camera; TypeError for anything else.
 Camera CameraFrom(const py::object& camera);

@@ -17,6 +17,13 @@ Backend BackendFrom(const std::string& name) {
   throw py::value_error("backend must be \"auto\", \"cpu\" or \"vulkan\", got \"" + name + "\"");
 }
 
+LightSampler LightSamplerFrom(const std::string& name) {
+  if (name == "auto") return LightSampler::Auto;
+  if (name == "power") return LightSampler::Power;
+  if (name == "tree") return LightSampler::Tree;
+  throw py::value_error("light_sampler must be \"auto\", \"power\" or \"tree\", got \"" + name + "\"");
+}
+
 Camera CameraFrom(const py::object& camera) {
   if (camera.is_none()) return Camera{};
   if (py::isinstance<Camera>(camera)) return camera.cast<Camera>();

@@ -88,14 +88,18 @@ void BindScene(py::module_& m) {
 
 Scene(path, *, backend="auto", device="", validation=False, threads=0, max_memory=0,
       max_texels=0, allow_external_uris=False, variant="", animation="",
-      environment="", environment_intensity=1.0)
+      environment="", environment_intensity=1.0,
+      light_sampler="auto")
 
 backend: "auto" (the Vulkan device when one opens, else the CPU), "cpu" or "vulkan".
+light_sampler: how light sampling chooses among emissive triangles, point and spot
+lights: "tree" (by how much each may light the shading point), "power" (by power
+alone) or "auto" (the tree from 8 such lights on).
 Raises vkpt.Error naming the file and the problem.)")
       .def(py::init([](const std::string& path, const std::string& backend, const std::string& device, bool validation,
                        unsigned threads, uint64_t maxMemory, uint64_t maxTexels, bool allowExternalUris,
                        const std::string& variant, const std::string& animation, const std::string& environment,
-                       float environmentIntensity) {
+                       float environmentIntensity, const std::string& lightSampler) {
              SceneOptions o;
              o.backend = BackendFrom(backend);
              o.device = device;
@@ -108,12 +112,13 @@ Raises vkpt.Error naming the file and the problem.)")
              o.animation = animation;
              o.environment = environment;
              o.environmentIntensity = environmentIntensity;
+             o.lightSampler = LightSamplerFrom(lightSampler);
              py::gil_scoped_release released;
              return std::make_unique<PyScene>(Scene(path, o));
            }),
            "path"_a, py::kw_only(), "backend"_a = "auto", "device"_a = "", "validation"_a = false, "threads"_a = 0,
            "max_memory"_a = 0, "max_texels"_a = 0, "allow_external_uris"_a = false, "variant"_a = "",
-           "animation"_a = "", "environment"_a = "", "environment_intensity"_a = 1.0f)
+           "animation"_a = "", "environment"_a = "", "environment_intensity"_a = 1.0f, "light_sampler"_a = "auto")
       .def_property_readonly("camera_count", [](PyScene& s) { return s.scene.CameraCount(); })
       .def_property_readonly("device", [](PyScene& s) { return s.scene.Device(); })
       .def(

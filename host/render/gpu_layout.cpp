@@ -37,6 +37,9 @@ static_assert(offsetof(Light, position) == 0 && offsetof(Light, triangle) == 12)
 static_assert(offsetof(Light, direction) == 16 && offsetof(Light, type) == 28);
 static_assert(offsetof(Light, radiance) == 32 && offsetof(Light, extent) == 44);
 static_assert(offsetof(Light, cdf) == 48 && offsetof(Light, cosInner) == 60);
+static_assert(sizeof(LightTreeNode) == 16 * kTexelsPerLightNode);
+static_assert(offsetof(LightTreeNode, radius) == 12 && offsetof(LightTreeNode, axis) == 16);
+static_assert(offsetof(LightTreeNode, intensity) == 28 && offsetof(LightTreeNode, split) == 44);
 
 static_assert(sizeof(TriangleShading) == 16 * kTexelsPerShading);
 static_assert(offsetof(TriangleShading, n1) == 4 && offsetof(TriangleShading, n2) == 8);

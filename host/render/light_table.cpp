@@ -1,5 +1,6 @@
 #include "render/light_table.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "render/scene_access.h"
@@ -140,6 +141,73 @@ void AddEnvironmentLight(RenderScene& rs, float intensity) {
   rs.lightPower.push_back(phi);
   rs.totalEmittedPower += phi;
   SetDistribution(rs.lightPower, rs.lights);
+}
+
+namespace {
+
+bool IsFiniteLight(const shader::Light& l) {
+  return l.type != shader::kLightDirectional && l.type != shader::kLightEnvironment;
+}
+
+}  // namespace
+
+LightBounds LightBoundsOf(const RenderScene& rs, const shader::Light& l, double power) {
+  LightBounds b;
+  b.axis = glm::dvec3(l.direction);
+  if (l.type == shader::kLightTriangle || l.type == shader::kLightTwoSidedTriangle) {
+    const shader::Triangle& t = rs.triangles[l.triangle];
+    glm::dvec3 v0(t.v0), v1 = v0 + glm::dvec3(t.e1), v2 = v0 + glm::dvec3(t.e2);
+    b.lo = glm::min(v0, glm::min(v1, v2));
+    b.hi = glm::max(v0, glm::max(v1, v2));
+    b.twoSided = l.type == shader::kLightTwoSidedTriangle;
+    b.intensity = power / (shader::kPi * (b.twoSided ? 2.0 : 1.0));  // Le · area, along the normal
+    b.cosThetaO = 1.0;  // every point emits around the normal, cosine-weighted to θe = π/2
+    b.cosThetaE = 0.0;
+    return b;
+  }
+  b.lo = b.hi = glm::dvec3(l.position);
+  b.intensity = shader::Luminance(l.radiance);
+  if (l.type == shader::kLightSpot) {  // full within the inner cone, fading to the outer
+    double inner = std::acos(std::clamp(double(l.cosInner), -1.0, 1.0));
+    double outer = std::acos(std::clamp(double(l.cosOuter), -1.0, 1.0));
+    b.cosThetaO = std::cos(inner);
+    b.cosThetaE = std::cos(std::max(0.0, outer - inner));
+  } else {  // a point light: every direction
+    b.cosThetaO = -1.0;
+    b.cosThetaE = 0.0;
+  }
+  return b;
+}
+
+void ChooseLightSampler(RenderScene& rs, LightSampler sampler) {
+  std::vector<uint32_t> finite, infinite;
+  for (uint32_t i = 0; i < rs.lights.size(); ++i) (IsFiniteLight(rs.lights[i]) ? finite : infinite).push_back(i);
+  const size_t needed = sampler == LightSampler::kTree ? 2 : kLightTreeMinLights;
+  if (sampler == LightSampler::kPower || finite.size() < needed) return;
+  std::vector<LightBounds> bounds;
+  bounds.reserve(finite.size());
+  for (uint32_t i : finite) bounds.push_back(LightBoundsOf(rs, rs.lights[i], rs.lightPower[i]));
+  LightTree tree = BuildLightTree(bounds);
+  std::vector<uint32_t> order;  // new index → old
+  order.reserve(rs.lights.size());
+  for (uint32_t k : tree.order) order.push_back(finite[k]);
+  order.insert(order.end(), infinite.begin(), infinite.end());
+  std::vector<uint32_t> newIndex(rs.lights.size());
+  std::vector<shader::Light> lights(rs.lights.size());
+  std::vector<double> power(rs.lights.size());
+  for (uint32_t k = 0; k < order.size(); ++k) {
+    newIndex[order[k]] = k;
+    lights[k] = rs.lights[order[k]];
+    power[k] = rs.lightPower[order[k]];
+  }
+  for (shader::Triangle& t : rs.triangles)
+    if (t.light != shader::kInvalidIndex) t.light = newIndex[t.light];
+  rs.lights = std::move(lights);
+  rs.lightPower = std::move(power);
+  SetDistribution(rs.lightPower, rs.lights);
+  rs.lightTree = std::move(tree.nodes);
+  rs.treeLights = uint32_t(finite.size());
+  rs.lightTreeDepth = tree.depth;
 }
 
 }  // namespace vkpt

@@ -2,6 +2,7 @@
 // chosen with probability ∝ estimated power.
 #pragma once
 
+#include "render/light_tree.h"
 #include "render/render_scene.h"
 
 namespace vkpt {
@@ -20,5 +21,15 @@ void BuildLightTable(const Scene& scene, RenderScene& rs);
 // 4π² R² · L̄ · intensity with L̄ its mean luminance per solid angle (pbrt-v4's
 // ImageInfiniteLight::Phi), and renormalises the distribution.
 void AddEnvironmentLight(RenderScene& rs, float intensity);
+
+// With the tree, reorders rs.lights (and lightPower, and the triangles' `light`) to the
+// tree's leaf order with the directional lights and the environment after them, and sets
+// rs.lightTree. The table's distribution keeps each light's power-proportional share in
+// total: the finite lights' together is the tree's, the rest keep theirs. A tree needs two
+// lights; with fewer, or kPower, the table stays as it is.
+void ChooseLightSampler(RenderScene& rs, LightSampler sampler);
+
+// The bounds of finite light `l` (its power estimate `power`) for the light tree.
+LightBounds LightBoundsOf(const RenderScene& rs, const shader::Light& l, double power);
 
 }  // namespace vkpt

@@ -248,6 +248,8 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
 shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height) {
   shader::FrameParams p{};
   p.lightCount = uint32_t(scene.lights.size());
+  p.treeLights = scene.treeLights;
+  p.treeDepth = scene.lightTreeDepth;
   p.envLight = shader::kInvalidIndex;
   p.textureLod = 1u;
   for (uint32_t i = 0; i < scene.lights.size(); ++i)

@@ -23,6 +23,11 @@ struct RenderScene {
   BvhWideLayout wideLayout;  // the first copy of `nodes`, for the CPU tracer (if asked for)
   std::vector<shader::Material> materials;
   std::vector<shader::Light> lights;  // empty: the scene is dark (render/light_table.h)
+  // Over lights [0, treeLights) when the scene chooses its finite lights by a tree
+  // (render/light_tree.h); else empty and treeLights 0.
+  std::vector<shader::LightTreeNode> lightTree;
+  uint32_t treeLights = 0;
+  uint32_t lightTreeDepth = 0;
   // One per Scene triangle, degenerate ones included, so that Triangle::sourceIndex
   // indexes it directly (and spatial-split copies of a triangle share it).
   std::vector<shader::TriangleShading> shading;

@@ -11,6 +11,8 @@
 #define VKPT_MATERIAL(i) scene.materials[i]
 #define VKPT_LIGHT(i) scene.lights[i]
 #define VKPT_LIGHT_CDF(i) scene.lights[i].cdf
+#define VKPT_LIGHT_NODE(i) scene.lightTree[i]
+#define VKPT_LIGHT_TREE (!scene.lightTree.empty())
 #define VKPT_SHADING(i) scene.shading[i]
 #define VKPT_VERTEX_COLORS (!scene.vertexColors.empty())
 #define VKPT_VERTEX_COLORS_OF(i) scene.vertexColors[i]

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstddef>
+#include <cstring>
 #include <memory>
 #include <span>
 #include <string>
@@ -28,6 +30,16 @@ TexelBuffer UploadArray(const Context& ctx, std::span<const T> v, const char* wh
   return UploadTexelBuffer(ctx, v.data(), v.size() * sizeof(T), what);
 }
 
+// The light table with the light tree's nodes after it (scene_fetch.glsl's FetchLightNode).
+TexelBuffer UploadLights(const Context& ctx, const RenderScene& scene) {
+  const size_t lightBytes = scene.lights.size() * sizeof(shader::Light);
+  std::vector<std::byte> bytes(lightBytes + scene.lightTree.size() * sizeof(shader::LightTreeNode));
+  if (!scene.lights.empty()) std::memcpy(bytes.data(), scene.lights.data(), lightBytes);
+  if (!scene.lightTree.empty())
+    std::memcpy(bytes.data() + lightBytes, scene.lightTree.data(), bytes.size() - lightBytes);
+  return UploadTexelBuffer(ctx, bytes.data(), bytes.size(), "lights");
+}
+
 // An array of whole-texel structs, in two texel buffers if one cannot hold it.
 template <class T>
 SplitTexelBuffer UploadSplitArray(const Context& ctx, std::span<const T> v, const char* what,
@@ -46,7 +58,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
       triangles_(UploadSplitArray<shader::Triangle>(ctx, scene.triangles, "triangles", overrides.maxTexelsPerBuffer)),
       nodes_(UploadArray<shader::BvhNode>(ctx, scene.nodes, "BVH nodes")),
       materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
-      lights_(UploadArray<shader::Light>(ctx, scene.lights, "lights")),
+      lights_(UploadLights(ctx, scene)),
       albedoTables_(UploadArray<float>(ctx, shader::kAlbedoTables, "albedo tables")),
       shading_(UploadArray<shader::TriangleShading>(ctx, scene.shading, "shading normals")),
       vertexColors_(UploadArray<shader::TriangleColors>(ctx, scene.vertexColors, "vertex colours")),
@@ -128,7 +140,8 @@ std::vector<uint32_t> GpuRenderer::Specialization(const shader::FrameParams& fra
           hasIridescence_ ? 1u : 0u,
           hasAnisotropy_ ? 1u : 0u,
           hasDispersion_ ? 1u : 0u,
-          masksBranches_ ? 1u : 0u};
+          masksBranches_ ? 1u : 0u,
+          frame.treeLights > 0 ? 1u : 0u};
 }
 
 std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams& frame,

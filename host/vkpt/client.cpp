@@ -38,6 +38,10 @@ SceneSettings ToSettings(const std::string& path, const api::SceneOptions& o, co
   s.choice.time = client.time;
   s.env = o.environment;
   s.envIntensity = o.environmentIntensity;
+  using InternalSampler = decltype(s.lightSampler);
+  s.lightSampler = o.lightSampler == api::LightSampler::Tree    ? InternalSampler::kTree
+                   : o.lightSampler == api::LightSampler::Power ? InternalSampler::kPower
+                                                                : InternalSampler::kAuto;
   s.backend = o.backend == api::Backend::Cpu      ? InternalBackend::Cpu
               : o.backend == api::Backend::Vulkan ? InternalBackend::Vulkan
                                                   : InternalBackend::Auto;

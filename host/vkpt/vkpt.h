@@ -51,6 +51,11 @@ enum class Backend {
   Vulkan,  // a Vulkan compute device (an error if none opens)
 };
 
+// How light sampling chooses among emissive triangles, point and spot lights: by how
+// much each may light the shading point (a light tree), by power alone, or Auto: the tree
+// from 8 such lights on.
+enum class LightSampler { Auto, Power, Tree };
+
 struct SceneOptions {
   Backend backend = Backend::Auto;
   std::string device;              // a Vulkan device by index or name substring ("": the best)
@@ -63,6 +68,7 @@ struct SceneOptions {
   std::string animation;           // an animation, by name or index; RenderOptions::time poses it
   std::string environment;         // an equirectangular .hdr or .exr lighting the scene
   float environmentIntensity = 1.0f;
+  LightSampler lightSampler = LightSampler::Auto;
 };
 
 // The file's camera `index` (without cameras: one framing the scene), or its lens placed by

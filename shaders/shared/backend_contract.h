@@ -35,6 +35,7 @@
 //   [scene] VKPT_MATERIAL(i)            Material i
 //   [scene] VKPT_LIGHT(i)               Light i of the light table (lights.h)
 //   [scene] VKPT_LIGHT_CDF(i)           VKPT_LIGHT(i).cdf (the GPU fetches one texel for it)
+//   [scene] VKPT_LIGHT_NODE(i)          LightTreeNode i of the light tree (light_tree.h)
 //   [scene] VKPT_SHADING(i)             TriangleShading of triangle i (vertex normals)
 //   [scene] VKPT_VERTEX_COLORS_OF(i)    TriangleColors of triangle i
 //   [scene] VKPT_UVS_OF(i)              TriangleUVs of triangle i
@@ -49,6 +50,7 @@
 //                                       float tMax, uint alphaKey): the closest hit alpha.h keeps
 //   [function] TraceOccluded            bool TraceOccluded(VKPT_SCENE_PARAM …same…): any such hit
 //   [capability] VKPT_LIGHT_TYPES       lights.h: the light types in the table (bit 1 << kLight*)
+//   [capability] VKPT_LIGHT_TREE        light_tree.h: the scene has a light tree
 //   [capability] VKPT_GLOSSY_MATERIALS  bsdf.h: some material is not Lambertian
 //   [capability] VKPT_SMOOTH_NORMALS    shading_frame.h: some triangle has vertex normals
 //   [capability] VKPT_ENVIRONMENT_MAP   environment.h: the scene has an environment map
@@ -117,6 +119,9 @@
 #endif
 #ifndef VKPT_LIGHT_CDF
 #error "backend contract: VKPT_LIGHT_CDF is not defined"
+#endif
+#ifndef VKPT_LIGHT_NODE
+#error "backend contract: VKPT_LIGHT_NODE is not defined"
 #endif
 #ifndef VKPT_SHADING
 #error "backend contract: VKPT_SHADING is not defined"

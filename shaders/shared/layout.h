@@ -195,12 +195,29 @@ struct Light {
   float cosInner;
 };
 
+// A node of the light tree (shared/light_tree.h, host/render/light_tree.h): the bounds of
+// the finite lights [first, end) of the light table, depth first, a node's left child
+// right after it. Its right child holds lights [split, end) and lies 2 (split − first)
+// nodes after it (a subtree over c lights has 2c − 1 nodes); a node of one light is a leaf.
+struct LightTreeNode {
+  vec3 center;  // of a sphere holding every light's points
+  float radius;
+  vec3 axis;        // unit: the axis of the cone of the lights' normals (or spot directions)
+  float intensity;  // Σ over the lights of their greatest radiant intensity (luminance)
+  float cosThetaO;  // the cone's half-angle θo: every normal is within θo of the axis
+  float sinThetaO;
+  float cosThetaE;  // θe: how far beyond its normal a light emits (π/2 for a triangle)
+  uint split;       // bits 0–30: the right child's first light; bit 31: a light emits both ways
+};
+const uint kLightNodeTwoSided = 0x80000000u;
+
 // The shaders read the scene arrays above as RGBA32UI texels (shaders/scene_fetch.glsl):
 // 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
 const uint kTexelsPerTriangle = 3u;
 const uint kTexelsPerNode = 2u;
 const uint kTexelsPerMaterial = 10u;
 const uint kTexelsPerLight = 4u;
+const uint kTexelsPerLightNode = 3u;  // after the lights, in the same texel buffer
 const uint kTexelsPerShading = 1u;
 const uint kTexelsPerColors = 2u;
 const uint kTexelsPerUVs = 3u;
@@ -265,9 +282,9 @@ struct FrameParams {
   uint adaptive;       // 1: only the pixels kBindingActive marks take samples
   uint triangleSplit;  // Triangles in kBindingTriangles; the rest are in kBindingTrianglesHigh
   uint uvSplit;        // TriangleUVs in kBindingVertexUVs; the rest are in kBindingVertexUVsHigh
-  uint pad6;           // std140 rounds the struct up to a multiple of 16 bytes
-  uint pad7;
-  uint pad8;
+  uint treeLights;     // lights [0, treeLights) are chosen through the light tree; 0: no tree
+  uint treeDepth;      // the light tree's depth (a leaf under the root: 1)
+  uint pad8;           // std140 rounds the struct up to a multiple of 16 bytes
 };
 
 VKPT_END_NAMESPACE

@@ -2,13 +2,16 @@
 // sampling found a light along (for multiple importance sampling). Every light of the
 // scene — emissive triangles, KHR_lights_punctual point, spot and directional lights and
 // the environment map — is one entry of one table, chosen with probability ∝ its estimated power
-// (host/render/light_table.cpp).
+// (host/render/light_table.cpp). In a scene with many finite lights (emissive triangles,
+// point and spot lights) the table's share of those lights goes to the light tree
+// (light_tree.h), which divides it among them by their importance at the shading point.
 //
 // Units: emission is radiance; a punctual light's intensity (candela in glTF) is radiant
 // intensity I and a directional light's (lux) irradiance E, 1:1, so a point light of
 // intensity I lights a Lambert surface at distance r to ρ/π · I cos θ / r².
 //
-// Scene access (backend_contract.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i) and VKPT_LIGHT_CDF(i),
+// Scene access (backend_contract.h): VKPT_TRIANGLE(i), VKPT_LIGHT(i), VKPT_LIGHT_CDF(i) and
+// light_tree.h's,
 // environment.h's VKPT_ENV_TEXEL(i), VKPT_ENV_CDF(i), and material_textures.h's.
 //
 // The punctual falloffs and the emitter's cosine, texture and clear coat below are seams
@@ -21,6 +24,7 @@
 #include "fresnel.h"
 #include "intersect.h"
 #include "layout.h"
+#include "light_tree.h"
 #include "material_textures.h"
 #include "prelude.h"
 #include "sampling.h"
@@ -48,16 +52,54 @@ struct LightSample {
   float shadowTMax;
 };
 
-// The light table's CDF search (sampling.h); PickLight searches the whole table.
+// The light table's CDF search (sampling.h).
 VKPT_DEFINE_CDF_SEARCH(FindLightInterval, VKPT_LIGHT_CDF)
 
-// The light whose CDF interval holds u ∈ [0,1): smallest k with u < cdf[k].
-VKPT_FN uint PickLight(VKPT_SCENE_PARAM uint count, float u) { return FindLightInterval(VKPT_SCENE_ARG 0u, count, u); }
+struct LightChoice {
+  uint light;  // index into the light table
+  float pmf;   // the probability of choosing it
+  float u;     // the random number, stretched back to [0,1) within the choice
+};
 
-// Solid-angle density of reaching a point of emissive triangle light `l` at distance
-// `dist` along a direction making cosine `cosLight` with its normal: pmf · dist² / (area cos θ').
-VKPT_FN float TriangleLightPdf(Light l, float dist, float cosLight) {
-  return cosLight > 0.0f ? l.pmf * dist * dist / (l.extent * cosLight) : 0.0f;
+// Chooses a light for the shading point p (unit geometric normal n) with u ∈ [0,1): the
+// light whose CDF interval holds u (smallest k with u < cdf[k]), or, where u falls in the
+// tree's lights [0, params.treeLights), the tree's choice among them. The stretched u is
+// pbrt-v4's SampleDiscrete: the point on a triangle light stays stratified over the union
+// of all triangles.
+VKPT_FN LightChoice ChooseLight(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 n, float u) {
+  LightChoice c;
+  uint first = 0u;
+  if (VKPT_LIGHT_TREE && params.treeLights > 0u) {
+    float treeShare = VKPT_LIGHT_CDF(params.treeLights - 1u);
+    if (u < treeShare) {
+      LightTreeChoice t = SampleLightTree(VKPT_SCENE_ARG params.treeLights, treeShare, p, n, u);
+      c.light = t.light;
+      c.pmf = t.pmf;
+      c.u = t.u;
+      return c;
+    }
+    first = params.treeLights;
+  }
+  c.light = FindLightInterval(VKPT_SCENE_ARG first, params.lightCount - first, u) + first;
+  Light l = VKPT_LIGHT(c.light);
+  float cdfBelow = c.light > 0u ? VKPT_LIGHT_CDF(c.light - 1u) : 0.0f;
+  c.pmf = l.pmf;
+  c.u = min((u - cdfBelow) / (l.cdf - cdfBelow), kOneMinusEpsilon);
+  return c;
+}
+
+// The probability that ChooseLight picks light k (`l`) for the shading point p, n.
+VKPT_FN float LightChoicePmf(VKPT_SCENE_PARAM FrameParams params, uint k, Light l, vec3 p, vec3 n) {
+  if (VKPT_LIGHT_TREE && k < params.treeLights)
+    return LightTreePmf(VKPT_SCENE_ARG params.treeLights, VKPT_LIGHT_CDF(params.treeLights - 1u), p, n, k);
+  return l.pmf;
+}
+
+// Solid-angle density of reaching a point of emissive triangle light `l`, chosen with
+// probability `pmf`, at distance `dist` along a direction making cosine `cosLight` with
+// its normal: pmf · dist² / (area cos θ').
+VKPT_FN float TriangleLightPdf(Light l, float pmf, float dist, float cosLight) {
+  return cosLight > 0.0f ? pmf * dist * dist / (l.extent * cosLight) : 0.0f;
 }
 
 // KHR_lights_punctual's spot cone: smoothstep-free quadratic falloff between the outer
@@ -143,17 +185,15 @@ VKPT_FN vec3 EmissionAt(VKPT_SCENE_PARAM Light l, Triangle tri, vec2 b, float co
   return radiance;
 }
 
-// Samples a light for the shading point p, whose rays leave from `origin` (p offset along
-// the geometric normal on the side the path arrived from; path.h moves a shadow ray that
-// goes through the surface to the other side), with u ∈ [0,1)²: u.x picks the
-// light and is then stretched back to [0,1) within its CDF interval (pbrt-v4's
-// SampleDiscrete), so the point on a triangle light stays stratified over the union of
-// all triangles. pdf = 0: no contribution.
-VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 origin, vec2 u) {
-  uint k = PickLight(VKPT_SCENE_ARG params.lightCount, u.x);
-  Light l = VKPT_LIGHT(k);
-  float cdfBelow = k > 0u ? VKPT_LIGHT_CDF(k - 1u) : 0.0f;
-  u.x = min((u.x - cdfBelow) / (l.cdf - cdfBelow), kOneMinusEpsilon);
+// Samples a light for the shading point p (unit geometric normal n), whose rays leave from
+// `origin` (p offset along the geometric normal on the side the path arrived from;
+// path.h moves a shadow ray that goes through the surface to the other side), with u ∈
+// [0,1)²: u.x chooses the light (ChooseLight) and, stretched, with u.y the point on it.
+// pdf = 0: no contribution.
+VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 n, vec3 origin, vec2 u) {
+  LightChoice choice = ChooseLight(VKPT_SCENE_ARG params, p, n, u.x);
+  Light l = VKPT_LIGHT(choice.light);
+  u.x = choice.u;
   LightSample ls;
   // Constant where the scene has triangle lights only, so that lavapipe compiles no branch.
   bool triangle = (VKPT_LIGHT_TYPES & ~kTriangleLightTypes) == 0u || l.type <= kLightTwoSidedTriangle;
@@ -170,7 +210,7 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
     float dist = length(d);
     ls.wi = d / dist;
     float cosLight = EmitterCosine(l, ls.wi);
-    ls.pdf = TriangleLightPdf(l, dist, cosLight);
+    ls.pdf = TriangleLightPdf(l, choice.pmf, dist, cosLight);
     ls.radiance = EmissionAt(VKPT_SCENE_ARG l, tri, b, cosLight);
     // Aim at the light point lifted off the emitter towards p, with tMax = 1 on the
     // unnormalised direction: the emitter itself then lies beyond tMax.
@@ -178,14 +218,14 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
   } else if (SceneHasLightType(kLightEnvironment) && l.type == kLightEnvironment) {
     EnvSample es = SampleEnvironment(VKPT_SCENE_ARG params, u);
     ls.wi = es.dir;
-    ls.pdf = l.pmf * es.pdf;
+    ls.pdf = choice.pmf * es.pdf;
     ls.radiance = es.radiance;
     ls.delta = false;
     ls.shadowRay.dir = ls.wi;
     ls.shadowTMax = kInfinity;
   } else if (SceneHasLightType(kLightDirectional) && l.type == kLightDirectional) {
     ls.wi = -l.direction;
-    ls.pdf = l.pmf;
+    ls.pdf = choice.pmf;
     ls.radiance = DirectionalIrradiance(l);
     ls.shadowRay.dir = ls.wi;
     ls.shadowTMax = kInfinity;
@@ -196,7 +236,7 @@ VKPT_FN LightSample SampleLi(VKPT_SCENE_PARAM FrameParams params, vec3 p, vec3 o
     ls.wi = d / dist;
     float falloff = PunctualFalloff(l.extent, dist, dist2);
     if (SceneHasLightType(kLightSpot) && l.type == kLightSpot) falloff *= SpotFalloff(l, -ls.wi);
-    ls.pdf = dist2 > 0.0f ? l.pmf : 0.0f;
+    ls.pdf = dist2 > 0.0f ? choice.pmf : 0.0f;
     ls.radiance = l.radiance * falloff;
     ls.shadowRay.dir = l.position - origin;
   }

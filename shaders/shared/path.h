@@ -93,6 +93,8 @@ struct PathState {
   float shadowTMax;
   vec3 lightContribution;  // added to the radiance if the shadow ray is unoccluded
   float wavelength;        // nm, drawn at the first dispersive vertex (dispersion.h); 0 before
+  vec3 lightPoint;         // where s.ray left from, and the geometric normal there: the shading
+  vec3 lightNormal;        // point of that vertex's light choice (lights.h), for MIS; light trees only
 };
 
 // Sample `sampleIndex` of pixel (px, py) before its first ray: the camera ray. Its random
@@ -116,17 +118,21 @@ VKPT_FN PathState StartPath(FrameParams params, uint px, uint py, uint sampleInd
   s.shadowTMax = 1.0f;
   s.lightContribution = vec3(0.0f);
   s.wavelength = 0.0f;
+  s.lightPoint = vec3(0.0f);
+  s.lightNormal = vec3(0.0f);
   return s;
 }
 
 // Emission seen along s.ray at the surface `sh`, `dist` away, weighted against light
 // sampling: a camera ray (bsdfPdf 0) sees it whole, as does a BSDF-sampled ray that hit
 // an emitter missing from the light table.
-VKPT_FN vec3 WeightedEmission(VKPT_SCENE_PARAM PathState s, SurfaceHit sh, float dist) {
+VKPT_FN vec3 WeightedEmission(VKPT_SCENE_PARAM FrameParams params, PathState s, SurfaceHit sh, float dist) {
   if (!sh.emits) return vec3(0.0f);
   float weight = 1.0f;
   if (s.bsdfPdf > 0.0f && sh.light != kInvalidIndex) {
-    float lightPdf = TriangleLightPdf(VKPT_LIGHT(sh.light), dist, abs(dot(sh.ng, s.ray.dir)));
+    Light l = VKPT_LIGHT(sh.light);
+    float pmf = LightChoicePmf(VKPT_SCENE_ARG params, sh.light, l, s.lightPoint, s.lightNormal);
+    float lightPdf = TriangleLightPdf(l, pmf, dist, abs(dot(sh.ng, s.ray.dir)));
     weight = BsdfSampleWeight(s.bsdfPdf, lightPdf);
   }
   return weight * sh.material.emission;
@@ -156,7 +162,7 @@ VKPT_FN bool SamplesLightsThrough(SurfaceHit sh, Bsdf bsdf) {
 VKPT_FN void SampleDirectLight(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState) s, SurfaceHit sh, vec3 origin,
                                Bsdf bsdf, vec3 wo, uint bounce) {
   vec2 ul = Sample2D(params.seed, s.pixel, s.sampleIndex, LightGroup(bounce));
-  LightSample ls = SampleLi(VKPT_SCENE_ARG params, sh.p, origin, ul);
+  LightSample ls = SampleLi(VKPT_SCENE_ARG params, sh.p, sh.ng, origin, ul);
   float side = dot(ls.wi, sh.ng);
   bool through = side < 0.0f;
   if (!(ls.pdf > 0.0f) || side == 0.0f || (through && !SamplesLightsThrough(sh, bsdf))) return;
@@ -252,7 +258,7 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   SurfaceHit sh = MakeSurfaceHit(VKPT_SCENE_ARG s.ray, hit, TextureCones(params, bounce, coneWidth));
   if (VKPT_VOLUMES && !sh.frontFace && (sh.material.flags & kMaterialVolume) != 0u)
     s.throughput *= exp(-sh.material.attenuation * hit.t);
-  s.result.radiance += s.throughput * WeightedEmission(VKPT_SCENE_ARG s, sh, hit.t);
+  s.result.radiance += s.throughput * WeightedEmission(VKPT_SCENE_ARG params, s, sh, hit.t);
   if ((sh.material.flags & kMaterialUnlit) != 0u) {
     s.result.radiance += s.throughput * sh.material.baseColor;
     return false;
@@ -283,6 +289,10 @@ VKPT_FN bool ShadeHit(VKPT_SCENE_PARAM FrameParams params, VKPT_INOUT(PathState)
   s.bsdfPdf = transmitted && !SamplesLightsThrough(sh, bsdf) ? 0.0f : bs.pdf;
   s.ray.origin = transmitted ? OffsetRayOrigin(sh.p, -sh.ng) : origin;
   s.ray.dir = wi;
+  if (VKPT_LIGHT_TREE) {
+    s.lightPoint = sh.p;
+    s.lightNormal = sh.ng;
+  }
   if (VKPT_TEXTURES) {
     s.coneWidth = coneWidth;
     s.coneSpread =
