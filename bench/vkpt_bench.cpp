@@ -26,6 +26,7 @@
 #include "glb_writer.h"
 #include "image/image.h"
 #include "procedural.h"
+#include "render/light_table.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared/estimator.h"
@@ -54,23 +55,21 @@ struct Options {
   unsigned threads = 0;  // 0: all cores
   bool json = false;
   bool markdown = false;  // one row of bench/README.md's table
-  std::string quality;    // --quality REF.pfm: time to reach relMSE <= kQualityTarget
+  std::string quality;    // --quality REF.pfm: time to reach relMSE <= target
+  double target = 1.2e-3;  // --target X: the relMSE --quality waits for
   std::string writeGlb;   // --write-glb FILE: the procedural scene as a glTF, no benchmark
   std::string splits = "object";  // --splits: the builder as compared with Embree's
   uint32_t leafSize = BvhBuildOptions{}.maxLeafSize;
   float traversalCost = BvhBuildOptions{}.traversalCost;  // SAH cost of a node visit
 };
 
-// "What users feel" (the benchmark issue): seconds until an image's relMSE against a
-// converged reference first drops to this value.
-constexpr double kQualityTarget = 1.2e-3;
 constexpr int kBuildRuns = 3;
 
 [[noreturn]] void Usage(const std::string& why) {
   std::fprintf(stderr,
                "vkpt-bench: %s\nusage: vkpt-bench (--scene FILE | --procedural N) [--width W] [--height H] "
                "[--threads N] [--splits object|spatial|auto] [--leaf-size N] [--traversal-cost C] [--json | "
-               "--markdown] [--quality REF.pfm] [--write-glb FILE]\n",
+               "--markdown] [--quality REF.pfm [--target RELMSE]] [--write-glb FILE]\n",
                why.c_str());
   std::exit(2);
 }
@@ -98,7 +97,13 @@ Options Parse(int argc, char** argv) {
     else if (a == "--json") o.json = true;
     else if (a == "--markdown") o.markdown = true;
     else if (a == "--quality") o.quality = value();
-    else if (a == "--write-glb") o.writeGlb = value();
+    else if (a == "--target") {
+      const char* v = value();
+      char* end = nullptr;
+      o.target = std::strtod(v, &end);
+      if (*end || !(o.target > 0.0 && o.target < 1.0))
+        Usage(std::string("--target expects a relMSE in (0, 1), got \"") + v + "\"");
+    } else if (a == "--write-glb") o.writeGlb = value();
     else if (a == "--splits") {
       o.splits = value();
       if (!ParseSplitMode(o.splits)) Usage("--splits must be object, spatial or auto, got \"" + o.splits + "\"");
@@ -114,6 +119,7 @@ Options Parse(int argc, char** argv) {
     else Usage("unknown option \"" + a + "\"");
   }
   if (o.scene.empty() == (o.procedural == 0)) Usage("give exactly one of --scene FILE and --procedural N");
+  if (o.quality.empty() && o.target != Options{}.target) Usage("--target is the relMSE --quality waits for");
   if (!o.quality.empty() && o.markdown) Usage("--quality prints text or --json, not --markdown");
   if (!o.writeGlb.empty() && o.procedural == 0) Usage("--write-glb writes the --procedural scene");
   return o;
@@ -365,12 +371,17 @@ double RelMse(const std::vector<glm::dvec3>& sum, double spp, const Image& ref) 
   return total / (3.0 * double(ref.pixels.size()));
 }
 
-// Renders progressively (chunks growing by ~6 %, so the reported time overshoots the
-// true crossing by at most that much) until relMSE ≤ kQualityTarget or the
-// time budget is spent; returns the render seconds it took (nullopt if never reached).
-// `render` renders samples [begin, begin + count) and returns (image of their mean, seconds).
-std::optional<double> SecondsToQuality(const Image& ref, const std::function<std::pair<Image, double>(uint32_t, uint32_t)>& render,
-                                       const char* name, uint32_t* sppReached) {
+// "What users feel" (the benchmark issue): seconds of rendering until an image's relMSE
+// against a converged reference first drops to a target. Renders progressively (chunks
+// growing by ~6 %, so the time overshoots the true crossing by at most that much) until
+// relMSE ≤ target or the time budget is spent. `render` renders samples
+// [begin, begin + count) and returns (image of their mean, seconds).
+using ChunkRenderer = std::function<std::pair<Image, double>(uint32_t begin, uint32_t count)>;
+struct TimeToQuality {
+  std::optional<double> seconds;  // nullopt: not reached
+  uint32_t spp = 0;
+};
+TimeToQuality SecondsToQuality(const Image& ref, double target, const ChunkRenderer& render, const std::string& name) {
   std::vector<glm::dvec3> sum(ref.pixels.size(), glm::dvec3(0.0));
   double seconds = 0.0;
   uint32_t spp = 0;
@@ -381,72 +392,96 @@ std::optional<double> SecondsToQuality(const Image& ref, const std::function<std
     for (size_t i = 0; i < sum.size(); ++i) sum[i] += glm::dvec3(img.pixels[i]) * double(chunk);
     spp += chunk;
     double e = RelMse(sum, spp, ref);
-    if (e <= kQualityTarget) {
-      std::fprintf(stderr, "  %s: relMSE %.3g at %u spp after %.2f s\n", name, e, spp, seconds);
-      *sppReached = spp;
-      return seconds;
+    if (e <= target) {
+      std::fprintf(stderr, "  %s: relMSE %.3g at %u spp after %.2f s\n", name.c_str(), e, spp, seconds);
+      return {seconds, spp};
     }
   }
-  std::fprintf(stderr, "  %s: relMSE target not reached in %.0f s (%u spp)\n", name, seconds, spp);
-  *sppReached = spp;
-  return std::nullopt;
+  std::fprintf(stderr, "  %s: relMSE target not reached in %.0f s (%u spp)\n", name.c_str(), seconds, spp);
+  return {std::nullopt, spp};
 }
 
+// One light sampler's prepared scene, by the name it has in keys and lines.
+struct SamplerScene {
+  std::string name;  // "power" or "tree"
+  const RenderScene* rs;
+};
+
+// Seconds to quality on each backend, for each light sampler the scene can use: the
+// power-proportional choice and, where it has at least two emissive triangles, point or
+// spot lights, the light tree (render/light_tree.h), whose time is also given as a ratio
+// to the power choice's, measured in the same run: relMSE falls as 1/time, so the ratio
+// is also that of their relMSE at equal time.
 int Quality(const Options& o, unsigned threads) {
   Image ref = ReadPfm(o.quality);
   Scene scene = o.procedural ? ProceduralScene(o.procedural) : LoadGltf(o.scene);
   const BvhBuildOptions bvhOptions = BuildOptions(o, threads);
-  RenderScene rs = PrepareRenderScene(scene, bvhOptions);
+  RenderScene power = PrepareRenderScene(scene, bvhOptions);
+  RenderScene tree = power;
+  ChooseLightSampler(tree, LightSampler::kTree);
+  std::vector<SamplerScene> samplers = {{"power", &power}};
+  if (tree.treeLights > 0) samplers.push_back({"tree", &tree});
   const Camera cam = scene.cameras.empty() ? DefaultCamera(scene.bounds) : scene.cameras[0];
-  shader::FrameParams p = MakeFrameParams(rs, cam, ref.width, ref.height);
-  p.seed = 1;  // the reference should use another seed
-  p.maxDepth = 32;
-  p.rrDepth = 3;
-  if (rs.lights.empty()) p.background = glm::vec3(1.0f);
   Report rep;
   rep.threads = threads;
-  std::fprintf(stderr, "vkpt-bench: time to relMSE <= %.1e against %s (%ux%u)\n", kQualityTarget, o.quality.c_str(),
+  std::fprintf(stderr, "vkpt-bench: time to relMSE <= %.1e against %s (%ux%u)\n", o.target, o.quality.c_str(),
                ref.width, ref.height);
-  uint32_t cpuSpp = 0, gpuSpp = 0;
-  rep.Set("cpu_seconds_to_quality", SecondsToQuality(ref, [&](uint32_t begin, uint32_t count) {
-    shader::FrameParams q = p;
-    q.sampleBegin = begin;
-    q.sampleCount = count;
-    CpuRenderOptions opt;
-    opt.threads = threads;
-    RenderResult r = RenderCpu(rs, q, opt);
-    return std::make_pair(std::move(r.image), r.seconds);
-  }, "cpu", &cpuSpp));
-  rep.Set("cpu_spp_to_quality", double(cpuSpp));
-  rep.Set("gpu_seconds_to_quality", std::nullopt);
-  rep.Set("gpu_spp_to_quality", std::nullopt);
-  try {
-    vk::Context ctx(vk::ContextOptions{});
-    rep.device = ctx.DeviceName();
-    vk::GpuRenderer gpu(ctx, rs);
-    rep.Set("gpu_seconds_to_quality", SecondsToQuality(ref, [&](uint32_t begin, uint32_t count) {
+  // Times one backend: `render` renders a frame of the scene it was made for.
+  auto measure = [&](const std::string& key, const RenderScene& rs,
+                     const std::function<RenderResult(const shader::FrameParams&)>& render) {
+    shader::FrameParams p = MakeFrameParams(rs, cam, ref.width, ref.height);
+    p.seed = 1;  // the reference should use another seed
+    p.maxDepth = 32;
+    p.rrDepth = 3;
+    if (rs.lights.empty()) p.background = glm::vec3(1.0f);
+    const ChunkRenderer chunks = [&](uint32_t begin, uint32_t count) {
       shader::FrameParams q = p;
       q.sampleBegin = begin;
       q.sampleCount = count;
-      RenderResult r = gpu.Render(q);
+      RenderResult r = render(q);
       return std::make_pair(std::move(r.image), r.seconds);
-    }, "gpu", &gpuSpp));
-    rep.Set("gpu_spp_to_quality", double(gpuSpp));
+    };
+    const TimeToQuality t = SecondsToQuality(ref, o.target, chunks, key);
+    rep.Set(key + "_seconds_to_quality", t.seconds);
+    rep.Set(key + "_spp_to_quality", double(t.spp));
+  };
+  for (const SamplerScene& s : samplers) {
+    CpuRenderOptions opt;
+    opt.threads = threads;
+    measure("cpu_" + s.name, *s.rs, [&](const shader::FrameParams& q) { return RenderCpu(*s.rs, q, opt); });
+  }
+  try {
+    vk::Context ctx(vk::ContextOptions{});
+    rep.device = ctx.DeviceName();
+    for (const SamplerScene& s : samplers) {
+      vk::GpuRenderer gpu(ctx, *s.rs);
+      measure("gpu_" + s.name, *s.rs, [&](const shader::FrameParams& q) { return gpu.Render(q); });
+    }
   } catch (const Error& e) {
     std::fprintf(stderr, "vkpt-bench: GPU figures skipped: %s\n", e.what());
     rep.device = "none";
   }
+  for (const std::string b : {"cpu", "gpu"}) {
+    std::optional<double> p = rep.Get(b + "_power_seconds_to_quality"), t = rep.Get(b + "_tree_seconds_to_quality");
+    if (samplers.size() > 1) rep.Set(b + "_tree_vs_power", p && t ? std::optional<double>(*t / *p) : std::nullopt);
+  }
   if (o.json) {
     PrintJson(rep);
-  } else {
-    auto show = [&](const char* what, const char* key, const char* sppKey) {
-      std::optional<double> v = rep.Get(key), n = rep.Get(sppKey);
-      if (v) std::printf("  %-28s %8.2f s (%0.f spp)\n", what, *v, n.value_or(0));
-      else std::printf("  %-28s %8s\n", what, "not reached");
-    };
-    std::printf("vkpt-bench: seconds to relMSE <= %.1e, %u threads, device %s\n", kQualityTarget, threads, rep.device.c_str());
-    show("CPU reference", "cpu_seconds_to_quality", "cpu_spp_to_quality");
-    show("GPU", "gpu_seconds_to_quality", "gpu_spp_to_quality");
+    return 0;
+  }
+  std::printf("vkpt-bench: seconds to relMSE <= %.1e, %u threads, device %s\n", o.target, threads, rep.device.c_str());
+  for (const std::string backend : {"cpu", "gpu"}) {
+    for (const SamplerScene& s : samplers) {
+      const std::string key = backend + "_" + s.name;
+      const std::optional<double> v = rep.Get(key + "_seconds_to_quality"), n = rep.Get(key + "_spp_to_quality");
+      const std::string line = std::string(backend == "cpu" ? "CPU" : "GPU") + ", " +
+                               (s.name == "power" ? "power-proportional lights" : "light tree");
+      if (v) std::printf("  %-32s %8.2f s (%0.f spp)", line.c_str(), *v, n.value_or(0));
+      else std::printf("  %-32s %8s", line.c_str(), "not reached");
+      const std::optional<double> ratio = rep.Get(backend + "_tree_vs_power");
+      if (s.name == "tree" && ratio) std::printf("   %.2fx the power choice's time", *ratio);
+      std::printf("\n");
+    }
   }
   return 0;
 }
