@@ -4,9 +4,11 @@
 // Splitting"; pbrt-v4's BVHLightSampler). Each node of a binary tree over the lights bounds
 // where they are (a sphere), how strongly they emit (the sum of their greatest radiant
 // intensities) and which way (a cone of normals θo wide, emitting up to θe beyond it). A
-// sample walks from the root and picks a child with probability ∝ its importance at the
-// shading point; the light's pmf, the product of its ancestors' choices, is what
-// LightTreePmf recomputes for multiple importance sampling.
+// sample walks from the root and picks a child with probability ∝ the importance at the
+// shading point of the child's own children (of the child itself if it is a leaf): the
+// four grandchildren of a node are evaluated together, and the walk takes two levels at
+// a time. The light's pmf, the product of its ancestors' choices, is what LightTreePmf
+// recomputes for multiple importance sampling.
 //
 // The host builds the tree (host/render/light_tree.h) and orders the light table so that
 // node i over lights [first, end) has its left child at i + 1 and its right child, over
@@ -82,21 +84,20 @@ VKPT_FN vec2 LightNodeImportance(LightTreeNode node, vec3 p, vec3 n) {
 }
 #endif
 
-// The probability of the left child of a node whose children are at `left` and `right`,
-// at p, n: the mean of the choices ∝ bound and ∝ estimate (∝ bound alone when neither
-// child has an estimate; ½ each when neither may light p, whose lights then contribute
-// 0). Positive wherever the left child's bound is: a light that may light p can be chosen.
-VKPT_FN float LeftChildProbability(VKPT_SCENE_PARAM uint left, uint right, vec3 p, vec3 n) {
-  vec2 l = LightNodeImportance(VKPT_LIGHT_NODE(left), p, n);
-  vec2 r = LightNodeImportance(VKPT_LIGHT_NODE(right), p, n);
-  float pBound = l.x + r.x > 0.0f ? l.x / (l.x + r.x) : 0.5f;
-  return l.y + r.y > 0.0f ? 0.5f * (pBound + l.y / (l.y + r.y)) : pBound;
+// The probability of choosing lights of importance `a` (LightNodeImportance, or a sum of
+// them) over lights of importance `b`: the mean of the choices ∝ bound and ∝ estimate (∝
+// bound alone when neither has an estimate; ½ when neither may light the point, whose
+// lights then contribute 0). Positive wherever a's bound is: a light that may light the
+// point can be chosen.
+VKPT_FN float ChoiceProbability(vec2 a, vec2 b) {
+  float pBound = a.x + b.x > 0.0f ? a.x / (a.x + b.x) : 0.5f;
+  return a.y + b.y > 0.0f ? 0.5f * (pBound + a.y / (a.y + b.y)) : pBound;
 }
 
 // A walk down the tree: the node reached, its lights [first, end), and the interval
-// [lo, hi) of the random number u ∈ [0,1) that leads to it. Each node divides its
-// interval between its children in proportion to their probabilities, so a light's pmf
-// is its leaf's interval's width, the very measure of the u that choose it (multiplied
+// [lo, hi) of the random number u ∈ [0,1) that leads to it. Each choice divides the
+// interval between two sides in proportion to their probabilities, so a light's pmf is
+// its leaf's interval's width, the very measure of the u that choose it (multiplied
 // probabilities, or u stretched back to [0,1) at each level as pbrt-v4 does, drift from
 // what float u really pick once a few levels have small probabilities).
 struct LightTreeWalk {
@@ -118,24 +119,59 @@ VKPT_FN LightTreeWalk StartLightTreeWalk(uint count, float share) {
   return w;
 }
 
-// One level down towards the light u picks (k = kInvalidIndex), or towards light k.
-VKPT_FN void DescendLightTree(VKPT_SCENE_PARAM VKPT_INOUT(LightTreeWalk) w, vec3 p, vec3 n, float u, uint k) {
-  uint split = VKPT_LIGHT_NODE(w.node).split & ~kLightNodeTwoSided;
-  uint right = w.node + 2u * (split - w.first);
-  float pl = LeftChildProbability(VKPT_SCENE_ARG w.node + 1u, right, p, n);
-  VKPT_PRECISE float m = w.lo + (w.hi - w.lo) * pl;
-  // A child of positive probability keeps an interval of positive width (a float step at
-  // least), even where its share rounds to nothing, so that it stays reachable.
-  VKPT_PRECISE float least = w.lo + max(w.lo * 1.1920929e-7f, 1e-30f);
-  VKPT_PRECISE float most = w.hi - w.hi * 1.1920929e-7f;
-  if (least < most) m = clamp(m, pl > 0.0f ? least : w.lo, pl < 1.0f ? most : w.hi);
+// The first light of node i's right child (node i over lights [first, end), end − first
+// ≥ 2), and that child's index: the left one is i + 1.
+VKPT_FN uint LightNodeSplit(VKPT_SCENE_PARAM uint i) { return VKPT_LIGHT_NODE(i).split & ~kLightNodeTwoSided; }
+
+VKPT_FN uint RightLightNode(uint i, uint first, uint split) { return i + 2u * (split - first); }
+
+// Moves the walk to the left child (node `left`, lights [first, split)), of importance
+// `a`, or to the right one, of importance `b`, with ChoiceProbability(a, b): towards light
+// k, or where u falls (k = kInvalidIndex).
+VKPT_FN void ChooseLightChild(VKPT_INOUT(LightTreeWalk) w, uint left, uint right, uint split, vec2 a, vec2 b, float u,
+                              uint k) {
+  VKPT_PRECISE float m = w.lo + (w.hi - w.lo) * ChoiceProbability(a, b);
+  // A side that may light the point keeps an interval of positive width (a float step at
+  // least), even where its share rounds to nothing, so that it stays reachable while the
+  // interval is two steps wide.
+  float least = w.lo > 1e-30f ? uintBitsToFloat(floatBitsToUint(w.lo) + 1u) : w.lo + 1e-30f;
+  float most = uintBitsToFloat(floatBitsToUint(w.hi) - 1u);
+  if (least <= most) m = clamp(m, a.x > 0.0f ? least : w.lo, b.x > 0.0f ? most : w.hi);
   // Selects rather than branches: the choice is a coin flip no predictor foresees.
-  bool left = k == kInvalidIndex ? u < m : k < split;
-  w.node = left ? w.node + 1u : right;
-  w.first = left ? w.first : split;
-  w.end = left ? split : w.end;
-  w.lo = left ? w.lo : m;
-  w.hi = left ? m : w.hi;
+  bool toLeft = k == kInvalidIndex ? u < m : k < split;
+  w.node = toLeft ? left : right;
+  w.first = toLeft ? w.first : split;
+  w.end = toLeft ? split : w.end;
+  w.lo = toLeft ? w.lo : m;
+  w.hi = toLeft ? m : w.hi;
+}
+
+// Two levels down towards the light u picks (k = kInvalidIndex), or towards light k; one
+// where the child reached is a leaf. The child is chosen by the importance of its own
+// children (of itself if a leaf), which bound its lights more tightly than it does, and
+// all four are evaluated together: the walk takes half as many dependent steps.
+VKPT_FN void DescendLightTree(VKPT_SCENE_PARAM VKPT_INOUT(LightTreeWalk) w, vec3 p, vec3 n, float u, uint k) {
+  uint split = LightNodeSplit(VKPT_SCENE_ARG w.node);
+  uint left = w.node + 1u;
+  uint right = RightLightNode(w.node, w.first, split);
+  bool leftLeaf = split - w.first == 1u;
+  bool rightLeaf = w.end - split == 1u;
+  uint leftSplit = leftLeaf ? split : LightNodeSplit(VKPT_SCENE_ARG left);
+  uint rightSplit = rightLeaf ? w.end : LightNodeSplit(VKPT_SCENE_ARG right);
+  // Each child's candidates: its children, or itself as the first with none beside it.
+  vec2 leftA = LightNodeImportance(VKPT_LIGHT_NODE(leftLeaf ? left : left + 1u), p, n);
+  vec2 leftB =
+      leftLeaf ? vec2(0.0f) : LightNodeImportance(VKPT_LIGHT_NODE(RightLightNode(left, w.first, leftSplit)), p, n);
+  vec2 rightA = LightNodeImportance(VKPT_LIGHT_NODE(rightLeaf ? right : right + 1u), p, n);
+  vec2 rightB =
+      rightLeaf ? vec2(0.0f) : LightNodeImportance(VKPT_LIGHT_NODE(RightLightNode(right, split, rightSplit)), p, n);
+  ChooseLightChild(w, left, right, split, leftA + leftB, rightA + rightB, u, k);
+  if (w.end - w.first > 1u) {
+    bool wentLeft = w.node == left;
+    uint childSplit = wentLeft ? leftSplit : rightSplit;
+    ChooseLightChild(w, w.node + 1u, RightLightNode(w.node, w.first, childSplit), childSplit, wentLeft ? leftA : rightA,
+                     wentLeft ? leftB : rightB, u, k);
+  }
 }
 
 struct LightTreeChoice {
