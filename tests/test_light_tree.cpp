@@ -206,6 +206,44 @@ TEST(LightTree, EveryLightThatReachesAPointCanBeChosenThere) {
   EXPECT_GT(mutant, 100) << "a tree whose orientation bounds are too narrow must be caught";
 }
 
+// LightNodeImportances (four nodes at once: SSE2 lanes on the CPU) gives what
+// LightNodeImportance gives each node, exactly, at points far from, near and inside the
+// nodes' spheres and at their centres (a point light's), with and without a surface normal;
+// a lane of no node gives 0, and every importance is finite.
+TEST(LightTree, FourNodeImportancesAreEachNodes) {
+  RenderScene rs = WithTree(ManyLightScene(300, 40, 5));
+  const uint32_t nodes = uint32_t(rs.lightTree.size());
+  Rng rng(17);
+  int compared = 0, positive = 0, nonFinite = 0, mismatches = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    glm::uvec4 ids;
+    for (int lane = 0; lane < 4; ++lane) ids[lane] = uint32_t(rng.Uniform() * nodes);
+    if (trial % 5 == 1) ids[1] = shader::kInvalidIndex;
+    if (trial % 7 == 2) ids[3] = shader::kInvalidIndex;
+    const shader::LightTreeNode& near = rs.lightTree[ids.x];
+    glm::vec3 p = trial % 3 == 0 ? near.center + float(rng.Between(0.0, 2.0) * near.radius) * glm::vec3(rng.Direction())
+                                 : glm::vec3(rng.InBox(-5.0, 15.0));
+    if (trial % 11 == 3) p = near.center;
+    const glm::vec3 n = trial % 4 == 0 ? glm::vec3(0.0f) : glm::vec3(rng.Direction());
+    const shader::LightImportances four = shader::LightNodeImportances(rs, ids, p, n);
+    for (int lane = 0; lane < 4; ++lane) {
+      const glm::vec2 one = ids[lane] == shader::kInvalidIndex
+                                ? glm::vec2(0.0f)
+                                : shader::LightNodeImportance(rs.lightTree[ids[lane]], p, n);
+      ++compared;
+      positive += one.x > 0.0f;
+      nonFinite += !std::isfinite(one.x) || !std::isfinite(one.y);
+      if ((four.bound[lane] != one.x || four.estimate[lane] != one.y) && ++mismatches <= 3)
+        std::printf("node %u at (%g %g %g): four-wide (%.9g, %.9g), one (%.9g, %.9g)\n", ids[lane], p.x, p.y, p.z,
+                    four.bound[lane], four.estimate[lane], one.x, one.y);
+    }
+  }
+  std::printf("%d importances compared, %d positive\n", compared, positive);
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(nonFinite, 0);
+  EXPECT_GT(positive, compared / 4) << "the comparison must cover importances that are not 0";
+}
+
 // At random shading points the pmfs sum to 1, SampleLightTree reports the pmf that
 // LightTreePmf computes for its choice, and its choices follow the pmfs (χ², family α 0.01).
 TEST(LightTree, SamplesFollowThePmf) {
