@@ -401,6 +401,33 @@ TimeToQuality SecondsToQuality(const Image& ref, double target, const ChunkRende
   return {std::nullopt, spp};
 }
 
+// relMSE times render seconds, estimated from kRelMseRenders independent renders of
+// kRelMseSpp samples per pixel (disjoint sample ranges): the expected relMSE of an
+// unbiased render falls as 1/time, so this product is the relMSE of one second's render,
+// and two estimators' products compare them at equal time. The mean of the renders'
+// relMSE, not a time to a threshold, whose first crossing comes early for the noisier
+// estimator. relMSE includes the reference's own error (tiny against one such render's).
+constexpr uint32_t kRelMseRenders = 8, kRelMseSpp = 32;
+struct RelMseTime {
+  double product = 0.0;     // mean relMSE × mean seconds per render
+  double relativeSe = 0.0;  // the product's standard error over it (the relMSE's spread)
+};
+RelMseTime RelMseTimesSeconds(const Image& ref, const ChunkRenderer& render) {
+  double sum = 0.0, sumSq = 0.0, seconds = 0.0;
+  for (uint32_t k = 0; k < kRelMseRenders; ++k) {
+    auto [img, s] = render(k * kRelMseSpp, kRelMseSpp);
+    std::vector<glm::dvec3> one(ref.pixels.size());
+    for (size_t i = 0; i < one.size(); ++i) one[i] = glm::dvec3(img.pixels[i]);
+    const double e = RelMse(one, 1.0, ref);
+    sum += e;
+    sumSq += e * e;
+    seconds += s;
+  }
+  const double n = kRelMseRenders, mean = sum / n;
+  const double se = std::sqrt(std::max(0.0, sumSq / n - mean * mean) / (n - 1.0));
+  return {mean * seconds / n, se / mean};
+}
+
 // One light sampler's prepared scene, by the name it has in keys and lines.
 struct SamplerScene {
   std::string name;  // "power" or "tree"
@@ -444,6 +471,10 @@ int Quality(const Options& o, unsigned threads) {
     const TimeToQuality t = SecondsToQuality(ref, o.target, chunks, key);
     rep.Set(key + "_seconds_to_quality", t.seconds);
     rep.Set(key + "_spp_to_quality", double(t.spp));
+    if (samplers.size() < 2) return;
+    const RelMseTime r = RelMseTimesSeconds(ref, chunks);
+    rep.Set(key + "_relmse_seconds", r.product);
+    rep.Set(key + "_relmse_seconds_rel_se", r.relativeSe);
   };
   for (const SamplerScene& s : samplers) {
     CpuRenderOptions opt;
@@ -463,7 +494,15 @@ int Quality(const Options& o, unsigned threads) {
   }
   for (const std::string b : {"cpu", "gpu"}) {
     std::optional<double> p = rep.Get(b + "_power_seconds_to_quality"), t = rep.Get(b + "_tree_seconds_to_quality");
-    if (samplers.size() > 1) rep.Set(b + "_tree_vs_power", p && t ? std::optional<double>(*t / *p) : std::nullopt);
+    if (samplers.size() < 2) continue;
+    rep.Set(b + "_tree_vs_power", p && t ? std::optional<double>(*t / *p) : std::nullopt);
+    // relMSE at equal time, the power choice's over the tree's, and its standard error.
+    std::optional<double> pe = rep.Get(b + "_power_relmse_seconds"), te = rep.Get(b + "_tree_relmse_seconds");
+    if (!pe || !te) continue;
+    const double gain = *pe / *te;
+    rep.Set(b + "_tree_equal_time_gain", gain);
+    rep.Set(b + "_tree_equal_time_gain_se", gain * std::hypot(*rep.Get(b + "_power_relmse_seconds_rel_se"),
+                                                              *rep.Get(b + "_tree_relmse_seconds_rel_se")));
   }
   if (o.json) {
     PrintJson(rep);
@@ -482,6 +521,13 @@ int Quality(const Options& o, unsigned threads) {
       if (s.name == "tree" && ratio) std::printf("   %.2fx the power choice's time", *ratio);
       std::printf("\n");
     }
+    const std::optional<double> gain = rep.Get(backend + "_tree_equal_time_gain");
+    if (gain)
+      std::printf(
+          "  %s relMSE at equal time: the power choice's is %.2fx the tree's (+-%.2f; means of %u renders of "
+          "%u spp)\n",
+          backend == "cpu" ? "CPU" : "GPU", *gain, *rep.Get(backend + "_tree_equal_time_gain_se"), kRelMseRenders,
+          kRelMseSpp);
   }
   return 0;
 }
