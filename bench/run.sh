@@ -96,7 +96,12 @@ QUALITY
 estimated relMSE 1.9e-4; `build/vkpt --scene scenes/many_lights.gltf --backend cpu
 --light-sampler tree --spp 8192 --width 128 --height 96 --seed 4242 --out
 bench/data/many-lights-ref-8k.pfm`, ≈ 8 minutes).
-relMSE falls as 1/time, so the ratio of times is that of relMSE at equal time, inverted.
+"relMSE at equal time" multiplies the mean relMSE of 8 independent renders of 32 spp by
+their mean time, for each light sampler: an unbiased render's expected relMSE falls as
+1/time, so the ratio of the products is that of relMSE at equal time. The first crossing
+of a threshold (the times above) comes early for the noisier estimator, which makes it
+the weaker measure of the two; the ± is the standard error from the renders' relMSE
+spread, not from the machine's timing drift (run to run, ±10 %).
 
 ```
 MANY

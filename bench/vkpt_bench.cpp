@@ -524,7 +524,7 @@ int Quality(const Options& o, unsigned threads) {
     const std::optional<double> gain = rep.Get(backend + "_tree_equal_time_gain");
     if (gain)
       std::printf(
-          "  %s relMSE at equal time: the power choice's is %.2fx the tree's (+-%.2f; means of %u renders of "
+          "  %s relMSE at equal time: the power choice's is %.2fx the tree's (+-%.2g; means of %u renders of "
           "%u spp)\n",
           backend == "cpu" ? "CPU" : "GPU", *gain, *rep.Get(backend + "_tree_equal_time_gain_se"), kRelMseRenders,
           kRelMseSpp);
