@@ -56,8 +56,8 @@ struct Options {
   bool json = false;
   bool markdown = false;  // one row of bench/README.md's table
   std::string quality;    // --quality REF.pfm: time to reach relMSE <= target
-  double target = 1.2e-3;  // --target X: the relMSE --quality waits for
-  std::string writeGlb;   // --write-glb FILE: the procedural scene as a glTF, no benchmark
+  double target = 1.2e-3;         // --target X: the relMSE --quality waits for
+  std::string writeGlb;           // --write-glb FILE: the procedural scene as a glTF, no benchmark
   std::string splits = "object";  // --splits: the builder as compared with Embree's
   uint32_t leafSize = BvhBuildOptions{}.maxLeafSize;
   float traversalCost = BvhBuildOptions{}.traversalCost;  // SAH cost of a node visit

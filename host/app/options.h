@@ -71,7 +71,7 @@ struct Options {
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;  // --splits
   LightSampler lightSampler = LightSampler::kAuto;  // --light-sampler
-  bool textureLod = true;               // --texture-lod cones (true) or none
+  bool textureLod = true;                           // --texture-lod cones (true) or none
   LoadLimits load;                      // --max-memory, --allow-external-uris
   std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)
   std::vector<Aov> aovs;                // --aov: written with the image (session/aov.h), in the order given

@@ -11,7 +11,7 @@
 #include "util/graceful_stop.h"
 
 namespace vkpt {
-using CliBackend = Backend;  // vkpt::Backend is ambiguous once api::Backend exists
+using CliBackend = Backend;            // vkpt::Backend is ambiguous once api::Backend exists
 using CliLightSampler = LightSampler;  // likewise
 }  // namespace vkpt
 
