@@ -552,7 +552,8 @@ void MeasureBuild(const Scene& scene, const RenderScene& rs, const BvhBuildOptio
   rep.Set("build_mtris_per_s_1t", tris / buildMs1 * 1e-3);
   rep.Set("sah_cost", rs.bvhStats.sahCost);
   rep.Set("nodes", rs.bvhStats.nodes);
-  rep.Set("gpu_bytes_per_tri", (rs.triangles.size() * sizeof(shader::Triangle) + rs.nodes.size() * sizeof(shader::BvhNode)) / tris);
+  rep.Set("gpu_bytes_per_tri",
+          (rs.triangles.size() * sizeof(shader::Triangle) + rs.gpuNodes.size() * sizeof(shader::WideBvhNode)) / tris);
 }
 
 // Full path tracing: 256×256 × 16 spp (background 1 if the scene has no lights).

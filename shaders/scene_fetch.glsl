@@ -33,14 +33,15 @@ layout(binding = kBindingTexelDecode) uniform usamplerBuffer texelDecodeTexels;
 layout(binding = kBindingEnvRadiance) uniform usamplerBuffer envRadianceTexels;
 layout(binding = kBindingEnvDistribution) uniform usamplerBuffer envDistributionTexels;
 
-BvhNode FetchNode(uint i) {
-  uvec4 a = texelFetch(nodeTexels, int(kTexelsPerNode * i));
-  uvec4 b = texelFetch(nodeTexels, int(kTexelsPerNode * i + 1u));
-  BvhNode n;
-  n.lo = uintBitsToFloat(a.xyz);
-  n.skip = a.w;
-  n.hi = uintBitsToFloat(b.xyz);
-  n.leaf = b.w;
+WideBvhNode FetchWideNode(uint i) {
+  int t = int(kTexelsPerWideNode * i);
+  uvec4 a = texelFetch(nodeTexels, t);
+  WideBvhNode n;
+  n.origin = uintBitsToFloat(a.xyz);
+  n.exponents = a.w;
+  n.lo = texelFetch(nodeTexels, t + 1);
+  n.hi = texelFetch(nodeTexels, t + 2);
+  n.child = texelFetch(nodeTexels, t + 3);
   return n;
 }
 

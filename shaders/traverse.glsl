@@ -1,11 +1,18 @@
-// Stackless BVH traversal for GLSL, over the depth-first skip-link layout (Smits 1998,
-// "Efficiency Issues for Ray Tracing"). The including shader enables
+// Stackless walk of a four-wide BVH for GLSL (shader::WideBvhNode, built by
+// host/bvh/quantized_layout.cpp). The including shader enables
 // GL_KHR_shader_subgroup_basic and GL_KHR_shader_subgroup_arithmetic; the scene comes
 // from scene_fetch.glsl.
 //
-// A node whose box is hit before the closest hit so far is entered by stepping to the
-// next node; a missed box or a finished leaf jumps to its skip link. No stack: no
-// per-invocation memory and no divergence in stack depth between SIMD lanes.
+// A visit fetches one node (four texels) and tests its four children's quantised boxes
+// (Ylitie et al. 2017, "Efficient Incoherent Ray Traversal on GPUs Through Compressed
+// Wide BVHs"). The leaves hit are queued for the triangle loop; the walk descends to the
+// nearest inner child hit and keeps the others on a short stack in registers (four
+// entries, no per-invocation memory); when that overflows, the walk falls back on
+// parent links, as the stackless multi-BVH traversal of Áfra and Szirmay-Kalos 2014
+// ("Stackless Multi-BVH Traversal for CPU, MIC and GPU Ray Tracing") does throughout:
+// back at a parent, it tests the children again and goes on after the one it came from.
+// Each of the (up to) eight copies of the tree holds every node's children near first
+// for one octant of ray directions, so "after" needs no sorting in the shader.
 //
 // The loops count their passes: lavapipe (Mesa's gallivm) silently ends any shader after
 // 65535 loop passes in total, counted per SIMD group, so pathtrace.comp must know how many
@@ -17,7 +24,7 @@
 #include "scene_fetch.glsl"
 
 // Set by the including shader's main(): nodes per copy of the tree, and the number of
-// copies (1, or 8 ordered near-first for each octant of ray directions).
+// copies (1, or 8 with each node's children near first for one octant of directions).
 uint gNodeCount = 0u;
 uint gNodeCopies = 1u;
 
@@ -46,7 +53,7 @@ void CountPasses(uint passes) {
 }
 
 // Boxes this lane has tested, for the heat map AOV (aov.comp), in shaders that define
-// VKPT_COUNT_BOX_TESTS: one per node visited.
+// VKPT_COUNT_BOX_TESTS: four per node visited.
 #ifdef VKPT_COUNT_BOX_TESTS
 uint gBoxTests = 0u;
 #endif
@@ -57,35 +64,93 @@ void CountNestedPass(uint nodeSteps, uint triangleSteps) {
   CountPasses(1u + max(subgroupMax(nodeSteps), 1u) + max(subgroupMax(triangleSteps), 1u));
 }
 
-// One step of the walk at node i: a missed box (or one beyond tMax) jumps to its skip
-// link, an inner node descends to its first child, a leaf queues its triangles [k, end)
-// and moves on to its skip link.
-void VisitNode(vec3 origin, vec3 invDir, float tMax, inout uint i, inout uint k, inout uint end) {
-  BvhNode node = FetchNode(i);
-  if (IntersectBox(node.lo, node.hi, origin, invDir, tMax) < 0.0f) {
-    i = node.skip;
-  } else if (node.leaf == 0u) {
-    i = i + 1u;
-  } else {
-    k = node.leaf >> 4u;
-    end = k + (node.leaf & 15u);
-    i = node.skip;
-  }
+uint Component(uvec4 v, uint k) { return k == 0u ? v.x : k == 1u ? v.y : k == 2u ? v.z : v.w; }
+
+// Child k's planes along one axis (byte k of the word), as floats.
+vec4 ChildPlanes(uint word) { return vec4((uvec4(word) >> uvec4(0u, 8u, 16u, 24u)) & 0xFFu); }
+
+vec4 MinNotNaN4(vec4 a, vec4 b) { return mix(a, b, lessThan(b, a)); }
+vec4 MaxNotNaN4(vec4 a, vec4 b) { return mix(a, b, lessThan(a, b)); }
+
+// Bit k set: the ray enters child k's box before tMax. IntersectBox (shared/intersect.h)
+// for the four children at once, on each plane origin + cell · q exactly as the host's
+// ChildBox computes it (the box its tests check contains the subtree); the plane a ray
+// enters by is the lower one where its direction is positive, which is what
+// IntersectBox's minimum picks for a box with lo ≤ hi.
+uint HitSlots(WideBvhNode node, vec3 origin, vec3 invDir, float tMax) {
+  vec3 cell = uintBitsToFloat(((uvec3(node.exponents) >> uvec3(0u, 8u, 16u)) & 0xFFu) << 23u);
+  bvec3 negative = lessThan(invDir, vec3(0.0f));
+  uvec3 nearWords = mix(node.lo.xyz, node.hi.xyz, negative);
+  uvec3 farWords = mix(node.hi.xyz, node.lo.xyz, negative);
+  vec4 nearX = (node.origin.x + cell.x * ChildPlanes(nearWords.x) - origin.x) * invDir.x;
+  vec4 nearY = (node.origin.y + cell.y * ChildPlanes(nearWords.y) - origin.y) * invDir.y;
+  vec4 nearZ = (node.origin.z + cell.z * ChildPlanes(nearWords.z) - origin.z) * invDir.z;
+  vec4 farX = (node.origin.x + cell.x * ChildPlanes(farWords.x) - origin.x) * invDir.x;
+  vec4 farY = (node.origin.y + cell.y * ChildPlanes(farWords.y) - origin.y) * invDir.y;
+  vec4 farZ = (node.origin.z + cell.z * ChildPlanes(farWords.z) - origin.z) * invDir.z;
+  vec4 enter = MaxNotNaN4(MaxNotNaN4(nearX, nearY), MaxNotNaN4(nearZ, vec4(0.0f)));
+  vec4 exit = MinNotNaN4(MinNotNaN4(farX, farY), MinNotNaN4(farZ, vec4(tMax))) * 1.0000004f;
+  uvec4 hit = uvec4(lessThanEqual(enter, exit)) * uvec4(notEqual(node.child, uvec4(0u)));
+  return hit.x | (hit.y << 1u) | (hit.z << 2u) | (hit.w << 3u);
 }
 
-// Visits nodes until a leaf's triangles are queued in [k, end) or the walk is over;
-// returns this lane's number of visits (passes of the loop).
-uint WalkToLeaf(vec3 origin, vec3 invDir, float tMax, inout uint i, inout uint k, inout uint end) {
-  uint steps = 0u;
-  bool walking = k >= end && i != kInvalidIndex;
-  do {  // not while: see gLoopIterations
-    if (walking) {
-      ++steps;
-      VisitNode(origin, invDir, tMax, i, k, end);
-    }
-    walking = k >= end && i != kInvalidIndex;
-  } while (walking);
-  return steps;
+// The walk's `fromSlot` when it arrives at a node from above, rather than back from the
+// child in that slot.
+const uint kFirstVisit = 4u;
+
+// Inner children hit but not yet entered, nearest on top (x), in registers: four deep.
+// A push onto a full stack drops the bottom entry and sets `dropped`; the walk then
+// climbs by parent links once the stack runs out, testing each ancestor's children again
+// and going on after the child it came from, which finds exactly the children dropped
+// (children are entered in the ray's order, a subtree finished before its next sibling).
+struct ShortStack {
+  uvec4 entries;
+  uint size;
+  bool dropped;
+};
+
+void PushNode(inout ShortStack s, uint node) {
+  s.dropped = s.dropped || s.size == 4u;
+  s.size = min(s.size + 1u, 4u);
+  s.entries = uvec4(node, s.entries.xyz);
+}
+
+// One step of the walk at node n, arriving from above or back from its child in
+// `fromSlot`. Its children's boxes are tested; on the first visit the leaves hit are
+// queued (leafSlots, with the node's child codes); then the walk descends to the nearest
+// inner child hit (after fromSlot), pushing the others, or else pops the stack, or climbs
+// to the parent if entries were dropped, or ends.
+void VisitNode(vec3 origin, vec3 invDir, float tMax, inout uint n, inout uint fromSlot, inout ShortStack stack,
+               inout uvec4 leafCodes, inout uint leafSlots) {
+  WideBvhNode node = FetchWideNode(n);
+  uint hits = HitSlots(node, origin, invDir, tMax);
+  uvec4 isLeaf = uvec4(notEqual(node.child & 15u, uvec4(0u)));
+  uint leaves = isLeaf.x | (isLeaf.y << 1u) | (isLeaf.z << 2u) | (isLeaf.w << 3u);
+  uint inner = hits & ~leaves;
+  if (fromSlot == kFirstVisit) {
+    leafSlots = hits & leaves;
+    leafCodes = node.child;
+  } else {
+    inner &= ~((2u << fromSlot) - 1u);
+  }
+  if (inner != 0u) {
+    uint nearest = uint(findLSB(inner));
+    if ((inner & 8u) != 0u && nearest < 3u) PushNode(stack, node.child.w >> 4u);
+    if ((inner & 4u) != 0u && nearest < 2u) PushNode(stack, node.child.z >> 4u);
+    if ((inner & 2u) != 0u && nearest < 1u) PushNode(stack, node.child.y >> 4u);
+    n = Component(node.child, nearest) >> 4u;
+    fromSlot = kFirstVisit;
+  } else if (stack.size > 0u) {
+    n = stack.entries.x;
+    stack.entries = uvec4(stack.entries.yzw, 0u);
+    --stack.size;
+    fromSlot = kFirstVisit;
+  } else if (stack.dropped) {
+    fromSlot = (node.exponents >> 24u) & 3u;
+    n = node.lo.w;
+  } else {
+    n = kInvalidIndex;
+  }
 }
 
 // Alpha (shared/alpha.h): a shader that defines VKPT_ALPHA (pathtrace.comp, as a
@@ -111,22 +176,43 @@ HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, uint alphaKey
   hit.b2 = 0.0f;
   hit.triangle = kInvalidIndex;
   vec3 invDir = SafeInverse(dir);
-  uint i = RootFor(dir);  // next node
+  uint n = RootFor(dir);  // the node to visit next
+  uint fromSlot = kFirstVisit;
+  ShortStack stack;
+  stack.entries = uvec4(0u);
+  stack.size = 0u;
+  stack.dropped = false;
+  uvec4 leafCodes = uvec4(0u);  // the child codes of the node whose leaves are queued
+  uint leafSlots = 0u;          // the slots of its leaves still to test
   uint k = 0u;      // next triangle of the current leaf
   uint end = 0u;    // one past the current leaf's last triangle
-  // Nodes are walked until a leaf (or the end), then its triangles are tested, in two
-  // inner loops: on SIMD hardware one merged loop pays for both the box test and the
-  // triangle test on every pass in which lanes disagree ("while-while" in Aila and Laine
-  // 2009, "Understanding the Efficiency of Ray Traversal on GPUs").
+  // Nodes are walked until some leaves are queued (or the end), then their triangles are
+  // tested, in two inner loops: on SIMD hardware one merged loop pays for both the box
+  // tests and the triangle test on every pass in which lanes disagree ("while-while" in
+  // Aila and Laine 2009, "Understanding the Efficiency of Ray Traversal on GPUs").
   do {
-    uint nodeSteps = WalkToLeaf(origin, invDir, tMax, i, k, end);
+    uint nodeSteps = 0u;
+    bool walking = n != kInvalidIndex;
+    do {  // not while: see gLoopIterations
+      if (walking) {
+        ++nodeSteps;
+        VisitNode(origin, invDir, tMax, n, fromSlot, stack, leafCodes, leafSlots);
+      }
+      walking = leafSlots == 0u && n != kInvalidIndex;
+    } while (walking);
 #ifdef VKPT_COUNT_BOX_TESTS
-    gBoxTests += nodeSteps;
+    gBoxTests += 4u * nodeSteps;
 #endif
     uint triangleSteps = 0u;
-    bool testing = k < end;
+    bool testing = leafSlots != 0u;
     do {
       if (testing) {
+        if (k >= end) {
+          uint code = Component(leafCodes, uint(findLSB(leafSlots)));
+          leafSlots &= leafSlots - 1u;
+          k = code >> 4u;
+          end = k + (code & 15u);
+        }
         ++triangleSteps;
         Triangle t = FetchTriangle(k);
         vec3 r = IntersectTriangle(t.v0, t.e1, t.e2, origin, dir, tMax);
@@ -136,17 +222,18 @@ HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, uint alphaKey
           hit.b1 = r.y;
           hit.b2 = r.z;
           hit.triangle = k;
-          if (anyHit) {  // ends both loops
-            i = kInvalidIndex;
+          if (anyHit) {  // ends all three loops
+            n = kInvalidIndex;
+            leafSlots = 0u;
             end = k;
           }
         }
         ++k;
       }
-      testing = k < end;
+      testing = k < end || leafSlots != 0u;
     } while (testing);
     CountNestedPass(nodeSteps, triangleSteps);
-  } while (k < end || i != kInvalidIndex);  // every walk starts at a root: ≥ 1 pass each
+  } while (n != kInvalidIndex);  // every walk starts at the root: ≥ 1 pass each
   return hit;
 }
 

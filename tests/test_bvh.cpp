@@ -9,6 +9,7 @@
 #include "bvh/bvh.h"
 #include "cpu/traversal.h"
 #include "procedural.h"
+#include "quantized_layout_check.h"
 #include "render/render_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared/estimator.h"
@@ -189,6 +190,7 @@ void CheckInvariants(const RenderScene& rs, const std::vector<SceneTriangle>& in
     }
   }
   CheckWideLayout(rs, spatial);
+  test::CheckQuantizedLayout(rs, spatial);
 }
 
 // What CheckWideLayout reports about `rs`: its failure messages, joined.

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "bvh/bvh.h"
+#include "bvh/collapse.h"
 #include "util/bounds.h"
 #include "util/error.h"
 
@@ -29,35 +30,6 @@ uint32_t AddLeaf(uint32_t leaf, const std::vector<shader::Triangle>& triangles, 
     packets.push_back(p);
   }
   return code;
-}
-
-// Up to kBvhWidth binary nodes: the children a wide node takes.
-struct Children {
-  uint32_t node[kBvhWidth];
-  int count = 0;
-};
-
-Children ChildrenOf(std::span<const shader::BvhNode> nodes, uint32_t i) {
-  Children kids;
-  kids.node[0] = FirstChild(i);
-  kids.node[1] = SecondChild(nodes, i);
-  kids.count = 2;
-  while (kids.count < kBvhWidth) {
-    int widest = -1;
-    float widestArea = 0.0f;
-    for (int k = 0; k < kids.count; ++k) {
-      const shader::BvhNode& c = nodes[kids.node[k]];
-      const float area = Bounds3f{c.lo, c.hi}.SurfaceArea();
-      if (!IsLeaf(c) && (widest < 0 || area > widestArea)) widest = k, widestArea = area;
-    }
-    if (widest < 0) break;
-    const uint32_t n = kids.node[widest];
-    for (int k = kids.count; k > widest + 1; --k) kids.node[k] = kids.node[k - 1];
-    kids.node[widest] = FirstChild(n);
-    kids.node[widest + 1] = SecondChild(nodes, n);
-    ++kids.count;
-  }
-  return kids;
 }
 
 }  // namespace
@@ -88,7 +60,7 @@ BvhWideLayout BuildWideLayout(std::span<const shader::BvhNode> nodes, uint32_t n
     const uint32_t wide = uint32_t(layout.nodes.size());
     if (wide >= (1u << 28)) throw Error("BuildWideLayout: too many nodes for the 28-bit index");
     if (wide > 0) layout.nodes[e.parent].child[e.lane] = wide << 4;
-    const Children kids = ChildrenOf(nodes, e.binary);
+    const CollapsedChildren<kBvhWidth> kids = CollapseChildren<kBvhWidth>(nodes, e.binary);
     BvhWideNode node{};
     for (int axis = 0; axis < 3; ++axis)
       for (int k = 0; k < kBvhWidth; ++k) {

@@ -17,6 +17,8 @@ static_assert(offsetof(Triangle, e2) == 32 && offsetof(Triangle, light) == 44);
 static_assert(sizeof(BvhNode) == 32);
 static_assert(offsetof(BvhNode, lo) == 0 && offsetof(BvhNode, skip) == 12);
 static_assert(offsetof(BvhNode, hi) == 16 && offsetof(BvhNode, leaf) == 28);
+static_assert(sizeof(WideBvhNode) == 64 && offsetof(WideBvhNode, exponents) == 12);
+static_assert(offsetof(WideBvhNode, lo) == 16 && offsetof(WideBvhNode, hi) == 32 && offsetof(WideBvhNode, child) == 48);
 
 static_assert(sizeof(Material) == 160);
 static_assert(offsetof(Material, baseColor) == 0 && offsetof(Material, metallic) == 12);
@@ -56,7 +58,7 @@ static_assert(sizeof(TextureRef) == 16 * kTexelsPerTextureRef);
 static_assert(offsetof(TextureRef, m00) == 8 && offsetof(TextureRef, m12) == 28);
 
 static_assert(sizeof(RayQuery) == 32);
-static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(BvhNode) == 16 * kTexelsPerNode);
+static_assert(sizeof(Triangle) == 16 * kTexelsPerTriangle && sizeof(WideBvhNode) == 16 * kTexelsPerWideNode);
 static_assert(sizeof(Material) == 16 * kTexelsPerMaterial && sizeof(Light) == 16 * kTexelsPerLight);
 
 static_assert(offsetof(RayQuery, tMax) == 12 && offsetof(RayQuery, dir) == 16);

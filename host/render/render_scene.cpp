@@ -1,5 +1,7 @@
 #include "render/render_scene.h"
 
+#include "bvh/quantized_layout.h"
+
 #include <cmath>
 #include <utility>
 
@@ -236,6 +238,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   rs.textureRefs = std::move(packed.textureRefs);
   rs.triangles = LeafOrderTriangles(scene, bvh.primOrder, in.kept);
   if (forCpu) rs.wideLayout = BuildWideLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
+  rs.gpuNodes = BuildQuantizedLayout(rs.nodes, bvh.stats.nodes, bvh.copies);
   AddTextures(scene, options.threads, rs);  // before the light table, which reads emissive textures
   BuildLightTable(scene, rs);
   rs.shading = TriangleShadings(scene, options.threads);
@@ -254,7 +257,7 @@ shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& came
   p.textureLod = 1u;
   for (uint32_t i = 0; i < scene.lights.size(); ++i)
     if (scene.lights[i].type == shader::kLightEnvironment) p.envLight = i;
-  p.nodeCount = scene.bvhStats.nodes;
+  p.nodeCount = uint32_t(scene.gpuNodes.size() / scene.nodeCopies);
   p.nodeCopies = scene.nodeCopies;
   p.origin = camera.position;
   p.forward = camera.forward;

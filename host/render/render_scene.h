@@ -1,5 +1,6 @@
 // What a renderer consumes: the Scene's triangles in BVH leaf order as shader::Triangle,
-// the BVH in two layouts (flattened skip links for the GPU, eight-wide nodes for the CPU),
+// the BVH in three layouts (the builder's flattened tree, eight-wide nodes for the CPU,
+// four-wide quantised nodes for the GPU),
 // materials, the light table for light sampling, per-triangle shading normals, vertex
 // colours and texture coordinates, and the textures. The
 // shader-layout vectors are uploaded verbatim by the Vulkan backend; the CPU reference
@@ -21,6 +22,8 @@ struct RenderScene {
   HugeVector<shader::BvhNode> nodes;  // nodeCopies copies of bvhStats.nodes nodes (see Bvh)
   uint32_t nodeCopies = 1;
   BvhWideLayout wideLayout;  // the first copy of `nodes`, for the CPU tracer (if asked for)
+  // From the first copy of `nodes`, nodeCopies copies for the GPU (bvh/quantized_layout.h).
+  std::vector<shader::WideBvhNode> gpuNodes;
   std::vector<shader::Material> materials;
   std::vector<shader::Light> lights;  // empty: the scene is dark (render/light_table.h)
   // Over lights [0, treeLights) when the scene chooses its finite lights by a tree

@@ -56,7 +56,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
                                                        : overrides.pathTraceSpirv),
       traceSpirv_(overrides.traceSpirv.empty() ? std::span<const uint32_t>(kTraceSpirv) : overrides.traceSpirv),
       triangles_(UploadSplitArray<shader::Triangle>(ctx, scene.triangles, "triangles", overrides.maxTexelsPerBuffer)),
-      nodes_(UploadArray<shader::BvhNode>(ctx, scene.nodes, "BVH nodes")),
+      nodes_(UploadArray<shader::WideBvhNode>(ctx, scene.gpuNodes, "BVH nodes")),
       materials_(UploadArray<shader::Material>(ctx, scene.materials, "materials")),
       lights_(UploadLights(ctx, scene)),
       albedoTables_(UploadArray<float>(ctx, shader::kAlbedoTables, "albedo tables")),
@@ -94,7 +94,7 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
           std::any_of(scene.materials.begin(), scene.materials.end(),
                       [](const shader::Material& m) { return (m.flags & shader::kMaterialExtensionTextured) != 0u; })),
       masksBranches_(ctx.Properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
-      nodeCount_(scene.bvhStats.nodes),
+      nodeCount_(uint32_t(scene.gpuNodes.size() / scene.nodeCopies)),
       nodeCopies_(scene.nodeCopies) {
   for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
 }

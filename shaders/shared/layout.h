@@ -107,7 +107,9 @@ struct Triangle {
   uint light;  // its entry in the Light table if it emits, else kInvalidIndex (for MIS)
 };
 
-// A flattened BVH node (32 bytes) in depth-first order with skip links.
+// A flattened BVH node (32 bytes) in depth-first order with skip links: the builder's
+// output, from which the host derives the CPU's eight-wide nodes and the GPU's
+// WideBvhNode; no shader reads it.
 //   skip: index of the node to visit when this node's box is missed or its leaf is
 //         done (kInvalidIndex: traversal ends). For an inner node the first child is
 //         the next node (index + 1) and the second child is nodes[index + 1].skip.
@@ -117,6 +119,23 @@ struct BvhNode {
   uint skip;
   vec3 hi;
   uint leaf;
+};
+
+// The GPU's node (64 bytes, four texels): up to four children's boxes quantised to 8
+// bits per plane against this node's grid (Ylitie et al. 2017, "Efficient Incoherent Ray
+// Traversal on GPUs Through Compressed Wide BVHs"), child k in byte k of each word.
+//   origin, exponents: the grid. Axis a's cell is 2^(byte a of exponents − 127); child
+//         k's box is origin + cell · (lo bytes k) to origin + cell · (hi bytes k), which
+//         contains its subtree's box exactly. Bits 24–25: this node's slot in its parent.
+//   lo.w: the parent node (kInvalidIndex for the root); hi.w: 0.
+//   child: (node index << 4) for an inner child, a leaf code as BvhNode::leaf, 0 for an
+//         unused slot (used slots come first, near first for the copy's octant).
+struct WideBvhNode {
+  vec3 origin;
+  uint exponents;
+  uvec4 lo;
+  uvec4 hi;
+  uvec4 child;
 };
 
 const uint kMaxLeafSize = 15u;
@@ -214,7 +233,7 @@ const uint kLightNodeTwoSided = 0x80000000u;
 // The shaders read the scene arrays above as RGBA32UI texels (shaders/scene_fetch.glsl):
 // 16 bytes each, so a struct's texel t holds its bytes [16t, 16t + 16).
 const uint kTexelsPerTriangle = 3u;
-const uint kTexelsPerNode = 2u;
+const uint kTexelsPerWideNode = 4u;
 const uint kTexelsPerMaterial = 10u;
 const uint kTexelsPerLight = 4u;
 const uint kTexelsPerLightNode = 3u;  // after the lights, in the same texel buffer
@@ -263,11 +282,11 @@ struct FrameParams {
   uint maxDepth;
   uint rrDepth;
   uint lightCount;
-  uint nodeCount;  // per copy
-  uint pad0;       // places background on the 16-byte boundary std430 gives a vec3
+  uint nodeCount;     // WideBvhNodes per copy
+  uint pad0;          // places background on the 16-byte boundary std430 gives a vec3
   vec3 background;    // radiance arriving from every direction no triangle blocks
   uint orthographic;  // 1: parallel rays; tanHalfFovY then holds the half view height
-  uint nodeCopies;    // 1, or 8 direction-ordered copies of the BVH (see bvh.h)
+  uint nodeCopies;    // 1, or 8 direction-ordered copies of the BVH (bvh/quantized_layout.h)
   uint tileRowStride; // GPU: workgroup row y renders tile row (y * stride) mod rows
   uint envLight;      // the environment map's entry in the light table, or kInvalidIndex
   uint textureLod;    // 1: mip levels chosen by ray cones (shared/ray_cone.h); 0: level 0 everywhere
