@@ -63,14 +63,14 @@ struct FlatInfo {
 
 // A BuildTree on its way to a Bvh (flatten.cpp), in two steps: the constructor walks the
 // tree for its statistics (the SAH cost among them) and for FlatInfo; Write() lays it
-// out as the flattened skip-link copies. A caller choosing between trees (SplitMode::
+// out as the flattened skip-link tree. A caller choosing between trees (SplitMode::
 // kAuto) thus writes only the one it keeps. Both steps run on up to `threads` threads
 // and give the same result for any count.
 class TreeLayout {
  public:
   TreeLayout(BuildTree tree, const BvhBuildOptions& options, unsigned threads);
   const BvhStats& Stats() const { return stats_; }
-  uint32_t Copies() const;  // flattened copies Write() makes: 8 while they fit, else 1
+  uint32_t Copies() const;  // the GPU's direction copies of this tree: 8 while they fit, else 1
   Bvh Write() const;
 
  private:

@@ -43,10 +43,12 @@ struct BvhBuildOptions {
   // therefore count a node visit as 4 triangle tests.
   float traversalCost = 4.0f;
   float intersectionCost = 1.0f;
-  // Eight copies of the flattened tree, one per ray-direction octant, each ordered
-  // near-child-first for its octant, so the stackless skip-link walk visits near
-  // subtrees first (fewer boxes behind an early hit). Only while all eight fit in
-  // maxCopiesBytes; else one copy.
+  // Eight copies of the GPU's wide tree (bvh/quantized_layout.h), one per ray-direction
+  // octant, each node's children near first for its octant, so that the shader's walk
+  // enters near subtrees first (fewer boxes behind an early hit). Only while eight
+  // copies of the flattened tree would fit maxCopiesBytes (the wide copies take a little
+  // less: 64-byte nodes, about 2.4 times fewer; the flattened tree's size is known
+  // before either layout is made, so SplitMode::kAuto can weigh it); else one copy.
   bool directionCopies = true;
   unsigned threads = 0;  // build threads; 0 = all cores. The tree is the same for any count.
   // Not a device limit (the nodes are a texel buffer, checked against
@@ -86,10 +88,10 @@ struct BvhStats {
 };
 
 struct Bvh {
-  // `copies` (1 or 8) flattened copies of the tree, stats.nodes nodes each; copy k starts
-  // at k * stats.nodes with its root. Depth first with absolute skip links.
+  // The flattened tree, stats.nodes nodes, depth first with absolute skip links, its root
+  // first and each inner node's children near first for directions of octant 0.
   HugeVector<shader::BvhNode> nodes;
-  uint32_t copies = 1;
+  uint32_t copies = 1;              // of the GPU's wide tree: 8 or 1 (BvhBuildOptions::directionCopies)
   std::vector<uint32_t> primOrder;  // leaf ranges index this: position → input primitive
                                     // (with spatial splits a primitive may appear more than once)
   BvhStats stats;

@@ -1,7 +1,6 @@
 // Lays out a BuildTree for the renderers (TreeLayout): subtree sizes and statistics by one
-// walk, then, when asked, the depth-first skip-link layout (see bvh.h), in eight
-// direction-ordered copies while they fit. Every step runs on all threads and gives the
-// same bytes for any count.
+// walk, then, when asked, the depth-first skip-link layout (see bvh.h). Every step runs
+// on all threads and gives the same bytes for any count.
 #include <algorithm>
 #include <utility>
 #include <vector>
@@ -65,20 +64,16 @@ class Flattener {
       for (uint32_t i = b; i < e; ++i) bvh.primOrder[i] = prims_[i].index;
     });
     bvh.copies = Copies(opt_, count);
-    bvh.nodes.resize(size_t(count) * bvh.copies);
-    // Copy 0's top levels are written here; below `spillBelow` nodes, subtrees are set
-    // aside and written by all threads (they fill disjoint ranges of bvh.nodes).
+    bvh.nodes.resize(count);
+    // The top levels are written here; below `spillBelow` nodes, subtrees are set aside
+    // and written by all threads (they fill disjoint ranges of bvh.nodes).
     const uint32_t spillBelow = threads > 1 ? std::max(4096u, count / (16 * threads)) : 0u;
     std::vector<FlatItem> spilled;
-    HugeVector<uint8_t> axis(bvh.copies > 1 ? count : 0);
-    FlattenSubtree(info, {0, 0, shader::kInvalidIndex}, spillBelow, spilled, axis, bvh);
+    FlattenSubtree(info, {0, 0, shader::kInvalidIndex}, spillBelow, spilled, bvh);
     ParallelFor(spilled.size(), threads, [&](size_t k) {
       std::vector<FlatItem> none;
-      FlattenSubtree(info, spilled[k], 0, none, axis, bvh);
+      FlattenSubtree(info, spilled[k], 0, none, bvh);
     });
-    // The other copies follow from copy 0, read in order from its compact array rather
-    // than from the build nodes spread over nodes_.
-    ParallelFor(bvh.copies - 1, threads, [&](size_t k) { DeriveCopy(uint32_t(k + 1), count, axis, bvh); });
     return bvh;
   }
 
@@ -145,48 +140,17 @@ class Flattener {
     return st;
   }
 
-  // Writes copy `octant` of the tree from copy 0 (octant 0, with each inner node's axis
-  // of child order in `axis`): a node's children are swapped where the octant's direction
-  // sign on that axis is negative. Skip links are absolute.
-  static void DeriveCopy(uint32_t octant, uint32_t count, const HugeVector<uint8_t>& axis, Bvh& bvh) {
-    const shader::BvhNode* from = bvh.nodes.data();
-    shader::BvhNode* to = bvh.nodes.data() + size_t(octant) * count;
-    const uint32_t base = octant * count, none = shader::kInvalidIndex;
-    struct Item {
-      uint32_t from, to, skip;  // skip: relative to the copy, or none
-    };
-    std::vector<Item> stack{{0, 0, none}};
-    while (!stack.empty()) {
-      const Item it = stack.back();
-      stack.pop_back();
-      const shader::BvhNode& n = from[it.from];
-      shader::BvhNode& out = to[it.to];
-      out = n;
-      out.skip = it.skip == none ? none : base + it.skip;
-      if (IsLeaf(n)) continue;
-      // Copy 0's children and their subtrees' sizes, from the skip links.
-      const uint32_t a = it.from + 1, b = from[a].skip, end = n.skip == none ? count : n.skip;
-      const bool swap = (octant >> axis[it.from]) & 1u;
-      const uint32_t first = swap ? b : a, second = swap ? a : b, firstSize = swap ? end - b : b - a;
-      const uint32_t secondTo = it.to + 1 + firstSize;
-      stack.push_back({second, secondTo, it.skip});
-      stack.push_back({first, it.to + 1, secondTo});
-    }
-  }
-
-  // A subtree of copy 0 to write: build node `node` goes to bvh.nodes[flat] with skip
-  // link `skip`.
+  // A subtree to write: build node `node` goes to bvh.nodes[flat] with skip link `skip`.
   struct FlatItem {
     uint32_t node, flat, skip;
   };
 
-  // Writes the subtree of `item` into copy 0 depth first, each inner node's children
-  // ordered near-first for rays with positive direction components (octant 0; DeriveCopy
-  // makes the others). Skip links are absolute. Subtrees of fewer than `spillBelow`
-  // nodes (below the item itself) go to `spilled` instead, to be written later. `axis`,
-  // unless empty, receives each inner node's axis of child order at its flat index.
+  // Writes the subtree of `item` depth first, each inner node's children ordered
+  // near-first for rays with positive direction components. Subtrees of fewer than
+  // `spillBelow` nodes (below the item itself) go to `spilled` instead, to be written
+  // later.
   void FlattenSubtree(const FlatInfo& info, FlatItem item, uint32_t spillBelow, std::vector<FlatItem>& spilled,
-                      HugeVector<uint8_t>& axis, Bvh& bvh) const {
+                      Bvh& bvh) const {
     const HugeVector<uint32_t>& size = info.size;
     std::vector<FlatItem> stack{item};
     while (!stack.empty()) {
@@ -206,7 +170,6 @@ class Flattener {
       uint32_t first = n.child, second = n.child + 1;
       const uint32_t near = info.near[it.node];
       if ((near >> 2) & 1u) std::swap(first, second);
-      if (!axis.empty()) axis[it.flat] = uint8_t(near & 3u);
       const uint32_t secondFlat = it.flat + 1 + size[first];
       for (const FlatItem& child : {FlatItem{second, secondFlat, it.skip}, FlatItem{first, it.flat + 1, secondFlat}})
         (size[child.node] < spillBelow ? spilled : stack).push_back(child);

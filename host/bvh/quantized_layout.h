@@ -2,7 +2,7 @@
 // of four children whose boxes are quantised to 8 bits per plane (Ylitie et al. 2017,
 // "Efficient Incoherent Ray Traversal on GPUs Through Compressed Wide BVHs"), each node
 // linked to its parent for the stackless walk of shaders/traverse.glsl. Derived from the
-// flattened tree (its first copy); the leaves index the same leaf-ordered triangles.
+// flattened tree; the leaves index the same leaf-ordered triangles.
 #pragma once
 
 #include <cstdint>
@@ -15,7 +15,7 @@ namespace vkpt {
 
 constexpr int kGpuBvhWidth = 4;
 
-// From `nodeCount` flattened nodes starting at nodes[0] (one copy of the tree), `copies`
+// From the `nodeCount` flattened nodes starting at nodes[0], `copies`
 // (1 or 8) copies of the wide tree, equal but for the order of each node's children:
 // copy o holds them near first for rays of octant o (bit 0: x < 0, bit 1: y < 0, bit 2:
 // z < 0), so that the walk enters them in slot order; a single copy takes octant 0's.

@@ -2,7 +2,7 @@
 // children (Embree's BVH8; Wald et al. 2008, "Getting Rid of Packets"), each node holding
 // its children's boxes axis by axis so that one ray tests all eight with one 8-wide AVX
 // step (or two 4-wide ones), and each leaf's triangles in packets of four, coordinates
-// lane by lane, tested together. Derived from the flattened skip-link tree (first copy)
+// lane by lane, tested together. Derived from the flattened skip-link tree
 // and the leaf-ordered triangles, which stay what the GPU reads; the builder knows
 // neither layout.
 #pragma once
@@ -48,11 +48,8 @@ struct BvhWideLayout {
   uint32_t rootLeaf = 0;  // the root's leaf code when the whole tree is one leaf, else 0
 };
 
-// From `nodeCount` flattened nodes starting at nodes[0] (one copy of the tree) and the
-// triangles their leaves index. An inner node takes its binary children and, while it
-// has fewer than kBvhWidth and one of them is inner, replaces the inner child of the
-// largest surface area by that child's two children: the nodes a ray is likeliest to
-// enter are the ones merged away (Wald et al. 2008; Embree's collapse).
+// From `nodeCount` flattened nodes starting at nodes[0] and the triangles their leaves
+// index, each inner node collapsed as bvh/collapse.h does.
 BvhWideLayout BuildWideLayout(std::span<const shader::BvhNode> nodes, uint32_t nodeCount,
                               const std::vector<shader::Triangle>& triangles);
 

@@ -32,15 +32,15 @@ std::unique_ptr<vk::Context> OpenDevice(const SceneSettings& s, const EngineLog&
 }
 
 // The BVH and the renderers' arrays, with the environment map. `gpu`: a Vulkan device will
-// render, so the shader's direction-ordered copies of the tree are built; the CPU's layout
-// only where the CPU renders (no device, or a comparison).
+// render, so the shader's layout of the tree is built, in direction-ordered copies; the
+// CPU's layout only where the CPU renders (no device, or a comparison).
 RenderScene BuildArrays(const Scene& scene, const SceneSettings& s, bool gpu, EnvironmentMap env) {
   BvhBuildOptions bvhOptions;
   bvhOptions.maxLeafSize = s.leafSize;
   bvhOptions.splits = s.splits;
   bvhOptions.threads = s.threads;
   bvhOptions.directionCopies = gpu;
-  RenderScene rs = PrepareRenderScene(scene, bvhOptions, !gpu || s.compare);
+  RenderScene rs = PrepareRenderScene(scene, bvhOptions, !gpu || s.compare, gpu);
   rs.environment = std::move(env);
   if (rs.environment.width > 0) AddEnvironmentLight(rs, s.envIntensity);
   ChooseLightSampler(rs, s.lightSampler);  // after the environment, which joins the table last

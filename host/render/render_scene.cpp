@@ -223,7 +223,7 @@ bool HasLightSources(const RenderScene& scene) {
   return false;
 }
 
-RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu) {
+RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options, bool forCpu, bool forGpu) {
   BuildInput in = CollectBuildInput(scene, options);
   if (in.kept.empty()) throw Error(scene.path + ": every triangle of the scene is degenerate (zero area)");
   Bvh bvh = BuildBvh(in.bounds, options, in.vertices);
@@ -238,7 +238,7 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   rs.textureRefs = std::move(packed.textureRefs);
   rs.triangles = LeafOrderTriangles(scene, bvh.primOrder, in.kept);
   if (forCpu) rs.wideLayout = BuildWideLayout(rs.nodes, bvh.stats.nodes, rs.triangles);
-  rs.gpuNodes = BuildQuantizedLayout(rs.nodes, bvh.stats.nodes, bvh.copies);
+  if (forGpu) rs.gpuNodes = BuildQuantizedLayout(rs.nodes, bvh.stats.nodes, bvh.copies);
   AddTextures(scene, options.threads, rs);  // before the light table, which reads emissive textures
   BuildLightTable(scene, rs);
   rs.shading = TriangleShadings(scene, options.threads);

@@ -19,10 +19,10 @@ namespace vkpt {
 
 struct RenderScene {
   std::vector<shader::Triangle> triangles;  // BVH leaf order
-  HugeVector<shader::BvhNode> nodes;  // nodeCopies copies of bvhStats.nodes nodes (see Bvh)
-  uint32_t nodeCopies = 1;
-  BvhWideLayout wideLayout;  // the first copy of `nodes`, for the CPU tracer (if asked for)
-  // From the first copy of `nodes`, nodeCopies copies for the GPU (bvh/quantized_layout.h).
+  HugeVector<shader::BvhNode> nodes;        // the flattened tree, bvhStats.nodes nodes (see Bvh)
+  uint32_t nodeCopies = 1;                  // of gpuNodes: 8 direction-ordered ones, or 1
+  BvhWideLayout wideLayout;                 // from `nodes`, for the CPU tracer (if asked for)
+  // From `nodes`, nodeCopies copies for the GPU (bvh/quantized_layout.h).
   std::vector<shader::WideBvhNode> gpuNodes;
   std::vector<shader::Material> materials;
   std::vector<shader::Light> lights;  // empty: the scene is dark (render/light_table.h)
@@ -82,9 +82,11 @@ bool UsesDispersion(const RenderScene& scene);
 // nothing without a light).
 bool HasLightSources(const RenderScene& scene);
 
-// `forCpu`: also lay the tree out for the CPU tracer (wideLayout). A render on the GPU alone
-// skips it: on a large scene it costs time and memory that nothing would read.
-RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {}, bool forCpu = true);
+// `forCpu`: lay the tree out for the CPU tracer (wideLayout); `forGpu`: for the shader
+// (gpuNodes). A render on one backend skips the other's: on a large scene it costs time
+// and memory that nothing would read.
+RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {}, bool forCpu = true,
+                               bool forGpu = true);
 
 // The frame constants for a scene, camera and image size; seed, sample range, depths and
 // background are left 0 for the caller, the environment map unturned at intensity 1,
