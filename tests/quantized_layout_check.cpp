@@ -9,15 +9,16 @@
 #include "util/bounds.h"
 
 namespace vkpt::test {
-namespace {
 
-Bounds3f TriangleBox(const shader::Triangle& t) {
+Bounds3f TriangleBounds(const shader::Triangle& t) {
   Bounds3f b;
   b.Extend(t.v0);
   b.Extend(t.v0 + t.e1);
   b.Extend(t.v0 + t.e2);
   return b;
 }
+
+namespace {
 
 Bounds3f Box(const QuantizedBox& q) { return Bounds3f{q.lo, q.hi}; }
 
@@ -56,7 +57,7 @@ struct Walk {
         }
         for (uint32_t t = first; t < end; ++t) {
           ++inLeaves[t];
-          const Bounds3f tb = TriangleBox(rs.triangles[t]);
+          const Bounds3f tb = TriangleBounds(rs.triangles[t]);
           if (spatial) EXPECT_FALSE(Intersection(box, tb).Empty()) << "triangle " << t << " misses its leaf's box";
           else content.Extend(tb);
         }

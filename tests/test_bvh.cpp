@@ -54,14 +54,6 @@ std::pair<std::vector<Bounds3f>, std::vector<glm::vec3>> BuildInput(const std::v
   return in;
 }
 
-Bounds3f TriBounds(const shader::Triangle& t) {
-  Bounds3f b;
-  b.Extend(t.v0);
-  b.Extend(t.v0 + t.e1);
-  b.Extend(t.v0 + t.e2);
-  return b;
-}
-
 // Checks every structural invariant of the flattened layout; returns the subtree end.
 // With spatial splits a leaf holds only part of a triangle, so its box need only meet
 // the triangle's.
@@ -74,7 +66,7 @@ uint32_t CheckSubtree(const RenderScene& rs, uint32_t i, uint32_t skip, uint32_t
     EXPECT_GE(LeafCount(n), 1u);
     EXPECT_LE(LeafCount(n), maxLeaf);
     for (uint32_t k = LeafFirst(n); k < LeafFirst(n) + LeafCount(n); ++k) {
-      Bounds3f t = TriBounds(rs.triangles[k]);
+      Bounds3f t = test::TriangleBounds(rs.triangles[k]);
       if (spatial)
         EXPECT_FALSE((Bounds3f{glm::max(box.lo, t.lo), glm::min(box.hi, t.hi)}.Empty())) << "leaf " << i << " triangle " << k;
       else
@@ -117,7 +109,7 @@ void CheckWideLayout(const RenderScene& rs, bool spatial) {
       const shader::Triangle& t = rs.triangles[i];
       for (int axis = 0; axis < 3; ++axis)
         EXPECT_TRUE(p.v0[axis][lane] == t.v0[axis] && p.e1[axis][lane] == t.e1[axis] && p.e2[axis][lane] == t.e2[axis]);
-      const Bounds3f tb = TriBounds(t);
+      const Bounds3f tb = test::TriangleBounds(t);
       if (box.Empty()) continue;  // the root leaf: no box
       if (spatial) EXPECT_FALSE((Bounds3f{glm::max(box.lo, tb.lo), glm::min(box.hi, tb.hi)}.Empty()));
       else EXPECT_TRUE(box.Contains(tb));

@@ -41,12 +41,8 @@ void ExpectLeafBoxesTight(const RenderScene& rs) {
       if (code == 0u || (code & 15u) == 0u) continue;
       ++leaves;
       Bounds3f tight;
-      for (uint32_t t = code >> 4; t < (code >> 4) + (code & 15u); ++t) {
-        const shader::Triangle& tri = rs.triangles[t];
-        tight.Extend(tri.v0);
-        tight.Extend(tri.v0 + tri.e1);
-        tight.Extend(tri.v0 + tri.e2);
-      }
+      for (uint32_t t = code >> 4; t < (code >> 4) + (code & 15u); ++t)
+        tight.Extend(test::TriangleBounds(rs.triangles[t]));
       const QuantizedBox box = ChildBox(n, k);
       for (int axis = 0; axis < 3; ++axis) {
         ASSERT_LE(box.lo[axis], tight.lo[axis]);
