@@ -46,8 +46,8 @@ struct BvhBuildOptions {
   // Eight copies of the GPU's wide tree (bvh/quantized_layout.h), one per ray-direction
   // octant, each node's children near first for its octant, so that the shader's walk
   // enters near subtrees first (fewer boxes behind an early hit). Only while eight
-  // copies of the flattened tree would fit maxCopiesBytes (the wide copies take a little
-  // less: 64-byte nodes, about 2.4 times fewer; the flattened tree's size is known
+  // copies of the flattened tree would fit maxCopiesBytes (the wide copies take about
+  // half that: 64-byte nodes, about four times fewer; the flattened tree's size is known
   // before either layout is made, so SplitMode::kAuto can weigh it); else one copy.
   bool directionCopies = true;
   unsigned threads = 0;  // build threads; 0 = all cores. The tree is the same for any count.
