@@ -129,25 +129,26 @@ std::vector<shader::WideBvhNode> BuildQuantizedLayout(std::span<const shader::Bv
   // Copy o: every node's children in octant o's order (for one copy, octant 0's).
   const uint32_t count = uint32_t(shape.size());
   std::vector<shader::WideBvhNode> out(size_t(count) * copies);
-  std::vector<uint8_t> rankOf(size_t(count) * kGpuBvhWidth);  // canonical slot → slot in this copy
+  // rankOf: each node's canonical slot → its slot in this copy. Parents come before their
+  // children, so a child finds its parent's entry set.
+  std::vector<uint8_t> rankOf(size_t(count) * kGpuBvhWidth);
   for (uint32_t o = 0; o < copies; ++o) {
     const uint32_t base = o * count;
     for (uint32_t i = 0; i < count; ++i) {
       const Shape& s = shape[i];
-      Bounds3f boxes[kGpuBvhWidth];
-      for (int k = 0; k < s.kids.count; ++k) boxes[k] = Bounds3f{nodes[s.kids.node[k]].lo, nodes[s.kids.node[k]].hi};
+      Bounds3f canonical[kGpuBvhWidth];
+      for (int k = 0; k < s.kids.count; ++k)
+        canonical[k] = Bounds3f{nodes[s.kids.node[k]].lo, nodes[s.kids.node[k]].hi};
       int slots[kGpuBvhWidth];
-      NearFirst(boxes, s.kids.count, o, slots);
-      for (int r = 0; r < kGpuBvhWidth; ++r) rankOf[size_t(i) * kGpuBvhWidth + slots[r]] = uint8_t(r);
-    }
-    for (uint32_t i = 0; i < count; ++i) {
-      const Shape& s = shape[i];
+      NearFirst(canonical, s.kids.count, o, slots);
       Bounds3f boxes[kGpuBvhWidth];
       uint32_t codes[kGpuBvhWidth] = {};
-      for (int k = 0; k < s.kids.count; ++k) {
+      for (int r = 0; r < kGpuBvhWidth; ++r) {
+        const int k = slots[r];
+        rankOf[size_t(i) * kGpuBvhWidth + k] = uint8_t(r);
+        if (k >= s.kids.count) continue;
         const shader::BvhNode& c = nodes[s.kids.node[k]];
-        const int r = rankOf[size_t(i) * kGpuBvhWidth + k];
-        boxes[r] = Bounds3f{c.lo, c.hi};
+        boxes[r] = canonical[k];
         codes[r] = IsLeaf(c) ? c.leaf : (base + s.inner[k]) << 4;
       }
       const bool root = s.parent == shader::kInvalidIndex;
