@@ -44,7 +44,7 @@ bash bench/run.sh                                           # regenerates this f
 ```
 
 Rays: 1024×1024 camera rays through pixel centres, then one cosine-weighted bounce from
-every hit ("diffuse"). Mrays/s; path tracing in Msamples/s at 256×256 × 16 spp, max depth
+every hit ("diffuse"). Mrays/s, each the fastest of three runs over the set; path tracing in Msamples/s at 256×256 × 16 spp, max depth
 32. `--threads` applies to every tracer (CPU threads, Embree's thread count, and
 `LP_NUM_THREADS` for lavapipe). "mismatches": rays whose hit distance differs between
 tracers by more than 1e-4 relative (grazing hits on shared edges). Build rates are the
