@@ -11,7 +11,7 @@ namespace vkpt {
 namespace {
 
 // Appends the packets of flattened leaf code `leaf`; returns the wide layout's leaf code.
-uint32_t AddLeaf(uint32_t leaf, const std::vector<shader::Triangle>& triangles, std::vector<TrianglePacket>& packets) {
+uint32_t AddLeaf(uint32_t leaf, const std::vector<shader::Triangle>& triangles, HugeVector<TrianglePacket>& packets) {
   const uint32_t first = leaf >> 4, count = leaf & 15u;
   const uint32_t code = uint32_t(packets.size()) << 4 | count;
   for (uint32_t k = 0; k < count; k += 4) {

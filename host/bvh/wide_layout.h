@@ -13,6 +13,7 @@
 
 #include "shared/layout.h"
 #include "util/float4.h"
+#include "util/huge_pages.h"
 
 namespace vkpt {
 
@@ -43,8 +44,10 @@ inline bool IsLeafCode(uint32_t code) { return (code & 15u) != 0u; }
 
 struct BvhWideLayout {
   // Node 0 is the root. Empty when the root itself is a leaf (rootLeaf).
-  std::vector<BvhWideNode> nodes;
-  std::vector<TrianglePacket> packets;
+  // On huge pages: rays visit these at random, and with 4 KiB pages a large scene's walk
+  // waits on TLB misses (docs/design-notes.md, "CPU prefetch").
+  HugeVector<BvhWideNode> nodes;
+  HugeVector<TrianglePacket> packets;
   uint32_t rootLeaf = 0;  // the root's leaf code when the whole tree is one leaf, else 0
 };
 

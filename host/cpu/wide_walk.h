@@ -166,7 +166,7 @@ struct Query {
 // (the scalar loop's result), narrowing tMax. True when an any-hit query has its hit.
 template <bool kAnyHit, bool kAlpha, bool kCount>
 bool TestLeaf(const Query<kAnyHit, kAlpha, kCount>& q, uint32_t code, const RaySlabs& slabs, float& tMax, Hit& hit) {
-  const std::vector<TrianglePacket>& packets = q.scene.wideLayout.packets;
+  const HugeVector<TrianglePacket>& packets = q.scene.wideLayout.packets;
   for (uint32_t k = code >> 4, e = k + ((code & 15u) + 3) / 4; k < e; ++k) {
     Float4 t, b1, b2;
     const int mask = IntersectPacket(packets[k], slabs, tMax, t, b1, b2);
@@ -181,13 +181,23 @@ bool TestLeaf(const Query<kAnyHit, kAlpha, kCount>& q, uint32_t code, const RayS
   return false;
 }
 
+// Asks for the first four cache lines of child `code` — a whole node, or a leaf's first
+// packet — as soon as its box is hit, nearest child included, so that its loads overlap
+// the ordering of its siblings and the walk of nearer subtrees (as Embree's BVH8 walk
+// does; docs/design-notes.md, "CPU prefetch").
+inline void Prefetch(const RenderScene& scene, uint32_t code) {
+  const char* p = IsLeafCode(code) ? reinterpret_cast<const char*>(&scene.wideLayout.packets[code >> 4])
+                                   : reinterpret_cast<const char*>(&scene.wideLayout.nodes[code >> 4]);
+  for (int line = 0; line < 4; ++line) __builtin_prefetch(p + 64 * line);
+}
+
 // The ordered walk over the wide nodes: a node's boxes at once, the nearest child
 // hit entered next, the others deferred, nearer ones on top.
 template <bool kAnyHit, bool kAlpha, bool kCount>
 Hit Traverse(const Query<kAnyHit, kAlpha, kCount>& q, glm::vec3 origin, glm::vec3 dir, float tMax) {
   const RenderScene& scene = q.scene;
   Hit hit{-1.0f, 0.0f, 0.0f, shader::kInvalidIndex};
-  const std::vector<BvhWideNode>& nodes = scene.wideLayout.nodes;
+  const HugeVector<BvhWideNode>& nodes = scene.wideLayout.nodes;
   const RaySlabs slabs = MakeSlabs(origin, dir);
   DeferredStack deferred;
   // The root's own box is not tested: its children's boxes cull as well. A single-leaf
@@ -215,13 +225,9 @@ Hit Traverse(const Query<kAnyHit, kAlpha, kCount>& q, glm::vec3 origin, glm::vec
           }
           kids[k] = n.child[lane];
           ts[k] = tEnter[lane];
+          Prefetch(scene, n.child[lane]);
         }
-        for (int k = count - 1; k > 0; --k) {
-          // Its record is needed only after the nearer subtrees: fetch it meanwhile. (Far
-          // leaves' triangles are not prefetched: docs/design-notes.md, "CPU prefetch".)
-          if (!IsLeafCode(kids[k])) __builtin_prefetch(&nodes[kids[k] >> 4]);
-          deferred.Push(kids[k], ts[k]);  // revisited later unless a closer hit culls it
-        }
+        for (int k = count - 1; k > 0; --k) deferred.Push(kids[k], ts[k]);  // revisited unless a closer hit culls it
         code = kids[0];
         continue;
       }

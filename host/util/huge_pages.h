@@ -1,7 +1,8 @@
-// An allocator for large, short-lived arrays (the BVH builder's primitives and nodes)
-// that asks Linux for transparent huge pages. With 4 KiB pages, first touching a
+// An allocator for large arrays (the BVH builder's primitives and nodes, the CPU walk's
+// tree) that asks Linux for transparent huge pages. With 4 KiB pages, first touching a
 // 100 MB array takes ~25k page faults, a large part of a big build's time
-// (docs/design-notes.md, "Huge pages for the BVH build").
+// (docs/design-notes.md, "Huge pages for the BVH build"), and a walk over a tree that
+// size misses the TLB at most of its nodes.
 // Debian's default THP mode is "madvise", so the pages must be asked for; Embree does
 // the same. Small allocations, and systems without madvise, get plain operator new.
 #pragma once
