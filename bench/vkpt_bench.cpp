@@ -591,9 +591,9 @@ CpuHits MeasureCpu(const RenderScene& rs, const RaySets& rays, const shader::Fra
     return Fastest([&] { return TraceCpu(rs, set, n); });
   };
   CpuHits hits{trace(rays.camera, threads), trace(rays.diffuse, threads)};
-  const CpuHits one = threads == 1 ? CpuHits{} : CpuHits{trace(rays.camera, 1), trace(rays.diffuse, 1)};
-  rep.Set("cpu_primary_mrays_s_1t", Mrays(rays.camera.size(), (threads == 1 ? hits : one).camera.seconds));
-  rep.Set("cpu_diffuse_mrays_s_1t", Mrays(rays.diffuse.size(), (threads == 1 ? hits : one).diffuse.seconds));
+  const CpuHits one = threads == 1 ? hits : CpuHits{trace(rays.camera, 1), trace(rays.diffuse, 1)};
+  rep.Set("cpu_primary_mrays_s_1t", Mrays(rays.camera.size(), one.camera.seconds));
+  rep.Set("cpu_diffuse_mrays_s_1t", Mrays(rays.diffuse.size(), one.diffuse.seconds));
   rep.Set("cpu_primary_mrays_s", Mrays(rays.camera.size(), hits.camera.seconds));
   rep.Set("cpu_diffuse_mrays_s", Mrays(rays.diffuse.size(), hits.diffuse.seconds));
   CpuRenderOptions cpuOpt;
