@@ -11,7 +11,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std140, binding = kBindingParams) uniform Params { FrameParams params; };
+// A storage buffer, as in pathtrace.comp (which says why).
+layout(std430, binding = kBindingParams) readonly buffer Params { FrameParams params; };
 // Per pixel, kAovSumsPerPixel vec4 (layout.h): (Σ albedo, Σ depth), (Σ normal, hits),
 // (Σ position, Σ box tests).
 layout(std430, binding = kBindingAovSums) buffer AovSums { vec4 aovSums[]; };

@@ -18,7 +18,7 @@ namespace vkpt::vk {
 
 struct BufferBinding {
   uint32_t binding;
-  VkDescriptorType type;  // STORAGE_BUFFER, UNIFORM_BUFFER or UNIFORM_TEXEL_BUFFER
+  VkDescriptorType type;  // STORAGE_BUFFER or UNIFORM_TEXEL_BUFFER
   VkBuffer buffer;        // the buffer types
   VkBufferView view = VK_NULL_HANDLE;  // UNIFORM_TEXEL_BUFFER
 };

@@ -138,7 +138,7 @@ class GpuFrame final : public FrameRenderer {
     Buffer trianglesHost = ReadbackBuffer(ctx_, triangles.Size(), "AOV triangle readback");
     std::unique_ptr<ComputePipeline> aov =
         kernels_(kAovSpirv, sizeof(kAovSpirv),
-                 {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b_.params.Handle()},
+                 {FrameParamsBinding(b_),
                   {shader::kBindingAovSums, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sums.Handle()},
                   {shader::kBindingAovTriangles, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, triangles.Handle()}},
                  "aov", 2 * sizeof(uint32_t));
@@ -197,11 +197,15 @@ FrameBuffers MakeFrameBuffers(const Context& ctx, uint64_t pixels) {
   b.accum = StorageBuffer(ctx, pixels * 2 * sizeof(glm::vec4), "accumulation");
   b.counters = StorageBuffer(ctx, pixels * sizeof(glm::uvec4), "counter");
   b.active = HostVisible(ctx, pixels * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "active pixels");
-  b.params = HostVisible(ctx, sizeof(shader::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "frame params");
+  b.params = HostVisible(ctx, sizeof(shader::FrameParams), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "frame params");
   b.loopStats = HostVisible(ctx, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "loop statistics");
   b.accumHost = ReadbackBuffer(ctx, b.accum.Size(), "accumulation readback");
   b.countersHost = ReadbackBuffer(ctx, b.counters.Size(), "counter readback");
   return b;
+}
+
+BufferBinding FrameParamsBinding(const FrameBuffers& b) {
+  return {shader::kBindingParams, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.params.Handle()};
 }
 
 void ClearSums(const Context& ctx, const FrameBuffers& b) {

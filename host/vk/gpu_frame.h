@@ -27,6 +27,10 @@ struct FrameBuffers {
 
 FrameBuffers MakeFrameBuffers(const Context& ctx, uint64_t pixels);
 
+// The frame constants' binding in every kernel of the frame: a storage buffer
+// (pathtrace.comp says why).
+BufferBinding FrameParamsBinding(const FrameBuffers& b);
+
 // A kernel over the scene (scene_constants.glsl) with the given per-frame bindings.
 using KernelFactory = std::function<std::unique_ptr<ComputePipeline>(const uint32_t* spirv, size_t spirvBytes,
                                                                      std::vector<BufferBinding> frameBindings,

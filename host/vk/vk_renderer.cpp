@@ -159,7 +159,7 @@ std::unique_ptr<FrameRenderer> GpuRenderer::BeginFrame(const shader::FrameParams
                                              Specialization(p));
   };
   auto pipeline = kernels(pathTraceSpirv_.data(), pathTraceSpirv_.size_bytes(),
-                          {{shader::kBindingParams, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, b.params.Handle()},
+                          {FrameParamsBinding(b),
                            {shader::kBindingAccum, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.accum.Handle()},
                            {shader::kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.counters.Handle()},
                            {shader::kBindingActive, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, b.active.Handle()},

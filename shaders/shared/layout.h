@@ -17,7 +17,7 @@
 VKPT_BEGIN_NAMESPACE
 
 // Descriptor bindings of the path-tracing pipeline (set 0).
-const uint kBindingParams = 0u;     // uniform FrameParams
+const uint kBindingParams = 0u;     // readonly buffer FrameParams (pathtrace.comp says why not uniform)
 const uint kBindingTriangles = 1u;  // texel buffer of Triangle
 const uint kBindingNodes = 2u;      // texel buffer of BvhNode
 const uint kBindingMaterials = 3u;  // texel buffer of Material
@@ -271,7 +271,7 @@ struct FrameParams {
   uint uvSplit;        // TriangleUVs in kBindingVertexUVs; the rest are in kBindingVertexUVsHigh
   uint treeLights;     // lights [0, treeLights) are chosen through the light tree; 0: no tree
   uint treeDepth;      // the light tree's depth (a leaf under the root: 1)
-  uint pad8;           // std140 rounds the struct up to a multiple of 16 bytes
+  uint pad8;           // std430 rounds the struct up to its vec3's alignment, 16 bytes
 };
 
 VKPT_END_NAMESPACE
