@@ -23,11 +23,11 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 // The frame's constants are a storage buffer, not a uniform buffer: lavapipe (Mesa 22.3)
-// inlines uniform-buffer values that decide a branch or a loop, and then re-optimises and
-// recompiles the whole shader at every bind of the pipeline, keeping each copy until the
-// pipeline is destroyed: 850 KB a queue submission, a render's memory growing with its
-// length (docs/design-notes.md, "Frame constants in a storage buffer"). No value is
-// inlined from a storage buffer.
+// inlines uniform-buffer values that decide a branch or a loop (main() below copies some
+// into globals, which makes it insist), re-optimising and recompiling the whole shader at
+// every bind of the pipeline and keeping each copy until the pipeline is destroyed: 850 KB
+// a queue submission, a render's memory growing with its length (docs/design-notes.md,
+// "Frame constants in a storage buffer"). No value is inlined from a storage buffer.
 layout(std430, binding = kBindingParams) readonly buffer Params { FrameParams params; };
 // Per pixel: [2i] = (Σ L, unused), [2i + 1] = (Σ L², unused), over all samples so far.
 layout(std430, binding = kBindingAccum) buffer Accum { vec4 accum[]; };
