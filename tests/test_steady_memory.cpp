@@ -24,7 +24,6 @@ namespace vkpt {
 namespace {
 
 const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
-constexpr double kMiB = 1024.0 * 1024.0;
 // The most a longer run's peak may exceed a shorter one's: the 10 MB (its other
 // bound, 5 %, would allow 22 MB on lavapipe).
 constexpr double kPeakSlackMiB = 10.0;
