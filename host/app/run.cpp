@@ -152,9 +152,9 @@ int RunSequence(const Options& o) {
   const auto start = p.start;
   GracefulStop stop;
   std::vector<std::string> stats;  // with --stats, each frame's (about 2 KB)
-  size_t done = 0;
   int status = 0;
-  for (size_t i = 0; i < numbers.size() && status == 0; ++i, ++done) {
+  size_t i = 0;  // frames rendered
+  for (; i < numbers.size() && status == 0; ++i) {
     const Options f = FrameOptions(o, numbers[i]);
     if (i > 0) NextFrame(p, f, 1);
     LocalPasses source(*p.view.renderer, o.chunkSpp);
@@ -162,7 +162,7 @@ int RunSequence(const Options& o) {
     status = Finish(f, p, rendered, nullptr, FrameStats(o, stats));
     PrintFrameLine(numbers[i], i, numbers.size(), f, p, rendered.frame.seconds);
   }
-  PrintSequenceEnd(o, done, numbers.size(), start, stats);
+  PrintSequenceEnd(o, i, numbers.size(), start, stats);
   return status;
 }
 
@@ -191,11 +191,11 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
   const std::vector<uint32_t> numbers = o.frames ? FrameNumbers(*o.frames) : std::vector<uint32_t>{0};
   Prepared p;
   std::vector<std::string> stats;  // with --stats, each frame's
-  size_t done = 0;
   std::optional<GracefulStop> stop;  // rank 0 stops dealing at a signal; the others finish their chunk
   std::chrono::steady_clock::time_point start;
   int status = 0;
-  for (size_t i = 0; i < numbers.size() && status == 0; ++i) {
+  size_t i = 0;  // frames rendered
+  for (; i < numbers.size() && status == 0; ++i) {
     const Options f = o.frames ? FrameOptions(o, numbers[i]) : o;
     std::string message;
     status = Attempt(
@@ -221,9 +221,8 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
     if (!o.frames) return RenderDealt(cluster, o, p);
     status = RenderDealt(cluster, f, p, root ? FrameStats(o, stats) : nullptr);
     if (root) PrintFrameLine(numbers[i], i, numbers.size(), f, p, p.times().render);
-    ++done;
   }
-  if (root) PrintSequenceEnd(o, done, numbers.size(), start, stats);
+  if (root) PrintSequenceEnd(o, i, numbers.size(), start, stats);
   return status;
 }
 
