@@ -190,7 +190,7 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
   const uint32_t ranks = root ? uint32_t(cluster.Size()) : 1;
   const std::vector<uint32_t> numbers = o.frames ? FrameNumbers(*o.frames) : std::vector<uint32_t>{0};
   Prepared p;
-  std::vector<std::string> stats;  // with --stats, each frame's
+  std::vector<std::string> stats;    // with --stats, each frame's
   std::optional<GracefulStop> stop;  // rank 0 stops dealing at a signal; the others finish their chunk
   std::chrono::steady_clock::time_point start;
   int status = 0;
