@@ -2,7 +2,7 @@
 # to the compile and link of every target in the tree: vkpt, vkpt-bench, vkpt_tests
 # (whose own harness code tests/CMakeLists.txt compiles uninstrumented).
 # Any finding ends the process (-fno-sanitize-recover=all), so a test that triggers one
-# fails. Run the tests with the options in .ci/run (README, "Sanitizers and fuzzing"):
+# fails. Run the tests with the options in .ci/run (docs/testing.md, "Sanitizers and fuzzing"):
 # they name the leak suppressions for the Vulkan driver and validation layer
 # (tests/sanitizers/lsan.supp).
 #
