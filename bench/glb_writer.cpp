@@ -9,7 +9,7 @@
 
 #include "util/error.h"
 
-namespace vkpt::bench {
+namespace vkpt::internal::bench {
 namespace {
 
 void Append(std::vector<uint8_t>& out, const void* data, size_t bytes) {
@@ -111,4 +111,4 @@ std::vector<uint8_t> EncodeGlb(const Scene& scene) {
   return out;
 }
 
-}  // namespace vkpt::bench
+}  // namespace vkpt::internal::bench

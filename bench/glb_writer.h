@@ -10,8 +10,8 @@
 
 #include "scene/scene.h"
 
-namespace vkpt::bench {
+namespace vkpt::internal::bench {
 
 std::vector<uint8_t> EncodeGlb(const Scene& scene);
 
-}  // namespace vkpt::bench
+}  // namespace vkpt::internal::bench

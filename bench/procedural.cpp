@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace vkpt::bench {
+namespace vkpt::internal::bench {
 namespace {
 
 // Smooth deterministic "noise": a few incommensurate sine waves (no RNG state, so the
@@ -80,4 +80,4 @@ Scene ProceduralScene(uint32_t triangles) {
   return s;
 }
 
-}  // namespace vkpt::bench
+}  // namespace vkpt::internal::bench

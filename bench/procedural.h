@@ -7,8 +7,8 @@
 
 #include "scene/scene.h"
 
-namespace vkpt::bench {
+namespace vkpt::internal::bench {
 
 Scene ProceduralScene(uint32_t triangles);
 
-}  // namespace vkpt::bench
+}  // namespace vkpt::internal::bench

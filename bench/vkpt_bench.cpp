@@ -42,7 +42,7 @@
 #include <embree3/rtcore.h>
 #endif
 
-namespace vkpt::bench {
+namespace vkpt::internal::bench {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -711,12 +711,12 @@ int Run(const Options& o) {
 }
 
 }  // namespace
-}  // namespace vkpt::bench
+}  // namespace vkpt::internal::bench
 
 int main(int argc, char** argv) {
-  vkpt::bench::Options o = vkpt::bench::Parse(argc, argv);
+  vkpt::internal::bench::Options o = vkpt::internal::bench::Parse(argc, argv);
   try {
-    return vkpt::bench::Run(o);
+    return vkpt::internal::bench::Run(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "vkpt-bench: error: %s\n", e.what());
     return 1;

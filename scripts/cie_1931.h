@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace vkpt::cie {
+namespace vkpt::internal::cie {
 
 inline const char* const kCmfPath = "/usr/share/colord/cmf/CIE1931-2deg-XYZ.cmf";
 constexpr int kFirstNm = 360, kLastNm = 830;
@@ -45,4 +45,4 @@ inline Cmf LoadCmf() {
   return cmf;
 }
 
-}  // namespace vkpt::cie
+}  // namespace vkpt::internal::cie

@@ -42,9 +42,10 @@ std::vector<double> Cumulative(const std::vector<double>& f) {
 }  // namespace
 
 int main() {
-  const vkpt::cie::Cmf cmf = vkpt::cie::LoadCmf();
+  const vkpt::internal::cie::Cmf cmf = vkpt::internal::cie::LoadCmf();
   if (cmf.x.empty()) {
-    std::fprintf(stderr, "vkpt-make-wavelength-table: cannot read %s (Debian's colord-data)\n", vkpt::cie::kCmfPath);
+    std::fprintf(stderr, "vkpt-make-wavelength-table: cannot read %s (Debian's colord-data)\n",
+                 vkpt::internal::cie::kCmfPath);
     return 1;
   }
   const size_t n = cmf.x.size();
@@ -85,7 +86,7 @@ int main() {
     if (k < kBins)
       for (int c = 0; c < 3; ++c)
         w[c] = kBins * (IntegralTo(rgb[c], channelCdf[c], edge[k + 1]) - IntegralTo(rgb[c], channelCdf[c], edge[k]));
-    std::printf("    %.4ff, %.7ff, %.7ff, %.7ff,\n", vkpt::cie::kFirstNm + edge[k], w[0], w[1], w[2]);
+    std::printf("    %.4ff, %.7ff, %.7ff, %.7ff,\n", vkpt::internal::cie::kFirstNm + edge[k], w[0], w[1], w[2]);
   }
   std::printf("// clang-format on\n");
   return 0;

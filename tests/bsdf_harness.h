@@ -15,7 +15,7 @@
 #include "shared/bsdf.h"
 #include "test_util.h"
 
-namespace vkpt::bsdf_test {
+namespace vkpt::internal::bsdf_test {
 
 using namespace shader;
 using shader::Material;  // the GPU layout the BSDF reads, not the Scene's
@@ -326,4 +326,4 @@ inline void ExpectPdfWithoutLobeRejected(const Material& m, float muO, vec3 coat
   EXPECT_LT(r.p, alpha) << name;
 }
 
-}  // namespace vkpt::bsdf_test
+}  // namespace vkpt::internal::bsdf_test

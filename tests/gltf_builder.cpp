@@ -3,7 +3,7 @@
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 namespace {
 
 std::string Base64(const std::string& bytes) {
@@ -142,4 +142,4 @@ std::string SlidingTriangle() {
   return b.Json();
 }
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

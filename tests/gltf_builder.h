@@ -20,7 +20,7 @@
 #include "scene/scene.h"
 #include "test_util.h"
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 constexpr int kByte = 5120, kUByte = 5121, kShort = 5122, kUShort = 5123, kUInt = 5125, kFloat = 5126;
 
@@ -148,7 +148,7 @@ class TempFile {
 
 Scene Load(const GltfBuilder& b, const SceneChoice& choice = {});
 
-// LoadGltf(path) must throw vkpt::Error whose message starts with the path and contains
+// LoadGltf(path) must throw Error whose message starts with the path and contains
 // every needle.
 ::testing::AssertionResult LoadFailsWith(const std::string& path, std::initializer_list<std::string> needles,
                                          const SceneChoice& choice = {});
@@ -167,4 +167,4 @@ GltfBuilder TriangleModel();
 // x = 0 at 0 s to x = 1 at 1 s: the file's JSON.
 std::string SlidingTriangle();
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

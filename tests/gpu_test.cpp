@@ -2,7 +2,7 @@
 
 #include <memory>
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 vk::Context& Gpu() {
   static std::unique_ptr<vk::Context> ctx = [] {
@@ -13,4 +13,4 @@ vk::Context& Gpu() {
   return *ctx;
 }
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

@@ -10,7 +10,7 @@
 #include "vk/context.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 // Created on first use (device creation costs ~100 ms), with the validation layer on.
 vk::Context& Gpu();
@@ -32,4 +32,4 @@ class ValidatedGpuTest : public ::testing::Test {
   uint32_t before_ = Gpu().ValidationMessages();
 };
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

@@ -7,7 +7,7 @@
 
 #include <atomic>
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 namespace {
 
 std::atomic<KeptObjects> gKept{KeptObjects::None};
@@ -23,21 +23,21 @@ F Loader(const char* name) {
 KeepVulkanObjects::KeepVulkanObjects(KeptObjects kind) { gKept = kind; }
 KeepVulkanObjects::~KeepVulkanObjects() { gKept = KeptObjects::None; }
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test
 
-using vkpt::test::KeptObjects;
+using vkpt::internal::test::KeptObjects;
 
 extern "C" {
 
 VKAPI_ATTR void VKAPI_CALL vkFreeMemory(VkDevice device, VkDeviceMemory memory, const VkAllocationCallbacks* a) {
-  static const auto next = vkpt::test::Loader<PFN_vkFreeMemory>("vkFreeMemory");
-  if (vkpt::test::gKept != KeptObjects::Memory) next(device, memory, a);
+  static const auto next = vkpt::internal::test::Loader<PFN_vkFreeMemory>("vkFreeMemory");
+  if (vkpt::internal::test::gKept != KeptObjects::Memory) next(device, memory, a);
 }
 
 VKAPI_ATTR void VKAPI_CALL vkDestroyDescriptorPool(VkDevice device, VkDescriptorPool pool,
                                                    const VkAllocationCallbacks* a) {
-  static const auto next = vkpt::test::Loader<PFN_vkDestroyDescriptorPool>("vkDestroyDescriptorPool");
-  if (vkpt::test::gKept != KeptObjects::DescriptorPools) next(device, pool, a);
+  static const auto next = vkpt::internal::test::Loader<PFN_vkDestroyDescriptorPool>("vkDestroyDescriptorPool");
+  if (vkpt::internal::test::gKept != KeptObjects::DescriptorPools) next(device, pool, a);
 }
 
 }  // extern "C"

@@ -4,7 +4,7 @@
 // a frame would. The memory and validation tests must catch both.
 #pragma once
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 enum class KeptObjects {
   None,
@@ -21,4 +21,4 @@ class KeepVulkanObjects {
   KeepVulkanObjects& operator=(const KeepVulkanObjects&) = delete;
 };
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

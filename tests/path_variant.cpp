@@ -40,7 +40,7 @@
 #undef VKPT_BEGIN_NAMESPACE
 #undef VKPT_END_NAMESPACE
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 RenderResult VKPT_PATH_VARIANT(const RenderScene& scene, const shader::FrameParams& params) {
   Film film(params.width, params.height);
@@ -74,4 +74,4 @@ RenderResult VKPT_PATH_VARIANT(const RenderScene& scene, const shader::FramePara
   return r;
 }
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

@@ -6,7 +6,7 @@
 
 #include "path_variants.h"
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 #define VKPT_PATH_VARIANT_STUB(name)                                                                              \
   RenderResult name(const RenderScene&, const shader::FrameParams&) {                                             \
@@ -15,4 +15,4 @@ namespace vkpt::test {
   }
 #include "path_variant_stubs.inc"  // one VKPT_PATH_VARIANT_STUB(name) per variant, written by CMake
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

@@ -16,7 +16,7 @@
 #define VKPT_REQUIRE_PATH_VARIANTS() static_cast<void>(0)
 #endif
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 using PathVariantRenderer = RenderResult (*)(const RenderScene&, const shader::FrameParams&);
 
@@ -43,4 +43,4 @@ RenderResult RenderMutantTexturesFilteredEverywhere(const RenderScene& scene, co
 // Mutant of dispersion (path.h): the hero wavelength's weight applied at every dispersive vertex.
 RenderResult RenderMutantWavelengthWeightEveryVertex(const RenderScene& scene, const shader::FrameParams& params);
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

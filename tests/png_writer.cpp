@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 namespace {
 
 void PutBe32(std::vector<uint8_t>& out, uint32_t v) {
@@ -87,4 +87,4 @@ std::vector<unsigned char> MakePng(uint32_t width, uint32_t height, int depth, i
   return png;
 }
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

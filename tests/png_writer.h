@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 struct PngChunk {
   std::string type;  // four letters
@@ -32,4 +32,4 @@ size_t PngChunkData(const std::vector<unsigned char>& png, const std::string& ty
 std::vector<unsigned char> MakePng(uint32_t width, uint32_t height, int depth, int colour,
                                    const std::vector<uint8_t>& samples, const std::vector<PngChunk>& beforeData = {});
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

@@ -8,7 +8,7 @@
 #include "bvh/quantized_layout.h"
 #include "util/bounds.h"
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 Bounds3f TriangleBounds(const shader::Triangle& t) {
   Bounds3f b;
@@ -96,4 +96,4 @@ void CheckQuantizedLayout(const RenderScene& rs, bool spatial) {
   }
 }
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

@@ -6,7 +6,7 @@
 #include "render/render_scene.h"
 #include "util/bounds.h"
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 // The box of a leaf-order triangle's three vertices.
 Bounds3f TriangleBounds(const shader::Triangle& t);
@@ -14,4 +14,4 @@ Bounds3f TriangleBounds(const shader::Triangle& t);
 // With `spatial` a leaf's triangles need only overlap its box (spatial splits clip them).
 void CheckQuantizedLayout(const RenderScene& rs, bool spatial);
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

@@ -20,7 +20,7 @@
 #include "test_util.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -199,4 +199,4 @@ TEST_F(AlphaGpu, MaskAndBlendRenderAsOnTheCpu) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -15,7 +15,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/keyframes.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -232,4 +232,4 @@ TEST(Animation, ExtensionModelsPoseWithNothingIgnored) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

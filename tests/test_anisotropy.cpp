@@ -13,7 +13,7 @@
 #include "shared/normal_map.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace bsdf_test;
@@ -177,4 +177,4 @@ TEST(Anisotropy, SampleWeightIsFCosOverPdf) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

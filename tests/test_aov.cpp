@@ -23,7 +23,7 @@
 #include "util/error.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr glm::vec3 kEye(3.0f, 2.5f, 4.0f);
@@ -327,4 +327,4 @@ TEST(AovCli, UnknownNamesAndCompareAreUsageErrors) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

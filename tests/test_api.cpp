@@ -13,13 +13,13 @@
 
 #include "vkpt/vkpt.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
 
-api::RenderOptions Small(uint32_t seed = 0) {
-  api::RenderOptions o;
+vkpt::RenderOptions Small(uint32_t seed = 0) {
+  vkpt::RenderOptions o;
   o.width = 24;
   o.height = 16;
   o.spp = o.chunkSpp = 4;  // one chunk of 4 samples per pixel
@@ -27,8 +27,8 @@ api::RenderOptions Small(uint32_t seed = 0) {
   return o;
 }
 
-api::Camera Orbit(double degrees) {
-  api::Camera c;
+vkpt::Camera Orbit(double degrees) {
+  vkpt::Camera c;
   c.orbitDegrees = degrees;
   return c;
 }
@@ -39,7 +39,7 @@ std::vector<float> CliRender(std::vector<std::string> args, const std::string& o
               {"--scene", kCornell, "--width", "24", "--height", "16", "--spp", "4", "--chunk", "4", "--out", out});
   const test::ProcessResult r = test::RunVkpt(args);
   EXPECT_TRUE(r.ExitedWith(0)) << r.Describe();
-  const auto image = ReadPfm(out);  // vkpt::Image, the internal one
+  const auto image = ReadPfm(out);  // Image, the internal one
   std::vector<float> rgb;
   for (const glm::vec3& p : image.pixels) rgb.insert(rgb.end(), {p.r, p.g, p.b});
   return rgb;
@@ -49,20 +49,20 @@ TEST(Api, RendersOfOneSceneEqualTheCommandLines) {
   VKPT_SKIP_UNDER_ADDRESS_SANITIZER("eight command-line renders against the library's, 20 s");
   const std::string dir = test::FreshTempDirectory("api-cli");
   for (const char* backend : {"cpu", "vulkan"}) {
-    api::SceneOptions options;
-    options.backend = std::string(backend) == "cpu" ? api::Backend::Cpu : api::Backend::Vulkan;
-    api::Scene scene(kCornell, options);
-    api::RenderOptions depth = Small(7);
+    vkpt::SceneOptions options;
+    options.backend = std::string(backend) == "cpu" ? vkpt::Backend::Cpu : vkpt::Backend::Vulkan;
+    vkpt::Scene scene(kCornell, options);
+    vkpt::RenderOptions depth = Small(7);
     depth.aovs = {"depth"};
-    const api::RenderResult a = scene.Render(api::Camera{}, depth);
-    const api::RenderResult b = scene.Render(Orbit(30.0), Small(3));
+    const vkpt::RenderResult a = scene.Render(vkpt::Camera{}, depth);
+    const vkpt::RenderResult b = scene.Render(Orbit(30.0), Small(3));
     EXPECT_EQ(a.image.data, CliRender({"--backend", backend, "--seed", "7", "--aov", "depth"}, dir + "/a.pfm"))
         << backend;
     EXPECT_EQ(b.image.data, CliRender({"--backend", backend, "--seed", "3", "--orbit", "30"}, dir + "/b.pfm"))
         << backend;
     // The CLI's depth PFM repeats the one channel in R, G and B.
     const auto cliDepth = ReadPfm(dir + "/a.depth.pfm");
-    const api::Image& apiDepth = a.aovs.at("depth");
+    const vkpt::Image& apiDepth = a.aovs.at("depth");
     ASSERT_EQ(apiDepth.channels, 1u);
     ASSERT_EQ(apiDepth.data.size(), cliDepth.pixels.size());
     for (size_t i = 0; i < apiDepth.data.size(); ++i) ASSERT_EQ(apiDepth.data[i], cliDepth.pixels[i].r) << i;
@@ -72,16 +72,16 @@ TEST(Api, RendersOfOneSceneEqualTheCommandLines) {
 }
 
 TEST(Api, CameraChangeEqualsAFreshLoad) {
-  api::SceneOptions cpu;
-  cpu.backend = api::Backend::Cpu;
-  api::Scene scene(kCornell, cpu);
+  vkpt::SceneOptions cpu;
+  cpu.backend = vkpt::Backend::Cpu;
+  vkpt::Scene scene(kCornell, cpu);
   EXPECT_EQ(scene.CameraCount(), 1u);  // known before the first render
-  scene.Render(api::Camera{}, Small());
-  api::Camera moved;
+  scene.Render(vkpt::Camera{}, Small());
+  vkpt::Camera moved;
   moved.lookFrom = {{278.0f, 400.0f, -600.0f}};
   moved.fovDegrees = 50.0;
-  const api::RenderResult after = scene.Render(moved, Small());
-  EXPECT_EQ(after.image.data, api::Scene(kCornell, cpu).Render(moved, Small()).image.data);
+  const vkpt::RenderResult after = scene.Render(moved, Small());
+  EXPECT_EQ(after.image.data, vkpt::Scene(kCornell, cpu).Render(moved, Small()).image.data);
   EXPECT_EQ(after.image.width, 24u);
   EXPECT_EQ(after.image.height, 16u);
   EXPECT_EQ(after.image.channels, 3u);
@@ -93,17 +93,17 @@ TEST(Api, CameraChangeEqualsAFreshLoad) {
 // The Cornell box's camera node (at (278, 273, −800), turned 180° about +Y) as a matrix
 // renders the file's camera; a matrix that places no camera is refused naming the file.
 TEST(Api, CameraMatrixPlacesTheLens) {
-  api::SceneOptions cpu;
-  cpu.backend = api::Backend::Cpu;
-  api::Scene scene(kCornell, cpu);
-  api::Camera placed;
+  vkpt::SceneOptions cpu;
+  cpu.backend = vkpt::Backend::Cpu;
+  vkpt::Scene scene(kCornell, cpu);
+  vkpt::Camera placed;
   placed.matrix = {{-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 278, 273, -800, 1}};
-  EXPECT_EQ(scene.Render(placed, Small()).image.data, scene.Render(api::Camera{}, Small()).image.data);
+  EXPECT_EQ(scene.Render(placed, Small()).image.data, scene.Render(vkpt::Camera{}, Small()).image.data);
   placed.matrix->at(10) = 0.0f;
   try {
     scene.Render(placed, Small());
     ADD_FAILURE() << "a singular camera matrix was accepted";
-  } catch (const api::Error& e) {
+  } catch (const vkpt::Error& e) {
     EXPECT_EQ(std::string(e.what()),
               kCornell + ": the camera matrix is singular: its −Z and +Y axes must be independent");
   }
@@ -111,14 +111,14 @@ TEST(Api, CameraMatrixPlacesTheLens) {
 
 // Two Scenes (one per thread, each with its device) render at once what they render alone.
 TEST(Api, ScenesOnTwoThreadsRenderAsAlone) {
-  api::SceneOptions vulkan;
-  vulkan.backend = api::Backend::Vulkan;
+  vkpt::SceneOptions vulkan;
+  vulkan.backend = vkpt::Backend::Vulkan;
   vulkan.validation = true;
-  api::Scene a(kCornell, vulkan), b(kCornell, vulkan);
-  const std::vector<float> aloneA = a.Render(api::Camera{}, Small(1)).image.data;
+  vkpt::Scene a(kCornell, vulkan), b(kCornell, vulkan);
+  const std::vector<float> aloneA = a.Render(vkpt::Camera{}, Small(1)).image.data;
   const std::vector<float> aloneB = b.Render(Orbit(45.0), Small(2)).image.data;
   std::vector<float> together[2];
-  std::thread ta([&] { together[0] = a.Render(api::Camera{}, Small(1)).image.data; });
+  std::thread ta([&] { together[0] = a.Render(vkpt::Camera{}, Small(1)).image.data; });
   std::thread tb([&] { together[1] = b.Render(Orbit(45.0), Small(2)).image.data; });
   ta.join();
   tb.join();
@@ -130,49 +130,49 @@ TEST(Api, FailuresAreErrorsNamingTheirCause) {
   auto message = [](auto&& f) -> std::string {
     try {
       f();
-    } catch (const api::Error& e) {
+    } catch (const vkpt::Error& e) {
       return e.what();
     }
     return "(no error)";
   };
-  api::SceneOptions cpu;
-  cpu.backend = api::Backend::Cpu;
+  vkpt::SceneOptions cpu;
+  cpu.backend = vkpt::Backend::Cpu;
   const std::string missing = test::TempPath("no-such.glb");
-  EXPECT_NE(message([&] { api::Scene(missing, cpu); }).find(missing), std::string::npos);
-  api::Scene scene(kCornell, cpu);
-  api::RenderOptions bad = Small();
+  EXPECT_NE(message([&] { vkpt::Scene(missing, cpu); }).find(missing), std::string::npos);
+  vkpt::Scene scene(kCornell, cpu);
+  vkpt::RenderOptions bad = Small();
   bad.aovs = {"depht"};
-  EXPECT_EQ(message([&] { scene.Render(api::Camera{}, bad); }),
+  EXPECT_EQ(message([&] { scene.Render(vkpt::Camera{}, bad); }),
             "unknown AOV \"depht\" (albedo, normal, depth, position, variance, spp, heatmap, object_id, material_id, "
             "instance_id or all)");
-  api::Camera third;
+  vkpt::Camera third;
   third.index = 3;
   // The message names no command-line option.
   EXPECT_EQ(message([&] { scene.Render(third, Small()); }),
             kCornell + ": camera 3 is out of range; the scene has 1 camera(s)");
-  api::SceneOptions tiny = cpu;
+  vkpt::SceneOptions tiny = cpu;
   tiny.maxMemory = 1024;
   // The engine's messages name the API's settings, not the command line's options.
-  const std::string tooBig = message([&] { api::Scene(kCornell, tiny); });
+  const std::string tooBig = message([&] { vkpt::Scene(kCornell, tiny); });
   EXPECT_NE(tooBig.find("more than SceneOptions::maxMemory 1 KiB allows (raise SceneOptions::maxMemory"),
             std::string::npos)
       << tooBig;
-  api::SceneOptions ninth;
-  ninth.backend = api::Backend::Vulkan;
+  vkpt::SceneOptions ninth;
+  ninth.backend = vkpt::Backend::Vulkan;
   ninth.device = "9";
-  EXPECT_EQ(message([&] { api::Scene(kCornell, ninth); }),
+  EXPECT_EQ(message([&] { vkpt::Scene(kCornell, ninth); }),
             "SceneOptions::device 9: there are only 1 Vulkan device(s) (`vkpt --list-devices` lists them)");
   // The scene still renders after a failed render.
-  EXPECT_EQ(scene.Render(api::Camera{}, Small()).image.data.size(), 24u * 16u * 3u);
+  EXPECT_EQ(scene.Render(vkpt::Camera{}, Small()).image.data.size(), 24u * 16u * 3u);
 }
 
 TEST(Api, DenoisedImageKeepsTheRawOne) {
-  api::SceneOptions cpu;
-  cpu.backend = api::Backend::Cpu;
-  api::RenderOptions o = Small();
+  vkpt::SceneOptions cpu;
+  cpu.backend = vkpt::Backend::Cpu;
+  vkpt::RenderOptions o = Small();
   o.denoise = true;
   o.aovs = {"all"};
-  const api::RenderResult r = api::Scene(kCornell, cpu).Render(api::Camera{}, o);
+  const vkpt::RenderResult r = vkpt::Scene(kCornell, cpu).Render(vkpt::Camera{}, o);
   ASSERT_TRUE(r.raw.has_value());
   EXPECT_NE(r.raw->data, r.image.data);
   EXPECT_EQ(r.aovs.size(), 10u);
@@ -182,24 +182,24 @@ TEST(Api, DenoisedImageKeepsTheRawOne) {
 
 // A cancel ends the render between passes; the image is the render of the samples taken.
 TEST(Api, CancelEndsTheRenderWithTheSamplesTaken) {
-  api::SceneOptions cpu;
-  cpu.backend = api::Backend::Cpu;
-  api::Scene scene(kCornell, cpu);
-  api::RenderOptions o = Small();
+  vkpt::SceneOptions cpu;
+  cpu.backend = vkpt::Backend::Cpu;
+  vkpt::Scene scene(kCornell, cpu);
+  vkpt::RenderOptions o = Small();
   o.spp = 256;
   int asked = 0;
   o.cancel = [&asked] { return ++asked == 3; };
-  const api::RenderResult cancelled = scene.Render(api::Camera{}, o);
+  const vkpt::RenderResult cancelled = scene.Render(vkpt::Camera{}, o);
   EXPECT_EQ(asked, 3);
   EXPECT_EQ(cancelled.stoppedBy, "cancelled");
   ASSERT_GT(cancelled.spp, 0u);
   ASSERT_LT(cancelled.spp, 256u);
-  api::RenderOptions fixed = Small();
+  vkpt::RenderOptions fixed = Small();
   fixed.spp = cancelled.spp;
-  const api::RenderResult whole = scene.Render(api::Camera{}, fixed);
+  const vkpt::RenderResult whole = scene.Render(vkpt::Camera{}, fixed);
   EXPECT_EQ(whole.stoppedBy, "spp");
   EXPECT_EQ(cancelled.image.data, whole.image.data);
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -11,13 +11,13 @@
 
 #include "vkpt/vkpt.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
 
-api::RenderOptions Small() {
-  api::RenderOptions o;
+vkpt::RenderOptions Small() {
+  vkpt::RenderOptions o;
   o.width = 24;
   o.height = 16;
   o.spp = o.chunkSpp = 4;
@@ -34,18 +34,18 @@ void CliRender(std::vector<std::string> extra, const std::string& out) {
   ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
 }
 
-api::Scene CpuScene() {
-  api::SceneOptions cpu;
-  cpu.backend = api::Backend::Cpu;
-  return api::Scene(kCornell, cpu);
+vkpt::Scene CpuScene() {
+  vkpt::SceneOptions cpu;
+  cpu.backend = vkpt::Backend::Cpu;
+  return vkpt::Scene(kCornell, cpu);
 }
 
 TEST(ApiSave, FilesEqualTheCommandLines) {
   const std::string dir = test::FreshTempDirectory("api-save");
-  api::Scene scene = CpuScene();
-  api::RenderOptions options = Small();
+  vkpt::Scene scene = CpuScene();
+  vkpt::RenderOptions options = Small();
   options.aovs = {"normal", "depth", "albedo"};
-  const api::RenderResult result = scene.Render(api::Camera{}, options);
+  const vkpt::RenderResult result = scene.Render(vkpt::Camera{}, options);
   for (const std::string ext : {"exr", "png", "pfm"}) {
     CliRender({"--aov", "normal,depth,albedo"}, dir + "/cli." + ext);
     const std::vector<std::string> files = Save(result, dir + "/api." + ext);
@@ -58,17 +58,17 @@ TEST(ApiSave, FilesEqualTheCommandLines) {
   }
   // Another view and exposure change the picture, as --view and --exposure do.
   CliRender({"--view", "agx", "--exposure", "1.5"}, dir + "/agx.png");
-  Save(scene.Render(api::Camera{}, Small()), dir + "/api-agx.png", "agx", 1.5f);
+  Save(scene.Render(vkpt::Camera{}, Small()), dir + "/api-agx.png", "agx", 1.5f);
   EXPECT_EQ(test::ReadFile(dir + "/api-agx.png"), test::ReadFile(dir + "/agx.png"));
   EXPECT_NE(test::ReadFile(dir + "/api-agx.png"), test::ReadFile(dir + "/api.png"));
 }
 
 TEST(ApiSave, DenoisedRenderKeepsItsRawImageBeside) {
   const std::string dir = test::FreshTempDirectory("api-save-denoise");
-  api::Scene scene = CpuScene();
-  api::RenderOptions options = Small();
+  vkpt::Scene scene = CpuScene();
+  vkpt::RenderOptions options = Small();
   options.denoise = true;
-  const std::vector<std::string> files = Save(scene.Render(api::Camera{}, options), dir + "/api.pfm");
+  const std::vector<std::string> files = Save(scene.Render(vkpt::Camera{}, options), dir + "/api.pfm");
   ASSERT_EQ(files, (std::vector<std::string>{dir + "/api.pfm", dir + "/api.raw.pfm"}));
   CliRender({"--denoise"}, dir + "/cli.pfm");
   EXPECT_EQ(test::ReadFile(dir + "/api.pfm"), test::ReadFile(dir + "/cli.pfm"));
@@ -77,12 +77,12 @@ TEST(ApiSave, DenoisedRenderKeepsItsRawImageBeside) {
 
 TEST(ApiSave, RefusesWhatItCannotWrite) {
   const std::string dir = test::FreshTempDirectory("api-save-errors");
-  api::Scene scene = CpuScene();
-  api::RenderResult result = scene.Render(api::Camera{}, Small());
+  vkpt::Scene scene = CpuScene();
+  vkpt::RenderResult result = scene.Render(vkpt::Camera{}, Small());
   auto message = [&](const std::string& path, const std::string& view = "neutral") {
     try {
       Save(result, path, view);
-    } catch (const api::Error& e) {
+    } catch (const vkpt::Error& e) {
       return std::string(e.what());
     }
     return std::string("no error");
@@ -99,4 +99,4 @@ TEST(ApiSave, RefusesWhatItCannotWrite) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

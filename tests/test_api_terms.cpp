@@ -10,7 +10,7 @@
 #include "test_util.h"
 #include "vkpt/api_terms.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 TEST(ApiTerms, EveryOptionInTheEnginesMessagesIsTranslated) {
@@ -58,4 +58,4 @@ TEST(ApiTerms, PythonReadsItsKeywords) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -24,7 +24,7 @@
 #include "util/atomic_write.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace fs = std::filesystem;
@@ -197,4 +197,4 @@ TEST(AtomicWrite, RemovesOnlyTemporariesNoLiveWriterHolds) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

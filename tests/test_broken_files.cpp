@@ -23,7 +23,7 @@
 #include "png_writer.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace fs = std::filesystem;
@@ -208,4 +208,4 @@ INSTANTIATE_TEST_SUITE_P(Decoders, BrokenFile, ::testing::ValuesIn(AllCases()),
                          });
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

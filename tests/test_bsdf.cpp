@@ -14,7 +14,7 @@
 #include "bsdf_harness.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace bsdf_test;
@@ -513,4 +513,4 @@ TEST(BsdfFurnace, GgxAlbedoTableMatchesQuadrature) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

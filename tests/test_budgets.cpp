@@ -16,7 +16,7 @@
 #include "image/image.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using nlohmann::json;
@@ -187,4 +187,4 @@ TEST(Signals, BudgetsAreUsageErrorsWithCompare) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

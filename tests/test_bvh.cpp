@@ -16,7 +16,7 @@
 #include "shared/intersect.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 RenderScene Prepare(const std::vector<SceneTriangle>& tris, uint32_t leafSize = 4, bool spatialSplits = false) {
@@ -638,4 +638,4 @@ TEST(Bvh, TraversalMatchesBruteForceOnCorpusModel) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

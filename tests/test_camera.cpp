@@ -11,7 +11,7 @@
 #include "scene/scene.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 TEST(Camera, MatrixPlacesTheCameraAlongItsMinusZ) {
@@ -55,4 +55,4 @@ TEST(Camera, MatricesThatPlaceNoCameraAreRefused) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

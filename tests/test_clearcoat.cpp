@@ -10,7 +10,7 @@
 #include "bsdf_harness.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace bsdf_test;
@@ -173,4 +173,4 @@ TEST(Clearcoat, DimsEmissionByItsFresnel) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -16,7 +16,7 @@
 #include "png_writer.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace fs = std::filesystem;
@@ -696,4 +696,4 @@ TEST(Cli, QuietByDefaultWithTextures) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -12,7 +12,7 @@
 #include "test_util.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // A smooth test pattern with different content per channel, all values in [0.1, 1.1].
@@ -242,4 +242,4 @@ TEST(Compare, HeatmapIsBlackWhereEqual) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -26,7 +26,7 @@
 #include "scene/meshopt_decode.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -218,7 +218,7 @@ TEST(Draco, MalformedOrDisagreeingDataIsNamed) {
   EXPECT_TRUE(FailsWith(b, {"attribute NORMAL: the data has no attribute with id 7"}));
 }
 
-// Every cut of a bitstream either fails with vkpt::Error or, where the cut dropped
+// Every cut of a bitstream either fails with Error or, where the cut dropped
 // nothing the decoder needs, decodes to what the whole stream does; never a crash.
 TEST(Draco, EveryCutFailsCleanly) {
   const Grid g = MakeGrid();
@@ -426,7 +426,7 @@ TEST(Meshopt, MalformedStreamsAreNamed) {
                                 "no data"}));
 }
 
-// Every cut of each kind of stream fails with vkpt::Error; none reads past its end.
+// Every cut of each kind of stream fails with Error; none reads past its end.
 TEST(Meshopt, EveryCutFailsCleanly) {
   const Grid g = MakeGrid();
   const std::vector<std::pair<std::string, MeshoptStream>> streams = {
@@ -500,4 +500,4 @@ TEST(CompressedMeshes, DuckAndBoxLoadAsTheirPlainVersions) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

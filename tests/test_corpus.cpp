@@ -20,7 +20,7 @@
 #include "test_util.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace fs = std::filesystem;
@@ -255,4 +255,4 @@ TEST(CorpusPbr, VerboseListsTheTextures) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -28,7 +28,7 @@
 #include "test_util.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using test::ProcessResult;
@@ -57,7 +57,7 @@ std::string Write(const test::TempFolder& dir, const std::string& name, const st
 }
 
 // `decode(path)` in a forked child, killed at twice kLimitSeconds: exit 1 with the
-// message of the vkpt::Error it threw on stderr, or 0 if it returned.
+// message of the Error it threw on stderr, or 0 if it returned.
 ProcessResult DecodeInChild(const std::function<void(const std::string&)>& decode, const std::string& path) {
   int err[2];
   if (pipe(err) != 0) return {};
@@ -227,4 +227,4 @@ TEST(DecoderEnd, RunLengthMapDecodesExactly) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -17,7 +17,7 @@
 #include "test_util.h"
 #include "vk/vk_denoise.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr uint32_t kSize = 64;
@@ -133,4 +133,4 @@ TEST(DenoiseCli, WritesTheRawImageBeside) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

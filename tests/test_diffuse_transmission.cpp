@@ -11,7 +11,7 @@
 #include "bsdf_harness.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace bsdf_test;
@@ -150,4 +150,4 @@ TEST(DiffuseTransmission, SampleWeightIsFCosOverPdf) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

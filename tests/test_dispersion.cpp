@@ -22,7 +22,7 @@
 #include "test_util.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using shader::CauchySpread;
@@ -448,4 +448,4 @@ TEST_F(DispersionGpuTest, DispersionUnseenLeavesTheImageBitIdentical) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

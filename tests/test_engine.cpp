@@ -13,7 +13,7 @@
 #include "session/render_session.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -95,4 +95,4 @@ TEST(Engine, PosesOfOneLoadEqualFreshLoads) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

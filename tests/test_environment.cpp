@@ -10,7 +10,7 @@
 #include "shared/rng.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace shader;
@@ -235,4 +235,4 @@ TEST(Environment, EveryLitDirectionHasAPdf) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

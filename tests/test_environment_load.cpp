@@ -16,7 +16,7 @@
 #include "test_util.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 const std::string kVenice = test::SharedData("gltf-pbr/environments/venice_sunset_1k.hdr");
@@ -210,4 +210,4 @@ TEST(EnvironmentCli, GpuBindsTheMapWithoutValidationMessages) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

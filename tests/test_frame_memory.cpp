@@ -11,7 +11,7 @@
 
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
@@ -109,4 +109,4 @@ TEST_P(FrameMemory, CountCoversWhatARenderHolds) {
 INSTANTIATE_TEST_SUITE_P(Backends, FrameMemory, ::testing::Values("cpu", "vulkan"));
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -29,7 +29,7 @@
 #include "fuzz/fuzz_input.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace fs = std::filesystem;
@@ -107,14 +107,14 @@ std::string Replay(const std::string& target, const std::string& bytes) {
     std::string error;
     const bool loaded = fuzz::LoadInput(dir, bytes, &error);
     ::rmdir(dir.c_str());
-    return "as " + fuzz::InputFileName(bytes) + ": " + (loaded ? "loaded" : "vkpt::Error: " + error);
+    return "as " + fuzz::InputFileName(bytes) + ": " + (loaded ? "loaded" : "vkpt::internal::Error: " + error);
   }
   try {
     if (target == "options") {
       try {
         fuzz::RunOptions(bytes);
       } catch (const UsageError& e) {
-        return std::string("vkpt::UsageError: ") + e.what();
+        return std::string("vkpt::internal::UsageError: ") + e.what();
       }
       return "parsed";
     }
@@ -124,7 +124,7 @@ std::string Replay(const std::string& target, const std::string& bytes) {
     if (target == "draco") fuzz::RunDraco(bytes);
     if (target == "meshopt") fuzz::RunMeshopt(bytes);
   } catch (const Error& e) {
-    return std::string("vkpt::Error: ") + e.what();
+    return std::string("vkpt::internal::Error: ") + e.what();
   }
   return "decoded";
 }
@@ -155,4 +155,4 @@ INSTANTIATE_TEST_SUITE_P(Kept, FuzzRegression, ::testing::ValuesIn(DiscoverRegre
                          [](const ::testing::TestParamInfo<Regression>& info) { return info.param.name; });
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

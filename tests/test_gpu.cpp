@@ -42,7 +42,7 @@ struct MathOut {
 }  // namespace vkpt::shader
 #include "shaders/shared_math_body.glsl"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using shader::FrameParams;
@@ -740,4 +740,4 @@ TEST_F(GpuTest, PbrSpheresUnderBackgroundAndBothEnvironmentsAgree) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -18,7 +18,7 @@
 #include "test_util.h"
 #include "vkpt/vkpt.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -73,18 +73,18 @@ std::array<float, 3> ExpectedIds(uint32_t px, uint32_t py) {
   return {-1, -1, -1};
 }
 
-api::RenderResult RenderIds(api::Scene& scene, uint32_t spp, uint32_t seed) {
-  api::RenderOptions o;
+vkpt::RenderResult RenderIds(vkpt::Scene& scene, uint32_t spp, uint32_t seed) {
+  vkpt::RenderOptions o;
   o.width = kWidth;
   o.spp = spp;
   o.seed = seed;
   o.aovs = {"object_id", "material_id", "instance_id"};
-  return scene.Render(api::Camera{}, o);
+  return scene.Render(vkpt::Camera{}, o);
 }
 
 TEST(IdAovs, LoaderRecordsEachTrianglesNodeAndInstance) {
   const TempFile file(SquaresFile());
-  const auto s = LoadGltf(file.path);  // vkpt::Scene; the API has a Scene too
+  const auto s = LoadGltf(file.path);  // Scene; the API has a Scene too
   ASSERT_EQ(s.triangles.size(), 10u);  // 5 squares
   const std::vector<std::array<int64_t, 3>> expected = {{0, 0, 0}, {1, 1, 1}, {2, 0, 2}, {2, 0, 3}, {4, 2, 4}};
   for (uint32_t t = 0; t < 10; ++t) {
@@ -101,17 +101,17 @@ TEST(IdAovs, LoaderRecordsEachTrianglesNodeAndInstance) {
 
 TEST(IdAovs, EveryPixelHoldsItsSquaresIdsOnBothBackends) {
   const TempFile file(SquaresFile());
-  for (api::Backend backend : {api::Backend::Cpu, api::Backend::Vulkan}) {
-    api::SceneOptions options;
+  for (vkpt::Backend backend : {vkpt::Backend::Cpu, vkpt::Backend::Vulkan}) {
+    vkpt::SceneOptions options;
     options.backend = backend;
-    api::Scene scene(file.path, options);
-    const char* name = backend == api::Backend::Cpu ? "CPU" : "GPU";
+    vkpt::Scene scene(file.path, options);
+    const char* name = backend == vkpt::Backend::Cpu ? "CPU" : "GPU";
     // The ids come from the pixel's centre alone: any sample count and seed gives them.
     for (const auto& [spp, seed] : {std::pair<uint32_t, uint32_t>{1, 0}, {16, 7}}) {
-      const api::RenderResult r = RenderIds(scene, spp, seed);
+      const vkpt::RenderResult r = RenderIds(scene, spp, seed);
       int wrong = 0;
       for (int k = 0; k < 3; ++k) {
-        const api::Image& layer = r.aovs.at(k == 0 ? "object_id" : k == 1 ? "material_id" : "instance_id");
+        const vkpt::Image& layer = r.aovs.at(k == 0 ? "object_id" : k == 1 ? "material_id" : "instance_id");
         ASSERT_EQ(layer.width, kWidth);
         ASSERT_EQ(layer.height, kHeight);
         ASSERT_EQ(layer.channels, 1u);
@@ -129,14 +129,14 @@ TEST(IdAovs, ACornellBoxEdgeHoldsOneObjectsIdNotABlend) {
   // the two backends' walks agree but for rays that graze an edge.
   std::vector<float> ids[2];
   for (int gpu = 0; gpu < 2; ++gpu) {
-    api::SceneOptions options;
-    options.backend = gpu ? api::Backend::Vulkan : api::Backend::Cpu;
-    api::Scene scene(SourcePath("scenes/cornell.gltf"), options);
-    api::RenderOptions o;
+    vkpt::SceneOptions options;
+    options.backend = gpu ? vkpt::Backend::Vulkan : vkpt::Backend::Cpu;
+    vkpt::Scene scene(SourcePath("scenes/cornell.gltf"), options);
+    vkpt::RenderOptions o;
     o.width = 96;
     o.spp = 4;
     o.aovs = {"object_id"};
-    ids[gpu] = scene.Render(api::Camera{}, o).aovs.at("object_id").data;
+    ids[gpu] = scene.Render(vkpt::Camera{}, o).aovs.at("object_id").data;
   }
   std::set<float> seen;
   int differ = 0;
@@ -152,10 +152,10 @@ TEST(IdAovs, ACornellBoxEdgeHoldsOneObjectsIdNotABlend) {
 
 TEST(IdAovs, NamesSayWhatEachIdIs) {
   const TempFile file(SquaresFile());
-  api::SceneOptions options;
-  options.backend = api::Backend::Cpu;
-  api::Scene scene(file.path, options);
-  const api::RenderResult r = RenderIds(scene, 1, 0);
+  vkpt::SceneOptions options;
+  options.backend = vkpt::Backend::Cpu;
+  vkpt::Scene scene(file.path, options);
+  const vkpt::RenderResult r = RenderIds(scene, 1, 0);
   const nlohmann::json names = nlohmann::json::parse(r.ids);
   EXPECT_EQ(names["none"], -1);
   EXPECT_EQ(names["object_id"], nlohmann::json::parse(R"j([
@@ -166,11 +166,11 @@ TEST(IdAovs, NamesSayWhatEachIdIs) {
   EXPECT_EQ(names["instance_id"], nlohmann::json::parse(R"j([{"id": 0, "object_id": 0, "placement": 0},
     {"id": 1, "object_id": 1, "placement": 0}, {"id": 2, "object_id": 2, "placement": 0},
     {"id": 3, "object_id": 2, "placement": 1}, {"id": 4, "object_id": 4, "placement": 0}])j"));
-  api::RenderOptions plain;
+  vkpt::RenderOptions plain;
   plain.width = 8;
   plain.spp = 1;
   plain.aovs = {"depth"};
-  EXPECT_EQ(scene.Render(api::Camera{}, plain).ids, "");
+  EXPECT_EQ(scene.Render(vkpt::Camera{}, plain).ids, "");
 }
 
 TEST(IdAovs, CommandLineWritesTheNamesBesideTheImage) {
@@ -188,4 +188,4 @@ TEST(IdAovs, CommandLineWritesTheNamesBesideTheImage) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

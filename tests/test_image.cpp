@@ -10,7 +10,7 @@
 #include "test_util.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 TEST(Image, PfmRoundTripIsLossless) {
@@ -79,4 +79,4 @@ TEST(Image, WriteReplacesAtomically) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

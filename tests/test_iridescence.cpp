@@ -14,7 +14,7 @@
 #include "bsdf_harness.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace bsdf_test;
@@ -273,4 +273,4 @@ TEST(Iridescence, SampleWeightIsFCosOverPdf) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -31,7 +31,7 @@
 #include "test_util.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -416,4 +416,4 @@ TEST_F(LightTransport, ConstantEnvironmentEqualsBackground) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -18,7 +18,7 @@
 #include "shared/sampling.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using shader::FrameParams;
@@ -370,4 +370,4 @@ TEST(LightTree, AutoChoosesTheTreeForManyLights) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -13,7 +13,7 @@
 #include "scene/gltf_loader.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -132,4 +132,4 @@ TEST(Lights, LightsPunctualLampHasFivePointLights) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -23,7 +23,7 @@
 #include "test_util.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;  // the glTF builder and its checks (gltf_builder.h)
@@ -867,4 +867,4 @@ TEST(Loader, GlbErrorOnlyHeader) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

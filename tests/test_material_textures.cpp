@@ -22,7 +22,7 @@
 #include "shared/material_textures.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -176,7 +176,7 @@ TEST(MaterialTextures, ClearcoatFactorsAndTexturesAreRead) {
                           R"("clearcoatRoughnessTexture":{"index":0,"texCoord":1},)"
                           R"("clearcoatNormalTexture":{"index":0,"scale":0.5})");
   using namespace shader;
-  const vkpt::Material& m = s.materials[0];
+  const vkpt::internal::Material& m = s.materials[0];
   EXPECT_FLOAT_EQ(m.clearcoat, 0.7f);
   EXPECT_FLOAT_EQ(m.clearcoatRoughness, 0.2f);
   EXPECT_FLOAT_EQ(m.clearcoatNormalScale, 0.5f);
@@ -189,7 +189,7 @@ TEST(MaterialTextures, ClearcoatFactorsAndTexturesAreRead) {
   EXPECT_FALSE(PrepareRenderScene(s).tangents.empty()) << "the coat's normal texture needs tangents";
   for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("clearcoat"), std::string::npos) << f;
   // Absent, the coat is off and its normal texture's scale is 1.
-  const vkpt::Material plain = Load(TexturedTriangle("{}")).materials[0];
+  const vkpt::internal::Material plain = Load(TexturedTriangle("{}")).materials[0];
   EXPECT_EQ(plain.clearcoat, 0.0f);
   EXPECT_EQ(plain.clearcoatNormalScale, 1.0f);
 }
@@ -219,7 +219,7 @@ TEST(MaterialTextures, SheenFactorsAndTexturesAreRead) {
   EXPECT_EQ(packed.sheenRoughness, 0.4f);
   EXPECT_NE(packed.flags & kMaterialExtensionTextured, 0u);
   for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("sheen"), std::string::npos) << f;
-  const vkpt::Material plain = Load(TexturedTriangle("{}")).materials[0];
+  const vkpt::internal::Material plain = Load(TexturedTriangle("{}")).materials[0];
   EXPECT_EQ(plain.sheenColor, glm::vec3(0.0f));
   EXPECT_FALSE(IsLambertian(PackMaterials(s).materials[0]));
 }
@@ -240,7 +240,7 @@ TEST(MaterialTextures, DiffuseTransmissionFactorsAndTexturesAreRead) {
   EXPECT_EQ(packed.diffuseTransmissionColor, vec3(1.0f, 0.9f, 0.85f));
   EXPECT_FALSE(IsLambertian(packed));
   for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("diffuse_transmission"), std::string::npos) << f;
-  const vkpt::Material plain = Load(TexturedTriangle("{}")).materials[0];
+  const vkpt::internal::Material plain = Load(TexturedTriangle("{}")).materials[0];
   EXPECT_EQ(plain.diffuseTransmission, 0.0f);
   EXPECT_EQ(plain.diffuseTransmissionColor, glm::vec3(1.0f));
 }
@@ -253,7 +253,7 @@ TEST(MaterialTextures, IridescenceFactorsAndTexturesAreRead) {
       R"("iridescenceFactor":0.8,"iridescenceIor":1.6,"iridescenceThicknessMinimum":150,"iridescenceThicknessMaximum":900,)"
       R"("iridescenceTexture":{"index":0},"iridescenceThicknessTexture":{"index":0,"texCoord":1})");
   using namespace shader;
-  const vkpt::Material& m = s.materials[0];
+  const vkpt::internal::Material& m = s.materials[0];
   EXPECT_FLOAT_EQ(m.iridescence, 0.8f);
   EXPECT_FLOAT_EQ(m.iridescenceIor, 1.6f);
   EXPECT_FLOAT_EQ(m.iridescenceThicknessMin, 150.0f);
@@ -267,7 +267,7 @@ TEST(MaterialTextures, IridescenceFactorsAndTexturesAreRead) {
   EXPECT_EQ(packed.iridescenceThickness, 900.0f);
   EXPECT_FALSE(IsLambertian(packed));
   for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("iridescence"), std::string::npos) << f;
-  const vkpt::Material plain =
+  const vkpt::internal::Material plain =
       Load(TexturedTriangle(R"({"extensions":{"KHR_materials_iridescence":{}}})")).materials[0];
   EXPECT_EQ(plain.iridescence, 0.0f);
   EXPECT_EQ(plain.iridescenceIor, 1.3f);
@@ -282,7 +282,7 @@ TEST(MaterialTextures, AnisotropyFactorsAndTextureAreRead) {
   Scene s = LoadExtension("KHR_materials_anisotropy",
                           R"("anisotropyStrength":0.6,"anisotropyRotation":7.85398,"anisotropyTexture":{"index":0})");
   using namespace shader;
-  const vkpt::Material& m = s.materials[0];
+  const vkpt::internal::Material& m = s.materials[0];
   EXPECT_FLOAT_EQ(m.anisotropyStrength, 0.6f);
   EXPECT_NEAR(m.anisotropyRotation, 0.5f * kPi, 1e-5f) << "7.85398 rad is a quarter turn and two half turns";
   ExpectDataSlots(s, {kSlotAnisotropy});
@@ -293,7 +293,7 @@ TEST(MaterialTextures, AnisotropyFactorsAndTextureAreRead) {
   EXPECT_EQ(s.generatedTangentPrimitives, 1u);
   EXPECT_FALSE(PrepareRenderScene(s).tangents.empty()) << "the anisotropic lobe needs tangents";
   for (const std::string& f : s.ignoredFeatures) EXPECT_EQ(f.find("anisotropy"), std::string::npos) << f;
-  const vkpt::Material plain = Load(TexturedTriangle("{}")).materials[0];
+  const vkpt::internal::Material plain = Load(TexturedTriangle("{}")).materials[0];
   EXPECT_EQ(plain.anisotropyStrength, 0.0f);
 }
 
@@ -543,4 +543,4 @@ TEST(MaterialTextures, TexturedQuadShowsItsTexels) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

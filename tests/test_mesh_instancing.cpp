@@ -12,7 +12,7 @@
 #include "gltf_builder.h"
 #include "scene/gltf_loader.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -76,4 +76,4 @@ TEST(MeshInstancing, SimpleInstancingDrawsEveryCube) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

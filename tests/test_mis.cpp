@@ -17,7 +17,7 @@
 #include "render/render_scene.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -316,4 +316,4 @@ TEST_F(Mis, MutantMissingJacobianIsCaught) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

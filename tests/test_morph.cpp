@@ -10,7 +10,7 @@
 #include "gltf_builder.h"
 #include "scene/gltf_loader.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -103,4 +103,4 @@ TEST(Morph, MalformedTargetsAndWeightsAreNamed) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

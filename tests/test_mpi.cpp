@@ -19,7 +19,7 @@
 
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using nlohmann::json;
@@ -285,4 +285,4 @@ TEST(Mpi, RanksGivenDifferentFramesAreRefused) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

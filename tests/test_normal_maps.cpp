@@ -14,7 +14,7 @@
 #include "test_util.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -162,4 +162,4 @@ TEST_F(NormalMapsGpu, MatchTheCpu) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -14,7 +14,7 @@
 #include "render/render_scene.h"
 #include "shared/shading_normal.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -226,4 +226,4 @@ TEST(Octahedral, FlatShadedTrianglesDropTheirNormals) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -16,7 +16,7 @@
 #include "app/run_stats.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using nlohmann::json;
@@ -237,4 +237,4 @@ TEST(Options, DefaultsShownAreTheDefaults) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

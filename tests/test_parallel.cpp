@@ -14,7 +14,7 @@
 #include "test_util.h"
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // While armed, every allocation fails (std::bad_alloc) on threads other than the one
@@ -31,10 +31,11 @@ struct FailAllocationsOnOtherThreads {
 };
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal
 
 void* operator new(std::size_t size) {
-  if (vkpt::gFailOtherThreads.load(std::memory_order_relaxed) && std::this_thread::get_id() != vkpt::gArmedBy)
+  if (vkpt::internal::gFailOtherThreads.load(std::memory_order_relaxed) &&
+      std::this_thread::get_id() != vkpt::internal::gArmedBy)
     throw std::bad_alloc();
   if (void* p = std::malloc(size ? size : 1)) return p;
   throw std::bad_alloc();
@@ -54,7 +55,7 @@ void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
 [[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
 [[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 TEST(Parallel, ForVisitsEveryIndexOnce) {
@@ -152,4 +153,4 @@ TEST(Parallel, CpuRendererPassesAProgressCallbacksExceptionToTheCaller) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

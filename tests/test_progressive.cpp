@@ -30,7 +30,7 @@
 #include "util/error.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 BvhBuildOptions GpuLayout() {
@@ -375,4 +375,4 @@ TEST(Progressive, NoiseTargetIsReachedAgainstTheReference) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

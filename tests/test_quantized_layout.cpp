@@ -14,7 +14,7 @@
 #include "render/render_scene.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 RenderScene Prepare(const std::vector<SceneTriangle>& tris, SplitMode splits = SplitMode::kObject) {
@@ -174,4 +174,4 @@ TEST(QuantizedLayout, CheckFindsEachKindOfDamage) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -20,7 +20,7 @@
 #include "test_util.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -170,4 +170,4 @@ TEST_F(RayConesGpu, CameraHitsReadLevelZero) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -11,7 +11,7 @@
 #include "scene/gltf_loader.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 shader::FrameParams Params(const Scene& scene, const RenderScene& rs, uint32_t w, uint32_t h, uint32_t spp, uint32_t maxDepth,
@@ -250,4 +250,4 @@ TEST(Render, CoreSceneEstimatorEqualsTheGeneralOne) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

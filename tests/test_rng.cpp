@@ -9,7 +9,7 @@
 #include "shared/rng.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using shader::Random4;
@@ -176,4 +176,4 @@ TEST(Rng, Sample2DPairsAndPixelsAreIndependent) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

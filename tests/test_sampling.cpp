@@ -9,7 +9,7 @@
 #include "shared/sampling.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace shader;
@@ -101,11 +101,11 @@ TEST(Sampling, TriangleSamplingIsUniformInArea) {
 // table's pmf is exactly what the CDF search realises.
 TEST(Sampling, LightSelectionFollowsPower) {
   std::vector<SceneTriangle> tris;
-  std::vector<vkpt::Material> mats;
+  std::vector<vkpt::internal::Material> mats;
   std::mt19937 rng(4);
   std::uniform_real_distribution<float> u(0.1f, 2.0f);
   for (int i = 0; i < 40; ++i) {
-    vkpt::Material m{};
+    vkpt::internal::Material m{};
     m.emission = i % 5 == 0 ? glm::vec3(0.0f) : glm::vec3(u(rng), u(rng), u(rng));
     m.doubleSided = i % 3 == 0;
     mats.push_back(m);
@@ -146,4 +146,4 @@ TEST(Sampling, LightSelectionFollowsPower) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

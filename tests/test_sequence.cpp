@@ -13,7 +13,7 @@
 #include "gltf_builder.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -101,4 +101,4 @@ TEST(Sequence, MalformedRangesAreUsageErrors) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

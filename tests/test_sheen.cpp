@@ -11,7 +11,7 @@
 #include "bsdf_harness.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace bsdf_test;
@@ -274,4 +274,4 @@ TEST(Sheen, SampleWeightIsFCosOverPdf) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -14,7 +14,7 @@
 #include "gltf_builder.h"
 #include "scene/gltf_loader.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -202,4 +202,4 @@ TEST(Skinning, MalformedSkinAttributesAreNamed) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -18,7 +18,7 @@
 #include "image/image.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace fs = std::filesystem;
@@ -183,4 +183,4 @@ TEST(Stats, FailedRunsWriteNoStats) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -20,7 +20,7 @@
 
 #include "vkpt/vkpt.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
@@ -103,10 +103,10 @@ double HeapInUse() {
 
 // The heap's growth (bytes) from render 50 to render 500 of one loaded scene, 16² at 1 spp.
 double HeapGrowthOverRenders(const char* backend) {
-  api::SceneOptions so;
-  so.backend = std::string(backend) == "cpu" ? api::Backend::Cpu : api::Backend::Vulkan;
-  api::Scene scene(kCornell, so);
-  api::RenderOptions o;
+  vkpt::SceneOptions so;
+  so.backend = std::string(backend) == "cpu" ? vkpt::Backend::Cpu : vkpt::Backend::Vulkan;
+  vkpt::Scene scene(kCornell, so);
+  vkpt::RenderOptions o;
   o.width = o.height = 16;
   o.spp = o.chunkSpp = 1;
   for (int i = 0; i < 50; ++i) scene.Render({}, o);
@@ -140,13 +140,13 @@ TEST_F(SteadyMemoryOnce, MutantsKeepingBuffersOrDescriptorSetsAreCaught) {
 // destroyed; a render with AOVs and the denoiser leaves none, the mutant its buffers.
 std::string TeardownMessages(test::KeptObjects kept) {
   const test::KeepVulkanObjects mutant(kept);
-  api::SceneOptions so;
-  so.backend = api::Backend::Vulkan;
+  vkpt::SceneOptions so;
+  so.backend = vkpt::Backend::Vulkan;
   so.validation = true;
   ::testing::internal::CaptureStderr();
   {
-    api::Scene scene(kCornell, so);
-    api::RenderOptions o;
+    vkpt::Scene scene(kCornell, so);
+    vkpt::RenderOptions o;
     o.width = o.height = 16;
     o.spp = o.chunkSpp = 2;
     o.aovs = {"all"};
@@ -167,4 +167,4 @@ TEST_F(SteadyMemoryOnce, MutantKeepingBuffersFailsTeardown) {
 INSTANTIATE_TEST_SUITE_P(Backends, SteadyMemory, ::testing::Values("cpu", "vulkan"));
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

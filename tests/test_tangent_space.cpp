@@ -18,7 +18,7 @@
 #include "scene/tangent_space.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr glm::vec3 kUp(0.0f, 0.0f, 1.0f);
@@ -324,4 +324,4 @@ TEST(TangentSpace, AgreesWithSuppliedTangents) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

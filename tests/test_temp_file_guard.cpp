@@ -17,7 +17,7 @@
 #include "test_util.h"
 #include "util/temp_file_guard.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace fs = std::filesystem;
@@ -111,4 +111,4 @@ INSTANTIATE_TEST_SUITE_P(Signals, TempFileGuardSignal, ::testing::Values(SIGINT,
                          });
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

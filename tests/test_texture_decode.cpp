@@ -13,7 +13,7 @@
 #include "test_util.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using Bytes = std::vector<unsigned char>;
@@ -210,4 +210,4 @@ TEST(TextureDecode, SeveralThreadsAtOnce) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -1,4 +1,4 @@
-// Texture images as untrusted input: every bad image is a vkpt::Error with a short message
+// Texture images as untrusted input: every bad image is a Error with a short message
 // that reads well after the caller's "scene.gltf: images[3] ... : " prefix, never a crash,
 // a hang, a large allocation or a success. Cuts and corruptions are tried at every byte
 // of small files, so that no position escapes (run under ASan for out-of-bounds reads).
@@ -13,7 +13,7 @@
 #include "test_util.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using Bytes = std::vector<unsigned char>;
@@ -238,4 +238,4 @@ TEST(TextureDecode, MalformedHeaders) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -14,7 +14,7 @@
 #include "render/texture_store.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr uint32_t kLinearFilters = shader::kTextureMagLinear | shader::kTextureMinLinear;
@@ -169,4 +169,4 @@ TEST(TextureFilter, MipChainsConserveTheMean) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

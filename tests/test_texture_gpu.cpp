@@ -20,7 +20,7 @@
 
 #include "kTextureLookupSpirv.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 struct TextureLookup {  // as in texture_lookup.comp (std430)
@@ -156,4 +156,4 @@ TEST_F(TextureGpuTest, LookupsReturnTheCpusBits) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

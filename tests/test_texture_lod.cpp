@@ -19,7 +19,7 @@
 #include "test_util.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 struct LodModel {
@@ -99,4 +99,4 @@ TEST_F(TextureLod, MutantFilteringEverythingIsCaught) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

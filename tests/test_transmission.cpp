@@ -13,7 +13,7 @@
 #include "render/render_scene.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 shader::FrameParams SlabParams(const Scene& s, const RenderScene& rs, glm::vec3 background) {
@@ -77,4 +77,4 @@ TEST(Transmission, RoughGlassSphereInAWhiteFurnaceReturnsOne) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -20,7 +20,7 @@
 #include "util/byte_size.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace fs = std::filesystem;
@@ -406,4 +406,4 @@ TEST(Messages, UsageErrorForABadMemorySize) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -25,7 +25,7 @@
 #include "render/texture_store.h"
 #include "shared/estimator.h"
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 std::string SourcePath(const std::string& relative) { return std::string(VKPT_SOURCE_DIR) + "/" + relative; }
 
@@ -563,4 +563,4 @@ std::string RleHdr(int width, int height) {
   return s;
 }
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

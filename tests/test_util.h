@@ -14,7 +14,7 @@
 #include "session/budget.h"
 #include "session/render_session.h"
 
-namespace vkpt::test {
+namespace vkpt::internal::test {
 
 // Time limits inside tests are multiplied by this: 1, or 4 in a sanitizer build
 // (VKPT_SANITIZE), where code runs several times slower.
@@ -51,17 +51,17 @@ std::string CorpusPath(const std::string& relative);  // SharedData("gltf-corpus
 std::string SharedDataMissing();                      // the line a test skips (or fails) with
 bool SharedDataRequired();                            // $VKPT_REQUIRE_TEST_DATA is set
 // A macro, not a function: GTEST_SKIP() and FAIL() end the test by returning from it.
-#define VKPT_REQUIRE_SHARED_DATA()                                                       \
-  do {                                                                                   \
-    if (!::vkpt::test::SharedDataDir().empty()) break;                                   \
-    if (::vkpt::test::SharedDataRequired()) FAIL() << ::vkpt::test::SharedDataMissing(); \
-    GTEST_SKIP() << ::vkpt::test::SharedDataMissing();                                   \
+#define VKPT_REQUIRE_SHARED_DATA()                                                                           \
+  do {                                                                                                       \
+    if (!::vkpt::internal::test::SharedDataDir().empty()) break;                                             \
+    if (::vkpt::internal::test::SharedDataRequired()) FAIL() << ::vkpt::internal::test::SharedDataMissing(); \
+    GTEST_SKIP() << ::vkpt::internal::test::SharedDataMissing();                                             \
   } while (0)
 // The CIE 1931 matching functions (scripts/cie_1931.h) as `cmf`, or the test skips
 // naming the missing file. A macro for the same reason.
-#define VKPT_REQUIRE_CMF(cmf)                          \
-  const ::vkpt::cie::Cmf cmf = ::vkpt::cie::LoadCmf(); \
-  if (cmf.x.empty()) GTEST_SKIP() << ::vkpt::cie::kCmfPath << " is missing (Debian's colord-data)"
+#define VKPT_REQUIRE_CMF(cmf)                                              \
+  const ::vkpt::internal::cie::Cmf cmf = ::vkpt::internal::cie::LoadCmf(); \
+  if (cmf.x.empty()) GTEST_SKIP() << ::vkpt::internal::cie::kCmfPath << " is missing (Debian's colord-data)"
 std::string TempPath(const std::string& name);        // unique per test process
 std::string FreshTempDirectory(const std::string& name);           // TempPath(name), created empty
 std::vector<std::string> DirectoryListing(const std::string& dir);  // entry names, sorted
@@ -217,4 +217,4 @@ int PixelsNear(const Image& image, glm::vec3 expected, float tolerance);
 // renders one process's frame.
 RenderedFrame RenderUnderBudget(FrameRenderer& frame, const RenderBudget& budget);
 
-}  // namespace vkpt::test
+}  // namespace vkpt::internal::test

@@ -16,7 +16,7 @@
 #include "test_util.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -154,4 +154,4 @@ TEST(Variants, ShoeRendersEachVariantInItsColours) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

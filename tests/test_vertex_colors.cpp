@@ -16,7 +16,7 @@
 #include "render/render_scene.h"
 #include "shared/vertex_color.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -151,4 +151,4 @@ TEST(VertexColors, MultiplyTheBaseColorInARender) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

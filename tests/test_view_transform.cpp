@@ -14,7 +14,7 @@
 #include "image/view_transform.h"
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 struct Published {
@@ -183,4 +183,4 @@ TEST(ViewTransform, CliPngIsTheLinearImageThroughTheView) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

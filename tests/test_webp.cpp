@@ -16,7 +16,7 @@
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using namespace test;
@@ -135,4 +135,4 @@ TEST(Webp, CesiumBoxWebpLoadsWithNothingIgnored) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -14,7 +14,7 @@
 
 #include "test_util.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace fs = std::filesystem;
@@ -127,4 +127,4 @@ INSTANTIATE_TEST_SUITE_P(Formats, WriteFailure, ::testing::Values("png", "pfm", 
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 std::string JsonString(std::string_view s) {
   std::string out = "\"";
@@ -43,4 +43,4 @@ JsonObject& JsonObject::Raw(std::string_view key, const std::string& json) {
   return *this;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 std::string JsonString(std::string_view s);  // quoted, with every character JSON requires escaped
 std::string JsonNumber(double v);            // shortest round-trip form; null if not finite
@@ -28,4 +28,4 @@ class JsonObject {
   std::string members_;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

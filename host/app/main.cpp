@@ -15,7 +15,7 @@
 #include "cluster/cluster.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // An MPI job's rank: every failure ends the whole job.
@@ -58,10 +58,10 @@ int MainOfProcess(int argc, char** argv) {
 }
 
 }  // namespace
-}  // namespace vkpt
+}  // namespace vkpt::internal
 
 int main(int argc, char** argv) {
-  using namespace vkpt;
+  using namespace vkpt::internal;
   // Past a file-size limit (ulimit -f) the kernel sends SIGXFSZ, whose default action
   // kills vkpt mid-write with the temporary left behind; ignored, write(2) fails with
   // EFBIG and the checked writer reports it and cleans up.

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <utility>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 OptionDef Row(std::vector<std::string> names, std::string value, std::string meaning, std::string defaultText,
@@ -256,4 +256,4 @@ std::string OptionHelpLines() {
   return help;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 
 #include "app/option_values.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct OptionDef {
   std::vector<std::string> names;  // as listed: "-v", "--verbose"
@@ -33,4 +33,4 @@ std::string OptionTableMarkdown();
 // The options part of --help: each option, its meaning, values and default, wrapped.
 std::string OptionHelpLines();
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "util/byte_size.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 std::string FormatNumber(double v) {
   char text[32];
@@ -261,4 +261,4 @@ OptionValue FramesValue() {
   return {"FIRST ≤ LAST in " + RangeText(numbers) + ", STEP ≥ 1", set, json};
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

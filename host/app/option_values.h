@@ -13,7 +13,7 @@
 
 #include "app/options.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // What was given for an option: its name as written and its values (none for a flag).
 struct GivenOption {
@@ -114,4 +114,4 @@ OptionValue MaxMemoryValue();
 OptionValue MaxTexelsValue();
 OptionValue AllowExternalUrisValue();
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -5,7 +5,7 @@
 #include "app/option_table.h"
 #include "session/budget.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // The options table (app/option_table.cpp) between these two.
@@ -91,4 +91,4 @@ Options ParseOptions(int argc, const char* const* argv) {
   return o;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

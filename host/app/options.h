@@ -16,7 +16,7 @@
 #include "session/budget.h"
 #include "session/chunked_frame.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // --frames FIRST:LAST[:STEP]: the frame numbers FIRST, FIRST + STEP, … up to LAST.
 struct FrameRange {
@@ -93,4 +93,4 @@ class UsageError : public std::runtime_error {
 Options ParseOptions(int argc, const char* const* argv);
 std::string HelpText();
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

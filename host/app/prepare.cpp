@@ -9,7 +9,7 @@
 #include "util/atomic_write.h"
 #include "util/byte_size.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Warnings and notices to stderr, what was loaded to stdout with -v; nothing where
@@ -50,4 +50,4 @@ Prepared Prepare(const Options& o, bool report, uint32_t ranks) {
   return p;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

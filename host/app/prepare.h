@@ -8,7 +8,7 @@
 #include "app/options.h"
 #include "app/scene_client.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct Prepared {
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
@@ -31,4 +31,4 @@ Prepared Prepare(const Options& o, bool report, uint32_t ranks = 1);
 // frame's device buffers go before the next's are made.
 void PrepareFrame(Prepared& p, const Options& o, bool report, uint32_t ranks = 1);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

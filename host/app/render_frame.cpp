@@ -14,7 +14,7 @@
 #include "util/atomic_write.h"
 #include "util/graceful_stop.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 RenderedFrame RenderReference(Prepared& p, const Options& o) {
   const RenderBackend cpu(nullptr, p.rs(), o.threads);
@@ -82,4 +82,4 @@ int Finish(const Options& o, Prepared& p, const RenderedView& rendered, const Re
   return status;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 #include "app/prepare.h"
 #include "session/render_session.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // --compare's reference: the begun frame's samples on the CPU, without budgets but --spp.
 RenderedFrame RenderReference(Prepared& p, const Options& o);
@@ -20,4 +20,4 @@ RenderedFrame RenderReference(Prepared& p, const Options& o);
 int Finish(const Options& o, Prepared& p, const RenderedView& rendered, const RenderedFrame* reference,
            std::string* frameStats = nullptr);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 #include "util/byte_size.h"
 #include "util/graceful_stop.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // " alpha MASK (cutoff c)", " alpha BLEND", or nothing for OPAQUE; with the factor's alpha.
@@ -210,4 +210,4 @@ int CompareBackends(const RenderedFrame& reference, const RenderedFrame& frame, 
   return 4;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -12,7 +12,7 @@
 #include "scene/scene.h"
 #include "session/render_session.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& cam, uint32_t camIndex);
 
@@ -32,4 +32,4 @@ void PrintRenderReport(const Scene& scene, const RenderScene& rs, const Rendered
 // (lockstep) and in every region's mean (statistics); 4 if they do not, else 0.
 int CompareBackends(const RenderedFrame& reference, const RenderedFrame& frame, const Options& o);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -29,7 +29,7 @@
 #include "util/graceful_stop.h"
 #include "vk/context.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 int ListDevices() {
@@ -226,4 +226,4 @@ int RunRank(Cluster& cluster, int argc, char** argv) {
   return status;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

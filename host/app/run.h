@@ -6,7 +6,7 @@
 #include "app/options.h"
 #include "cluster/cluster.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Returns the exit status; throws Error for a failure.
 int Run(const Options& o);
@@ -16,4 +16,4 @@ int Run(const Options& o);
 // them. Returns the exit status, the same on every rank.
 int RunRank(Cluster& cluster, int argc, char** argv);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

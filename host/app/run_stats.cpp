@@ -6,7 +6,7 @@
 #include "app/json_object.h"
 #include "app/option_table.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 std::string Vec3(double x, double y, double z) { return JsonArray({JsonNumber(x), JsonNumber(y), JsonNumber(z)}); }
@@ -110,4 +110,4 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   return j.Text() + "\n";
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -13,7 +13,7 @@
 #include "scene/scene.h"
 #include "session/render_session.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct RunOutcome {
   const Scene& scene;
@@ -32,4 +32,4 @@ std::string StatsJson(const Options& o, const RunOutcome& run);
 // The "options" object of the stats alone.
 std::string OptionsAsJson(const Options& o);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,22 +9,16 @@
 #include "image/image.h"
 #include "session/aov.h"
 #include "util/graceful_stop.h"
-
-namespace vkpt {
-using CliBackend = Backend;            // vkpt::Backend is ambiguous once api::Backend exists
-using CliLightSampler = LightSampler;  // likewise
-}  // namespace vkpt
-
 #include "vkpt/client.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
-api::SceneOptions SceneOptionsOf(const Options& o) {
-  api::SceneOptions s;
-  s.backend = o.backend == CliBackend::Cpu      ? api::Backend::Cpu
-              : o.backend == CliBackend::Vulkan ? api::Backend::Vulkan
-                                                : api::Backend::Auto;
+vkpt::SceneOptions SceneOptionsOf(const Options& o) {
+  vkpt::SceneOptions s;
+  s.backend = o.backend == Backend::Cpu      ? vkpt::Backend::Cpu
+              : o.backend == Backend::Vulkan ? vkpt::Backend::Vulkan
+                                             : vkpt::Backend::Auto;
   s.device = o.device;
   s.validation = o.validation;
   s.threads = o.threads;
@@ -35,9 +29,9 @@ api::SceneOptions SceneOptionsOf(const Options& o) {
   s.animation = o.animation;
   s.environment = o.env;
   s.environmentIntensity = o.envIntensity;
-  s.lightSampler = o.lightSampler == CliLightSampler::kTree    ? api::LightSampler::Tree
-                   : o.lightSampler == CliLightSampler::kPower ? api::LightSampler::Power
-                                                               : api::LightSampler::Auto;
+  s.lightSampler = o.lightSampler == LightSampler::kTree    ? vkpt::LightSampler::Tree
+                   : o.lightSampler == LightSampler::kPower ? vkpt::LightSampler::Power
+                                                            : vkpt::LightSampler::Auto;
   return s;
 }
 
@@ -45,8 +39,8 @@ ClientScene ClientSceneOf(const Options& o, const EngineLog& log) {
   return {o.leafSize, o.splits, o.compare, !o.frames, o.at.value_or(0.0), log};
 }
 
-api::Camera CameraOf(const Options& o) {
-  api::Camera c;
+vkpt::Camera CameraOf(const Options& o) {
+  vkpt::Camera c;
   c.index = o.camera;
   c.lookFrom = o.lookFrom;
   c.lookAt = o.lookAt;
@@ -56,8 +50,8 @@ api::Camera CameraOf(const Options& o) {
   return c;
 }
 
-api::RenderOptions RenderOptionsOf(const Options& o) {
-  api::RenderOptions r;
+vkpt::RenderOptions RenderOptionsOf(const Options& o) {
+  vkpt::RenderOptions r;
   r.width = o.width;
   r.height = o.height;
   r.spp = o.spp;  // the bound, already raised by a time or noise target (options.cpp)
@@ -105,8 +99,8 @@ ClientView ClientViewOf(const Options& o, const EngineLog& log, uint32_t ranks) 
 }
 
 struct SceneClient::Impl {
-  api::Scene scene;
-  api::RenderOptions frame;  // the render options of the frame begun last
+  vkpt::Scene scene;
+  vkpt::RenderOptions frame;  // the render options of the frame begun last
 };
 
 SceneClient::SceneClient(const Options& o, const EngineLog& log)
@@ -129,4 +123,4 @@ RenderedView SceneClient::Finish(BegunView& view, SampleSource& source, const Cl
   return rendered;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 #include "session/sample_source.h"
 #include "vkpt/view.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class SceneClient {
  public:
@@ -40,4 +40,4 @@ class SceneClient {
 // process that does not report).
 ClientView ClientViewOf(const Options& o, const EngineLog& log, uint32_t ranks);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -4,7 +4,7 @@
 
 #include "util/atomic_write.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 std::vector<uint32_t> FrameNumbers(const FrameRange& range) {
   std::vector<uint32_t> numbers;
@@ -46,4 +46,4 @@ void WriteSequenceStats(const std::string& path, const std::vector<std::string>&
   WriteFileAtomically(path, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 
 #include "app/options.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // FIRST, FIRST + STEP, … up to LAST.
 std::vector<uint32_t> FrameNumbers(const FrameRange& range);
@@ -27,4 +27,4 @@ Options FrameOptions(const Options& o, uint32_t frame);
 // atomically.
 void WriteSequenceStats(const std::string& path, const std::vector<std::string>& frames);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -6,7 +6,7 @@
 
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 class Scheduler {
@@ -96,4 +96,4 @@ void BuildSubtrees(unsigned threads, const Task& root, const SubdivideFn& subdiv
   Scheduler(threads, root, subdivide).Run();
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -12,7 +12,7 @@
 
 #include "util/bounds.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 constexpr uint32_t kParallelNode = 1u << 15, kShareNode = 1u << 12;
 
@@ -39,4 +39,4 @@ using SubdivideFn = std::function<void(const Task&, std::vector<Task>&, unsigned
 // node. An exception from any call stops every thread and is rethrown here.
 void BuildSubtrees(unsigned threads, const Task& root, const SubdivideFn& subdivide);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

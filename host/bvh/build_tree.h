@@ -12,7 +12,7 @@
 #include "util/float4.h"
 #include "util/huge_pages.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // 32 bytes, laid out so that 16-byte loads at box.lo and box.hi give x, y, z in lanes 0-2
 // (lane 3 holds the next field and is ignored). The centroid is not stored: it is
@@ -81,4 +81,4 @@ class TreeLayout {
   BvhStats stats_;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

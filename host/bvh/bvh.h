@@ -13,7 +13,7 @@
 #include "util/bounds.h"
 #include "util/huge_pages.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Which planes may split a node (see BvhBuildOptions::splits).
 enum class SplitMode {
@@ -99,7 +99,7 @@ struct Bvh {
 
 // Builds over primitive bounding boxes (one per triangle). Degenerate boxes (zero area,
 // zero extent) are fine. `vertices` holds three per primitive, in order; spatial splits
-// need them (and are skipped without them). Throws vkpt::Error for an empty input or bad
+// need them (and are skipped without them). Throws Error for an empty input or bad
 // options.
 Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& options = {},
              std::span<const glm::vec3> vertices = {});
@@ -114,4 +114,4 @@ inline bool IsLeaf(const shader::BvhNode& n) { return n.leaf != 0u; }
 inline uint32_t LeafFirst(const shader::BvhNode& n) { return n.leaf >> 4; }
 inline uint32_t LeafCount(const shader::BvhNode& n) { return n.leaf & 15u; }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "bvh/build_tree.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 void CheckInput(std::span<const Bounds3f> primBounds, const BvhBuildOptions& options,
@@ -62,4 +62,4 @@ Bvh BuildBvh(std::span<const Bounds3f> primBounds, const BvhBuildOptions& option
   return bvh;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "util/bounds.h"
 #include "util/float4.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // A box in lanes 0-2 of two vectors.
 struct Box4 {
@@ -51,4 +51,4 @@ inline Bounds3f Conservative(const Box4& part, const Bounds3f& reference) {
   return Intersection(b, reference);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "bvh/bvh.h"
 #include "util/bounds.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Up to Width binary nodes, in the binary tree's order.
 template <int Width>
@@ -44,4 +44,4 @@ CollapsedChildren<Width> CollapseChildren(std::span<const shader::BvhNode> nodes
   return kids;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

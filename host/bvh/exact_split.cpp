@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // sorted[a][k]: the reference of rank k along axis a. Each reference's rank along all
@@ -59,4 +59,4 @@ void ApplyExactSplit(std::span<BuildPrim> refs, const ExactSplit& split) {
   std::copy(sorted, sorted + refs.size(), refs.begin());
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 #include "bvh/build_tree.h"
 #include "bvh/sah.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Nodes of at most this many references are split exactly.
 constexpr uint32_t kExactSplitMax = 8;
@@ -29,4 +29,4 @@ ExactSplit FindExactSplit(std::span<const BuildPrim> refs, const Bounds3f& box, 
 // Puts `refs` in split.order, so that the first split.bin go left.
 void ApplyExactSplit(std::span<BuildPrim> refs, const ExactSplit& split);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "bvh/build_tree.h"
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 class Flattener {
@@ -194,4 +194,4 @@ uint32_t TreeLayout::Copies() const { return Flattener::Copies(opt_, stats_.node
 
 Bvh TreeLayout::Write() const { return Flattener(tree_, opt_, threads_).Write(info_, stats_); }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

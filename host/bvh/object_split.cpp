@@ -2,7 +2,7 @@
 
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Counts `refs` into out's bins by centroid: bins [a·nb, (a+1)·nb) for axis a, all three
@@ -60,4 +60,4 @@ Split FindObjectSplit(std::span<const BuildPrim> refs, const Bounds3f& box, cons
   return best;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 #include "bvh/build_tree.h"
 #include "bvh/sah.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Centroid → bin index along all three axes at once: nb bins spanning the node's
 // centroid bounds. Binning and partitioning both use it, so they agree to the last bit.
@@ -41,4 +41,4 @@ struct BinMap {
 Split FindObjectSplit(std::span<const BuildPrim> refs, const Bounds3f& box, const Bounds3f& centroids,
                       const BvhBuildOptions& o, unsigned threads);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

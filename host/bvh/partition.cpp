@@ -5,7 +5,7 @@
 
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr uint32_t kBlock = 1u << 14;
@@ -105,4 +105,4 @@ Partition PartitionByBin(std::span<BuildPrim> refs, const BinMap& map, const Spl
   return {mid, lc.Box(), rc.Box()};
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

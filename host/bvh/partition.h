@@ -7,7 +7,7 @@
 
 #include "bvh/object_split.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Ranges of at least this many references are partitioned in fixed blocks (on all the
 // threads given); smaller ones in one pass. Which way a range goes decides the order of
@@ -25,4 +25,4 @@ struct Partition {
 // are gathered on the way.
 Partition PartitionByBin(std::span<BuildPrim> refs, const BinMap& map, const Split& split, unsigned threads);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

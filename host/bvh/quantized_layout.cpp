@@ -9,7 +9,7 @@
 #include "util/bounds.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 float Cell(uint32_t biasedExponent) { return std::bit_cast<float>(biasedExponent << 23); }
@@ -159,4 +159,4 @@ std::vector<shader::WideBvhNode> BuildQuantizedLayout(std::span<const shader::Bv
   return out;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -11,7 +11,7 @@
 
 #include "shared/layout.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 constexpr int kGpuBvhWidth = 4;
 
@@ -30,4 +30,4 @@ struct QuantizedBox {
 };
 QuantizedBox ChildBox(const shader::WideBvhNode& node, int k);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

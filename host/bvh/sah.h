@@ -12,7 +12,7 @@
 #include "util/bounds.h"
 #include "util/float4.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // A box in lanes 0-2 of lo and hi (lane 3 is whatever the primitives carried), and how
 // many references it holds.
@@ -85,4 +85,4 @@ void SweepBins(const Bin* bins, const BvhBuildOptions& o, Enters&& enters, Exits
   }
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -5,7 +5,7 @@
 
 #include "bvh/clip_triangle.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -149,4 +149,4 @@ std::optional<Sides> SplitSpatially(std::span<BuildPrim> slots, uint32_t count, 
   return Sides{uint32_t(left.size()), uint32_t(right.size())};
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -11,7 +11,7 @@
 #include "bvh/build_tree.h"
 #include "bvh/sah.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The plane at the lower boundary of spatial bin `bin` along `axis` (o.bins bins of
 // equal width spanning the node's box).
@@ -40,4 +40,4 @@ std::optional<Sides> SplitSpatially(std::span<BuildPrim> slots, uint32_t count, 
                                     const SpatialSplit& split, std::span<const glm::vec3> vertices,
                                     const BvhBuildOptions& o);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -14,7 +14,7 @@
 #include "bvh/spatial_split.h"
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Orders primitives by centroid along `axis`, ties by index (so the order is unique).
@@ -218,4 +218,4 @@ BuildTree BuildTreeOver(std::span<const Bounds3f> bounds, const BvhBuildOptions&
   return TreeBuilder(bounds, options, vertices, threads).Build();
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -7,7 +7,7 @@
 #include "util/bounds.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Appends the packets of flattened leaf code `leaf`; returns the wide layout's leaf code.
@@ -80,4 +80,4 @@ BvhWideLayout BuildWideLayout(std::span<const shader::BvhNode> nodes, uint32_t n
   return layout;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

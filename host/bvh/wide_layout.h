@@ -15,7 +15,7 @@
 #include "util/float4.h"
 #include "util/huge_pages.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Children per node. Eight rather than four: a tree of half as many levels, so half as
 // many nodes' worth of waiting on memory per ray (docs/design-notes.md, "CPU: wide nodes").
@@ -56,4 +56,4 @@ struct BvhWideLayout {
 BvhWideLayout BuildWideLayout(std::span<const shader::BvhNode> nodes, uint32_t nodeCount,
                               const std::vector<shader::Triangle>& triangles);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

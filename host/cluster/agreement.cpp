@@ -6,7 +6,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 int AgreeOnOutcome(Cluster& cluster, int status, const std::string& message, const char* kind) {
   const std::vector<std::string> all = cluster.Gather(std::to_string(status) + ":" + message);
@@ -30,4 +30,4 @@ int AgreeOnOutcome(Cluster& cluster, int status, const std::string& message, con
   return worst;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

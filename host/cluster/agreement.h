@@ -8,11 +8,11 @@
 
 #include "cluster/cluster.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Every rank's `status` (0: success) and `message` gathered at rank 0. When some failed,
 // rank 0 prints each different message once as "vkpt: <kind>: …" (naming the ranks when
 // the messages differ between ranks), and every rank returns the worst status.
 int AgreeOnOutcome(Cluster& cluster, int status, const std::string& message, const char* kind);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

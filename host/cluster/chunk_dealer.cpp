@@ -14,7 +14,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // The protocol: a rank sends kRequest and gets kAssign (a chunk index, or kNoChunk, and
@@ -264,4 +264,4 @@ void RenderDealtChunks(Cluster& cluster, const ChunkRenderer& render) {
   }
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

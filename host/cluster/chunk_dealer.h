@@ -20,7 +20,7 @@
 #include "cluster/cluster.h"
 #include "render/film.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct ChunkPlan {
   uint32_t spp = 0;       // samples per pixel of the frame
@@ -87,4 +87,4 @@ class ChunkDealer {
 // Every other rank: renders the chunks rank 0 deals it until rank 0 says there are none.
 void RenderDealtChunks(Cluster& cluster, const ChunkRenderer& render);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -4,7 +4,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 struct ChunkHeader {
@@ -82,4 +82,4 @@ FrameSums DecodeChunk(const std::vector<uint8_t>& bytes, uint32_t* chunk, double
   return s;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

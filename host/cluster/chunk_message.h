@@ -7,11 +7,11 @@
 
 #include "render/film.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // A chunk's sums as sent, with the seconds it took to render, and back: a 48-byte header
 // and 28 bytes per pixel when every sum is a float exactly (a GPU's chunk), else 52.
 std::vector<uint8_t> EncodeChunk(uint32_t chunk, const FrameSums& sums, double seconds);
 FrameSums DecodeChunk(const std::vector<uint8_t>& bytes, uint32_t* chunk, double* seconds);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <thread>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 std::string Cluster::Name(int rank) const {
   const std::string host = rank == Rank() ? Host() : size_t(rank) < hosts_.size() ? hosts_[rank] : "?";
@@ -25,4 +25,4 @@ Cluster::Envelope Cluster::Wait(int from, int tag) {
   }
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

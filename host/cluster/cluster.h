@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class Cluster {
  public:
@@ -55,4 +55,4 @@ std::unique_ptr<Cluster> JoinCluster(int* argc, char*** argv);
 // "MPI (Open MPI v4.1.4, …)" or "none (built without MPI)", for --version.
 std::string ClusterSupport();
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 #include "cluster/launcher_env.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // MPI counts in int: a message larger than this goes in parts.
@@ -127,4 +127,4 @@ std::string ClusterSupport() {
   return "MPI (" + v + ")";
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -5,7 +5,7 @@
 #include "cluster/launcher_env.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 std::unique_ptr<Cluster> JoinCluster(int*, char***) {
   const int size = LauncherProcessCount();
@@ -18,4 +18,4 @@ std::unique_ptr<Cluster> JoinCluster(int*, char***) {
 
 std::string ClusterSupport() { return "none (built without MPI)"; }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

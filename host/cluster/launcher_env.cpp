@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <initializer_list>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 int LauncherProcessCount() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
@@ -15,4 +15,4 @@ int LauncherProcessCount() {
   return 1;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -3,8 +3,8 @@
 // 1 when neither is set. Read before MPI_Init, so that a process run alone never initialises MPI.
 #pragma once
 
-namespace vkpt {
+namespace vkpt::internal {
 
 int LauncherProcessCount();
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

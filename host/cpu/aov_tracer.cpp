@@ -10,7 +10,8 @@
 
 namespace vkpt::shader {
 
-inline HitRecord TraceCounted(const RenderScene& scene, vec3 origin, vec3 dir, uint alphaKey, uint& boxTests) {
+inline HitRecord TraceCounted(const internal::RenderScene& scene, vec3 origin, vec3 dir, uint alphaKey,
+                              uint& boxTests) {
   return IntersectClosestCounted(scene, origin, dir, alphaKey, boxTests);
 }
 
@@ -18,14 +19,14 @@ inline HitRecord TraceCounted(const RenderScene& scene, vec3 origin, vec3 dir, u
 
 #include "shared/aov.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 bool IsFinite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
 
-AovSums RenderAovsCpu(const RenderScene& scene, const shader::FrameParams& params, const AovRequest& request,
+AovSums RenderAovsCpu(const internal::RenderScene& scene, const shader::FrameParams& params, const AovRequest& request,
                       unsigned threads) {
   const uint32_t samples = request.samples;
   AovSums sums;
@@ -60,4 +61,4 @@ AovSums RenderAovsCpu(const RenderScene& scene, const shader::FrameParams& param
   return sums;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

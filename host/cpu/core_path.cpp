@@ -41,7 +41,7 @@
 #undef VKPT_BEGIN_NAMESPACE
 #undef VKPT_END_NAMESPACE
 
-namespace vkpt {
+namespace vkpt::internal {
 
 bool IsCoreScene(const RenderScene& scene) {
   return !UsesClearcoat(scene) && !UsesSheen(scene) && !UsesDiffuseTransmission(scene) && !UsesIridescence(scene) &&
@@ -53,4 +53,4 @@ glm::vec3 SampleRadianceCore(const RenderScene& scene, const shader::FrameParams
   return CountRays(shader::core::TracePath(scene, params, px, py, sampleIndex), stats);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -11,18 +11,18 @@
 namespace vkpt::shader {
 
 // Scenes without MASK or BLEND materials take the walk that tests no alpha.
-inline HitRecord TraceClosest(const RenderScene& scene, vec3 origin, vec3 dir, float tMax, uint alphaKey) {
+inline HitRecord TraceClosest(const internal::RenderScene& scene, vec3 origin, vec3 dir, float tMax, uint alphaKey) {
   return scene.alphaTested ? IntersectClosestAlpha(scene, origin, dir, tMax, alphaKey)
                            : IntersectClosest(scene, origin, dir, tMax);
 }
 
-inline bool TraceOccluded(const RenderScene& scene, vec3 origin, vec3 dir, float tMax, uint alphaKey) {
+inline bool TraceOccluded(const internal::RenderScene& scene, vec3 origin, vec3 dir, float tMax, uint alphaKey) {
   return scene.alphaTested ? OccludedAlpha(scene, origin, dir, tMax, alphaKey) : Occluded(scene, origin, dir, tMax);
 }
 
 }  // namespace vkpt::shader
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The radiance of a path (a PathSample of one of the estimator's compilations), its rays
 // counted in `stats`.
@@ -32,7 +32,7 @@ glm::vec3 CountRays(const PathSample& s, SampleStats& stats) {
   return s.radiance;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal
 
 #include "shared/environment.h"
 #include "shared/path.h"

@@ -13,7 +13,7 @@
 #include "util/error.h"
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 using namespace shader;
 
@@ -127,4 +127,4 @@ RenderResult RenderCpu(const RenderScene& scene, const FrameParams& params, cons
   return result;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "render/film.h"
 #include "render/render_scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct SampleStats {
   uint64_t rays = 0;       // closest-hit + shadow rays
@@ -53,4 +53,4 @@ std::unique_ptr<FrameRenderer> BeginCpuFrame(const RenderScene& scene, const sha
 RenderResult RenderCpu(const RenderScene& scene, const shader::FrameParams& params,
                        const CpuRenderOptions& options = {});
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -53,7 +53,7 @@
 #undef VKPT_BEGIN_NAMESPACE
 #undef VKPT_END_NAMESPACE
 
-namespace vkpt {
+namespace vkpt::internal {
 
 bool IsSimpleScene(const RenderScene& scene, const shader::FrameParams& params) {
   for (const shader::Light& l : scene.lights)
@@ -69,4 +69,4 @@ glm::vec3 SampleRadianceSimple(const RenderScene& scene, const shader::FramePara
   return CountRays(shader::simple::TracePath(scene, params, px, py, sampleIndex), stats);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

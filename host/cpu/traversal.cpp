@@ -17,7 +17,7 @@
 #define VKPT_AVX2_WALK 0
 #endif
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 namespace portable {
@@ -107,4 +107,4 @@ Hit IntersectClosestCounted(const RenderScene& scene, glm::vec3 origin, glm::vec
   return Best().counted(scene, origin, dir, alphaKey, boxTests);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

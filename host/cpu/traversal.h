@@ -8,7 +8,7 @@
 #include "render/render_scene.h"
 #include "shared/layout.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The hit record the GPU returns too (shaders/shared/layout.h): t < 0 means no hit.
 using Hit = shader::HitRecord;
@@ -38,4 +38,4 @@ WalkIsa BestWalkIsa();
 Hit IntersectClosest(WalkIsa isa, const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax);
 bool Occluded(WalkIsa isa, const RenderScene& scene, glm::vec3 origin, glm::vec3 dir, float tMax);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

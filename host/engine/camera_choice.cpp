@@ -5,7 +5,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 Camera SceneCamera(const Scene& scene, const CameraSettings& c, const std::string& path) {
@@ -64,4 +64,4 @@ glm::uvec2 ImageSize(const Camera& cam, const PictureSettings& p) {
   return {std::max(1u, std::min(width, 16384u)), std::max(1u, std::min(height, 16384u))};
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

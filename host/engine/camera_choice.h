@@ -9,7 +9,7 @@
 #include "engine/settings.h"
 #include "scene/scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The scene's camera `c.index` (or, in a scene without cameras, one framing it) moved by
 // look-from, look-at and up, turned by orbit, with the field of view given. Errors name
@@ -20,4 +20,4 @@ Camera ChooseCamera(const Scene& scene, const CameraSettings& c, const std::stri
 // when neither is given).
 glm::uvec2 ImageSize(const Camera& cam, const PictureSettings& p);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -6,7 +6,7 @@
 #include "scene/load_limits.h"
 #include "util/byte_size.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 EnvironmentMap LoadEnvironment(const SceneSettings& s, const Scene& scene, const EngineLog& log, uint64_t* counted) {
   *counted = 0;
@@ -28,4 +28,4 @@ EnvironmentMap LoadEnvironment(const SceneSettings& s, const Scene& scene, const
   return env;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

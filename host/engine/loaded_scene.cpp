@@ -10,7 +10,7 @@
 #include "shared/sampling.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // The Vulkan context the settings ask for: required for Backend::Vulkan, a named device,
@@ -116,7 +116,7 @@ TriangleIdsOf LoadedScene::IdsOf() const {
   };
 }
 
-std::string LoadedScene::IdsJson() const { return vkpt::IdsJson(scene()); }
+std::string LoadedScene::IdsJson() const { return vkpt::internal::IdsJson(scene()); }
 
 std::unique_ptr<FrameRenderer> LoadedScene::BeginFrame(const shader::FrameParams& params, uint32_t batch) {
   PhaseTimer phase;
@@ -171,4 +171,4 @@ void LoadedScene::ChargeFrame(PreparedFrame& frame, const FrameRequest& request)
                 "lower --width and --height, or raise --max-memory");
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

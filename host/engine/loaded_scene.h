@@ -22,7 +22,7 @@
 #include "shared/layout.h"
 #include "vk/context.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct FrameRequest {
   CameraSettings camera;
@@ -47,7 +47,7 @@ struct PreparedFrame {
 class LoadedScene {
  public:
   // Reads and checks the file and the environment map, then opens the device (Backend::Auto
-  // without one: the CPU, with a notice). Throws vkpt::Error naming the file at fault.
+  // without one: the CPU, with a notice). Throws Error naming the file at fault.
   LoadedScene(const SceneSettings& settings, const EngineLog& log);
   ~LoadedScene();
   LoadedScene(const LoadedScene&) = delete;
@@ -100,4 +100,4 @@ class LoadedScene {
   struct Counts counts_;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -3,7 +3,7 @@
 
 #include <chrono>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct RunTimes {
   double load = 0.0;         // reading and checking the glTF
@@ -35,4 +35,4 @@ class PhaseTimer {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -16,7 +16,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/load_limits.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 enum class Backend { Auto, Cpu, Vulkan };
 
@@ -74,4 +74,4 @@ struct EngineLog {
   }
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

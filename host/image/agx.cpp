@@ -13,7 +13,7 @@
 
 #include "image/view_transform.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Row-major as published; glm is column-major, hence the transposes.
@@ -122,4 +122,4 @@ glm::dvec3 AgxBase(glm::dvec3 c) {
   return glm::clamp(GamutGuard(kRec2020ToRec709 * (kOutset * y)), 0.0, 1.0);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr const char* kChannelNames[3] = {"R", "G", "B"};
@@ -54,4 +54,4 @@ std::string ImageComparison::Summary() const {
   return s.str();
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

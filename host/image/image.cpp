@@ -12,7 +12,7 @@
 #include "util/error.h"
 #include "util/regular_file.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 std::string Lower(std::string s) {
@@ -99,4 +99,4 @@ Image ReadPfm(const std::string& path) {
   return img;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 
 #include "image/view_transform.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct Image {
   uint32_t width = 0, height = 0;
@@ -25,15 +25,15 @@ struct Image {
 
 enum class ImageFormat { Png, Pfm, Exr };
 
-// Format from the file extension (case-insensitive); throws vkpt::Error for others.
+// Format from the file extension (case-insensitive); throws Error for others.
 ImageFormat FormatFromPath(const std::string& path);
 
 // Checks, before a long render, that `path` has a known image extension and that its
-// directory exists and is writable; throws vkpt::Error naming the path otherwise.
+// directory exists and is writable; throws Error naming the path otherwise.
 void CheckOutputPath(const std::string& path);
 
 // Encodes in memory, then writes atomically (util/atomic_write.h): every write checked,
-// fsynced, renamed over `path` only when complete. On failure vkpt::Error names `path`
+// fsynced, renamed over `path` only when complete. On failure Error names `path`
 // and the OS error, and neither a partial file nor a temporary is left behind.
 // `display` applies to PNG only; float formats stay linear and unscaled.
 void WriteImage(const Image& image, const std::string& path, const DisplayTransform& display = {});
@@ -44,4 +44,4 @@ Image ReadPfm(const std::string& path);
 // Linear → 8-bit sRGB (IEC 61966-2-1 transfer curve), clamped to [0, 1].
 uint8_t LinearToSrgb8(float linear);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

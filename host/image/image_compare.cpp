@@ -10,7 +10,7 @@
 #include "image/p_values.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -205,4 +205,4 @@ ImageComparison CompareImages(const Image& a, const Image& b, const CompareOptio
   return r;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -21,7 +21,7 @@
 
 #include "image/image.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct CompareOptions {
   // Lockstep: a channel differs if |a−b| > relTolerance·max(|a|,|b|) + absFloor. The floor
@@ -88,7 +88,7 @@ struct ImageComparison {
   std::string Summary() const;
 };
 
-// Compares `a` and `b` (a is conventionally the reference). Throws vkpt::Error if the sizes
+// Compares `a` and `b` (a is conventionally the reference). Throws Error if the sizes
 // differ or an image is malformed (pixel/variance count not width × height), or on
 // nonsensical options.
 //
@@ -110,7 +110,7 @@ ImageComparison CompareImages(const Image& a, const Image& b, const CompareOptio
 // magenta. With variances in both images the score is the z-score |a−b| / sqrt(varA + varB):
 // 0 black, 3 yellow, ≥ 6 red (i.e. yellow is "unusual for noise", red "certainly not noise").
 // Without, it is the relative error |a−b| / max(|a|, |b|, 1e-6) on a log scale: ≤ 1e-6
-// black, 1e-3 yellow, ≥ 1 red. Equal pixels are black in both modes. Throws vkpt::Error if
+// black, 1e-3 yellow, ≥ 1 red. Equal pixels are black in both modes. Throws Error if
 // the sizes differ.
 Image DifferenceHeatmap(const Image& a, const Image& b);
 
@@ -118,4 +118,4 @@ Image DifferenceHeatmap(const Image& a, const Image& b);
 // channels of (a − r)² / (r² + 0.01), vkpt-bench's measure of noise.
 double RelativeMse(const Image& a, const Image& reference);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -19,7 +19,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 std::vector<uint8_t> EncodePng(const Image& img, const DisplayTransform& display) {
   std::vector<uint8_t> rgb(size_t(img.width) * img.height * 3);
@@ -111,4 +111,4 @@ std::vector<uint8_t> EncodeExrChannels(uint32_t width, uint32_t height, std::vec
   return bytes;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 #include "image/image.h"
 #include "image/view_transform.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // 8-bit sRGB of the pixels as `display` shows them.
 std::vector<uint8_t> EncodePng(const Image& image, const DisplayTransform& display);
@@ -20,7 +20,7 @@ std::vector<uint8_t> EncodePngRgb8(uint32_t width, uint32_t height, const std::v
 // Linear 32-bit float, little-endian, rows bottom to top as PFM stores them.
 std::vector<uint8_t> EncodePfm(const Image& image);
 
-// Linear 32-bit float, ZIP-compressed (lossless). Throws vkpt::Error naming `path` if
+// Linear 32-bit float, ZIP-compressed (lossless). Throws Error naming `path` if
 // tinyexr refuses the image.
 std::vector<uint8_t> EncodeExr(const Image& image, const std::string& path);
 
@@ -35,8 +35,8 @@ struct ExrChannel {
 std::vector<ExrChannel> RgbChannels(const Image& image);
 
 // Any channels as 32-bit float, ZIP-compressed, listed in name order as the format wants.
-// Throws vkpt::Error naming `path` if a channel is malformed or tinyexr refuses.
+// Throws Error naming `path` if a channel is malformed or tinyexr refuses.
 std::vector<uint8_t> EncodeExrChannels(uint32_t width, uint32_t height, std::vector<ExrChannel> channels,
                                        const std::string& path);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

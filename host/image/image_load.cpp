@@ -22,7 +22,7 @@
 #include "util/error.h"
 #include "util/regular_file.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 static_assert(sizeof(stbi__context::buffer_start) == StbSource::kRefillSize);
@@ -205,4 +205,4 @@ Image ReadEnvironmentImage(const std::string& path, const MemoryCharge& charge, 
   return image;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

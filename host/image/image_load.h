@@ -11,7 +11,7 @@
 
 #include "image/image.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Called with the bytes about to be allocated and what for ("the file"); throws to refuse.
 using MemoryCharge = std::function<void(uint64_t bytes, const std::string& what)>;
@@ -22,7 +22,7 @@ constexpr uint32_t kMaxEnvironmentSide = 16384;
 // The map in `path` (.hdr or .exr, by extension) with row 0 at the top. Every texel is
 // finite: a NaN or infinity is an error naming the texel. Negative components, which
 // EXR filters and converters leave behind but which no radiance can be, are set to 0 and
-// counted in a warning appended to `warnings`. Errors are vkpt::Error naming the file.
+// counted in a warning appended to `warnings`. Errors are Error naming the file.
 Image ReadEnvironmentImage(const std::string& path, const MemoryCharge& charge, std::vector<std::string>* warnings);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

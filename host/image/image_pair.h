@@ -9,7 +9,7 @@
 #include "image/image.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 inline bool HasVariance(const Image& img) { return !img.variance.empty(); }
 
@@ -18,7 +18,7 @@ inline bool FiniteChannel(const Image& img, size_t i, int c) {
   return std::isfinite(img.pixels[i][c]) && (!HasVariance(img) || std::isfinite(img.variance[i][c]));
 }
 
-// Throws vkpt::Error unless `img` (named `name` in the message) has width × height pixels
+// Throws Error unless `img` (named `name` in the message) has width × height pixels
 // and, if it has variances, as many of them.
 inline void ValidatePixelCounts(const Image& img, const char* name) {
   size_t n = size_t(img.width) * img.height;
@@ -30,7 +30,7 @@ inline void ValidatePixelCounts(const Image& img, const char* name) {
                 std::to_string(n) + " pixels");
 }
 
-// Throws vkpt::Error unless both images are well-formed and of the same size.
+// Throws Error unless both images are well-formed and of the same size.
 inline void CheckSameSize(const Image& a, const Image& b) {
   ValidatePixelCounts(a, "A");
   ValidatePixelCounts(b, "B");
@@ -39,4 +39,4 @@ inline void CheckSameSize(const Image& a, const Image& b) {
                 std::to_string(a.height) + " and " + std::to_string(b.width) + "×" + std::to_string(b.height));
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Continued fraction for the regularized incomplete beta function I_x(a, b), evaluated
@@ -61,4 +61,4 @@ double StudentTwoSidedP(double t, double nu) {
   return RegularizedIncompleteBeta(0.5 * nu, 0.5, nu / (nu + t * t));
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -3,7 +3,7 @@
 // that has a given p-value, so that both report a statistic on the same scale.
 #pragma once
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // P(|Z| ≥ z) for a standard normal Z.
 double NormalTwoSidedP(double z);
@@ -14,4 +14,4 @@ double NormalEquivalentZ(double p);
 // P(|T| ≥ t) for Student's t with ν degrees of freedom (0 for an infinite t).
 double StudentTwoSidedP(double t, double nu);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

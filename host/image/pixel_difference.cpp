@@ -6,7 +6,7 @@
 
 #include "image/image_pair.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // sRGB display value → linear, so the heat map's ramp is even on screen after
@@ -62,4 +62,4 @@ double RelativeMse(const Image& a, const Image& reference) {
   return total / (3.0 * reference.pixels.size());
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

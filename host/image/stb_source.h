@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Every block stb allocates while a StbHeap is the thread's current one is freed with it,
 // whether stb returned (its pixels included: copy them out first) or the reader ended the
@@ -91,8 +91,8 @@ struct StbSource {
   static constexpr int kRefillSize = 128;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal
 
-#define STBI_MALLOC(size) ::vkpt::StbHeap::Malloc(size)
-#define STBI_REALLOC(p, size) ::vkpt::StbHeap::Realloc(p, size)
-#define STBI_FREE(p) ::vkpt::StbHeap::Free(p)
+#define STBI_MALLOC(size) ::vkpt::internal::StbHeap::Malloc(size)
+#define STBI_REALLOC(p, size) ::vkpt::internal::StbHeap::Realloc(p, size)
+#define STBI_FREE(p) ::vkpt::internal::StbHeap::Free(p)

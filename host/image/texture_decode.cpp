@@ -20,14 +20,14 @@
 
 #include "util/error.h"
 
-static_assert(STBI_MAX_DIMENSIONS == vkpt::kMaxTextureSide);
+static_assert(STBI_MAX_DIMENSIONS == vkpt::internal::kMaxTextureSide);
 // stb keeps its failure reason in a global; in C++ it is thread_local, so that concurrent
 // decodes do not read each other's messages. Without it the messages could be wrong.
 #ifndef STBI_THREAD_LOCAL
 #error "stb_image's failure reason is not thread-local here"
 #endif
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 static_assert(sizeof(stbi__context::buffer_start) == StbSource::kRefillSize);
@@ -291,4 +291,4 @@ Rgba8Image DecodeTextureImage(std::span<const unsigned char> bytes, const Textur
   return image;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

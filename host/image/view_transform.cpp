@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Radiance above half-float's largest value is far into every curve's white (PBR Neutral
@@ -77,4 +77,4 @@ glm::dvec3 AcesFitted(glm::dvec3 c) {
   return glm::clamp(output * fit, 0.0, 1.0);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 enum class View {
   kClamp,    // radiance clipped to [0, 1]: bright highlights burn to white
@@ -37,4 +37,4 @@ glm::dvec3 PbrNeutral(glm::dvec3 c);
 glm::dvec3 AgxBase(glm::dvec3 c);
 glm::dvec3 AcesFitted(glm::dvec3 c);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

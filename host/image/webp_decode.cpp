@@ -7,7 +7,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 uint32_t Le32(std::span<const unsigned char> b, size_t at) {
@@ -50,4 +50,4 @@ Rgba8Image DecodeWebp(std::span<const unsigned char> bytes, const TextureImageHe
   return image;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

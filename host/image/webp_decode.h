@@ -6,17 +6,17 @@
 
 #include "image/texture_decode.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Whether the bytes start as a WebP file does ("RIFF", a size, "WEBP").
 bool IsWebp(std::span<const unsigned char> bytes);
 
 // The image's size and channels from its headers; a RIFF size past the bytes there are
-// (a file cut short), an animation or a malformed header is a vkpt::Error.
+// (a file cut short), an animation or a malformed header is a Error.
 TextureImageHeader ReadWebpHeader(std::span<const unsigned char> bytes);
 
 // The texels (RGBA8, top row first) of an image ReadWebpHeader accepted; a bitstream
-// that does not decode to that image is a vkpt::Error.
+// that does not decode to that image is a Error.
 Rgba8Image DecodeWebp(std::span<const unsigned char> bytes, const TextureImageHeader& header);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -175,7 +175,9 @@ PYBIND11_MODULE(_vkpt, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const vkpt::Error& e) {
-      PyErr_SetString(error.ptr(), vkpt::InTerms(e.what(), vkpt::Terms::kCpp, vkpt::Terms::kPython).c_str());
+      PyErr_SetString(
+          error.ptr(),
+          vkpt::internal::InTerms(e.what(), vkpt::internal::Terms::kCpp, vkpt::internal::Terms::kPython).c_str());
     }
   });
   BindCamera(m);

@@ -6,7 +6,7 @@
 #include "util/error.h"
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The scene access of shared/denoise.h: the arrays of one iteration.
 struct DenoiseView {
@@ -15,16 +15,16 @@ struct DenoiseView {
   const glm::vec4* albedo;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal
 
-#define VKPT_DENOISE_PARAM const ::vkpt::DenoiseView &view,
+#define VKPT_DENOISE_PARAM const ::vkpt::internal::DenoiseView &view,
 #define VKPT_DENOISE_ARG view,
 #define VKPT_DENOISE_COLOR(i) view.color[i]
 #define VKPT_DENOISE_GUIDE(i) view.guide[i]
 #define VKPT_DENOISE_ALBEDO(i) vec3(view.albedo[i])
 #include "shared/denoise.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 DenoiseInput PrepareDenoise(const Image& image, const AovSums& aovs) {
   const size_t n = image.pixels.size();
@@ -74,4 +74,4 @@ Image FinishDenoise(const DenoiseInput& input, const std::vector<glm::vec4>& fil
   return out;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -12,7 +12,7 @@
 #include "image/image.h"
 #include "render/film.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct DenoiseInput {
   uint32_t width = 0, height = 0;
@@ -35,4 +35,4 @@ std::vector<glm::vec4> AtrousCpu(const DenoiseInput& input, unsigned threads = 0
 // variance).
 Image FinishDenoise(const DenoiseInput& input, const std::vector<glm::vec4>& filtered);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -6,7 +6,7 @@
 #include "shared/sampling.h"
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // CDF entries [first, first + n) as inclusive running sums of weight[0..n) / total, the
@@ -77,4 +77,4 @@ void SetEnvironmentParams(shader::FrameParams& params, const EnvironmentMap& env
   params.envRotationSin = float(std::sin(alpha));
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 
 #include "shared/layout.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct EnvironmentMap {
   uint32_t width = 0, height = 0;  // 0 × 0: no map
@@ -33,4 +33,4 @@ EnvironmentMap BuildEnvironmentMap(uint32_t width, uint32_t height, std::span<co
 void SetEnvironmentParams(shader::FrameParams& params, const EnvironmentMap& env, float rotationDegrees,
                           float intensity);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -2,7 +2,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 Image ResolveFilm(const FrameSums& sums) {
   Film film(sums.width, sums.height);
@@ -44,4 +44,4 @@ void AddChunk(FrameSums& frame, const FrameSums& chunk) {
   frame.cutShort += chunk.cutShort;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

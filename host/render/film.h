@@ -19,7 +19,7 @@
 
 #include "image/image.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Sums over one pixel's samples of the radiance f and of f², and how many samples they
 // hold. A sample a renderer discards (non-finite) still counts: it adds 0 to both sums.
@@ -154,4 +154,4 @@ struct RenderResult {
   uint32_t samplesPerInvocation = 0;  // Vulkan: the longest run of samples per invocation
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

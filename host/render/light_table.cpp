@@ -7,7 +7,7 @@
 #include "shared/material_textures.h"
 #include "shared/sampling.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Turns the lights' power estimates into the pmf and inclusive CDF the shaders search.
@@ -210,4 +210,4 @@ void ChooseLightSampler(RenderScene& rs, LightSampler sampler) {
   rs.lightTreeDepth = tree.depth;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -5,7 +5,7 @@
 #include "render/light_tree.h"
 #include "render/render_scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Fills rs.lights from the emissive triangles of rs.triangles (one entry per scene
 // triangle: spatial-split copies are one light) and the scene's punctual lights, and sets
@@ -32,4 +32,4 @@ void ChooseLightSampler(RenderScene& rs, LightSampler sampler);
 // The bounds of finite light `l` (its power estimate `power`) for the light tree.
 LightBounds LightBoundsOf(const RenderScene& rs, const shader::Light& l, double power);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

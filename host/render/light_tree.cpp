@@ -6,7 +6,7 @@
 #include <limits>
 #include <optional>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -206,4 +206,4 @@ LightTree BuildLightTree(const std::vector<LightBounds>& lights) {
   return std::move(builder.tree);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 
 #include "shared/layout.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // How light sampling chooses among the finite lights (emissive triangles, point and spot
 // lights): by power alone, or through the light tree (shared/light_tree.h) by their
@@ -49,4 +49,4 @@ LightTree BuildLightTree(const std::vector<LightBounds>& lights);
 // a margin above float rounding: every rounding makes the bound larger, never smaller.
 shader::LightTreeNode PackLightNode(const LightBounds& b, uint32_t split);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -4,7 +4,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // A material's textures in the order of the shader's slots (kSlotBaseColor …).
@@ -112,4 +112,4 @@ PackedMaterials PackMaterials(const Scene& scene) {
   return packed;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "scene/scene.h"
 #include "shared/layout.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct PackedMaterials {
   std::vector<shader::Material> materials;      // one per Scene material, in order
@@ -21,10 +21,10 @@ shader::Material PackMaterial(const Material& m);
 // Its textures, in slot order (kSlotBaseColor …), appended to `refs`. The shaders decode a
 // slot's bytes as the slot's kind, colour or data (shader::kSrgbSlots); a texture of the
 // other kind in a slot (not made by the loader, which makes one texture per kind) is
-// refused (vkpt::Error).
+// refused (Error).
 void PackTextureRefs(const Material& m, const std::vector<SceneTexture>& textures,
                      std::vector<shader::TextureRef>& refs);
 
 PackedMaterials PackMaterials(const Scene& scene);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

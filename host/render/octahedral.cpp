@@ -4,7 +4,7 @@
 
 #include "shared/shading_normal.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // The point of [-1,1]² a unit vector maps to: projected onto the octahedron
@@ -37,4 +37,4 @@ uint32_t EncodeOctahedral(glm::vec3 unit) {
   return best;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

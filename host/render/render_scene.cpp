@@ -14,7 +14,7 @@
 #include "util/error.h"
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 bool IsDegenerate(const SceneTriangle& t) {
   glm::vec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
@@ -272,4 +272,4 @@ shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& came
   return p;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

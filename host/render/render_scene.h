@@ -15,7 +15,7 @@
 #include "scene/scene.h"
 #include "shared/layout.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct RenderScene {
   std::vector<shader::Triangle> triangles;  // BVH leaf order
@@ -93,4 +93,4 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
 // mip levels chosen by ray cones.
 shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

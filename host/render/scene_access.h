@@ -5,7 +5,7 @@
 
 #include "render/render_scene.h"
 
-#define VKPT_SCENE_PARAM const ::vkpt::RenderScene &scene,
+#define VKPT_SCENE_PARAM const ::vkpt::internal::RenderScene &scene,
 #define VKPT_SCENE_ARG scene,
 #define VKPT_TRIANGLE(i) scene.triangles[i]
 #define VKPT_MATERIAL(i) scene.materials[i]

@@ -8,7 +8,7 @@
 #include "util/error.h"
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // One source texel's share of a destination texel.
@@ -190,4 +190,4 @@ TextureStore BuildTextureStore(const Scene& scene, unsigned threads) {
   return store;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 #include "scene/scene.h"
 #include "shared/layout.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct TextureStore {
   std::vector<shader::Texture> textures;  // parallel to Scene::textures
@@ -36,4 +36,4 @@ std::vector<float> TexelDecodeTable();
 double SrgbToLinear(double encoded);
 double LinearToSrgb(double linear);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 #include "util/error.h"
 #include "util/regular_file.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 const char kFolderRule[] =
@@ -207,4 +207,4 @@ void AssetAccess::ThrowIfRefused() const {
   if (!refusals_.empty()) throw Error(scenePath_ + ": " + refusals_.front().second);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -18,7 +18,7 @@ namespace tinygltf {
 class TinyGLTF;
 }
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class AssetAccess {
  public:
@@ -32,7 +32,7 @@ class AssetAccess {
   // Makes `gltf` open files only through this object. It must outlive the load.
   void Install(tinygltf::TinyGLTF& gltf);
 
-  // After the load: throws vkpt::Error for the first uri that was refused, naming the
+  // After the load: throws Error for the first uri that was refused, naming the
   // uri as written and the rule it broke.
   void ThrowIfRefused() const;
 
@@ -65,4 +65,4 @@ class AssetAccess {
   std::vector<std::string> skipped_;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -4,7 +4,7 @@
 #include "scene/scene.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 Camera DefaultCamera(const Bounds3f& bounds) {
   Camera cam;
@@ -71,4 +71,4 @@ Camera Orbit(Camera cam, glm::vec3 pivot, glm::vec3 up, float degrees) {
   return cam;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -11,7 +11,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 [[noreturn]] void Fail(const std::string& what) { throw Error("KHR_draco_mesh_compression: " + what); }
@@ -120,4 +120,4 @@ DracoPrimitive DecodeDraco(std::span<const unsigned char> bitstream, const std::
   return out;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

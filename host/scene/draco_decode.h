@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // One accessor of the primitive: the Draco attribute it takes its values from, and its
 // layout (tightly packed elements of `components` × `componentType`).
@@ -29,8 +29,8 @@ struct DracoPrimitive {
 };
 
 // Decodes `bitstream`, which must hold a triangle mesh of `indexCount` / 3 faces and the
-// `accessors`' points. Throws vkpt::Error naming no file when it is malformed or disagrees.
+// `accessors`' points. Throws Error naming no file when it is malformed or disagrees.
 DracoPrimitive DecodeDraco(std::span<const unsigned char> bitstream, const std::vector<DracoAccessor>& accessors,
                            size_t indexCount);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

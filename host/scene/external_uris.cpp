@@ -2,7 +2,7 @@
 
 #include <set>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using nlohmann::json;
@@ -80,4 +80,4 @@ std::vector<ExternalUri> ListExternalUris(const json& doc) {
   return uris;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

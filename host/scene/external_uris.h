@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct ExternalUri {
   std::string owner;    // "buffers[0]", "images[2]"
@@ -27,4 +27,4 @@ std::string DecodeUri(const std::string& uri);
 
 std::vector<ExternalUri> ListExternalUris(const nlohmann::json& doc);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

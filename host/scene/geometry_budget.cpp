@@ -6,7 +6,7 @@
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_meshes.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Host memory per triangle of the instanced scene, from the loader's arrays through the
@@ -83,4 +83,4 @@ void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instance
   }
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 #include "scene/gltf_source.h"
 #include "scene/load_limits.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Charges `budget` for the meshes of `src`, each instanced `instances[mesh]` times.
 // `textured`, `tangents`: the scene keeps the texture coordinates, the tangents of every
@@ -17,4 +17,4 @@ namespace vkpt {
 void ChargeGeometry(const GltfSource& src, const std::vector<uint64_t>& instances, bool textured, bool tangents,
                     MemoryBudget& budget);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

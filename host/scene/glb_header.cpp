@@ -5,7 +5,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr uint32_t kChunkJson = 0x4E4F534Au;  // "JSON"
@@ -53,4 +53,4 @@ std::string_view CheckGlbHeader(const std::string& path, std::string_view file) 
   return json;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

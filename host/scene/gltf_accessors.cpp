@@ -5,7 +5,7 @@
 #include <cstring>
 #include <limits>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Checks that a (bufferView, byteOffset) region holds `count` elements of elemSize
@@ -152,4 +152,4 @@ std::vector<double> ReadAccessor(const GltfSource& src, int index) {
   return out;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 
 #include "scene/gltf_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 int ComponentSize(int componentType);  // bytes; 0 for an invalid type
 int ComponentCount(int type);          // SCALAR 1 … MAT4 16; 0 for an invalid type
@@ -22,4 +22,4 @@ void CheckAccessor(const GltfSource& src, int index);
 // substitution applied; normalized integers map to [0, 1] or [-1, 1] as the spec says.
 std::vector<double> ReadAccessor(const GltfSource& src, int index);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -5,7 +5,7 @@
 #include "scene/gltf_accessors.h"
 #include "scene/keyframes.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // A sampler's keyframe times: a FLOAT SCALAR accessor of finite, strictly increasing,
@@ -140,4 +140,4 @@ void PoseAtTime(const GltfSource& src, int animation, double time, std::vector<N
   }
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,14 +9,14 @@
 #include "scene/node_pose.h"
 #include "scene/scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The file's animations, with their durations (the last keyframe time of any of their
 // samplers), each sampler's input checked.
 std::vector<AnimationSummary> ListAnimations(const GltfSource& src);
 
 // The index of `wanted` among `animations`: its name, else a decimal index; −1 for "".
-// Throws vkpt::Error naming the file and listing its animations if there is no such one.
+// Throws Error naming the file and listing its animations if there is no such one.
 int ResolveAnimation(const GltfSource& src, const std::vector<AnimationSummary>& animations, const std::string& wanted);
 
 // Memory its keyframes take decoded (for the budget, before they are read).
@@ -28,4 +28,4 @@ uint64_t AnimationBytes(const GltfSource& src, int animation);
 // target node are skipped, as the spec says.
 void PoseAtTime(const GltfSource& src, int animation, double time, std::vector<NodePose>& poses);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

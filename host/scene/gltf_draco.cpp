@@ -11,7 +11,7 @@
 #include "scene/gltf_source.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr const char* kExtension = "KHR_draco_mesh_compression";
@@ -123,4 +123,4 @@ void DecodeDracoPrimitives(const std::string& path, tinygltf::Model& model, Memo
     }
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,11 +9,11 @@
 
 #include "scene/load_limits.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Runs after the bufferViews are checked, before the accessors are; the decoded sizes
 // the accessors declare are charged to `budget` before the bitstream is decoded, and
-// what it decodes to must match them. Throws vkpt::Error naming `path` and the primitive.
+// what it decodes to must match them. Throws Error naming `path` and the primitive.
 void DecodeDracoPrimitives(const std::string& path, tinygltf::Model& model, MemoryBudget& budget);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

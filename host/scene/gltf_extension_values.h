@@ -9,7 +9,7 @@
 
 #include "scene/gltf_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // obj[key] as an integer in [0, 2^53); `fallback` when absent, failing if that is < 0.
 inline uint64_t ExtensionUnsigned(const GltfSource& src, const tinygltf::Value& obj, const char* key,
@@ -44,4 +44,4 @@ inline std::string ExtensionString(const GltfSource& src, const tinygltf::Value&
   return obj.Get(key).Get<std::string>();
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -6,7 +6,7 @@
 #include "scene/gltf_accessors.h"
 #include "scene/node_pose.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr const char* kExtension = "EXT_mesh_gpu_instancing";
@@ -98,4 +98,4 @@ std::vector<glm::dmat4> InstanceTransforms(const GltfSource& src, int node) {
   return m;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 
 #include "scene/gltf_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // How many instances nodes[node] draws: its attributes' count with the extension, else 1
 // (nothing is decoded; the counts are checked alike).
@@ -21,4 +21,4 @@ uint64_t InstanceCount(const GltfSource& src, int node);
 // of one count, with finite values.
 std::vector<glm::dmat4> InstanceTransforms(const GltfSource& src, int node);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "scene/gltf_textures.h"
 #include "scene/posed_primitive.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 class Instancer {
@@ -245,4 +245,4 @@ void InstantiateScene(const GltfSource& src, const std::vector<int>& parents, co
   Instancer(src, parents, pose, meshes, scene).Run();
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

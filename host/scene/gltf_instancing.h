@@ -13,7 +13,7 @@
 #include "scene/node_pose.h"
 #include "scene/scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The roots of the scene to render: the default scene, else scene 0, else every root
 // node. `parents` comes from CheckNodeGraph.
@@ -35,4 +35,4 @@ struct ScenePose {
 void InstantiateScene(const GltfSource& src, const std::vector<int>& parents, const ScenePose& pose,
                       const std::vector<std::vector<DecodedPrimitive>>& meshes, Scene& scene);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

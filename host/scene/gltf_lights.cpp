@@ -4,7 +4,7 @@
 
 #include <glm/gtc/constants.hpp>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr const char* kExtension = "KHR_lights_punctual";
@@ -73,4 +73,4 @@ PunctualLight PlaceLight(const GltfSource& src, int lightIndex, const glm::dmat4
   return out;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 #include "scene/gltf_source.h"
 #include "scene/scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Every lights[i], referenced or not: a known type, color three numbers in [0, 1],
 // intensity finite and >= 0, range >= 0 (0 = infinite), and for spots
@@ -24,4 +24,4 @@ int NodeLight(const GltfSource& src, int nodeIndex);
 // its −Z axis normalized (the node's scale shapes neither the light nor its cone).
 PunctualLight PlaceLight(const GltfSource& src, int lightIndex, const glm::dmat4& world, const std::string& nodeName);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

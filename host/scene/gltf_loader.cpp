@@ -29,7 +29,7 @@
 #include "util/content_hash.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct GltfAsset::Parts {
   tinygltf::Model model;
@@ -266,4 +266,4 @@ Scene LoadGltf(const std::string& path, const LoadLimits& limits, const SceneCho
   return asset.TakeScene();
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

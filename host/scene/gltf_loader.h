@@ -8,7 +8,7 @@
 #include "scene/load_limits.h"
 #include "scene/scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // What to render of a file beyond its default scene.
 struct SceneChoice {
@@ -45,10 +45,10 @@ class GltfAsset {
 // Loads the default scene (else scene 0; with no scenes, every root node) of a glTF
 // file. Everything the renderer reads is validated first, files are read only as
 // `limits` allow (scene/asset_access.h), and the memory the scene will need is counted
-// against limits.maxMemory before it is allocated; any problem throws vkpt::Error whose
+// against limits.maxMemory before it is allocated; any problem throws Error whose
 // message starts with the file name. Skinned meshes follow their joints and morph
 // targets their weights, in the pose `choice` gives; primitives take the materials of its
 // variant.
 Scene LoadGltf(const std::string& path, const LoadLimits& limits = {}, const SceneChoice& choice = {});
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Reads one material's factors, each checked against the range its schema gives.
@@ -229,4 +229,4 @@ uint32_t LoadMaterials(const GltfSource& src, Scene& scene) {
   return defaultMaterial;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

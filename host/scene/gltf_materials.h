@@ -8,11 +8,11 @@
 #include "scene/gltf_source.h"
 #include "scene/scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Appends every material of the file, then glTF's default material (white, rough,
 // one-sided) for primitives that name none; returns the default's index. Factors out of
 // their ranges are errors naming the material.
 uint32_t LoadMaterials(const GltfSource& src, Scene& scene);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "scene/gltf_variants.h"
 #include "scene/tangent_space.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Index list of a primitive converted to a triangle list.
@@ -252,4 +252,4 @@ uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim) {
   return 0;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

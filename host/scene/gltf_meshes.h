@@ -12,7 +12,7 @@
 
 #include "scene/gltf_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // A morph target's displacements (spec §3.7.2.2), one per vertex; empty for an
 // attribute the target leaves alone (or the primitive does not keep).
@@ -68,4 +68,4 @@ DecodedPrimitive Morphed(const DecodedPrimitive& prim, const std::vector<double>
 // Triangles a primitive makes, from its accessors' counts alone (nothing is decoded).
 uint64_t TriangleCount(const GltfSource& src, const tinygltf::Primitive& prim);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -7,7 +7,7 @@
 #include "scene/meshopt_decode.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr const char* kExtension = "EXT_meshopt_compression";
@@ -77,4 +77,4 @@ void DecodeMeshoptViews(const std::string& path, tinygltf::Model& model, MemoryB
   }
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,11 +9,11 @@
 
 #include "scene/load_limits.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Runs after tinygltf has read the buffers, before the bufferViews are checked; the
-// decoded bytes are charged to `budget` before they are allocated. Throws vkpt::Error
+// decoded bytes are charged to `budget` before they are allocated. Throws Error
 // naming `path` and the bufferView.
 void DecodeMeshoptViews(const std::string& path, tinygltf::Model& model, MemoryBudget& budget);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

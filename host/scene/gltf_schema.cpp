@@ -8,7 +8,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using nlohmann::json;
@@ -121,4 +121,4 @@ void CheckGltfSchema(const std::string& path, const json& doc) {
   Walk(path, doc, "", false, false);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

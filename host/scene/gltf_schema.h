@@ -8,13 +8,13 @@
 #include <string>
 #include <string_view>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Parses the glTF JSON (nesting limited, so neither the parser nor a walk over the tree
-// can exhaust the stack); throws vkpt::Error naming `path` on invalid JSON.
+// can exhaust the stack); throws Error naming `path` on invalid JSON.
 nlohmann::json ParseGltfJson(const std::string& path, std::string_view text);
 
-// Throws vkpt::Error naming `path` and the JSON location of the first violation.
+// Throws Error naming `path` and the JSON location of the first violation.
 void CheckGltfSchema(const std::string& path, const nlohmann::json& doc);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

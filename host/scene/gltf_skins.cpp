@@ -7,7 +7,7 @@
 
 #include "scene/gltf_accessors.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 std::vector<glm::dmat4> ReadInverseBinds(const GltfSource& src, const tinygltf::Skin& skin, const std::string& name) {
@@ -56,4 +56,4 @@ std::vector<glm::dmat4> JointMatrices(const Skin& skin, const std::vector<glm::d
   return m;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

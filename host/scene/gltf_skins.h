@@ -10,7 +10,7 @@
 
 #include "scene/gltf_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct Skin {
   std::vector<int> joints;               // node indices
@@ -24,4 +24,4 @@ std::vector<Skin> ReadSkins(const GltfSource& src);
 // The skin's joint matrices for the nodes' world transforms `world`.
 std::vector<glm::dmat4> JointMatrices(const Skin& skin, const std::vector<glm::dmat4>& world);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -1,6 +1,6 @@
 // A parsed glTF and the file it came from: what every phase of the loader reads
 // (validation, accessor decoding, materials, instancing), and how each reports a
-// problem — vkpt::Error naming the file and the glTF object, e.g. "meshes[2].indices".
+// problem — Error naming the file and the glTF object, e.g. "meshes[2].indices".
 #pragma once
 
 #include <tiny_gltf.h>
@@ -10,7 +10,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct GltfSource {
   std::string path;
@@ -41,4 +41,4 @@ struct GltfSource {
   }
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -7,7 +7,7 @@
 #include "image/texture_decode.h"
 #include "util/parallel.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Host memory per texel of an image's level 0: the decoder's output and stb's working memory
@@ -94,4 +94,4 @@ void LoadTextureImages(const GltfSource& src, const std::map<int, std::string>& 
   for (SceneTexture& t : scene.textures) t.image = index.at(int(t.image));
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

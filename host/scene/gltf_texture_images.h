@@ -10,7 +10,7 @@
 #include "scene/load_limits.h"
 #include "scene/scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Decodes the images of `users` (glTF image → the first textureInfo using it, for
 // messages) into scene.images, in glTF order, and points each of scene.textures, whose
@@ -18,4 +18,4 @@ namespace vkpt {
 void LoadTextureImages(const GltfSource& src, const std::map<int, std::string>& users, const LoadLimits& limits,
                        MemoryBudget& budget, Scene& scene);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -6,7 +6,7 @@
 
 #include "scene/gltf_texture_images.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // A material's use of a texture: which of its textures, and whether its RGB is colour (sRGB).
@@ -287,4 +287,4 @@ void LoadTextures(const GltfSource& src, const LoadLimits& limits, MemoryBudget&
   LoadTextureImages(src, reader.Users(), limits, budget, scene);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -11,7 +11,7 @@
 #include "scene/load_limits.h"
 #include "scene/scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Fills the materials' textures and normalScale, and scene.textures and images (nothing
 // when no material has a texture). `scene.materials` must be loaded, in glTF order.
@@ -25,4 +25,4 @@ bool UsesTangents(const Scene& scene);
 // are listed by -v as ignored).
 bool IsAppliedExtensionTexture(const std::string& extension, const std::string& field);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -6,7 +6,7 @@
 
 #include "scene/gltf_accessors.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Extensions vkpt renders every property of.
@@ -233,4 +233,4 @@ void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, cons
                std::to_string(src.m.accessors[acc].count) + " elements but POSITION has " + std::to_string(pa.count));
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 
 #include "scene/gltf_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Whether vkpt renders every property of extension `name`: a file that *requires* any
 // other is refused, as the glTF spec demands of a loader that does not implement it, and
@@ -29,4 +29,4 @@ std::vector<int> CheckNodeGraph(const GltfSource& src);
 // (FLOAT VEC3, or quantized with KHR_mesh_quantization) and equal attribute counts.
 void CheckPrimitive(const GltfSource& src, const tinygltf::Primitive& prim, const std::string& name);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -2,7 +2,7 @@
 
 #include <cctype>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr char kExtension[] = "KHR_materials_variants";
@@ -62,4 +62,4 @@ int VariantMaterial(const GltfSource& src, const tinygltf::Primitive& prim, int 
   return chosen;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -7,14 +7,14 @@
 
 #include "scene/gltf_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The file's variant names, in order (the extension's top-level `variants`); empty
-// without the extension. Throws vkpt::Error naming the file if the list is malformed.
+// without the extension. Throws Error naming the file if the list is malformed.
 std::vector<std::string> ReadVariants(const GltfSource& src);
 
 // The index of `wanted` among `variants`: its name, else a decimal index; -1 for "".
-// Throws vkpt::Error naming the file and listing its variants if there is no such one.
+// Throws Error naming the file and listing its variants if there is no such one.
 int ResolveVariant(const GltfSource& src, const std::vector<std::string>& variants, const std::string& wanted);
 
 // The material primitive `prim` (named `what`) takes in variant `variant`: the mapping's
@@ -23,4 +23,4 @@ int ResolveVariant(const GltfSource& src, const std::vector<std::string>& varian
 int VariantMaterial(const GltfSource& src, const tinygltf::Primitive& prim, int variant, size_t variantCount,
                     const std::string& what);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Spherical linear interpolation of unit quaternions a → b, along the shorter of the
@@ -63,4 +63,4 @@ std::vector<double> Keyframes::At(double t) const {
   return v;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

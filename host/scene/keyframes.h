@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 enum class Interpolation { kStep, kLinear, kCubicSpline };
 
@@ -23,4 +23,4 @@ struct Keyframes {
   std::vector<double> At(double t) const;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

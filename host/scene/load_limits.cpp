@@ -10,7 +10,7 @@
 #include "util/byte_size.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // cgroup v2's memory.max for this process ("max" or absent: no limit).
@@ -48,4 +48,4 @@ void MemoryBudget::Charge(uint64_t bytes, const std::string& what, const std::st
   throw Error(message + ", more than --max-memory " + FormatBytes(limit_) + " allows (" + advice + ")");
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

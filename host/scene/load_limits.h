@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct LoadLimits {
   // Host memory the scene may need, from its files to the renderer's arrays; 0 selects
@@ -34,7 +34,7 @@ class MemoryBudget {
  public:
   MemoryBudget(uint64_t limit, std::string file) : limit_(limit), file_(std::move(file)) {}
 
-  // Adds `bytes` for `what` ("accessors[3] (268435455 × VEC3)"); throws vkpt::Error
+  // Adds `bytes` for `what` ("accessors[3] (268435455 × VEC3)"); throws Error
   // naming the file, `what`, the figure, the limit and `advice` when the total passes the
   // limit.
   void Charge(uint64_t bytes, const std::string& what,
@@ -49,4 +49,4 @@ class MemoryBudget {
   std::string file_;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // glTF §3.9.4 alphaMode: how the base colour's alpha covers the surface (shared/alpha.h).
 enum class AlphaMode {
@@ -108,4 +108,4 @@ struct Material {
   }
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

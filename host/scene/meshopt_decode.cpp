@@ -4,7 +4,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 std::string CheckMeshoptStream(const MeshoptStream& s) {
   const std::string stride = "byteStride " + std::to_string(s.byteStride);
@@ -47,4 +47,4 @@ void DecodeMeshoptStream(std::span<const unsigned char> encoded, const MeshoptSt
   if (s.filter == "EXPONENTIAL") meshopt_decodeFilterExp(out.data(), s.count, s.byteStride);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

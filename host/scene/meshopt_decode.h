@@ -9,7 +9,7 @@
 #include <span>
 #include <string>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct MeshoptStream {
   std::string mode = "ATTRIBUTES";  // ATTRIBUTES, TRIANGLES or INDICES
@@ -22,8 +22,8 @@ struct MeshoptStream {
 std::string CheckMeshoptStream(const MeshoptStream& s);
 
 // Decodes `encoded` into `out`, which holds exactly s.count × s.byteStride bytes; `s`
-// must pass CheckMeshoptStream. Throws vkpt::Error naming no file when the data is
+// must pass CheckMeshoptStream. Throws Error naming no file when the data is
 // malformed.
 void DecodeMeshoptStream(std::span<const unsigned char> encoded, const MeshoptStream& s, std::span<unsigned char> out);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -5,7 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Whether the node gives `field` (`size` finite numbers); fails on a wrong count or a
@@ -92,4 +92,4 @@ size_t MorphTargetCount(const GltfSource& src, int mesh) {
   return targets;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

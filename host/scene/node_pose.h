@@ -11,7 +11,7 @@
 
 #include "scene/gltf_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct NodePose {
   std::optional<glm::dmat4> matrix;  // the node's matrix, which excludes the three below
@@ -38,4 +38,4 @@ std::vector<glm::dmat4> WorldTransforms(const std::vector<int>& parents, const s
 // (checked).
 size_t MorphTargetCount(const GltfSource& src, int mesh);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -4,7 +4,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // One vertex's transform and what follows from it for its attributes.
@@ -98,4 +98,4 @@ PosedPrimitive PoseSkinned(const GltfSource& src, const DecodedPrimitive& prim,
   return Pose(src, prim, what, [&](size_t v) -> const VertexTransform& { return x[v]; });
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

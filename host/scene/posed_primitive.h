@@ -13,7 +13,7 @@
 #include "scene/gltf_meshes.h"
 #include "scene/gltf_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct PosedPrimitive {
   std::vector<glm::vec3> positions;
@@ -32,4 +32,4 @@ PosedPrimitive PoseRigid(const GltfSource& src, const DecodedPrimitive& prim, co
 PosedPrimitive PoseSkinned(const GltfSource& src, const DecodedPrimitive& prim,
                            const std::vector<glm::dmat4>& jointMatrices, const std::string& what, size_t& unweighted);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

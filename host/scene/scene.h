@@ -12,7 +12,7 @@
 #include "scene/material.h"
 #include "util/bounds.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // World-space triangle; (v1 - v0) × (v2 - v0) is the front-face normal (counter-clockwise
 // winding, already corrected for mirroring transforms).
@@ -185,4 +185,4 @@ Camera PlacedByMatrix(Camera cam, const glm::mat4& cameraToWorld);
 // seen from above (from where `up` points): position, view and up turn together.
 Camera Orbit(Camera cam, glm::vec3 pivot, glm::vec3 up, float degrees);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 #include "util/error.h"
 #include "util/regular_file.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Peak memory per byte of glTF JSON: the schema check's and tinygltf's parse trees are
@@ -93,4 +93,4 @@ void ReplaceJson(SceneFile& file, const std::string& json) {
   file.json = std::string_view(file.bytes).substr(20, padded.size());
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -7,7 +7,7 @@
 
 #include "scene/load_limits.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct SceneFile {
   std::string bytes;      // the whole file
@@ -15,7 +15,7 @@ struct SceneFile {
   std::string_view json;  // the JSON text: the whole file, or a GLB's JSON chunk
 };
 
-// Throws vkpt::Error naming `path`: not a regular file, empty, neither JSON nor GLB by
+// Throws Error naming `path`: not a regular file, empty, neither JSON nor GLB by
 // its first bytes, a GLB whose header disagrees with the file's size, or more than
 // `budget` can take (the JSON's parse costs a multiple of its size; see the .cpp).
 SceneFile ReadSceneFile(const std::string& path, MemoryBudget& budget);
@@ -24,4 +24,4 @@ SceneFile ReadSceneFile(const std::string& path, MemoryBudget& budget);
 // (padded with spaces, the container's lengths updated, the BIN chunk kept).
 void ReplaceJson(SceneFile& file, const std::string& json);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

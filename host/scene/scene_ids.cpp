@@ -6,7 +6,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 TriangleIds IdsOfTriangle(const Scene& scene, uint32_t triangle) {
   TriangleIds ids;
@@ -58,4 +58,4 @@ std::string IdsJson(const Scene& scene) {
   return doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -7,7 +7,7 @@
 
 #include "scene/scene.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // −1 where there is nothing to name: no triangle (the ray left the scene), or a scene made
 // in code, whose triangles came from no node.
@@ -30,7 +30,7 @@ IdCounts IdCountsOf(const Scene& scene);
 // Float32 holds every integer up to this one exactly: the largest id an id AOV stores.
 constexpr int64_t kLargestExactId = int64_t(1) << 24;
 
-// Throws vkpt::Error naming `file` if an id would be beyond kLargestExactId: checked when a
+// Throws Error naming `file` if an id would be beyond kLargestExactId: checked when a
 // render with an id AOV is prepared, so that no render is refused after it has run.
 void CheckIdsAreExact(const IdCounts& counts, const std::string& file);
 
@@ -42,4 +42,4 @@ void CheckIdsAreExact(const IdCounts& counts, const std::string& file);
 // "placement" numbers an EXT_mesh_gpu_instancing node's instances (0 for other nodes).
 std::string IdsJson(const Scene& scene);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -37,7 +37,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // The reference's NotZero: anything above FLT_MIN in magnitude counts.
@@ -238,4 +238,4 @@ std::vector<glm::vec4> GenerateCornerTangents(std::span<const glm::vec3> positio
   return out;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

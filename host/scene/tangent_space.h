@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // MikkTSpace tangents for one triangle-list primitive, one per vertex: xyz unit and
 // orthogonal to the vertex normal, w = ±1 with the bitangent w · cross(normal, tangent).
@@ -31,4 +31,4 @@ std::vector<glm::vec4> GenerateTangents(std::span<const glm::vec3> positions, st
 std::vector<glm::vec4> GenerateCornerTangents(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                                               std::span<const glm::vec2> uvs, std::span<const uint32_t> indices);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -1,6 +1,6 @@
 #include "scene/tinygltf_edits.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using nlohmann::json;
@@ -58,4 +58,4 @@ void UndoTinyGltfEdits(const TinyGltfEdits& edits, tinygltf::Model& model) {
   }
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

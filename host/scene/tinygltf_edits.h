@@ -14,7 +14,7 @@
 
 #include <vector>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct TinyGltfEdits {
   std::vector<int> accessorsWithoutBufferView;
@@ -28,4 +28,4 @@ TinyGltfEdits EditForTinyGltf(nlohmann::json& doc);
 // Undoes `edits` on the model tinygltf parsed from the edited JSON.
 void UndoTinyGltfEdits(const TinyGltfEdits& edits, tinygltf::Model& model);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

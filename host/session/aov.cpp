@@ -8,7 +8,7 @@
 #include "util/atomic_write.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr std::array<const char*, kAovCount> kNames = {"albedo", "normal",  "depth",     "position",    "variance",
@@ -250,4 +250,4 @@ std::vector<std::string> WriteImageWithAovs(const Image& image, const std::vecto
   return files;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

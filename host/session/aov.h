@@ -25,7 +25,7 @@
 #include "image/image.h"
 #include "render/film.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 enum class Aov : uint8_t {
   kAlbedo,
@@ -44,7 +44,7 @@ constexpr int kAovCount = 10;
 const char* AovName(Aov aov);  // "albedo", …
 std::optional<Aov> AovFromName(std::string_view name);
 
-// The AOVs named, in order, each once; "all" names every AOV. Throws vkpt::Error for an
+// The AOVs named, in order, each once; "all" names every AOV. Throws Error for an
 // unknown name, listing the known ones.
 std::vector<Aov> AovsFromNames(const std::vector<std::string>& names);
 
@@ -95,4 +95,4 @@ std::vector<std::string> WriteImageWithAovs(const Image& image, const std::vecto
                                             const std::string& out, const DisplayTransform& display,
                                             const std::string& idsJson = "");
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -3,7 +3,7 @@
 #include "cpu/path_tracer.h"
 #include "vk/vk_denoise.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 RenderBackend::RenderBackend(const vk::Context* ctx, const RenderScene& rs, unsigned threads)
     : ctx_(ctx), rs_(rs), threads_(threads) {
@@ -22,4 +22,4 @@ Denoiser RenderBackend::MakeDenoiser() const {
   return [threads = threads_](const DenoiseInput& input) { return AtrousCpu(input, threads); };
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

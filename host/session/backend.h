@@ -11,7 +11,7 @@
 #include "vk/context.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class RenderBackend {
  public:
@@ -31,4 +31,4 @@ class RenderBackend {
   std::unique_ptr<vk::GpuRenderer> gpu_;  // the scene on the device
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -7,7 +7,7 @@
 
 #include "session/noise_estimate.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr uint32_t kFirstDecision = 16;  // samples before a pixel's variance is trusted
@@ -58,4 +58,4 @@ Decision Decide(const RenderBudget& budget, const FrameSums& sums, std::vector<u
   return d;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

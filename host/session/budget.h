@@ -10,7 +10,7 @@
 
 #include "render/film.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The spp bound of a render given a time or noise target but no spp.
 constexpr uint32_t kBudgetMaxSpp = 65536;
@@ -78,4 +78,4 @@ struct Decision {
 };
 Decision Decide(const RenderBudget& budget, const FrameSums& sums, std::vector<uint8_t>& active);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

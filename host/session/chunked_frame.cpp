@@ -4,7 +4,7 @@
 
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 ChunkedFrame::ChunkedFrame(FrameRenderer& inner, uint32_t chunkSpp) : inner_(inner), chunkSpp_(chunkSpp) {
   if (chunkSpp_ == 0) throw Error("a chunk needs at least one sample per pixel");
@@ -47,4 +47,4 @@ void ChunkedFrame::Clear() {
   open_ = false;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

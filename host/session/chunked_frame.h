@@ -12,7 +12,7 @@
 
 #include "render/film.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Samples per pixel per chunk unless --chunk says otherwise.
 constexpr uint32_t kDefaultChunkSpp = 16;
@@ -40,4 +40,4 @@ class ChunkedFrame final : public FrameRenderer {
   bool open_ = false;  // the inner frame holds samples of an unfinished chunk
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -5,7 +5,7 @@
 
 #include "session/chunked_frame.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 DealtChunks::DealtChunks(Cluster& cluster, FrameRenderer& frame, const ChunkPlan& plan)
     : cluster_(cluster),
@@ -34,4 +34,4 @@ std::string DealtChunks::Engine() const {
   return "mpi: " + std::to_string(cluster_.Size()) + " ranks, rank 0 " + frame_.Engine();
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -12,7 +12,7 @@
 #include "cluster/cluster.h"
 #include "session/sample_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class DealtChunks final : public SampleSource {
  public:
@@ -34,4 +34,4 @@ class DealtChunks final : public SampleSource {
   FrameSums sums_;  // the chunks taken, in order
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "render/film.h"
 #include "shared/layout.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 constexpr uint64_t kSums = sizeof(PixelSums);
@@ -92,4 +92,4 @@ std::string DescribeParts(const std::vector<MemoryPart>& parts) {
   return text + " bytes a pixel";
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // What decides a frame's memory.
 struct FrameShape {
@@ -39,4 +39,4 @@ uint64_t BytesPerPixel(const std::vector<MemoryPart>& parts);
 // "sums 168, image 25, output 24 bytes a pixel"
 std::string DescribeParts(const std::vector<MemoryPart>& parts);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

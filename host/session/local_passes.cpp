@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 double Since(std::chrono::steady_clock::time_point t0) {
@@ -45,4 +45,4 @@ uint32_t LocalPasses::Advance(const SampleRequest& request) {
   return n;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

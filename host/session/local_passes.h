@@ -11,7 +11,7 @@
 #include "session/chunked_frame.h"
 #include "session/sample_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // What the pass sizing knows of the passes so far.
 struct PassPlan {
@@ -40,4 +40,4 @@ class LocalPasses final : public SampleSource {
   PassPlan plan_;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

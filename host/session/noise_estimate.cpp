@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 double PixelRelativeError(const PixelSums& s) {
   if (s.samples < 2) return std::numeric_limits<double>::infinity();
@@ -42,4 +42,4 @@ uint64_t UpdateActivePixels(const FrameSums& sums, double target, std::vector<ui
   return count;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -11,7 +11,7 @@
 
 #include "render/film.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // One pixel's estimated relative squared error, averaged over its channels; infinite
 // with fewer than two samples (no variance estimate yet).
@@ -29,4 +29,4 @@ double EstimatedRelMse(const FrameSums& sums);
 // Returns the number of active pixels.
 uint64_t UpdateActivePixels(const FrameSums& sums, double target, std::vector<uint8_t>& active);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

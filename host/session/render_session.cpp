@@ -9,7 +9,7 @@
 #include "session/noise_estimate.h"
 #include "util/error.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -170,4 +170,4 @@ RenderedFrame RenderSession(SampleSource& source, const SessionSettings& setting
   return frame;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

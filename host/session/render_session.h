@@ -20,7 +20,7 @@
 #include "session/budget.h"
 #include "session/sample_source.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // A rendered frame and how it came about.
 struct RenderedFrame {
@@ -68,4 +68,4 @@ RenderedFrame RenderSession(SampleSource& source, const SessionSettings& setting
 // The samples of the AOV pass: the first kAovSamples of the render's (fewer if it took fewer).
 constexpr uint32_t kAovSamples = 16;
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -16,7 +16,7 @@
 #include "cluster/chunk_dealer.h"
 #include "render/film.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // What the session asks of a source for its next step.
 struct SampleRequest {
@@ -47,4 +47,4 @@ class SampleSource {
   virtual std::string Engine() const = 0;  // for reports: "cpu (2 threads)", "mpi: 2 ranks, rank 0 …"
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -15,7 +15,7 @@
 #include "util/error.h"
 #include "util/temp_file_guard.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 [[noreturn]] void Fail(const std::string& path, const std::string& what, int error) {
@@ -163,4 +163,4 @@ void CheckWritablePath(const std::string& path, const std::string& what) {
     throw Error(path + ": cannot write to directory " + dir.string() + ": " + std::strerror(errno));
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -5,7 +5,7 @@
 #include <glm/glm.hpp>
 #include <limits>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 struct Bounds3f {
   glm::vec3 lo{std::numeric_limits<float>::infinity()};
@@ -38,4 +38,4 @@ inline Bounds3f Intersection(const Bounds3f& a, const Bounds3f& b) {
   return {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)};
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

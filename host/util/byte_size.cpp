@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string_view>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 std::string WithThousands(uint64_t v) {
@@ -60,4 +60,4 @@ std::optional<uint64_t> ParseByteSize(const std::string& text) {
   return value << shift;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

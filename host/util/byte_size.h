@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // "812 bytes", "128 MiB", "1.50 GiB"; a figure that would print as a whole number of its
 // unit without being one adds the exact count ("128.00 MiB (134,218,752 bytes)"), so
@@ -17,4 +17,4 @@ std::string FormatBytes(uint64_t bytes);
 // insensitive); nullopt for anything else or a value that overflows 64 bits.
 std::optional<uint64_t> ParseByteSize(const std::string& text);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class ContentHash {
  public:
@@ -19,4 +19,4 @@ class ContentHash {
   uint64_t value_ = 0xCBF29CE484222325ull;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 void PrintError(const char* kind, std::string what) {
   std::replace(what.begin(), what.end(), '\n', ' ');
@@ -12,4 +12,4 @@ void PrintError(const char* kind, std::string what) {
   std::fprintf(stderr, "vkpt: %s: %s\n", kind, what.c_str());
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

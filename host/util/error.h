@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class Error : public std::runtime_error {
  public:
@@ -16,4 +16,4 @@ class Error : public std::runtime_error {
 // whatever a file or an argument put into `what`.
 void PrintError(const char* kind, std::string what);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 #include <xmmintrin.h>
 #endif
 
-namespace vkpt {
+namespace vkpt::internal {
 
 typedef float Float4 __attribute__((vector_size(16)));
 typedef int32_t Int4 __attribute__((vector_size(16)));
@@ -48,4 +48,4 @@ inline Float4 SwapHalves4(Float4 v) {
 #endif
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

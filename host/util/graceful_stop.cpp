@@ -6,7 +6,7 @@
 
 #include "util/temp_file_guard.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 volatile sig_atomic_t gSignal = 0;
@@ -61,4 +61,4 @@ GracefulStop::~GracefulStop() {
 int GracefulStop::Signal() { return gSignal; }
 bool GracefulStop::Active() { return gActive; }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -5,7 +5,7 @@
 // file of a TempFileGuard that is writing meanwhile.
 #pragma once
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class GracefulStop {
  public:
@@ -19,4 +19,4 @@ class GracefulStop {
   static bool Active();                            // whether one is alive (TempFileGuard then leaves signals to it)
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

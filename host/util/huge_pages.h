@@ -16,7 +16,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace vkpt {
+namespace vkpt::internal {
 
 template <class T>
 struct HugePageAllocator {
@@ -65,4 +65,4 @@ struct HugePageAllocator {
 template <class T>
 using HugeVector = std::vector<T, HugePageAllocator<T>>;
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // The first exception thrown by any of a group of threads, to rethrow after they join.
 class FirstException {
@@ -114,4 +114,4 @@ void ParallelForWithProgress(size_t n, unsigned threads, F&& f, const std::funct
   progress(1.0);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 std::string NonRegularProblem(mode_t mode) {
   if (S_ISREG(mode)) return "";
@@ -70,4 +70,4 @@ bool RegularFile::ReadAt(uint64_t offset, void* dest, size_t size, std::string* 
   return true;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

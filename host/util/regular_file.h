@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class RegularFile {
  public:
@@ -40,4 +40,4 @@ class RegularFile {
 // mode is refused; empty for a regular file.
 std::string NonRegularProblem(mode_t mode);
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -10,7 +10,7 @@
 #include "util/error.h"
 #include "util/graceful_stop.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // What the handler removes. A fixed buffer: a signal handler may not allocate, and the
@@ -66,4 +66,4 @@ void RemoveGuardedFileForSignal() {
   if (gActive) ::unlink(gPath);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

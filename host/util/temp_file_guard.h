@@ -9,7 +9,7 @@
 
 #include <string>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 class TempFileGuard {
  public:
@@ -32,4 +32,4 @@ class TempFileGuard {
 // From a signal handler: unlinks the file of the live guard, if any (async-signal-safe).
 void RemoveGuardedFileForSignal();
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -8,7 +8,7 @@
 #include "util/error.h"
 #include "vk/vk_check.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 namespace {
 
 
@@ -184,4 +184,4 @@ Buffer ReadbackBuffer(const Context& ctx, VkDeviceSize size, const std::string& 
                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, what);
 }
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

@@ -10,7 +10,7 @@
 
 #include "vk/context.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 
 class Buffer {
  public:
@@ -89,4 +89,4 @@ struct SplitTexelBuffer {
 SplitTexelBuffer UploadSplitTexelBuffer(const Context& ctx, const void* data, size_t bytes, uint32_t texelsPerElement,
                                         const std::string& what, uint32_t maxTexelsPerBuffer = 0);
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

@@ -6,7 +6,7 @@
 #include "vk/pipeline_cache.h"
 #include "vk/vk_check.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 namespace {
 
 // A pool holding exactly one set of `bindings`: as many descriptors of each type as
@@ -124,4 +124,4 @@ void CopyToHost(VkCommandBuffer cb, const std::vector<std::pair<const Buffer*, c
                        nullptr);
 }
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

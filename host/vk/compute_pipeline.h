@@ -14,7 +14,7 @@
 #include "vk/buffer.h"
 #include "vk/context.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 
 struct BufferBinding {
   uint32_t binding;
@@ -65,4 +65,4 @@ void HostReadBarrier(VkCommandBuffer cb);
 class Buffer;
 void CopyToHost(VkCommandBuffer cb, const std::vector<std::pair<const Buffer*, const Buffer*>>& srcDst);
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

@@ -7,7 +7,7 @@
 #include "vk/instance.h"
 #include "vk/vk_check.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 namespace {
 
 std::vector<VkPhysicalDevice> PhysicalDevices(VkInstance instance) {
@@ -46,7 +46,7 @@ int TypeRank(VkPhysicalDeviceType t) {
 }
 
 // The index into `infos` of the device --device `want` names ("": the best with what vkpt
-// needs, by type: discrete, integrated, virtual GPU, CPU); throws vkpt::Error when none
+// needs, by type: discrete, integrated, virtual GPU, CPU); throws Error when none
 // does, or the one named lacks a compute queue or Vulkan 1.2.
 uint32_t ChooseDevice(const std::vector<DeviceInfo>& infos, const std::string& want) {
   std::optional<uint32_t> chosen;
@@ -244,4 +244,4 @@ void Context::EndOneShot(VkCommandBuffer cb) const {
   Check(r, call);
 }
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

@@ -14,7 +14,7 @@
 
 #include "vk/pipeline_cache.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 
 struct DeviceInfo {
   uint32_t index;
@@ -33,7 +33,7 @@ struct ContextOptions {
 
 class Context {
  public:
-  // Throws vkpt::Error when there is no Vulkan loader, no device, or no device matches.
+  // Throws Error when there is no Vulkan loader, no device, or no device matches.
   explicit Context(const ContextOptions& options);
   ~Context();
   Context(const Context&) = delete;
@@ -89,4 +89,4 @@ class Context {
 // Every physical device the loader reports (empty when there is none or no loader).
 std::vector<DeviceInfo> ListDevices();
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

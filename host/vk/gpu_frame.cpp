@@ -8,7 +8,7 @@
 #include "kAovSpirv.h"
 #include "vk/vk_check.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 namespace {
 
 constexpr uint32_t kWorkgroup = 8;  // pathtrace.comp: local_size 8×8
@@ -223,4 +223,4 @@ std::unique_ptr<FrameRenderer> MakeGpuFrame(const Context& ctx, FrameBuffers b,
 
 const RunState& GpuFrameState(const FrameRenderer& frame) { return static_cast<const GpuFrame&>(frame).State(); }
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

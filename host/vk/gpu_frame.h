@@ -15,7 +15,7 @@
 #include "vk/context.h"
 #include "vk/vk_renderer.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 
 // pathtrace.comp's per-render buffers: per pixel Σf and Σf² (two vec4), the counters
 // (rays, non-finite samples, samples cut short, samples) and the adaptive sampling mask;
@@ -55,4 +55,4 @@ std::unique_ptr<FrameRenderer> MakeGpuFrame(const Context& ctx, FrameBuffers b,
 // The dispatches so far of a frame MakeGpuFrame made.
 const RunState& GpuFrameState(const FrameRenderer& frame);
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

@@ -8,7 +8,7 @@
 #include "util/error.h"
 #include "vk/vk_check.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
@@ -99,4 +99,4 @@ void DestroyMessenger(VkInstance instance, VkDebugUtilsMessengerEXT messenger) {
   if (destroy) destroy(instance, messenger, nullptr);
 }
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

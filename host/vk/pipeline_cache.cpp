@@ -3,7 +3,7 @@
 #include "vk/context.h"
 #include "vk/vk_check.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 namespace {
 
 VkShaderModule CreateShaderModule(VkDevice dev, const uint32_t* spirv, size_t spirvBytes) {
@@ -102,4 +102,4 @@ const CompiledPipeline& PipelineCache::Get(const Context& ctx, const uint32_t* s
   return pipelines_.emplace(std::move(key), c).first->second;
 }
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

@@ -16,7 +16,7 @@
 #include <mutex>
 #include <vector>
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 
 struct CompiledPipeline {
   VkShaderModule module = VK_NULL_HANDLE;
@@ -49,4 +49,4 @@ class PipelineCache {
   size_t compiled_ = 0;
 };
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

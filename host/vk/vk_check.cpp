@@ -2,7 +2,7 @@
 
 #include "util/error.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 
 const char* ResultName(VkResult r) {
   switch (r) {
@@ -40,4 +40,4 @@ void Check(VkResult r, const char* call) {
   throw Error(std::string("Vulkan: ") + call + " failed: " + ResultName(r) + " (" + std::to_string(int(r)) + ")" + hint);
 }
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

@@ -7,7 +7,7 @@
 #include "vk/buffer.h"
 #include "vk/compute_pipeline.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 
 std::vector<glm::vec4> AtrousGpu(const Context& ctx, const DenoiseInput& input) {
   const VkDeviceSize bytes = input.color.size() * sizeof(glm::vec4);
@@ -41,4 +41,4 @@ std::vector<glm::vec4> AtrousGpu(const Context& ctx, const DenoiseInput& input) 
   return std::vector<glm::vec4>(v, v + input.color.size());
 }
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

@@ -9,9 +9,9 @@
 #include "render/denoise.h"
 #include "vk/context.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 
 // Every iteration; returns the filtered colour (RGB, variance), as AtrousCpu does.
 std::vector<glm::vec4> AtrousGpu(const Context& ctx, const DenoiseInput& input);
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

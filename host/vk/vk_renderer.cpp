@@ -17,7 +17,7 @@
 #include "vk/gpu_frame.h"
 #include "vk/vk_check.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 namespace {
 
 template <class T>
@@ -212,4 +212,4 @@ std::vector<shader::HitRecord> GpuRenderer::Trace(const std::vector<shader::RayQ
   return std::vector<shader::HitRecord>(h, h + rays.size());
 }
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

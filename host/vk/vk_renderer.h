@@ -16,7 +16,7 @@
 #include "vk/compute_pipeline.h"
 #include "vk/context.h"
 
-namespace vkpt::vk {
+namespace vkpt::internal::vk {
 
 struct GpuRenderOptions {
   // Samples per pixel per submission (in dispatches of samplesPerInvocation each); 0
@@ -107,4 +107,4 @@ class GpuRenderer {
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
 };
 
-}  // namespace vkpt::vk
+}  // namespace vkpt::internal::vk

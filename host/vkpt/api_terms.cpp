@@ -3,7 +3,7 @@
 #include <array>
 #include <cstddef>
 
-namespace vkpt {
+namespace vkpt::internal {
 namespace {
 
 // Each setting a message names, spelt as Terms lists them; longest first where one
@@ -36,4 +36,4 @@ std::string InTerms(std::string message, Terms from, Terms to) {
   return message;
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

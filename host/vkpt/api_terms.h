@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Who reads a message.
 enum class Terms { kCommandLine, kCpp, kPython };
@@ -20,4 +20,4 @@ inline std::string InApiTerms(std::string message) {
   return InTerms(std::move(message), Terms::kCommandLine, Terms::kCpp);
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -12,21 +12,24 @@
 
 namespace vkpt {
 
-struct api::Scene::Impl {
-  std::unique_ptr<LoadedScene> loaded;
+struct Scene::Impl {
+  std::unique_ptr<internal::LoadedScene> loaded;
 };
 
-struct api::SceneAccess {
-  static api::Scene Make(std::unique_ptr<LoadedScene> loaded) {
-    return api::Scene(std::make_unique<api::Scene::Impl>(api::Scene::Impl{std::move(loaded)}));
+struct v1::SceneAccess {
+  static Scene Make(std::unique_ptr<internal::LoadedScene> loaded) {
+    return Scene(std::make_unique<Scene::Impl>(Scene::Impl{std::move(loaded)}));
   }
-  static LoadedScene& Engine(api::Scene& scene) { return *scene.impl_->loaded; }
-  static const LoadedScene& Engine(const api::Scene& scene) { return *scene.impl_->loaded; }
+  static internal::LoadedScene& Engine(Scene& scene) { return *scene.impl_->loaded; }
+  static const internal::LoadedScene& Engine(const Scene& scene) { return *scene.impl_->loaded; }
 };
 
+}  // namespace vkpt
+
+namespace vkpt::internal {
 namespace {
 
-SceneSettings ToSettings(const std::string& path, const api::SceneOptions& o, const ClientScene& client) {
+SceneSettings ToSettings(const std::string& path, const vkpt::SceneOptions& o, const ClientScene& client) {
   SceneSettings s;
   using InternalBackend = decltype(s.backend);
   s.path = path;
@@ -39,12 +42,12 @@ SceneSettings ToSettings(const std::string& path, const api::SceneOptions& o, co
   s.env = o.environment;
   s.envIntensity = o.environmentIntensity;
   using InternalSampler = decltype(s.lightSampler);
-  s.lightSampler = o.lightSampler == api::LightSampler::Tree    ? InternalSampler::kTree
-                   : o.lightSampler == api::LightSampler::Power ? InternalSampler::kPower
-                                                                : InternalSampler::kAuto;
-  s.backend = o.backend == api::Backend::Cpu      ? InternalBackend::Cpu
-              : o.backend == api::Backend::Vulkan ? InternalBackend::Vulkan
-                                                  : InternalBackend::Auto;
+  s.lightSampler = o.lightSampler == vkpt::LightSampler::Tree    ? InternalSampler::kTree
+                   : o.lightSampler == vkpt::LightSampler::Power ? InternalSampler::kPower
+                                                                 : InternalSampler::kAuto;
+  s.backend = o.backend == vkpt::Backend::Cpu      ? InternalBackend::Cpu
+              : o.backend == vkpt::Backend::Vulkan ? InternalBackend::Vulkan
+                                                   : InternalBackend::Auto;
   s.device = o.device;
   s.validation = o.validation;
   s.threads = o.threads;
@@ -55,7 +58,7 @@ SceneSettings ToSettings(const std::string& path, const api::SceneOptions& o, co
   return s;
 }
 
-RenderBudget ToBudget(const api::RenderOptions& o, const ClientView& client) {
+RenderBudget ToBudget(const vkpt::RenderOptions& o, const ClientView& client) {
   return BudgetFor({o.spp, o.seconds, o.noiseTarget, o.adaptive, client.checkpointSeconds, o.chunkSpp});
 }
 
@@ -63,7 +66,7 @@ std::optional<glm::vec3> ToVec3(const std::optional<std::array<float, 3>>& v) {
   return v ? std::optional<glm::vec3>(glm::vec3((*v)[0], (*v)[1], (*v)[2])) : std::nullopt;
 }
 
-FrameRequest ToRequest(const api::Camera& c, const api::RenderOptions& o, const std::vector<Aov>& aovs,
+FrameRequest ToRequest(const vkpt::Camera& c, const vkpt::RenderOptions& o, const std::vector<Aov>& aovs,
                        const ClientView& client, bool compare) {
   FrameRequest r;
   CameraSettings& camera = r.camera;
@@ -100,29 +103,13 @@ FrameRequest ToRequest(const api::Camera& c, const api::RenderOptions& o, const 
 
 }  // namespace
 
-api::Scene::Scene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-
-api::Scene::Scene(const std::string& path, const SceneOptions& options)
-    : Scene(Translated([&] { return std::move(OpenScene(path, options, {}).impl_); })) {}
-
-api::Scene::~Scene() = default;
-api::Scene::Scene(Scene&&) noexcept = default;
-api::Scene& api::Scene::operator=(Scene&&) noexcept = default;
-
-uint32_t api::Scene::CameraCount() const { return uint32_t(SceneAccess::Engine(*this).scene().cameras.size()); }
-
-std::string api::Scene::Device() const {
-  const vk::Context* device = SceneAccess::Engine(*this).Device();
-  return device ? std::string(device->Properties().deviceName) : "cpu";
+vkpt::Scene OpenScene(const std::string& path, const vkpt::SceneOptions& options, const ClientScene& client) {
+  return vkpt::SceneAccess::Make(std::make_unique<LoadedScene>(ToSettings(path, options, client), client.log));
 }
 
-api::Scene OpenScene(const std::string& path, const api::SceneOptions& options, const ClientScene& client) {
-  return api::SceneAccess::Make(std::make_unique<LoadedScene>(ToSettings(path, options, client), client.log));
-}
+LoadedScene& EngineOf(vkpt::Scene& scene) { return vkpt::SceneAccess::Engine(scene); }
 
-LoadedScene& EngineOf(api::Scene& scene) { return api::SceneAccess::Engine(scene); }
-
-BegunView BeginView(api::Scene& scene, const api::Camera& camera, const api::RenderOptions& options,
+BegunView BeginView(vkpt::Scene& scene, const vkpt::Camera& camera, const vkpt::RenderOptions& options,
                     const ClientView& client) {
   LoadedScene& loaded = EngineOf(scene);
   BegunView view;
@@ -132,7 +119,7 @@ BegunView BeginView(api::Scene& scene, const api::Camera& camera, const api::Ren
   return view;
 }
 
-RenderedView FinishView(api::Scene& scene, BegunView& view, SampleSource& source, const api::RenderOptions& options,
+RenderedView FinishView(vkpt::Scene& scene, BegunView& view, SampleSource& source, const vkpt::RenderOptions& options,
                         const ClientView& client) {
   LoadedScene& loaded = EngineOf(scene);
   SessionSettings settings;
@@ -150,6 +137,26 @@ RenderedView FinishView(api::Scene& scene, BegunView& view, SampleSource& source
   rendered.aovs = ResolveAovs(view.aovs, f.aovs, f.sums, f.image, loaded.IdsOf());
   if (WantsIds(view.aovs)) rendered.ids = loaded.IdsJson();
   return rendered;
+}
+
+}  // namespace vkpt::internal
+
+namespace vkpt {
+
+Scene::Scene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+Scene::Scene(const std::string& path, const SceneOptions& options)
+    : Scene(internal::Translated([&] { return std::move(internal::OpenScene(path, options, {}).impl_); })) {}
+
+Scene::~Scene() = default;
+Scene::Scene(Scene&&) noexcept = default;
+Scene& Scene::operator=(Scene&&) noexcept = default;
+
+uint32_t Scene::CameraCount() const { return uint32_t(SceneAccess::Engine(*this).scene().cameras.size()); }
+
+std::string Scene::Device() const {
+  const internal::vk::Context* device = SceneAccess::Engine(*this).Device();
+  return device ? std::string(device->Properties().deviceName) : "cpu";
 }
 
 }  // namespace vkpt

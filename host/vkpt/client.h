@@ -5,9 +5,6 @@
 // local passes and FinishView, so the command line renders what the library renders.
 // These leave errors in the engine's terms (the command line's); the public API's own
 // functions translate them (Translated).
-//
-// Include this after every engine header: from here on vkpt::Scene, vkpt::Image, … name
-// both the engine's types and the public ones (vkpt/vkpt.h).
 #pragma once
 
 #include <exception>
@@ -18,16 +15,16 @@
 #include "vkpt/view.h"
 #include "vkpt/vkpt.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
-api::Scene OpenScene(const std::string& path, const api::SceneOptions& options, const ClientScene& client);
-LoadedScene& EngineOf(api::Scene& scene);
+vkpt::Scene OpenScene(const std::string& path, const vkpt::SceneOptions& options, const ClientScene& client);
+LoadedScene& EngineOf(vkpt::Scene& scene);
 
-BegunView BeginView(api::Scene& scene, const api::Camera& camera, const api::RenderOptions& options,
+BegunView BeginView(vkpt::Scene& scene, const vkpt::Camera& camera, const vkpt::RenderOptions& options,
                     const ClientView& client);
 // Renders a begun view from `source` (its frame's local passes, or an MPI job's dealt
 // chunks), then its AOV pass and filter as the options ask.
-RenderedView FinishView(api::Scene& scene, BegunView& view, SampleSource& source, const api::RenderOptions& options,
+RenderedView FinishView(vkpt::Scene& scene, BegunView& view, SampleSource& source, const vkpt::RenderOptions& options,
                         const ClientView& client);
 
 // Any failure inside as the one public exception, its message in the API's terms.
@@ -35,13 +32,13 @@ template <class F>
 auto Translated(F&& f) {
   try {
     return f();
-  } catch (const api::Error&) {
+  } catch (const vkpt::Error&) {
     throw;
   } catch (const std::bad_alloc&) {
-    throw api::Error("out of memory");
+    throw vkpt::Error("out of memory");
   } catch (const std::exception& e) {
-    throw api::Error(InApiTerms(e.what()));
+    throw vkpt::Error(InApiTerms(e.what()));
   }
 }
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

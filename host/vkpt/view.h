@@ -17,7 +17,7 @@
 #include "session/aov.h"
 #include "session/render_session.h"
 
-namespace vkpt {
+namespace vkpt::internal {
 
 // Scene settings the command line has and the API does not.
 struct ClientScene {
@@ -58,4 +58,4 @@ struct RenderedView {
   std::string ids;
 };
 
-}  // namespace vkpt
+}  // namespace vkpt::internal

@@ -22,11 +22,11 @@
 #include "scene/meshopt_decode.h"
 #include "util/error.h"
 
-namespace vkpt::fuzz {
+namespace vkpt::internal::fuzz {
 
 // --env maps: written as env.exr (OpenEXR's magic number first) or env.hdr into a private
 // directory and read by ReadEnvironmentImage, the function --env uses, under the fuzz
-// memory budget (fuzz_input.h). Throws vkpt::Error.
+// memory budget (fuzz_input.h). Throws Error.
 inline void RunEnv(std::string_view bytes) {
   const bool exr = bytes.substr(0, 4) == std::string_view("\x76\x2f\x31\x01", 4);
   TempInput input(ScratchDir("vkpt-fuzz-env") + (exr ? "/env.exr" : "/env.hdr"), bytes);
@@ -45,7 +45,7 @@ constexpr uint64_t kTextureBytesPerTexel = 16 + 4 + 4 * 6;
 // Texture images (PNG, JPEG) in memory, as the glTF loader decodes them
 // (scene/gltf_texture_images.cpp): the header, the loader's charge for the texels
 // (refused above the fuzz budget, as the loader's budget would), then the decode.
-// Throws vkpt::Error.
+// Throws Error.
 inline void RunTexture(std::string_view text) {
   const std::span<const unsigned char> bytes(reinterpret_cast<const unsigned char*>(text.data()), text.size());
   const TextureImageHeader header = ReadTextureImageHeader(bytes, "");
@@ -54,14 +54,14 @@ inline void RunTexture(std::string_view text) {
 }
 
 // The PFM reader of --diff: written as image.pfm into a private directory and read by
-// ReadPfm. Throws vkpt::Error.
+// ReadPfm. Throws Error.
 inline void RunPfm(std::string_view bytes) {
   TempInput input(ScratchDir("vkpt-fuzz-pfm") + "/image.pfm", bytes);
   ReadPfm(input.path());
 }
 
 // The command line: split on NUL bytes into arguments (argv[0] "vkpt" first) for
-// ParseOptions. Throws vkpt::UsageError.
+// ParseOptions. Throws UsageError.
 inline void RunOptions(std::string_view text) {
   std::vector<std::string> args{"vkpt"};
   for (size_t start = 0; start <= text.size();) {
@@ -75,7 +75,7 @@ inline void RunOptions(std::string_view text) {
   ParseOptions(int(args.size()), argv.data());
 }
 
-// KHR_draco_mesh_compression bitstreams through vkpt::DecodeDraco, in memory. The input
+// KHR_draco_mesh_compression bitstreams through DecodeDraco, in memory. The input
 // is a 13-byte header, the glTF side of one primitive, then the Draco bitstream
 // (fuzz_seeds writes seeds in this layout):
 //   [0]       accessors: byte % 5 (0 … 4)
@@ -86,7 +86,7 @@ inline void RunOptions(std::string_view text) {
 // Fixed offsets, so that mutating the bitstream never shifts the header. Small counts
 // keep what DecodeDraco allocates for the accessors small; what libdraco allocates is
 // the bitstream's to decide, and over -malloc_limit_mb is a finding (run.sh). Throws
-// vkpt::Error.
+// Error.
 inline void RunDraco(std::string_view text) {
   constexpr size_t kHeaderSize = 13;
   constexpr int kDracoComponentTypes[6] = {5120, 5121, 5122, 5123, 5125, 5126};
@@ -104,7 +104,7 @@ inline void RunDraco(std::string_view text) {
 }
 
 // EXT_meshopt_compression streams the way the loader runs them (scene/gltf_meshopt.cpp):
-// vkpt::CheckMeshoptStream, then, only for a stream it passes, vkpt::DecodeMeshoptStream
+// CheckMeshoptStream, then, only for a stream it passes, DecodeMeshoptStream
 // into exactly count × byteStride bytes. meshoptimizer is a shared library, not
 // instrumented: ASan would not see it write past them, so they are followed by guard
 // bytes checked after each decode. The input is a 6-byte header, the extension's
@@ -113,7 +113,7 @@ inline void RunDraco(std::string_view text) {
 //   [1]     filter: NONE, OCTAHEDRAL, QUATERNION, EXPONENTIAL [byte % 4]
 //   [2..3]  byteStride, little-endian, % 512: valid (4 … 256, 2 or 4) and invalid ones
 //   [4..5]  count, little-endian, % 4096: at most 1 MiB of output for the harness
-// Throws vkpt::Error.
+// Throws Error.
 inline void RunMeshopt(std::string_view text) {
   constexpr size_t kHeaderSize = 6, kGuardSize = 64;
   constexpr unsigned char kGuardByte = 0xa5;
@@ -144,4 +144,4 @@ inline void RunMeshopt(std::string_view text) {
   DecodeMeshoptStream({data + kHeaderSize, text.size() - kHeaderSize}, s, out);
 }
 
-}  // namespace vkpt::fuzz
+}  // namespace vkpt::internal::fuzz

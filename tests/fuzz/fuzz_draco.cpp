@@ -1,6 +1,6 @@
-// libFuzzer target for the KHR_draco_mesh_compression decoder, vkpt::DecodeDraco
+// libFuzzer target for the KHR_draco_mesh_compression decoder, DecodeDraco
 // (scene/draco_decode.h), in memory: fuzz_bodies.h's RunDraco says how the input is
-// laid out. A vkpt::Error is the expected outcome of a refusal; anything else is a
+// laid out. A Error is the expected outcome of a refusal; anything else is a
 // finding (fuzz_target.h).
 #include <cstdint>
 #include <new>
@@ -11,12 +11,12 @@
 #include "util/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  vkpt::fuzz::ExpectOnly<vkpt::Error>("fuzz_draco", "vkpt::Error", [&] {
-    // std::bad_alloc is a clean refusal too: the loader turns it into a vkpt::Error
+  vkpt::internal::fuzz::ExpectOnly<vkpt::internal::Error>("fuzz_draco", "vkpt::internal::Error", [&] {
+    // std::bad_alloc is a clean refusal too: the loader turns it into a Error
     // (GltfAsset). Under ASan an allocation past -malloc_limit_mb is reported before it
     // could throw, so this does not hide a runaway allocation.
     try {
-      vkpt::fuzz::RunDraco({reinterpret_cast<const char*>(data), size});
+      vkpt::internal::fuzz::RunDraco({reinterpret_cast<const char*>(data), size});
     } catch (const std::bad_alloc&) {}
   });
   return 0;

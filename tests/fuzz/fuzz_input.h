@@ -15,7 +15,7 @@
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 
-namespace vkpt::fuzz {
+namespace vkpt::internal::fuzz {
 
 // A new empty directory only this process uses (mode 0700), under $TMPDIR or /tmp: the
 // input file is alone in it, so a relative URI in the input finds nothing of ours.
@@ -33,13 +33,13 @@ inline std::string InputFileName(std::string_view bytes) {
 }
 
 // The loader's memory budget for fuzz inputs: far below libFuzzer's -malloc_limit_mb, so
-// an input that asks for too much is refused by the budget (a vkpt::Error, as a user
+// an input that asks for too much is refused by the budget (a Error, as a user
 // would see it) and anything that still allocates past the malloc limit is a finding:
 // memory the budget failed to count.
 constexpr uint64_t kFuzzMaxMemory = uint64_t(256) << 20;
 
-// Writes `bytes` to <dir>/InputFileName(bytes), loads that file with vkpt::LoadGltf and
-// removes it. True when a scene loaded, false on vkpt::Error (its message goes to
+// Writes `bytes` to <dir>/InputFileName(bytes), loads that file with LoadGltf and
+// removes it. True when a scene loaded, false on Error (its message goes to
 // `error` if given); any other exception (or crash) is the caller's finding.
 inline bool LoadInput(const std::string& dir, std::string_view bytes, std::string* error = nullptr) {
   const std::string path = dir + "/" + InputFileName(bytes);
@@ -52,17 +52,17 @@ inline bool LoadInput(const std::string& dir, std::string_view bytes, std::strin
     ~Remove() { std::remove(path.c_str()); }
   } remove{path};
   try {
-    const vkpt::LoadLimits limits{.maxMemory = kFuzzMaxMemory};
-    const vkpt::Scene scene = vkpt::LoadGltf(path, limits);
+    const vkpt::internal::LoadLimits limits{.maxMemory = kFuzzMaxMemory};
+    const vkpt::internal::Scene scene = vkpt::internal::LoadGltf(path, limits);
     // An animated file is loaded once more, posed halfway through its first animation, so
     // that its keyframes are read too.
     if (!scene.animations.empty())
-      vkpt::LoadGltf(path, limits, {.animation = "0", .time = scene.animations[0].duration / 2});
+      vkpt::internal::LoadGltf(path, limits, {.animation = "0", .time = scene.animations[0].duration / 2});
     return true;
-  } catch (const vkpt::Error& e) {
+  } catch (const vkpt::internal::Error& e) {
     if (error) *error = e.what();
     return false;
   }
 }
 
-}  // namespace vkpt::fuzz
+}  // namespace vkpt::internal::fuzz

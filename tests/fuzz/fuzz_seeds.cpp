@@ -46,8 +46,8 @@ void Append(void* context, void* data, int size) {
   bytes->insert(bytes->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
 }
 
-vkpt::Image Gradient(uint32_t w, uint32_t h) {
-  vkpt::Image img{w, h};
+vkpt::internal::Image Gradient(uint32_t w, uint32_t h) {
+  vkpt::internal::Image img{w, h};
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x) img.At(x, y) = glm::vec3(0.1f * x, 0.25f * y, std::exp2(float(x) - 3.0f));
   return img;
@@ -247,20 +247,20 @@ int main(int argc, char** argv) {
 
   // Environment maps: EXR as vkpt writes it (RGB; RGB with AOV channels), Radiance HDR
   // flat (narrow) and run-length encoded (8 to 32767 wide).
-  const vkpt::Image small = Gradient(5, 3), wide = Gradient(16, 2);
-  Write("env/rgb.exr", vkpt::EncodeExr(small, "rgb.exr"));
-  std::vector<vkpt::ExrChannel> channels = vkpt::RgbChannels(small);
+  const vkpt::internal::Image small = Gradient(5, 3), wide = Gradient(16, 2);
+  Write("env/rgb.exr", vkpt::internal::EncodeExr(small, "rgb.exr"));
+  std::vector<vkpt::internal::ExrChannel> channels = vkpt::internal::RgbChannels(small);
   channels.push_back({"A", std::vector<float>(15, 1.0f)});
   channels.push_back({"depth.Z", std::vector<float>(15, 2.5f)});
-  Write("env/aovs.exr", vkpt::EncodeExrChannels(5, 3, channels, "aovs.exr"));
-  for (const vkpt::Image* img : {&small, &wide}) {
+  Write("env/aovs.exr", vkpt::internal::EncodeExrChannels(5, 3, channels, "aovs.exr"));
+  for (const vkpt::internal::Image* img : {&small, &wide}) {
     std::vector<uint8_t> bytes;
     stbi_write_hdr_to_func(Append, &bytes, int(img->width), int(img->height), 3, &img->pixels[0].x);
     Write(img == &small ? "env/flat.hdr" : "env/rle.hdr", bytes);
   }
 
   // PFM: little-endian as vkpt writes it, and the same big-endian (positive scale).
-  std::vector<uint8_t> le = vkpt::EncodePfm(small);
+  std::vector<uint8_t> le = vkpt::internal::EncodePfm(small);
   Write("pfm/little-endian.pfm", le);
   const std::string header = "PF\n5 3\n1.0\n";
   std::vector<uint8_t> be(header.begin(), header.end());

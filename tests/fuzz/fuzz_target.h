@@ -15,7 +15,7 @@
 
 #include "fuzz_input.h"
 
-namespace vkpt::fuzz {
+namespace vkpt::internal::fuzz {
 
 // Runs `body`; an `Expected` exception is a clean refusal, anything else aborts.
 template <class Expected, class Body>
@@ -66,4 +66,4 @@ class TempInput {
 
 inline std::string_view AsText(const uint8_t* data, size_t size) { return {reinterpret_cast<const char*>(data), size}; }
 
-}  // namespace vkpt::fuzz
+}  // namespace vkpt::internal::fuzz

@@ -34,9 +34,9 @@
 #endif
 
 namespace vkpt {
-// The public names live in an inline namespace: the library's own sources have types of
-// the same names (vkpt::Scene, vkpt::Image) that these never meet in one scope.
-inline namespace api {
+// The public names live in a versioned inline namespace (the ABI's); the library's own
+// types live in vkpt::internal, so the two never share a name.
+inline namespace v1 {
 
 // Every failure: a file that cannot be read or is malformed, a setting out of range, a
 // device that is missing, memory beyond the limit. The message names what is at fault.
@@ -166,5 +166,5 @@ class VKPT_API Scene {
 VKPT_API std::vector<std::string> Save(const RenderResult& result, const std::string& path,
                                        const std::string& view = "neutral", float exposure = 0.0f);
 
-}  // namespace api
+}  // namespace v1
 }  // namespace vkpt
