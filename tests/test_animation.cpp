@@ -184,7 +184,7 @@ TEST(Animation, CommandLinePosesAndReports) {
 
   r = RunVkpt({"--scene", model.path, "--out", out, "--at", "1"});
   EXPECT_TRUE(r.ExitedWith(2)) << r.Describe();
-  EXPECT_NE(r.err.find("--at is a time in an --animation; none was given"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--at needs --animation: it is a time in that animation"), std::string::npos) << r.err;
   r = RunVkpt({"--scene", model.path, "--out", out, "--animation", "walk"});
   EXPECT_TRUE(r.ExitedWith(1)) << r.Describe();
   EXPECT_NE(r.err.find(model.path + ": --animation walk: the file has no such animation"), std::string::npos) << r.err;

@@ -176,7 +176,7 @@ TEST(Options, RangeErrorsReadAsPeopleWriteThem) {
   EXPECT_EQ(ErrorOf({"--noise-target", "0"}), "--noise-target must be in (0, 1], got 0");
   EXPECT_EQ(ErrorOf({"--noise-target", "1.5"}), "--noise-target must be in (0, 1], got 1.5");
   EXPECT_EQ(ErrorOf({"--env", "e.hdr", "--env-intensity", "-1"}), "--env-intensity must be ≥ 0, got -1");
-  EXPECT_EQ(ErrorOf({"--env-intensity", "inf"}), "--env-intensity expects a finite number, got \"inf\"");
+  EXPECT_EQ(ErrorOf({"--env-intensity", "inf"}), "--env-intensity must be a finite number ≥ 0, got inf");
   EXPECT_EQ(ErrorOf({"--background", "1,-2,3"}), "--background must be ≥ 0, got -2");
   EXPECT_EQ(ErrorOf({"--width", "0"}), "--width must be in [1, 16384], got 0");
   EXPECT_EQ(ErrorOf({"--leaf-size", "16"}), "--leaf-size must be in [1, 15], got 16");

@@ -10,22 +10,7 @@
 
 namespace vkpt::internal {
 
-std::string FormatNumber(double v) {
-  char text[32];
-  auto [end, ec] = std::to_chars(text, text + sizeof text, v);
-  return ec == std::errc() ? std::string(text, end) : std::string("?");
-}
-
-std::string RangeText(const Range& r) {
-  // Built by constructors and appends: GCC 12 warns of a false -Wrestrict (PR 105651) in
-  // a literal assigned or prepended to a string.
-  if (std::isinf(r.hi)) return std::string(r.loOpen ? "> " : "≥ ").append(FormatNumber(r.lo));
-  return std::string(r.loOpen ? "(" : "[")
-      .append(FormatNumber(r.lo))
-      .append(", ")
-      .append(FormatNumber(r.hi))
-      .append("]");
-}
+Range SettingRange(const std::string& key) { return *SettingOf(key).range; }
 
 template <class T>
 T ParseNumber(const std::string& opt, const std::string& text, const Range& r) {
@@ -34,11 +19,7 @@ T ParseNumber(const std::string& opt, const std::string& text, const Range& r) {
   if (ec != std::errc() || end != text.data() + text.size())
     throw UsageError(opt + " expects a number, got \"" + text + "\"");
   const double d = double(v);
-  if (std::isinf(r.hi) && !std::isfinite(d)) throw UsageError(opt + " expects a finite number, got \"" + text + "\"");
-  if (!((r.loOpen ? d > r.lo : d >= r.lo) && d <= r.hi)) {
-    const bool interval = !std::isinf(r.hi);
-    throw UsageError(opt + " must be " + (interval ? "in " : "") + RangeText(r) + ", got " + text);
-  }
+  if (!r.Holds(d)) throw UsageError(OutOfRange(opt, r, d, text));
   return v;
 }
 
@@ -134,7 +115,7 @@ OptionValue OutValue() {
 }
 
 OptionValue SppValue() {
-  OptionValue v = Number(&Options::spp, {1, 1u << 30});
+  OptionValue v = Number(&Options::spp, SettingRange("spp"));
   v.set = [number = v.set](Options& o, const GivenOption& g) {
     number(o, g);
     o.sppGiven = true;
@@ -159,7 +140,7 @@ OptionValue DiffValue() {
 }
 
 OptionValue BackgroundValue() {
-  const Range range{0.0};
+  const Range range = SettingRange("background");
   auto set = [range](Options& o, const GivenOption& g) {
     const std::vector<std::string> parts = SplitCommas(g.value());
     if (parts.size() != 1 && parts.size() != 3)
@@ -171,8 +152,8 @@ OptionValue BackgroundValue() {
   return {"each " + RangeText(range), set, JsonOf(&Options::background)};
 }
 
-OptionValue PointValue(std::optional<std::array<float, 3>> Options::*field) {
-  const Range range{-1e9, 1e9};
+OptionValue PointValue(std::optional<std::array<float, 3>> Options::*field, const std::string& key) {
+  const Range range = SettingRange(key);
   auto set = [field, range](Options& o, const GivenOption& g) {
     const std::vector<std::string> parts = SplitCommas(g.value());
     if (parts.size() != 3) throw UsageError(g.name + " expects X,Y,Z, got \"" + g.value() + "\"");
@@ -214,14 +195,15 @@ OptionValue MaxMemoryValue() {
 }
 
 OptionValue MaxTexelsValue() {
-  auto set = [](Options& o, const GivenOption& g) {
+  const Range range = SettingRange("max_texels");
+  auto set = [range](Options& o, const GivenOption& g) {
     std::optional<uint64_t> texels = ParseByteSize(g.value());
-    if (!texels || *texels < 1 || *texels > (uint64_t(1) << 31))
-      throw UsageError(g.name + " expects a count from 1 to 2G (a number, or with K, M or G), got \"" + g.value() +
-                       "\"");
+    if (!texels) throw UsageError(g.name + " expects a count (a number, or with K, M or G), got \"" + g.value() + "\"");
+    if (!range.Holds(double(*texels))) throw UsageError(OutOfRange(g.name, range, double(*texels), g.value()));
     o.load.maxTextureTexels = *texels;
   };
-  return {"[1, 2G]", set, [](const Options& o) { return std::to_string(o.load.maxTextureTexels); }};
+  return {RangeText(range) + " (0: 256M)", set,
+          [](const Options& o) { return std::to_string(o.load.maxTextureTexels); }};
 }
 
 OptionValue AllowExternalUrisValue() {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/options.h"
+#include "vkpt/settings_schema.h"
 
 namespace vkpt::internal {
 
@@ -28,18 +29,9 @@ struct OptionValue {
   std::function<std::string(const Options&)> json;        // the --stats value; null: none
 };
 
-// Numbers from lo to hi; hi infinite: no upper bound (but the number must be finite);
-// loOpen: lo itself excluded.
-struct Range {
-  double lo;
-  double hi = INFINITY;
-  bool loOpen = false;
-};
-
-// The shortest text that reads back as v: 0.001, 16384, 4294967295, 1e+07, 1e-09.
-std::string FormatNumber(double v);
-// "[1, 16384]", "(0, 1]", "≥ 0", "> 0": what "must be ..." completes.
-std::string RangeText(const Range& r);
+// The range of the library's setting `key` (vkpt/settings_schema.h): the option refuses
+// what the library refuses.
+Range SettingRange(const std::string& key);
 // T is uint32_t, float or double; the error names `opt` and says what was wrong.
 template <class T>
 T ParseNumber(const std::string& opt, const std::string& text, const Range& r);
@@ -53,21 +45,12 @@ std::function<std::string(const Options&)> JsonOf(bool Options::*field);
 std::function<std::string(const Options&)> JsonOf(std::string Options::*field);
 std::function<std::string(const Options&)> JsonOf(std::optional<std::array<float, 3>> Options::*field);
 
-template <class T>
-struct NumberOf {
-  using type = T;
-};
-template <class T>
-struct NumberOf<std::optional<T>> {
-  using type = T;
-};
-
 // A number in `range` stored in `field` (plain or optional).
 template <class Field>
 OptionValue Number(Field Options::*field, Range range) {
   return {RangeText(range),
           [field, range](Options& o, const GivenOption& g) {
-            o.*field = ParseNumber<typename NumberOf<Field>::type>(g.name, g.value(), range);
+            o.*field = ParseNumber<typename ValueOf<Field>::type>(g.name, g.value(), range);
           },
           JsonOf(field)};
 }
@@ -107,7 +90,7 @@ OptionValue CheckpointValue();
 OptionValue DiffValue();
 OptionValue BackgroundValue();
 // X,Y,Z: a point or direction in scene units.
-OptionValue PointValue(std::optional<std::array<float, 3>> Options::*field);
+OptionValue PointValue(std::optional<std::array<float, 3>> Options::*field, const std::string& key);
 OptionValue AovValue();
 OptionValue FramesValue();  // FIRST:LAST[:STEP]
 OptionValue MaxMemoryValue();

@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "app/option_table.h"
+#include "app/scene_client.h"
 #include "session/budget.h"
 
 namespace vkpt::internal {
@@ -40,12 +41,14 @@ void Complete(Options& o) {
     throw UsageError("--compare checks the backends against each other; it takes no --aov or --denoise");
   if (!o.sppGiven) o.spp = BudgetFor({std::nullopt, o.time, o.noiseTarget, std::nullopt}).maxSpp;
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
-  if (o.at && o.animation.empty()) throw UsageError("--at is a time in an --animation; none was given");
+  if (o.at && o.animation.empty()) throw UsageError(kTimeWithoutAnimation);
   if (o.frames && o.at) throw UsageError("--frames gives each frame its time (k / --fps); drop --at");
   if (o.frames && o.compare) throw UsageError("--compare checks one image; drop --frames");
-  if (!o.env.empty() && o.background) throw UsageError("--env and --background both set the environment; give one");
-  if (o.env.empty() && (o.envRotation != 0.0f || o.envIntensity != 1.0f))
-    throw UsageError("--env-rotation and --env-intensity apply to an --env map; none was given");
+  try {
+    CheckSettings(ApiSettingsOf(o));  // the library's own checks
+  } catch (const SettingError& e) {
+    throw UsageError(e.what());
+  }
   if (o.out.empty()) {
     std::string base = o.scene.substr(o.scene.find_last_of('/') + 1);
     o.out = base.substr(0, base.find_last_of('.')) + ".png";

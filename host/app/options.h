@@ -15,6 +15,7 @@
 #include "session/aov.h"
 #include "session/budget.h"
 #include "session/chunked_frame.h"
+#include "vkpt/vkpt.h"
 
 namespace vkpt::internal {
 
@@ -34,18 +35,19 @@ struct Options {
   std::optional<double> noiseTarget;  // --noise-target: estimated relMSE that ends the render
   std::optional<bool> adaptive;       // --adaptive / --no-adaptive; absent: on with --noise-target
   double checkpoint = 0.0;            // --checkpoint: seconds between rewrites of --out (0: none)
-  uint32_t seed = 0;
-  uint32_t chunkSpp = kDefaultChunkSpp;  // --chunk (session/chunked_frame.h)
-  uint32_t maxDepth = 32;
-  uint32_t rrDepth = 3;
+  // The library's defaults (vkpt/vkpt.h) are the command line's.
+  uint32_t seed = vkpt::RenderOptions{}.seed;
+  uint32_t chunkSpp = vkpt::RenderOptions{}.chunkSpp;  // --chunk
+  uint32_t maxDepth = vkpt::RenderOptions{}.maxDepth;
+  uint32_t rrDepth = vkpt::RenderOptions{}.rrDepth;
   Backend backend = Backend::Auto;  // Vulkan when a device exists, else the CPU
   std::string device;               // --device N|substring
   bool listDevices = false;
   bool validation = false;          // --validation or VKPT_VALIDATION=1
-  uint32_t batch = 0;               // samples per pixel per GPU submission; 0 = auto
+  uint32_t batch = vkpt::RenderOptions{}.batch;  // samples per pixel per GPU submission; 0 = auto
   bool compare = false;             // render on both backends and compare
   std::vector<std::string> diff;    // --diff A.pfm B.pfm: compare two existing images
-  unsigned threads = 0;  // 0: all cores
+  unsigned threads = vkpt::SceneOptions{}.threads;  // 0: all cores
   std::optional<uint32_t> camera;
   // --look-from, --look-at, --up: the camera moved and aimed (scene/scene.h's LookAt);
   // --fov: its vertical field of view in degrees; --orbit: degrees it turns about the up
@@ -66,12 +68,13 @@ struct Options {
   // turned by k × --orbit; each written to FramePath(out, k).
   std::optional<FrameRange> frames;
   double fps = 24.0;
-  float envRotation = 0.0f;   // --env-rotation: degrees about +Y, counter-clockwise from above
-  float envIntensity = 1.0f;  // --env-intensity: radiance scale
+  float envRotation =
+      vkpt::RenderOptions{}.environmentRotation;  // --env-rotation: degrees about +Y, counter-clockwise from above
+  float envIntensity = vkpt::SceneOptions{}.environmentIntensity;  // --env-intensity: radiance scale
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;  // --splits
   LightSampler lightSampler = LightSampler::kAuto;  // --light-sampler
-  bool textureLod = true;                           // --texture-lod cones (true) or none
+  bool textureLod = vkpt::RenderOptions{}.textureLod;  // --texture-lod cones (true) or none
   LoadLimits load;                      // --max-memory, --allow-external-uris
   std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)
   std::vector<Aov> aovs;                // --aov: written with the image (session/aov.h), in the order given

@@ -69,12 +69,12 @@ vkpt::RenderOptions RenderOptionsOf(const Options& o) {
   r.textureLod = o.textureLod;
   for (Aov aov : o.aovs) r.aovs.emplace_back(AovName(aov));
   r.denoise = o.denoise;
-  r.progress = ProgressLine();
-  r.cancel = GracefulStop::Arrived;
   return r;
 }
 
 }  // namespace
+
+ApiSettings ApiSettingsOf(const Options& o) { return {SceneOptionsOf(o), CameraOf(o), RenderOptionsOf(o)}; }
 
 ClientView ClientViewOf(const Options& o, const EngineLog& log, uint32_t ranks) {
   ClientView v;
@@ -114,6 +114,8 @@ LoadedScene& SceneClient::Engine() { return EngineOf(impl_->scene); }
 
 BegunView SceneClient::Begin(const Options& o, const ClientView& client) {
   impl_->frame = RenderOptionsOf(o);
+  impl_->frame.progress = ProgressLine();
+  impl_->frame.cancel = GracefulStop::Arrived;
   return BeginView(impl_->scene, CameraOf(o), impl_->frame, client);
 }
 

@@ -1,16 +1,19 @@
 // The command line as a client of the library: its options as the API's scene options,
 // camera and render options (vkpt/vkpt.h), its scene opened and its frames rendered
-// through a vkpt::Scene (vkpt/client.h). The only file of app/ that sees the public API,
-// whose types share names with the engine's: this header shows none of them.
+// through a vkpt::Scene (vkpt/client.h).
 #pragma once
 
 #include <memory>
 
 #include "app/options.h"
 #include "session/sample_source.h"
+#include "vkpt/settings_schema.h"
 #include "vkpt/view.h"
 
 namespace vkpt::internal {
+
+// The options as the library's settings: what the library checks, the command line checks.
+ApiSettings ApiSettingsOf(const Options& o);
 
 class SceneClient {
  public:

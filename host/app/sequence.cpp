@@ -1,5 +1,6 @@
 #include "app/sequence.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "util/atomic_write.h"
@@ -33,7 +34,8 @@ std::string FramePath(const std::string& out, uint32_t frame) {
 Options FrameOptions(const Options& o, uint32_t frame) {
   Options f = o;
   if (!o.animation.empty()) f.at = frame / o.fps;
-  if (o.orbit) f.orbit = *o.orbit * frame;
+  // A whole turn is no turn: the angle stays within --orbit's range however many frames.
+  if (o.orbit) f.orbit = std::fmod(*o.orbit * frame, 360.0);
   f.out = FramePath(o.out, frame);
   f.stats.clear();
   return f;

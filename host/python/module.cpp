@@ -15,6 +15,7 @@
 
 #include "python/bindings.h"
 #include "vkpt/api_terms.h"
+#include "vkpt/settings_schema.h"
 #include "vkpt/vkpt.h"
 
 namespace py = pybind11;
@@ -83,6 +84,10 @@ PyRender Render(PyScene& self, const py::object& camera, RenderOptions options, 
   return PyRender(std::move(result));
 }
 
+// The keywords' defaults are the library's (vkpt/vkpt.h).
+const SceneOptions kScene;
+const RenderOptions kRender;
+
 void BindScene(py::module_& m) {
   py::class_<PyScene>(m, "Scene", R"(A glTF 2.0 scene loaded once and rendered any number of times.
 
@@ -116,9 +121,11 @@ Raises vkpt.Error naming the file and the problem.)")
              py::gil_scoped_release released;
              return std::make_unique<PyScene>(Scene(path, o));
            }),
-           "path"_a, py::kw_only(), "backend"_a = "auto", "device"_a = "", "validation"_a = false, "threads"_a = 0,
-           "max_memory"_a = 0, "max_texels"_a = 0, "allow_external_uris"_a = false, "variant"_a = "",
-           "animation"_a = "", "environment"_a = "", "environment_intensity"_a = 1.0f, "light_sampler"_a = "auto")
+           "path"_a, py::kw_only(), "backend"_a = "auto", "device"_a = kScene.device,
+           "validation"_a = kScene.validation, "threads"_a = kScene.threads, "max_memory"_a = kScene.maxMemory,
+           "max_texels"_a = kScene.maxTexels, "allow_external_uris"_a = kScene.allowExternalUris,
+           "variant"_a = kScene.variant, "animation"_a = kScene.animation, "environment"_a = kScene.environment,
+           "environment_intensity"_a = kScene.environmentIntensity, "light_sampler"_a = "auto")
       .def_property_readonly("camera_count", [](PyScene& s) { return s.scene.CameraCount(); })
       .def_property_readonly("device", [](PyScene& s) { return s.scene.Device(); })
       .def(
@@ -149,16 +156,35 @@ Raises vkpt.Error naming the file and the problem.)")
             return Render(self, camera, std::move(o), progress);
           },
           "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(), "height"_a = py::none(), "spp"_a = py::none(),
-          "seconds"_a = py::none(), "noise_target"_a = py::none(), "adaptive"_a = py::none(), "seed"_a = 0,
-          "max_depth"_a = 32, "rr_depth"_a = 3, "chunk_spp"_a = 16, "batch"_a = 0, "time"_a = 0.0,
-          "background"_a = py::none(), "environment_rotation"_a = 0.0f, "texture_lod"_a = true,
-          "aovs"_a = std::vector<std::string>{}, "denoise"_a = false, "progress"_a = py::none(),
+          "seconds"_a = py::none(), "noise_target"_a = py::none(), "adaptive"_a = py::none(), "seed"_a = kRender.seed,
+          "max_depth"_a = kRender.maxDepth, "rr_depth"_a = kRender.rrDepth, "chunk_spp"_a = kRender.chunkSpp,
+          "batch"_a = kRender.batch, "time"_a = kRender.time, "background"_a = py::none(),
+          "environment_rotation"_a = kRender.environmentRotation, "texture_lod"_a = kRender.textureLod,
+          "aovs"_a = kRender.aovs, "denoise"_a = kRender.denoise, "progress"_a = py::none(),
           R"(Renders a view and returns a vkpt.Render (np.asarray(render) is the image).
 
 camera: None (the file's first camera), an int (the file's camera of that index) or a
 vkpt.Camera. The GIL is released while rendering; progress(fraction) is called now and
 then. aovs: albedo, normal, depth, position, variance, spp, heatmap, object_id,
 material_id, instance_id, or "all".)");
+}
+
+// vkpt._settings(): the settings schema (vkpt/settings_schema.h) for tests that try every
+// setting: each one's keyword, where it goes ("scene", "camera" or "render"), its
+// command-line option, type, default numbers and, for a number, its range.
+void BindSettings(py::module_& m) {
+  m.def("_settings", [] {
+    py::list settings;
+    for (const internal::Setting& s : internal::Settings()) {
+      py::dict d("key"_a = s.key, "flag"_a = s.flag, "field"_a = s.field, "python"_a = s.PythonName(),
+                 "type"_a = s.type, "default"_a = s.numbers({}));
+      d["where"] = s.field.rfind("Scene", 0) == 0 ? "scene" : s.field.rfind("Camera", 0) == 0 ? "camera" : "render";
+      if (s.range)
+        d["range"] = py::make_tuple(s.range->lo, s.range->hi, s.range->loOpen, internal::RangeText(*s.range));
+      settings.append(d);
+    }
+    return settings;
+  });
 }
 
 }  // namespace
@@ -168,18 +194,27 @@ PYBIND11_MODULE(_vkpt, m) {
   using namespace vkpt::python;
   m.doc() = "vkpt: a physically based path tracer for glTF 2.0 scenes, on Vulkan or the CPU";
   m.attr("__version__") = VKPT_VERSION;
-  // vkpt.Error, with the library's setting names in Python's (vkpt/api_terms.h). Its type lives
-  // as long as the interpreter: the handle is never released.
+  // vkpt.Error, with the library's setting names in Python's (vkpt/api_terms.h), and
+  // vkpt.SettingError, a setting out of its range: both a vkpt.Error and a ValueError. The
+  // types live as long as the interpreter: their handles are never released.
   static const py::handle error = py::exception<vkpt::Error>(m, "Error", PyExc_RuntimeError).release();
+  py::object setting = py::reinterpret_steal<py::object>(
+      PyErr_NewException("vkpt.SettingError", py::make_tuple(error, py::handle(PyExc_ValueError)).ptr(), nullptr));
+  if (!setting) throw py::error_already_set();
+  m.attr("SettingError") = setting;
+  static const py::handle settingError = setting.release();
   py::register_exception_translator([](std::exception_ptr p) {
+    using vkpt::internal::InTerms;
+    using vkpt::internal::Terms;
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const vkpt::SettingError& e) {
+      PyErr_SetString(settingError.ptr(), InTerms(e.what(), Terms::kCpp, Terms::kPython).c_str());
     } catch (const vkpt::Error& e) {
-      PyErr_SetString(
-          error.ptr(),
-          vkpt::internal::InTerms(e.what(), vkpt::internal::Terms::kCpp, vkpt::internal::Terms::kPython).c_str());
+      PyErr_SetString(error.ptr(), InTerms(e.what(), Terms::kCpp, Terms::kPython).c_str());
     }
   });
+  BindSettings(m);
   BindCamera(m);
   BindRender(m);
   BindScene(m);

@@ -14,9 +14,6 @@
 
 namespace vkpt::internal {
 
-// Samples per pixel per chunk unless --chunk says otherwise.
-constexpr uint32_t kDefaultChunkSpp = 16;
-
 // A FrameRenderer that renders through `inner` (which must outlive it) chunk by chunk: a
 // pass is cut at chunk boundaries, and at each one the inner frame's sums are added to
 // the frame's and cleared. AddSumsTo adds the closed chunks' sums, then the open chunk's.

@@ -1,7 +1,7 @@
 // The engine's messages name the settings by the command line's options (`--max-memory`);
 // a C++ program sets them as fields (`SceneOptions::maxMemory`), a Python one as keywords
-// (`max_memory`). One table spells each setting all three ways, and messages leave each
-// front end in its own terms.
+// (`max_memory`). The settings schema (vkpt/settings_schema.h) spells each setting all
+// three ways, and messages leave each front end in its own terms.
 #pragma once
 
 #include <string>

@@ -14,12 +14,14 @@ namespace vkpt {
 
 struct Scene::Impl {
   std::unique_ptr<internal::LoadedScene> loaded;
+  SceneOptions options;  // as opened: each render's settings are checked with them
 };
 
 struct v1::SceneAccess {
-  static Scene Make(std::unique_ptr<internal::LoadedScene> loaded) {
-    return Scene(std::make_unique<Scene::Impl>(Scene::Impl{std::move(loaded)}));
+  static Scene Make(std::unique_ptr<internal::LoadedScene> loaded, const SceneOptions& options) {
+    return Scene(std::make_unique<Scene::Impl>(Scene::Impl{std::move(loaded), options}));
   }
+  static const SceneOptions& Options(const Scene& scene) { return scene.impl_->options; }
   static internal::LoadedScene& Engine(Scene& scene) { return *scene.impl_->loaded; }
   static const internal::LoadedScene& Engine(const Scene& scene) { return *scene.impl_->loaded; }
 };
@@ -104,13 +106,15 @@ FrameRequest ToRequest(const vkpt::Camera& c, const vkpt::RenderOptions& o, cons
 }  // namespace
 
 vkpt::Scene OpenScene(const std::string& path, const vkpt::SceneOptions& options, const ClientScene& client) {
-  return vkpt::SceneAccess::Make(std::make_unique<LoadedScene>(ToSettings(path, options, client), client.log));
+  CheckSettings({options, {}, {}});
+  return vkpt::SceneAccess::Make(std::make_unique<LoadedScene>(ToSettings(path, options, client), client.log), options);
 }
 
 LoadedScene& EngineOf(vkpt::Scene& scene) { return vkpt::SceneAccess::Engine(scene); }
 
 BegunView BeginView(vkpt::Scene& scene, const vkpt::Camera& camera, const vkpt::RenderOptions& options,
                     const ClientView& client) {
+  CheckSettings({vkpt::SceneAccess::Options(scene), camera, options});
   LoadedScene& loaded = EngineOf(scene);
   BegunView view;
   view.aovs = AovsFromNames(options.aovs);

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "vkpt/api_terms.h"
+#include "vkpt/settings_schema.h"
 #include "vkpt/view.h"
 #include "vkpt/vkpt.h"
 
@@ -34,6 +35,8 @@ auto Translated(F&& f) {
     return f();
   } catch (const vkpt::Error&) {
     throw;
+  } catch (const SettingError& e) {
+    throw vkpt::SettingError(InApiTerms(e.what()));
   } catch (const std::bad_alloc&) {
     throw vkpt::Error("out of memory");
   } catch (const std::exception& e) {

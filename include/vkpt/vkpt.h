@@ -45,6 +45,13 @@ class VKPT_API Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A setting out of its range (the message names the field and the range) or at odds with
+// another: what the `vkpt` command refuses as a usage error.
+class VKPT_API SettingError : public Error {
+ public:
+  using Error::Error;
+};
+
 enum class Backend {
   Auto,    // the Vulkan device when one opens, else the CPU
   Cpu,     // the CPU reference tracer
