@@ -9,7 +9,7 @@
 cmake_minimum_required(VERSION 3.25)
 
 set(contract_file "shaders/shared/backend_contract.h")
-set(cpp_estimator shaders/shared/cpp_prelude.h host/render/scene_access.h host/cpu/cpu_path.h)
+set(cpp_estimator shaders/shared/cpp_prelude.h host/render/scene_access.h host/cpu/cpu_trace.h)
 set(glsl_estimator shaders/shared/glsl_prelude.h shaders/scene_constants.glsl shaders/scene_fetch.glsl
     shaders/traverse.glsl)
 set(cpp_denoiser shaders/shared/cpp_prelude.h host/render/denoise.cpp)
@@ -146,7 +146,7 @@ expect_caught(shaders/shared/glsl_prelude.h "#define VKPT_PRECISE[^\n]*\n" ""
   "glsl_estimator: omits VKPT_PRECISE")
 expect_caught(shaders/denoise.comp "#define VKPT_DENOISE_GUIDE[^\n]*\n" ""
   "glsl_denoiser: omits VKPT_DENOISE_GUIDE")
-expect_caught(host/cpu/cpu_path.h "bool TraceOccluded" "bool TraceBlocked"
+expect_caught(host/cpu/cpu_trace.h "bool TraceOccluded" "bool TraceBlocked"
   "cpp_estimator: defines no function TraceOccluded")
 # One that defines a name listed nowhere.
 expect_caught(shaders/scene_constants.glsl "#define VKPT_SCENE_ARG\n" "#define VKPT_SCENE_ARG\n#define VKPT_SCENE_EXTRA 1\n"

@@ -6,7 +6,7 @@
 // bsdf.h, microfacet.h and lights.h) are compiled here inside the namespace
 // vkpt::shader::<variant>, so that their inline functions cannot stand in for the
 // product's (one definition rule) nor the product's for them; everything else they use
-// comes from vkpt::shader as in host/cpu/cpu_path.h, included first. Only path.h includes
+// comes from vkpt::shader as in host/cpu/cpu_trace.h, included first. Only path.h includes
 // bsdf.h and lights.h, and only bsdf.h microfacet.h, so none of the four is included before.
 #include "path_variants.h"
 
@@ -19,11 +19,8 @@
 #error "compile with VKPT_PATH_VARIANT=<function name> (tests/CMakeLists.txt)"
 #endif
 
-// host/cpu/cpu_path.h without its last include (the estimator): path.h's guard is set
-// for it and cleared again below.
-#define VKPT_PATH_H
-#include "cpu/cpu_path.h"
-#undef VKPT_PATH_H
+#include "cpu/cpu_trace.h"
+#include "shared/environment.h"
 #include "shared/estimator.h"
 #include "shared/ggx_albedo.h"
 #include "shared/intersect.h"

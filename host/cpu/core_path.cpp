@@ -7,13 +7,11 @@
 // As in simple_path.cpp, the headers that read those constants are compiled here inside
 // the namespace vkpt::shader::core, so that their inline functions cannot stand in for
 // the general ones (one definition rule), and everything else comes from vkpt::shader as
-// in cpu_path.h. Only path.h includes them, so none is included before.
+// in cpu_trace.h; the environment is the general one. Only path.h includes them, so none is
+// included before.
+#include "cpu/cpu_trace.h"
 #include "cpu/path_tracer.h"
-
-// host/cpu/cpu_path.h without its last include (the estimator).
-#define VKPT_PATH_H
-#include "cpu/cpu_path.h"
-#undef VKPT_PATH_H
+#include "shared/environment.h"
 #include "shared/estimator.h"
 #include "shared/fresnel.h"
 #include "shared/ggx_albedo.h"

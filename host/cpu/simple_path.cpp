@@ -6,16 +6,10 @@
 //
 // The headers that read those constants are compiled here inside the namespace
 // vkpt::shader::simple, so that their inline functions cannot stand in for the general
-// ones (one definition rule); everything else comes from vkpt::shader as in cpu_path.h.
+// ones (one definition rule); everything else comes from vkpt::shader as in cpu_trace.h.
 // Only path.h includes them, so none is included before.
+#include "cpu/cpu_trace.h"
 #include "cpu/path_tracer.h"
-
-// host/cpu/cpu_path.h without its last includes (environment.h and the estimator).
-#define VKPT_PATH_H
-#define VKPT_ENVIRONMENT_H
-#include "cpu/cpu_path.h"
-#undef VKPT_PATH_H
-#undef VKPT_ENVIRONMENT_H
 #include "shared/estimator.h"
 #include "shared/ggx_albedo.h"
 #include "shared/intersect.h"
