@@ -1,7 +1,7 @@
 // What a program asks of the engine: the scene to load and on which device (SceneSettings),
 // where the camera is (CameraSettings), and the picture's size and frame constants
-// (PictureSettings). The command line fills these from its options (app/prepare.cpp), the
-// library from its API; both then run the same code.
+// (PictureSettings). The library fills these from its public settings (vkpt/client.cpp),
+// for its own callers and for the command line alike.
 #pragma once
 
 #include <cstdint>
