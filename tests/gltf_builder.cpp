@@ -1,6 +1,6 @@
 #include "gltf_builder.h"
 
-#include "scene/gltf_loader.h"
+#include "gltf/gltf_loader.h"
 #include "util/error.h"
 
 namespace vkpt::internal::test {

@@ -16,7 +16,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/gltf_loader.h"
+#include "gltf/gltf_loader.h"
 #include "scene/scene.h"
 #include "test_util.h"
 

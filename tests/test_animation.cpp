@@ -1,4 +1,4 @@
-// Animation (scene/keyframes.h, scene/gltf_animation.h): each interpolation mode before,
+// Animation (gltf/keyframes.h, gltf/gltf_animation.h): each interpolation mode before,
 // between and after its keyframes against hand-computed values — CUBICSPLINE's tangents
 // scaled by the interval, rotations slerped the short way — and through a file:
 // --animation by name or index, --at, nodes posed with their children, cameras and
@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "gltf/gltf_loader.h"
+#include "gltf/keyframes.h"
 #include "gltf_builder.h"
-#include "scene/gltf_loader.h"
-#include "scene/keyframes.h"
 
 namespace vkpt::internal {
 namespace {

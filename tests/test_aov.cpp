@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "cpu/path_tracer.h"
+#include "gltf/gltf_loader.h"
 #include "gpu_test.h"
 #include "render/render_scene.h"
-#include "scene/gltf_loader.h"
 #include "scene/scene_ids.h"
 #include "session/aov.h"
 #include "session/noise_estimate.h"

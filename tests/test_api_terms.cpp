@@ -18,7 +18,7 @@ TEST(ApiTerms, EveryOptionInTheEnginesMessagesIsTranslated) {
   const std::regex literal(R"("(?:[^"\\]|\\.)*--[a-z](?:[^"\\]|\\.)*")"), option("--[a-z]");
   const std::regex command("`vkpt --[a-z-]+`");  // the command line named as such
   int literals = 0;
-  for (const char* layer : {"scene", "vk", "engine", "render", "session", "cpu", "image", "bvh", "util"}) {
+  for (const char* layer : {"gltf", "scene", "vk", "engine", "render", "session", "cpu", "image", "bvh", "util"}) {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(test::SourcePath("host/") + layer)) {
       std::ifstream in(entry.path());
       std::string line;

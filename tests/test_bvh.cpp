@@ -8,10 +8,10 @@
 
 #include "bvh/bvh.h"
 #include "cpu/traversal.h"
+#include "gltf/gltf_loader.h"
 #include "procedural.h"
 #include "quantized_layout_check.h"
 #include "render/render_scene.h"
-#include "scene/gltf_loader.h"
 #include "shared/estimator.h"
 #include "shared/intersect.h"
 #include "test_util.h"

@@ -1,5 +1,5 @@
-// Compressed geometry: KHR_draco_mesh_compression (scene/gltf_draco.h) and
-// EXT_meshopt_compression with its filters (scene/gltf_meshopt.h). The same bumpy grid is
+// Compressed geometry: KHR_draco_mesh_compression (gltf/gltf_draco.h) and
+// EXT_meshopt_compression with its filters (gltf/gltf_meshopt.h). The same bumpy grid is
 // written plain, Draco-encoded (sequential and lossless; edgebreaker and quantized) and
 // meshopt-encoded (every mode and filter) by the libraries' own encoders, and each
 // compressed file loads to the plain file's triangles: exactly where the codec is
@@ -19,11 +19,11 @@
 #include <tuple>
 #include <vector>
 
+#include "gltf/draco_decode.h"
+#include "gltf/gltf_loader.h"
+#include "gltf/meshopt_decode.h"
 #include "gltf_builder.h"
 #include "png_writer.h"
-#include "scene/draco_decode.h"
-#include "scene/gltf_loader.h"
-#include "scene/meshopt_decode.h"
 #include "util/error.h"
 
 namespace vkpt::internal {

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "gltf/gltf_loader.h"
 #include "image/image.h"
-#include "scene/gltf_loader.h"
 #include "test_util.h"
 #include "util/error.h"
 

@@ -12,6 +12,7 @@
 
 #include "cpu/path_tracer.h"
 #include "cpu/traversal.h"
+#include "gltf/gltf_loader.h"
 #include "gpu_test.h"
 #include "image/image_compare.h"
 #include "image/image_load.h"
@@ -21,7 +22,6 @@
 #include "kTraceLoopBudgetSpirv.h"
 #include "render/light_table.h"
 #include "render/render_scene.h"
-#include "scene/gltf_loader.h"
 #include "shared/estimator.h"
 #include "shared/intersect.h"
 #include "shared/rng.h"

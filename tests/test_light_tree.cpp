@@ -9,11 +9,11 @@
 #include <random>
 
 #include "cpu/path_tracer.h"
+#include "gltf/gltf_loader.h"
 #include "render/light_table.h"
 #include "render/light_tree.h"
 #include "render/render_scene.h"
 #include "render/scene_access.h"
-#include "scene/gltf_loader.h"
 #include "shared/light_tree.h"
 #include "shared/sampling.h"
 #include "test_util.h"

@@ -18,8 +18,8 @@
 
 #include <glm/glm.hpp>
 
+#include "gltf/gltf_loader.h"
 #include "gltf_builder.h"
-#include "scene/gltf_loader.h"
 #include "test_util.h"
 #include "util/error.h"
 

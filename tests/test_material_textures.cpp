@@ -12,13 +12,13 @@
 
 #include "cpu/cpu_path.h"
 #include "cpu/path_tracer.h"
+#include "gltf/gltf_loader.h"
 #include "gltf_builder.h"
 #include "png_writer.h"
 #include "render/material_packing.h"
 #include "render/render_scene.h"
 #include "render/scene_access.h"
 #include "render/texture_store.h"
-#include "scene/gltf_loader.h"
 #include "shared/material_textures.h"
 #include "util/error.h"
 

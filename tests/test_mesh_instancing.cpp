@@ -1,4 +1,4 @@
-// EXT_mesh_gpu_instancing (scene/gltf_gpu_instancing.h): a node draws its mesh once per
+// EXT_mesh_gpu_instancing (gltf/gltf_gpu_instancing.h): a node draws its mesh once per
 // instance, placed by the instance's TRANSLATION, ROTATION and SCALE and then by the node;
 // the instances count against --max-memory before anything is decoded; malformed
 // attributes are errors naming the node. SimpleInstancing of ../shared/gltf-ext draws its
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "gltf/gltf_loader.h"
 #include "gltf_builder.h"
-#include "scene/gltf_loader.h"
 
 namespace vkpt::internal {
 namespace {

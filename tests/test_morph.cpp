@@ -1,4 +1,4 @@
-// Morph targets (scene/gltf_meshes.h Morphed, scene/node_pose.h): a hand-made quad with
+// Morph targets (gltf/gltf_meshes.h Morphed, gltf/node_pose.h): a hand-made quad with
 // two targets takes exactly base + Σ wᵢ·Δᵢ for its positions and normals, with the mesh's
 // weights, the node's (which win), animated weights at chosen times, and a sparse target;
 // malformed targets and weights are errors naming the object.
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "gltf/gltf_loader.h"
 #include "gltf_builder.h"
-#include "scene/gltf_loader.h"
 
 namespace vkpt::internal {
 namespace {

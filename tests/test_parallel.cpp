@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cpu/path_tracer.h"
-#include "scene/gltf_loader.h"
+#include "gltf/gltf_loader.h"
 #include "test_util.h"
 #include "util/parallel.h"
 

@@ -17,10 +17,10 @@
 
 #include "cluster/chunk_dealer.h"
 #include "cpu/path_tracer.h"
+#include "gltf/gltf_loader.h"
 #include "gpu_test.h"
 #include "image/image_compare.h"
 #include "render/render_scene.h"
-#include "scene/gltf_loader.h"
 #include "session/budget.h"
 #include "session/chunked_frame.h"
 #include "session/local_passes.h"

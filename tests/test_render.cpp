@@ -7,8 +7,8 @@
 #include <glm/gtc/epsilon.hpp>
 
 #include "cpu/path_tracer.h"
+#include "gltf/gltf_loader.h"
 #include "render/render_scene.h"
-#include "scene/gltf_loader.h"
 #include "test_util.h"
 
 namespace vkpt::internal {

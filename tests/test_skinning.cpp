@@ -1,4 +1,4 @@
-// Skins (scene/gltf_skins.h, scene/posed_primitive.h): a hand-made two-bone bar bent at
+// Skins (gltf/gltf_skins.h, gltf/posed_primitive.h): a hand-made two-bone bar bent at
 // its middle joint, whose skinned vertices have a closed form — positions to 1e-5 for every
 // encoding of JOINTS_n/WEIGHTS_n the spec allows, normals by the blended matrices' inverse
 // transpose, the skinned mesh's own node transform ignored, a joint's animation followed;
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "gltf/gltf_loader.h"
 #include "gltf_builder.h"
-#include "scene/gltf_loader.h"
 
 namespace vkpt::internal {
 namespace {

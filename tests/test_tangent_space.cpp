@@ -14,7 +14,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/gltf_loader.h"
+#include "gltf/gltf_loader.h"
 #include "scene/tangent_space.h"
 #include "test_util.h"
 

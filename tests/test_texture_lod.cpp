@@ -11,11 +11,11 @@
 #include <string>
 
 #include "cpu/path_tracer.h"
+#include "gltf/gltf_loader.h"
 #include "gpu_test.h"
 #include "image/image_compare.h"
 #include "path_variants.h"
 #include "render/render_scene.h"
-#include "scene/gltf_loader.h"
 #include "test_util.h"
 #include "vk/vk_renderer.h"
 

@@ -15,7 +15,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/gltf_loader.h"
+#include "gltf/gltf_loader.h"
 #include "test_util.h"
 #include "util/byte_size.h"
 #include "util/error.h"

@@ -1,4 +1,4 @@
-// KHR_materials_variants (scene/gltf_variants.h): --variant NAME|INDEX gives each primitive
+// KHR_materials_variants (gltf/gltf_variants.h): --variant NAME|INDEX gives each primitive
 // the material its mappings list for that variant, every other primitive keeps its own;
 // -v lists the variants; a malformed mapping or an unknown variant is an error naming the
 // file and the problem. On the shoe of ../shared/gltf-ext, each variant renders its colour.
@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "cpu/path_tracer.h"
+#include "gltf/gltf_loader.h"
 #include "gltf_builder.h"
 #include "render/render_scene.h"
-#include "scene/gltf_loader.h"
 #include "test_util.h"
 #include "util/error.h"
 

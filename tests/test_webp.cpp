@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "gltf/gltf_loader.h"
 #include "gltf_builder.h"
 #include "image/texture_decode.h"
 #include "png_writer.h"
-#include "scene/gltf_loader.h"
 #include "util/error.h"
 
 namespace vkpt::internal {

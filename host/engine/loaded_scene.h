@@ -13,9 +13,9 @@
 
 #include "engine/run_times.h"
 #include "engine/settings.h"
+#include "gltf/gltf_loader.h"
 #include "render/environment_map.h"
 #include "render/render_scene.h"
-#include "scene/gltf_loader.h"
 #include "session/aov.h"
 #include "session/backend.h"
 #include "session/frame_memory.h"

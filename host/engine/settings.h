@@ -12,8 +12,8 @@
 #include <glm/glm.hpp>
 
 #include "bvh/bvh.h"
+#include "gltf/gltf_loader.h"
 #include "render/light_tree.h"
-#include "scene/gltf_loader.h"
 #include "scene/load_limits.h"
 
 namespace vkpt::internal {

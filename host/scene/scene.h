@@ -1,6 +1,6 @@
 // The flat scene every renderer consumes: world-space triangles with their vertex
 // normals and colours, materials, cameras and punctual lights.
-// host/scene/gltf_loader.cpp fills it from a glTF file; nothing downstream knows glTF.
+// host/gltf/gltf_loader.cpp fills it from a glTF file; nothing downstream knows glTF.
 #pragma once
 
 #include <cstdint>

@@ -66,7 +66,7 @@ const uint kSlotIridescenceThickness = 15u;      // G: the film's thickness betw
 const uint kSlotAnisotropy = 16u;                // RG direction, B × anisotropy (KHR_materials_anisotropy)
 // The slots whose RGB is colour, sRGB-encoded (glTF 2.0 §3.9.2 and the extensions' colour
 // textures); every other slot's bytes, and every alpha, are linear. A texture used both
-// ways is two textures (scene/gltf_textures.cpp).
+// ways is two textures (gltf/gltf_textures.cpp).
 const uint kSrgbSlots = (1u << kSlotBaseColor) | (1u << kSlotEmissive) | (1u << kSlotSpecularColor) |
                         (1u << kSlotSheenColor) | (1u << kSlotDiffuseTransmissionColor);
 // Whether slot `slot` holds colour: a constant wherever a slot is named, so that lavapipe

@@ -15,11 +15,11 @@
 
 #include "app/options.h"
 #include "fuzz_target.h"
+#include "gltf/draco_decode.h"
+#include "gltf/meshopt_decode.h"
 #include "image/image.h"
 #include "image/image_load.h"
 #include "image/texture_decode.h"
-#include "scene/draco_decode.h"
-#include "scene/meshopt_decode.h"
 #include "util/error.h"
 
 namespace vkpt::internal::fuzz {
@@ -39,11 +39,11 @@ inline void RunEnv(std::string_view bytes) {
   ReadEnvironmentImage(input.path(), charge, &warnings);
 }
 
-// What the loader charges per texel (kBytesPerTexel in scene/gltf_texture_images.cpp).
+// What the loader charges per texel (kBytesPerTexel in gltf/gltf_texture_images.cpp).
 constexpr uint64_t kTextureBytesPerTexel = 16 + 4 + 4 * 6;
 
 // Texture images (PNG, JPEG) in memory, as the glTF loader decodes them
-// (scene/gltf_texture_images.cpp): the header, the loader's charge for the texels
+// (gltf/gltf_texture_images.cpp): the header, the loader's charge for the texels
 // (refused above the fuzz budget, as the loader's budget would), then the decode.
 // Throws Error.
 inline void RunTexture(std::string_view text) {
@@ -103,7 +103,7 @@ inline void RunDraco(std::string_view text) {
   DecodeDraco({data + kHeaderSize, text.size() - kHeaderSize}, accessors, indexCount);
 }
 
-// EXT_meshopt_compression streams the way the loader runs them (scene/gltf_meshopt.cpp):
+// EXT_meshopt_compression streams the way the loader runs them (gltf/gltf_meshopt.cpp):
 // CheckMeshoptStream, then, only for a stream it passes, DecodeMeshoptStream
 // into exactly count × byteStride bytes. meshoptimizer is a shared library, not
 // instrumented: ASan would not see it write past them, so they are followed by guard

@@ -1,5 +1,5 @@
 // libFuzzer target for the KHR_draco_mesh_compression decoder, DecodeDraco
-// (scene/draco_decode.h), in memory: fuzz_bodies.h's RunDraco says how the input is
+// (gltf/draco_decode.h), in memory: fuzz_bodies.h's RunDraco says how the input is
 // laid out. A Error is the expected outcome of a refusal; anything else is a
 // finding (fuzz_target.h).
 #include <cstdint>

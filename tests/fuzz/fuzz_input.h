@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "scene/gltf_loader.h"
+#include "gltf/gltf_loader.h"
 #include "util/error.h"
 
 namespace vkpt::internal::fuzz {

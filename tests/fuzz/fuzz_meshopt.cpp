@@ -1,4 +1,4 @@
-// libFuzzer target for the EXT_meshopt_compression decoder (scene/meshopt_decode.h), in
+// libFuzzer target for the EXT_meshopt_compression decoder (gltf/meshopt_decode.h), in
 // memory: fuzz_bodies.h's RunMeshopt says how the input is
 // laid out. A Error is the expected outcome of a refusal; anything else is a
 // finding (fuzz_target.h).

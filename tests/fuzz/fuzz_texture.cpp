@@ -1,5 +1,5 @@
 // libFuzzer target for texture images (PNG, JPEG), in memory, the way the glTF loader
-// decodes them (scene/gltf_texture_images.cpp): ReadTextureImageHeader, the
+// decodes them (gltf/gltf_texture_images.cpp): ReadTextureImageHeader, the
 // loader's memory charge for the texels (refused above the fuzz budget, fuzz_input.h,
 // as the loader's budget would), then DecodeTextureImage. Decoded texels or a
 // Error are the expected outcome; anything else is a finding (fuzz_target.h).

@@ -1,0 +1,270 @@
+#include "gltf/gltf_loader.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cstring>
+#include <set>
+#include <stdexcept>
+
+#include "gltf/asset_access.h"
+#include "gltf/external_uris.h"
+#include "gltf/geometry_budget.h"
+#include "gltf/gltf_accessors.h"
+#include "gltf/gltf_animation.h"
+#include "gltf/gltf_draco.h"
+#include "gltf/gltf_instancing.h"
+#include "gltf/gltf_lights.h"
+#include "gltf/gltf_materials.h"
+#include "gltf/gltf_meshes.h"
+#include "gltf/gltf_meshopt.h"
+#include "gltf/gltf_schema.h"
+#include "gltf/gltf_source.h"
+#include "gltf/gltf_textures.h"
+#include "gltf/gltf_validate.h"
+#include "gltf/gltf_variants.h"
+#include "gltf/scene_file.h"
+#include "gltf/tinygltf_edits.h"
+#include "util/byte_size.h"
+#include "util/content_hash.h"
+#include "util/error.h"
+
+namespace vkpt::internal {
+
+struct GltfAsset::Parts {
+  tinygltf::Model model;
+  Scene scene;
+  std::vector<int> parents;                           // CheckNodeGraph's
+  std::vector<std::vector<DecodedPrimitive>> meshes;  // decoded, in object space
+  std::vector<NodePose> rest;                         // as the file places the nodes
+  std::vector<Skin> skins;
+  size_t readWarnings = 0;  // the scene's warnings from reading it; each pose adds its own
+  bool released = false;    // ReleaseSource() freed the above
+};
+
+namespace {
+
+// tinygltf would decode every image with its own stb_image, used or not, before vkpt
+// could check a header. vkpt keeps the bytes of images read from a uri and decodes what
+// the materials use later (gltf_textures.cpp). An image in a bufferView is read from
+// there once the bufferView is checked: tinygltf passes its bytes unchecked.
+bool KeepImageEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  if (image->bufferView < 0 && size > 0) image->image.assign(bytes, bytes + size);
+  return true;
+}
+
+// tinygltf's messages may quote a whole data URI: keep the first line's start.
+std::string Shorten(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  std::replace(s.begin(), s.end(), '\n', ';');
+  if (s.size() > 240) s = s.substr(0, 200) + "… (" + std::to_string(s.size()) + " characters)";
+  return s;
+}
+
+// The TEXCOORD set a material's tangents follow: its base's normal texture's, else its
+// coat's, else its anisotropy texture's, else 0 for an anisotropic material; −1: it needs
+// none.
+int TangentUVSet(const Material& mat) {
+  for (const MaterialTexture* t : {&mat.normalTexture, &mat.clearcoatNormalTexture, &mat.anisotropyTexture})
+    if (t->Present()) return int(t->texCoord);
+  return mat.anisotropyStrength > 0.0f ? 0 : -1;
+}
+
+// What the file uses that vkpt does not render yet (printed by -v).
+void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
+  auto& ig = scene.ignoredFeatures;
+  bool occlusionTex = false;
+  std::set<std::string> extensionTextures;
+  for (const tinygltf::Material& mat : src.m.materials) {
+    occlusionTex |= mat.occlusionTexture.index >= 0;
+    for (const auto& [name, ext] : mat.extensions)
+      if (ext.IsObject())
+        for (const std::string& key : ext.Keys())
+          if (key.ends_with("Texture") && !IsAppliedExtensionTexture(name, key))
+            extensionTextures.insert(name + "." + key);
+  }
+  if (occlusionTex) ig.push_back("occlusion textures: not applied (a path tracer computes occlusion)");
+  // A rasterizer's stand-in for the distance light travels inside; paths trace it.
+  const std::string thickness = "KHR_materials_volume.thicknessTexture";
+  for (const std::string& t : extensionTextures)
+    ig.push_back(t + (t == thickness ? ": not applied (a path tracer measures the thickness along each ray)"
+                                     : ": the factor is used alone"));
+  std::set<std::string> morphedOthers;
+  for (const auto& mesh : src.m.meshes)
+    for (const auto& p : mesh.primitives)
+      for (const auto& target : p.targets)
+        for (const auto& [attr, accessor] : target)
+          if (attr != "POSITION" && attr != "NORMAL" && attr != "TANGENT") morphedOthers.insert(attr);
+  for (const std::string& attr : morphedOthers) ig.push_back("morph targets of " + attr + ": the base values are used");
+  for (const std::string& ext : src.m.extensionsUsed)
+    if (ext == "KHR_texture_basisu")
+      ig.push_back("extension " + ext + ": KTX2 images are not decoded; each texture's fallback image is used");
+    else if (!IsSupportedExtension(ext)) ig.push_back("extension " + ext);
+}
+
+// The phases of reading a file, in the order that makes each safe: the structure is
+// checked before any data it points to is read, the memory counted before anything is
+// decoded. What posing needs is kept in `parts`.
+void BuildScene(const GltfSource& src, const LoadLimits& limits, const SceneChoice& choice, MemoryBudget& budget,
+                GltfAsset::Parts& parts) {
+  Scene& scene = parts.scene;
+  CheckAsset(src);
+  DecodeMeshoptViews(src.path, parts.model, budget);
+  CheckBufferViews(src);
+  DecodeDracoPrimitives(src.path, parts.model, budget);
+  for (size_t i = 0; i < src.m.accessors.size(); ++i) CheckAccessor(src, int(i));
+  CheckTexturesAndMaterials(src);
+  const uint32_t defaultMaterial = LoadMaterials(src, scene);
+  LoadTextures(src, limits, budget, scene);
+  const bool textured = HasMaterialTextures(scene), tangents = UsesTangents(scene);
+  parts.parents = CheckNodeGraph(src);
+  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parts.parents)), textured, tangents, budget);
+  scene.materialVariants = ReadVariants(src);
+  scene.variant = ResolveVariant(src, scene.materialVariants, choice.variant);
+  // Texture coordinates are decoded where tangents are generated from them, kept where
+  // textures read them.
+  const MeshDecoding decoding{defaultMaterial, textured || tangents,          tangents,
+                              scene.variant,   scene.materialVariants.size(), !src.m.skins.empty()};
+  parts.meshes.resize(src.m.meshes.size());
+  for (size_t i = 0; i < src.m.meshes.size(); ++i) parts.meshes[i] = DecodeMesh(src, int(i), decoding, scene.warnings);
+  for (std::vector<DecodedPrimitive>& mesh : parts.meshes)
+    for (DecodedPrimitive& prim : mesh) {
+      if (!tangents) break;
+      const int uvSet = TangentUVSet(scene.materials[prim.material]);
+      if (uvSet >= 0 && GenerateMissingTangents(prim, uint32_t(uvSet))) ++scene.generatedTangentPrimitives;
+    }
+  CheckCameras(src);
+  CheckLights(src);
+  parts.rest = RestPoses(src);
+  parts.skins = ReadSkins(src);
+  scene.animations = ListAnimations(src);
+  scene.animation = ResolveAnimation(src, scene.animations, choice.animation);
+  if (scene.animation >= 0)
+    budget.Charge(AnimationBytes(src, scene.animation),
+                  "animations[" + std::to_string(scene.animation) + "] (decoding its keyframes)");
+  NoteIgnoredFeatures(src, scene);
+}
+
+// The JSON is parsed and checked, and the files it names are listed, before tinygltf
+// opens any of them; the parse tree is freed before tinygltf builds its own. A file
+// tinygltf would refuse for its compression gets its JSON edited (`edits`).
+std::vector<ExternalUri> CheckJson(const std::string& path, SceneFile& file, TinyGltfEdits& edits) {
+  const std::string_view json = file.json;
+  if (json.size() >= 3 && std::memcmp(json.data(), "\xEF\xBB\xBF", 3) == 0)
+    throw Error(path + ": the JSON starts with a UTF-8 byte-order mark, which glTF forbids");
+  nlohmann::json doc = ParseGltfJson(path, json);
+  CheckGltfSchema(path, doc);
+  std::vector<ExternalUri> uris = ListExternalUris(doc);
+  edits = EditForTinyGltf(doc);
+  if (!edits.Empty()) ReplaceJson(file, doc.dump());
+  return uris;
+}
+
+tinygltf::Model ParseWithTinyGltf(const std::string& path, const SceneFile& file, AssetAccess& access,
+                                  std::vector<std::string>& warnings) {
+  tinygltf::TinyGLTF gltf;
+  access.Install(gltf);
+  gltf.SetImageLoader(KeepImageEncoded, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  bool ok = false;
+  // tinygltf reports most problems through `err`, but some malformed input makes it
+  // throw (nlohmann-json exceptions, std::bad_alloc): contain them all.
+  try {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(file.bytes.data());
+    ok = file.binary
+             ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes, unsigned(file.bytes.size()), access.BaseDir())
+             : gltf.LoadASCIIFromString(&model, &err, &warn, file.bytes.data(), unsigned(file.bytes.size()),
+                                        access.BaseDir());
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(path + ": malformed glTF (" + Shorten(e.what()) + ")");
+  }
+  access.ThrowIfRefused();  // its message names the uri and the rule; tinygltf's would not
+  if (!ok) throw Error(path + ": " + (err.empty() ? std::string("malformed glTF") : Shorten(err)));
+  if (!warn.empty()) warnings.push_back("tinygltf: " + Shorten(warn));
+  return model;
+}
+
+}  // namespace
+
+GltfAsset::GltfAsset(const std::string& path, const LoadLimits& limits, const SceneChoice& choice)
+    : parts_(std::make_unique<Parts>()) {
+  MemoryBudget budget(limits.maxMemory ? limits.maxMemory : DefaultMaxMemory(), path);
+  try {
+    SceneFile file = ReadSceneFile(path, budget);
+    ContentHash hash;
+    hash.Add({reinterpret_cast<const unsigned char*>(file.bytes.data()), file.bytes.size()});
+    TinyGltfEdits edits;
+    AssetAccess access(path, CheckJson(path, file, edits), limits, budget);
+    Scene& scene = parts_->scene;
+    scene.path = path;
+    parts_->model = ParseWithTinyGltf(path, file, access, scene.warnings);
+    UndoTinyGltfEdits(edits, parts_->model);
+    for (const tinygltf::Buffer& b : parts_->model.buffers) hash.Add(b.data);
+    scene.contentHash = hash.Value();
+    file = SceneFile{};
+    for (const std::string& skipped : access.SkippedImages()) scene.warnings.push_back(skipped);
+    BuildScene(GltfSource{path, parts_->model}, limits, choice, budget, *parts_);
+    scene.memoryLimit = budget.Limit();
+    scene.memoryCounted = budget.Used();
+    parts_->readWarnings = scene.warnings.size();
+  } catch (const std::bad_alloc&) {
+    throw Error(path + ": ran out of memory while loading, within --max-memory " + FormatBytes(budget.Limit()) +
+                " (the process may have a lower limit, e.g. ulimit -v)");
+  }
+}
+
+GltfAsset::~GltfAsset() = default;
+
+void GltfAsset::PoseAt(double time) {
+  if (parts_->released) throw std::logic_error("GltfAsset::PoseAt after ReleaseSource");
+  Scene& scene = parts_->scene;
+  const GltfSource src{scene.path, parts_->model};
+  try {
+    scene.triangles.clear();
+    scene.normals.clear();
+    scene.colors.clear();
+    scene.uvs.clear();
+    scene.tangents.clear();
+    scene.cameras.clear();
+    scene.lights.clear();
+    scene.meshInstances.clear();
+    scene.triangleRuns.clear();
+    scene.bounds = Bounds3f{};
+    scene.warnings.resize(parts_->readWarnings);
+    ScenePose pose{parts_->rest, {}, parts_->skins};
+    if (scene.animation >= 0) PoseAtTime(src, scene.animation, time, pose.nodes);
+    pose.world = WorldTransforms(parts_->parents, pose.nodes);
+    scene.animationTime = time;
+    InstantiateScene(src, parts_->parents, pose, parts_->meshes, scene);
+  } catch (const std::bad_alloc&) {
+    throw Error(scene.path + ": ran out of memory while posing, within --max-memory " + FormatBytes(scene.memoryLimit) +
+                " (the process may have a lower limit, e.g. ulimit -v)");
+  }
+  if (scene.triangles.empty()) src.Fail("the scene contains no triangles to render");
+}
+
+void GltfAsset::ReleaseSource() {
+  Parts& p = *parts_;
+  p.model = tinygltf::Model{};
+  p.meshes = {};
+  p.rest = {};
+  p.skins = {};
+  p.parents = {};
+  p.released = true;
+}
+
+const Scene& GltfAsset::scene() const { return parts_->scene; }
+
+Scene GltfAsset::TakeScene() { return std::move(parts_->scene); }
+
+Scene LoadGltf(const std::string& path, const LoadLimits& limits, const SceneChoice& choice) {
+  GltfAsset asset(path, limits, choice);
+  asset.PoseAt(choice.time);
+  return asset.TakeScene();
+}
+
+}  // namespace vkpt::internal
