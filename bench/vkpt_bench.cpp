@@ -447,6 +447,46 @@ struct SamplerScene {
   const RenderScene* rs;
 };
 
+// The light tree's figures against the power choice's, for each backend measured.
+void SetTreeRatios(Report& rep) {
+  for (const std::string b : {"cpu", "gpu"}) {
+    std::optional<double> p = rep.Get(b + "_power_seconds_to_quality"), t = rep.Get(b + "_tree_seconds_to_quality");
+    rep.Set(b + "_tree_vs_power", p && t ? std::optional<double>(*t / *p) : std::nullopt);
+    // relMSE at equal time, the power choice's over the tree's, and its standard error.
+    std::optional<double> pe = rep.Get(b + "_power_relmse_seconds"), te = rep.Get(b + "_tree_relmse_seconds");
+    if (!pe || !te) continue;
+    const double gain = *pe / *te;
+    rep.Set(b + "_tree_equal_time_gain", gain);
+    rep.Set(b + "_tree_equal_time_gain_se", gain * std::hypot(*rep.Get(b + "_power_relmse_seconds_rel_se"),
+                                                              *rep.Get(b + "_tree_relmse_seconds_rel_se")));
+  }
+}
+
+// The time-to-quality figures as lines.
+void PrintQuality(const Report& rep, const std::vector<SamplerScene>& samplers, double target, unsigned threads) {
+  std::printf("vkpt-bench: seconds to relMSE <= %.1e, %u threads, device %s\n", target, threads, rep.device.c_str());
+  for (const std::string backend : {"cpu", "gpu"}) {
+    for (const SamplerScene& s : samplers) {
+      const std::string key = backend + "_" + s.name;
+      const std::optional<double> v = rep.Get(key + "_seconds_to_quality"), n = rep.Get(key + "_spp_to_quality");
+      const std::string line = std::string(backend == "cpu" ? "CPU" : "GPU") + ", " +
+                               (s.name == "power" ? "power-proportional lights" : "light tree");
+      if (v) std::printf("  %-32s %8.2f s (%0.f spp)", line.c_str(), *v, n.value_or(0));
+      else std::printf("  %-32s %8s", line.c_str(), "not reached");
+      const std::optional<double> ratio = rep.Get(backend + "_tree_vs_power");
+      if (s.name == "tree" && ratio) std::printf("   %.2fx the power choice's time", *ratio);
+      std::printf("\n");
+    }
+    const std::optional<double> gain = rep.Get(backend + "_tree_equal_time_gain");
+    if (gain)
+      std::printf(
+          "  %s relMSE at equal time: the power choice's is %.2fx the tree's (+-%.2g; means of %u renders of "
+          "%u spp)\n",
+          backend == "cpu" ? "CPU" : "GPU", *gain, *rep.Get(backend + "_tree_equal_time_gain_se"), kRelMseRenders,
+          kRelMseSpp);
+  }
+}
+
 // Seconds to quality on each backend, for each light sampler the scene can use: the
 // power-proportional choice and, where it has at least two emissive triangles, point or
 // spot lights, the light tree (render/light_tree.h), whose time is also given as a ratio
@@ -505,43 +545,9 @@ int Quality(const Options& o, unsigned threads) {
     std::fprintf(stderr, "vkpt-bench: GPU figures skipped: %s\n", e.what());
     rep.device = "none";
   }
-  for (const std::string b : {"cpu", "gpu"}) {
-    std::optional<double> p = rep.Get(b + "_power_seconds_to_quality"), t = rep.Get(b + "_tree_seconds_to_quality");
-    if (samplers.size() < 2) continue;
-    rep.Set(b + "_tree_vs_power", p && t ? std::optional<double>(*t / *p) : std::nullopt);
-    // relMSE at equal time, the power choice's over the tree's, and its standard error.
-    std::optional<double> pe = rep.Get(b + "_power_relmse_seconds"), te = rep.Get(b + "_tree_relmse_seconds");
-    if (!pe || !te) continue;
-    const double gain = *pe / *te;
-    rep.Set(b + "_tree_equal_time_gain", gain);
-    rep.Set(b + "_tree_equal_time_gain_se", gain * std::hypot(*rep.Get(b + "_power_relmse_seconds_rel_se"),
-                                                              *rep.Get(b + "_tree_relmse_seconds_rel_se")));
-  }
-  if (o.json) {
-    PrintJson(rep);
-    return 0;
-  }
-  std::printf("vkpt-bench: seconds to relMSE <= %.1e, %u threads, device %s\n", o.target, threads, rep.device.c_str());
-  for (const std::string backend : {"cpu", "gpu"}) {
-    for (const SamplerScene& s : samplers) {
-      const std::string key = backend + "_" + s.name;
-      const std::optional<double> v = rep.Get(key + "_seconds_to_quality"), n = rep.Get(key + "_spp_to_quality");
-      const std::string line = std::string(backend == "cpu" ? "CPU" : "GPU") + ", " +
-                               (s.name == "power" ? "power-proportional lights" : "light tree");
-      if (v) std::printf("  %-32s %8.2f s (%0.f spp)", line.c_str(), *v, n.value_or(0));
-      else std::printf("  %-32s %8s", line.c_str(), "not reached");
-      const std::optional<double> ratio = rep.Get(backend + "_tree_vs_power");
-      if (s.name == "tree" && ratio) std::printf("   %.2fx the power choice's time", *ratio);
-      std::printf("\n");
-    }
-    const std::optional<double> gain = rep.Get(backend + "_tree_equal_time_gain");
-    if (gain)
-      std::printf(
-          "  %s relMSE at equal time: the power choice's is %.2fx the tree's (+-%.2g; means of %u renders of "
-          "%u spp)\n",
-          backend == "cpu" ? "CPU" : "GPU", *gain, *rep.Get(backend + "_tree_equal_time_gain_se"), kRelMseRenders,
-          kRelMseSpp);
-  }
+  if (samplers.size() > 1) SetTreeRatios(rep);
+  if (o.json) PrintJson(rep);
+  else PrintQuality(rep, samplers, o.target, threads);
   return 0;
 }
 

@@ -50,19 +50,52 @@ layout(push_constant) uniform Push {
 
 #include "shared/path.h"
 
-void main() {
+// The frame's constants the scene's fetches read (scene_constants.glsl), copied to globals.
+void SetSceneConstants() {
   gNodeCount = params.nodeCount;
   gNodeCopies = params.nodeCopies;
   gTexelSplit = params.texelSplit;
   gTriangleSplit = params.triangleSplit;
   gLightNodeBase = kTexelsPerLight * params.lightCount;
   gUvSplit = params.uvSplit;
-  // lavapipe hands each thread one contiguous range of workgroups (the top and bottom
-  // half of the image with two threads), so costly regions would leave a thread idle:
-  // rows of tiles are dealt out with a stride coprime to their count (host: TileRowStride).
+}
+
+// This invocation's pixel. lavapipe hands each thread one contiguous range of workgroups
+// (the top and bottom half of the image with two threads), so costly regions would leave
+// a thread idle: rows of tiles are dealt out with a stride coprime to their count (host:
+// TileRowStride).
+uvec2 DealtPixel() {
   uint tileRows = (params.height + 7u) / 8u;
   uint tileRow = gl_WorkGroupID.y * params.tileRowStride % tileRows;
-  uvec2 pixel = uvec2(gl_GlobalInvocationID.x, tileRow * 8u + gl_LocalInvocationID.y);
+  return uvec2(gl_GlobalInvocationID.x, tileRow * 8u + gl_LocalInvocationID.y);
+}
+
+// A finished sample's radiance added to the pixel's sums, or counted as non-finite.
+void AddSample(vec3 L, inout vec4 sum, inout vec4 sumSq, inout uvec4 count) {
+  if (any(isnan(L)) || any(isinf(L))) {
+    count.y += 1u;
+  } else {
+    sum += vec4(L, 0.0f);
+    sumSq += vec4(L * L, 0.0f);
+  }
+}
+
+// The loop passes of this invocation's subgroup, all loops counted: traversal's
+// (gLoopIterations), this kernel's (≤ one pass per ray), the light binary search
+// (≤ log2(lights) + 2 per ray) and the light tree's two descents (a light sample's and an
+// emitter's pmf: ≤ its depth + 1 passes each per ray), bounded per lane and summed. The
+// most per sample goes to maxPassesPerSample.
+uint GroupLoopPasses(uint rays) {
+  uint treePasses = params.treeLights > 0u ? 2u * (params.treeDepth + 1u) : 0u;
+  uint smallLoops = rays * (3u + uint(findMSB(max(params.lightCount, 1u))) + treePasses);
+  uint groupPasses = subgroupAdd(gLoopIterations) + subgroupAdd(smallLoops);
+  if (subgroupElect()) atomicMax(maxPassesPerSample, (groupPasses + samples - 1u) / samples);
+  return groupPasses;
+}
+
+void main() {
+  SetSceneConstants();
+  uvec2 pixel = DealtPixel();
   uint index = pixel.y * params.width + pixel.x;
   bool inside = pixel.x < params.width && pixel.y < params.height;
   if (inside && params.adaptive != 0u) inside = activePixels[index] != 0u;
@@ -94,14 +127,8 @@ void main() {
     if (shadow) AddLightIfVisible(path, hit.t >= 0.0f);
     else more = ShadeHit(params, path, hit);
     if (!more && !path.shadowPending) {
-      vec3 L = path.result.radiance;
       rays += path.result.rays;
-      if (any(isnan(L)) || any(isinf(L))) {
-        count.y += 1u;
-      } else {
-        sum += vec4(L, 0.0f);
-        sumSq += vec4(L * L, 0.0f);
-      }
+      AddSample(path.result.radiance, sum, sumSq, count);
       ++done;
       if (done == samples) {
         tracing = false;
@@ -111,13 +138,7 @@ void main() {
       }
     }
   }
-  // Loops outside traversal: this loop (≤ one pass per ray), the light binary search
-  // (≤ log2(lights) + 2 per ray) and the light tree's two descents (a light sample's and
-  // an emitter's pmf: ≤ its depth + 1 passes each per ray), bounded per lane and summed.
-  uint treePasses = params.treeLights > 0u ? 2u * (params.treeDepth + 1u) : 0u;
-  uint smallLoops = rays * (3u + uint(findMSB(max(params.lightCount, 1u))) + treePasses);
-  uint groupPasses = subgroupAdd(gLoopIterations) + subgroupAdd(smallLoops);
-  if (subgroupElect()) atomicMax(maxPassesPerSample, (groupPasses + samples - 1u) / samples);
+  uint groupPasses = GroupLoopPasses(rays);
   if (!inside) return;
   count.x += rays;
   count.w += samples;

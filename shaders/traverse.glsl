@@ -109,6 +109,23 @@ struct ShortStack {
   bool dropped;
 };
 
+ShortStack EmptyStack() {
+  ShortStack s;
+  s.entries = uvec4(0u);
+  s.size = 0u;
+  s.dropped = false;
+  return s;
+}
+
+HitRecord NoHit() {
+  HitRecord hit;
+  hit.t = -1.0f;
+  hit.b1 = 0.0f;
+  hit.b2 = 0.0f;
+  hit.triangle = kInvalidIndex;
+  return hit;
+}
+
 void PushNode(inout ShortStack s, uint node) {
   s.dropped = s.dropped || s.size == 4u;
   s.size = min(s.size + 1u, 4u);
@@ -170,18 +187,11 @@ bool AlphaRejectsHit(Triangle t, vec3 r, uint alphaKey) { return false; }
 // shared/path.h). One function for both kinds, so that pathtrace.comp's lanes can trace
 // whichever kind of ray each has next in the same loop.
 HitRecord TraceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, uint alphaKey) {
-  HitRecord hit;
-  hit.t = -1.0f;
-  hit.b1 = 0.0f;
-  hit.b2 = 0.0f;
-  hit.triangle = kInvalidIndex;
+  HitRecord hit = NoHit();
   vec3 invDir = SafeInverse(dir);
   uint n = RootFor(dir);  // the node to visit next
   uint fromSlot = kFirstVisit;
-  ShortStack stack;
-  stack.entries = uvec4(0u);
-  stack.size = 0u;
-  stack.dropped = false;
+  ShortStack stack = EmptyStack();
   uvec4 leafCodes = uvec4(0u);  // the child codes of the node whose leaves are queued
   uint leafSlots = 0u;          // the slots of its leaves still to test
   uint k = 0u;      // next triangle of the current leaf

@@ -75,8 +75,8 @@ std::vector<OptionDef> DeviceRows() {
   };
 }
 
-// The scene as rendered, its limits, and what vkpt reports.
-std::vector<OptionDef> SceneRows() {
+// Where the camera stands and looks.
+std::vector<OptionDef> CameraRows() {
   return {
       Row({"--camera"}, "N", "glTF camera to render from, in scene order; without one, a camera framing the scene", "0",
           Number(&O::camera, SettingRange("index"))),
@@ -91,6 +91,12 @@ std::vector<OptionDef> SceneRows() {
           "turn the camera about the up axis through `--look-at` (else the scene's centre), counter-clockwise seen "
           "from above",
           "0", Number(&O::orbit, SettingRange("orbit"))),
+  };
+}
+
+// The scene as rendered, its limits, and what vkpt reports.
+std::vector<OptionDef> SceneRows() {
+  return {
       Row({"--background"}, "R,G,B", "constant environment radiance for rays that leave the scene (one number: grey)",
           "1 if the scene has no lights, else 0", BackgroundValue()),
       Row({"--env"}, "FILE",
@@ -207,7 +213,7 @@ std::string OptionDef::Synopsis() const {
 const std::vector<OptionDef>& OptionTable() {
   static const std::vector<OptionDef> table = [] {
     std::vector<OptionDef> rows = RenderRows();
-    for (auto part : {DeviceRows, SceneRows})
+    for (auto part : {DeviceRows, CameraRows, SceneRows})
       for (OptionDef& row : part()) rows.push_back(std::move(row));
     return rows;
   }();

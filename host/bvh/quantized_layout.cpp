@@ -74,6 +74,48 @@ shader::WideBvhNode MakeNode(const Bounds3f* boxes, const uint32_t* codes, int c
   return n;
 }
 
+// The wide tree's shape: per wide node its children (binary nodes), its parent and its
+// slot there, and the wide node of each inner child.
+struct Shape {
+  CollapsedChildren<kGpuBvhWidth> kids;
+  uint32_t parent, slot;
+  uint32_t inner[kGpuBvhWidth];
+};
+
+// Depth first, a node's first inner child right after it in memory.
+std::vector<Shape> WideShape(std::span<const shader::BvhNode> nodes, uint32_t copies) {
+  std::vector<Shape> shape;
+  if (IsLeaf(nodes[0])) {
+    Shape root{};
+    root.kids.node[0] = 0;
+    root.kids.count = 1;
+    root.parent = shader::kInvalidIndex;
+    shape.push_back(root);
+    return shape;
+  }
+  // Each entry: a binary inner node, the wide node that points to it and its slot there.
+  struct Pending {
+    uint32_t binary, parent, slot;
+  };
+  std::vector<Pending> stack = {{0, shader::kInvalidIndex, 0}};
+  while (!stack.empty()) {
+    const Pending e = stack.back();
+    stack.pop_back();
+    const uint32_t index = uint32_t(shape.size());
+    if (uint64_t(index) * copies >= (1u << 28))
+      throw Error("BuildQuantizedLayout: too many nodes for the 28-bit index");
+    if (e.parent != shader::kInvalidIndex) shape[e.parent].inner[e.slot] = index;
+    Shape s{};
+    s.kids = CollapseChildren<kGpuBvhWidth>(nodes, e.binary);
+    s.parent = e.parent;
+    s.slot = e.slot;
+    shape.push_back(s);
+    for (int k = s.kids.count - 1; k >= 0; --k)
+      if (!IsLeaf(nodes[s.kids.node[k]])) stack.push_back({s.kids.node[k], index, uint32_t(k)});
+  }
+  return shape;
+}
+
 }  // namespace
 
 QuantizedBox ChildBox(const shader::WideBvhNode& node, int k) {
@@ -90,42 +132,7 @@ std::vector<shader::WideBvhNode> BuildQuantizedLayout(std::span<const shader::Bv
                                                       uint32_t copies) {
   if (nodeCount == 0 || nodes.size() < nodeCount) throw Error("BuildQuantizedLayout: no tree to convert");
   if (copies != 1 && copies != 8) throw Error("BuildQuantizedLayout: 1 or 8 copies");
-  // The tree's shape: per wide node its children (binary nodes) and its parent and slot.
-  struct Shape {
-    CollapsedChildren<kGpuBvhWidth> kids;
-    uint32_t parent, slot;
-    uint32_t inner[kGpuBvhWidth];  // the wide node of each inner child
-  };
-  std::vector<Shape> shape;
-  if (IsLeaf(nodes[0])) {
-    Shape root{};
-    root.kids.node[0] = 0;
-    root.kids.count = 1;
-    root.parent = shader::kInvalidIndex;
-    shape.push_back(root);
-  } else {
-    // Depth first, a node's first inner child right after it in memory. Each entry: a
-    // binary inner node, the wide node that points to it and the slot it has there.
-    struct Pending {
-      uint32_t binary, parent, slot;
-    };
-    std::vector<Pending> stack = {{0, shader::kInvalidIndex, 0}};
-    while (!stack.empty()) {
-      const Pending e = stack.back();
-      stack.pop_back();
-      const uint32_t index = uint32_t(shape.size());
-      if (uint64_t(index) * copies >= (1u << 28))
-        throw Error("BuildQuantizedLayout: too many nodes for the 28-bit index");
-      if (e.parent != shader::kInvalidIndex) shape[e.parent].inner[e.slot] = index;
-      Shape s{};
-      s.kids = CollapseChildren<kGpuBvhWidth>(nodes, e.binary);
-      s.parent = e.parent;
-      s.slot = e.slot;
-      shape.push_back(s);
-      for (int k = s.kids.count - 1; k >= 0; --k)
-        if (!IsLeaf(nodes[s.kids.node[k]])) stack.push_back({s.kids.node[k], index, uint32_t(k)});
-    }
-  }
+  const std::vector<Shape> shape = WideShape(nodes, copies);
   // Copy o: every node's children in octant o's order (for one copy, octant 0's).
   const uint32_t count = uint32_t(shape.size());
   std::vector<shader::WideBvhNode> out(size_t(count) * copies);

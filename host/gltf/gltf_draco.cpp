@@ -43,21 +43,11 @@ std::vector<unsigned char> PackIndices(const GltfSource& src, const std::vector<
   return out;
 }
 
-void DecodePrimitive(const GltfSource& src, tinygltf::Model& m, tinygltf::Primitive& prim, const std::string& name,
-                     std::set<int>& decodedAccessors, MemoryBudget& budget) {
-  const std::string what = name + ".extensions." + kExtension;
-  const tinygltf::Value& ext = prim.extensions.at(kExtension);
-  if (!ext.IsObject()) src.Fail(what + " is not an object");
-  const int viewIndex = ExtensionIndex(src, ext, "bufferView", m.bufferViews, what);
-  if (!ext.Has("attributes") || !ext.Get("attributes").IsObject())
-    src.Fail(what + ".attributes is missing or not an object");
-  if (prim.mode != TINYGLTF_MODE_TRIANGLES) src.Fail(name + ".mode must be TRIANGLES (4) with " + kExtension);
-  if (prim.indices < 0) src.Fail(name + " has no indices, which " + kExtension + " needs");
-  src.CheckIndex(prim.indices, m.accessors, name + ".indices");
-  const tinygltf::Value& attributes = ext.Get("attributes");
-
-  std::vector<int> targets;  // accessors[...] per DracoAccessor, then the indices'
-  std::vector<DracoAccessor> wanted;
+// The attributes the extension decodes: each one's Draco attribute and accessor, appended
+// to `wanted` and `targets`. Returns the bytes their accessors hold.
+uint64_t DecodedAttributes(const GltfSource& src, const tinygltf::Model& m, const tinygltf::Primitive& prim,
+                           const tinygltf::Value& attributes, const std::string& name, const std::string& what,
+                           std::vector<DracoAccessor>& wanted, std::vector<int>& targets) {
   uint64_t bytes = 0;
   for (const std::string& attr : attributes.Keys()) {
     const auto it = prim.attributes.find(attr);
@@ -75,6 +65,25 @@ void DecodePrimitive(const GltfSource& src, tinygltf::Model& m, tinygltf::Primit
     targets.push_back(it->second);
     bytes += uint64_t(a.count) * ElementSize(a);
   }
+  return bytes;
+}
+
+void DecodePrimitive(const GltfSource& src, tinygltf::Model& m, tinygltf::Primitive& prim, const std::string& name,
+                     std::set<int>& decodedAccessors, MemoryBudget& budget) {
+  const std::string what = name + ".extensions." + kExtension;
+  const tinygltf::Value& ext = prim.extensions.at(kExtension);
+  if (!ext.IsObject()) src.Fail(what + " is not an object");
+  const int viewIndex = ExtensionIndex(src, ext, "bufferView", m.bufferViews, what);
+  if (!ext.Has("attributes") || !ext.Get("attributes").IsObject())
+    src.Fail(what + ".attributes is missing or not an object");
+  if (prim.mode != TINYGLTF_MODE_TRIANGLES) src.Fail(name + ".mode must be TRIANGLES (4) with " + kExtension);
+  if (prim.indices < 0) src.Fail(name + " has no indices, which " + kExtension + " needs");
+  src.CheckIndex(prim.indices, m.accessors, name + ".indices");
+  const tinygltf::Value& attributes = ext.Get("attributes");
+
+  std::vector<int> targets;  // accessors[...] per DracoAccessor, then the indices'
+  std::vector<DracoAccessor> wanted;
+  uint64_t bytes = DecodedAttributes(src, m, prim, attributes, name, what, wanted, targets);
   const tinygltf::Accessor& ia = m.accessors[prim.indices];
   if (ia.type != TINYGLTF_TYPE_SCALAR || (ia.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
                                           ia.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&

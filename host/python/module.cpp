@@ -88,85 +88,85 @@ PyRender Render(PyScene& self, const py::object& camera, RenderOptions options, 
 const SceneOptions kScene;
 const RenderOptions kRender;
 
+std::unique_ptr<PyScene> OpenScene(const std::string& path, const std::string& backend, const std::string& device,
+                                   bool validation, unsigned threads, uint64_t maxMemory, uint64_t maxTexels,
+                                   bool allowExternalUris, const std::string& variant, const std::string& animation,
+                                   const std::string& environment, float environmentIntensity,
+                                   const std::string& lightSampler) {
+  SceneOptions o;
+  o.backend = BackendFrom(backend);
+  o.device = device;
+  o.validation = validation;
+  o.threads = threads;
+  o.maxMemory = maxMemory;
+  o.maxTexels = maxTexels;
+  o.allowExternalUris = allowExternalUris;
+  o.variant = variant;
+  o.animation = animation;
+  o.environment = environment;
+  o.environmentIntensity = environmentIntensity;
+  o.lightSampler = LightSamplerFrom(lightSampler);
+  py::gil_scoped_release released;
+  return std::make_unique<PyScene>(Scene(path, o));
+}
+
+PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint32_t> width,
+                    std::optional<uint32_t> height, std::optional<uint32_t> spp, std::optional<double> seconds,
+                    std::optional<double> noiseTarget, std::optional<bool> adaptive, uint32_t seed, uint32_t maxDepth,
+                    uint32_t rrDepth, uint32_t chunkSpp, uint32_t batch, double time,
+                    std::optional<std::array<float, 3>> background, float environmentRotation, bool textureLod,
+                    std::vector<std::string> aovs, bool denoise, const py::object& progress) {
+  RenderOptions o;
+  o.width = width;
+  o.height = height;
+  o.spp = spp;
+  o.seconds = seconds;
+  o.noiseTarget = noiseTarget;
+  o.adaptive = adaptive;
+  o.seed = seed;
+  o.maxDepth = maxDepth;
+  o.rrDepth = rrDepth;
+  o.chunkSpp = chunkSpp;
+  o.batch = batch;
+  o.time = time;
+  o.background = background;
+  o.environmentRotation = environmentRotation;
+  o.textureLod = textureLod;
+  o.aovs = std::move(aovs);
+  o.denoise = denoise;
+  return Render(self, camera, std::move(o), progress);
+}
+
+// The signatures pybind11 puts above each docstring show the keywords and their defaults.
 void BindScene(py::module_& m) {
   py::class_<PyScene>(m, "Scene", R"(A glTF 2.0 scene loaded once and rendered any number of times.
-
-Scene(path, *, backend="auto", device="", validation=False, threads=0, max_memory=0,
-      max_texels=0, allow_external_uris=False, variant="", animation="",
-      environment="", environment_intensity=1.0,
-      light_sampler="auto")
 
 backend: "auto" (the Vulkan device when one opens, else the CPU), "cpu" or "vulkan".
 light_sampler: how light sampling chooses among emissive triangles, point and spot
 lights: "tree" (by how much each may light the shading point), "power" (by power
 alone) or "auto" (the tree from 8 such lights on).
-Raises vkpt.Error naming the file and the problem.)")
-      .def(py::init([](const std::string& path, const std::string& backend, const std::string& device, bool validation,
-                       unsigned threads, uint64_t maxMemory, uint64_t maxTexels, bool allowExternalUris,
-                       const std::string& variant, const std::string& animation, const std::string& environment,
-                       float environmentIntensity, const std::string& lightSampler) {
-             SceneOptions o;
-             o.backend = BackendFrom(backend);
-             o.device = device;
-             o.validation = validation;
-             o.threads = threads;
-             o.maxMemory = maxMemory;
-             o.maxTexels = maxTexels;
-             o.allowExternalUris = allowExternalUris;
-             o.variant = variant;
-             o.animation = animation;
-             o.environment = environment;
-             o.environmentIntensity = environmentIntensity;
-             o.lightSampler = LightSamplerFrom(lightSampler);
-             py::gil_scoped_release released;
-             return std::make_unique<PyScene>(Scene(path, o));
-           }),
-           "path"_a, py::kw_only(), "backend"_a = "auto", "device"_a = kScene.device,
+Raises vkpt.Error naming the file and the problem, vkpt.SettingError for a setting out
+of its range.)")
+      .def(py::init(&OpenScene), "path"_a, py::kw_only(), "backend"_a = "auto", "device"_a = kScene.device,
            "validation"_a = kScene.validation, "threads"_a = kScene.threads, "max_memory"_a = kScene.maxMemory,
            "max_texels"_a = kScene.maxTexels, "allow_external_uris"_a = kScene.allowExternalUris,
            "variant"_a = kScene.variant, "animation"_a = kScene.animation, "environment"_a = kScene.environment,
            "environment_intensity"_a = kScene.environmentIntensity, "light_sampler"_a = "auto")
       .def_property_readonly("camera_count", [](PyScene& s) { return s.scene.CameraCount(); })
       .def_property_readonly("device", [](PyScene& s) { return s.scene.Device(); })
-      .def(
-          "render",
-          [](PyScene& self, const py::object& camera, std::optional<uint32_t> width, std::optional<uint32_t> height,
-             std::optional<uint32_t> spp, std::optional<double> seconds, std::optional<double> noiseTarget,
-             std::optional<bool> adaptive, uint32_t seed, uint32_t maxDepth, uint32_t rrDepth, uint32_t chunkSpp,
-             uint32_t batch, double time, std::optional<std::array<float, 3>> background, float environmentRotation,
-             bool textureLod, std::vector<std::string> aovs, bool denoise, const py::object& progress) {
-            RenderOptions o;
-            o.width = width;
-            o.height = height;
-            o.spp = spp;
-            o.seconds = seconds;
-            o.noiseTarget = noiseTarget;
-            o.adaptive = adaptive;
-            o.seed = seed;
-            o.maxDepth = maxDepth;
-            o.rrDepth = rrDepth;
-            o.chunkSpp = chunkSpp;
-            o.batch = batch;
-            o.time = time;
-            o.background = background;
-            o.environmentRotation = environmentRotation;
-            o.textureLod = textureLod;
-            o.aovs = std::move(aovs);
-            o.denoise = denoise;
-            return Render(self, camera, std::move(o), progress);
-          },
-          "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(), "height"_a = py::none(), "spp"_a = py::none(),
-          "seconds"_a = py::none(), "noise_target"_a = py::none(), "adaptive"_a = py::none(), "seed"_a = kRender.seed,
-          "max_depth"_a = kRender.maxDepth, "rr_depth"_a = kRender.rrDepth, "chunk_spp"_a = kRender.chunkSpp,
-          "batch"_a = kRender.batch, "time"_a = kRender.time, "background"_a = py::none(),
-          "environment_rotation"_a = kRender.environmentRotation, "texture_lod"_a = kRender.textureLod,
-          "aovs"_a = kRender.aovs, "denoise"_a = kRender.denoise, "progress"_a = py::none(),
-          R"(Renders a view and returns a vkpt.Render (np.asarray(render) is the image).
+      .def("render", &RenderWith, "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(),
+           "height"_a = py::none(), "spp"_a = py::none(), "seconds"_a = py::none(), "noise_target"_a = py::none(),
+           "adaptive"_a = py::none(), "seed"_a = kRender.seed, "max_depth"_a = kRender.maxDepth,
+           "rr_depth"_a = kRender.rrDepth, "chunk_spp"_a = kRender.chunkSpp, "batch"_a = kRender.batch,
+           "time"_a = kRender.time, "background"_a = py::none(), "environment_rotation"_a = kRender.environmentRotation,
+           "texture_lod"_a = kRender.textureLod, "aovs"_a = kRender.aovs, "denoise"_a = kRender.denoise,
+           "progress"_a = py::none(),
+           R"(Renders a view and returns a vkpt.Render (np.asarray(render) is the image).
 
 camera: None (the file's first camera), an int (the file's camera of that index) or a
 vkpt.Camera. The GIL is released while rendering; progress(fraction) is called now and
 then. aovs: albedo, normal, depth, position, variance, spp, heatmap, object_id,
-material_id, instance_id, or "all".)");
+material_id, instance_id, or "all". A setting out of its range raises vkpt.SettingError.)");
 }
 
 // vkpt._settings(): the settings schema (vkpt/settings_schema.h) for tests that try every
