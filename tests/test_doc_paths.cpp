@@ -2,6 +2,7 @@
 // they name must exist, so that neither describes a place that has moved.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 #include <string>
@@ -45,6 +46,11 @@ TEST(DocPaths, EveryFileTheReadmeAndTheArchitectureNameExists) {
     EXPECT_GE(NamedPaths(text).size(), 20u) << doc;
     EXPECT_EQ(Missing(text), std::vector<std::string>{}) << doc;
   }
+}
+
+TEST(DocPaths, TheReadmeIsALandingPage) {
+  const std::string readme = test::ReadFile(test::SourcePath("README.md"));
+  EXPECT_LE(std::count(readme.begin(), readme.end(), '\n'), 200) << "README.md: move detail to docs/";
 }
 
 TEST(DocPaths, AMovedFileIsCaught) {

@@ -14,6 +14,9 @@ OptionDef Row(std::vector<std::string> names, std::string value, std::string mea
 
 using O = Options;
 
+// The defaults shown are the library's own (vkpt/vkpt.h), which are the command line's.
+const vkpt::RenderOptions kRender;
+
 // The image, its samples and how they are taken.
 std::vector<OptionDef> RenderRows() {
   return {
@@ -42,13 +45,13 @@ std::vector<OptionDef> RenderRows() {
           Flag(&O::denoise)),
       Row({"--checkpoint"}, "SECONDS", "rewrite `--out` every SECONDS during the render, with the samples so far",
           "none", CheckpointValue()),
-      Row({"--seed"}, "N", "random seed; same seed and device give a bit-identical image", "0",
+      Row({"--seed"}, "N", "random seed; same seed and device give a bit-identical image", FormatNumber(kRender.seed),
           Number(&O::seed, SettingRange("seed"))),
-      Row({"--chunk"}, "N", "samples per pixel per chunk: the image depends on N, not on passes or MPI ranks", "16",
-          Number(&O::chunkSpp, SettingRange("chunk_spp"))),
-      Row({"--max-depth"}, "N", "maximum number of bounces (0: emission seen directly only)", "32",
-          Number(&O::maxDepth, SettingRange("max_depth"))),
-      Row({"--rr-depth"}, "N", "bounces before Russian roulette starts", "3",
+      Row({"--chunk"}, "N", "samples per pixel per chunk: the image depends on N, not on passes or MPI ranks",
+          FormatNumber(kRender.chunkSpp), Number(&O::chunkSpp, SettingRange("chunk_spp"))),
+      Row({"--max-depth"}, "N", "maximum number of bounces (0: emission seen directly only)",
+          FormatNumber(kRender.maxDepth), Number(&O::maxDepth, SettingRange("max_depth"))),
+      Row({"--rr-depth"}, "N", "bounces before Russian roulette starts", FormatNumber(kRender.rrDepth),
           Number(&O::rrDepth, SettingRange("rr_depth"))),
   };
 }
@@ -90,11 +93,11 @@ std::vector<OptionDef> CameraRows() {
       Row({"--orbit"}, "DEGREES",
           "turn the camera about the up axis through `--look-at` (else the scene's centre), counter-clockwise seen "
           "from above",
-          "0", Number(&O::orbit, SettingRange("orbit"))),
+          FormatNumber(vkpt::Camera{}.orbitDegrees), Number(&O::orbit, SettingRange("orbit"))),
   };
 }
 
-// The scene as rendered, its limits, and what vkpt reports.
+// The scene as rendered and its limits.
 std::vector<OptionDef> SceneRows() {
   return {
       Row({"--background"}, "R,G,B", "constant environment radiance for rays that leave the scene (one number: grey)",
@@ -102,9 +105,10 @@ std::vector<OptionDef> SceneRows() {
       Row({"--env"}, "FILE",
           "equirectangular environment map, `.hdr` or `.exr`, lighting the scene instead of a background", "none",
           Text(&O::env, "an .hdr or .exr file")),
-      Row({"--env-rotation"}, "DEGREES", "turn the map about +Y, counter-clockwise seen from above", "0",
-          Number(&O::envRotation, SettingRange("environment_rotation"))),
-      Row({"--env-intensity"}, "X", "multiply the map's radiance by X", "1",
+      Row({"--env-rotation"}, "DEGREES", "turn the map about +Y, counter-clockwise seen from above",
+          FormatNumber(kRender.environmentRotation), Number(&O::envRotation, SettingRange("environment_rotation"))),
+      Row({"--env-intensity"}, "X", "multiply the map's radiance by X",
+          FormatNumber(vkpt::SceneOptions{}.environmentIntensity),
           Number(&O::envIntensity, SettingRange("environment_intensity"))),
       Row({"--exposure"}, "STOPS", "PNG only: multiply radiance by 2^STOPS before the view transform", "0",
           Number(&O::exposure, {-64, 64})),
@@ -147,6 +151,12 @@ std::vector<OptionDef> SceneRows() {
           MaxTexelsValue()),
       Row({"--allow-external-uris"}, "", "let a glTF read files outside its own folder", "off",
           AllowExternalUrisValue()),
+  };
+}
+
+// What vkpt reports, and the options that only print.
+std::vector<OptionDef> ReportRows() {
+  return {
       Row({"--stats"}, "FILE", "after the image, write the run as one JSON object (schema in docs/stats.md)", "",
           Text(&O::stats, "a file name")),
       Row({"-v", "--verbose"}, "", "print what was loaded, warnings, ignored glTF features and a line per pass", "",
@@ -213,7 +223,7 @@ std::string OptionDef::Synopsis() const {
 const std::vector<OptionDef>& OptionTable() {
   static const std::vector<OptionDef> table = [] {
     std::vector<OptionDef> rows = RenderRows();
-    for (auto part : {DeviceRows, CameraRows, SceneRows})
+    for (auto part : {DeviceRows, CameraRows, SceneRows, ReportRows})
       for (OptionDef& row : part()) rows.push_back(std::move(row));
     return rows;
   }();
