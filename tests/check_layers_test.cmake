@@ -71,6 +71,10 @@ expect_failure(host/vk/buffer.cpp [[#include "gltf/gltf_loader.h"]] "layer vk ma
 expect_failure(host/vk/buffer.cpp [[#include <tiny_gltf.h>]] "tiny_gltf.h is for layer gltf only")
 expect_failure(host/scene/camera.cpp [[#include "gltf/gltf_source.h"]] "layer scene may not include layer gltf")
 expect_failure(host/scene/camera.cpp [[#include <tiny_gltf.h>]] "tiny_gltf.h is for layer gltf only")
+# The session knows no device: the engine chooses the backend (engine/render_backend.h),
+# the session renders a frame from whichever it is given.
+expect_failure(host/session/budget.cpp [[#include "vk/context.h"]] "layer session may not include layer vk")
+expect_failure(host/session/budget.cpp [[#include "cpu/path_tracer.h"]] "layer session may not include layer cpu")
 expect_failure(host/cpu/traversal.cpp [[#include <vulkan/vulkan_core.h>]] "vulkan/ is for layer vk only")
 # No way around it by a relative path, or a new folder under an include root.
 expect_failure(host/cpu/traversal.cpp [[#include "../vk/context.h"]] "no \"..\" in includes")

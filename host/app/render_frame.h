@@ -1,6 +1,6 @@
 // What follows a frame's render on the command line: the CPU reference of --compare, and
-// the files, reports and stats written after the render (Finish). Run, RunSequence and
-// RunRank share these (app/run.cpp); the render itself is the library's
+// the files, reports and stats written after the render (Finish). Both ways of rendering
+// a frame share these (app/run.cpp); the render itself is the library's
 // (app/scene_client.h).
 #pragma once
 

@@ -16,10 +16,10 @@
 #include "app/sequence.h"
 #include "cluster/agreement.h"
 #include "cluster/chunk_dealer.h"
+#include "engine/render_backend.h"
 #include "image/image.h"
 #include "image/image_compare.h"
 #include "session/aov.h"
-#include "session/backend.h"
 #include "session/dealt_chunks.h"
 #include "session/local_passes.h"
 #include "session/render_session.h"
@@ -126,104 +126,137 @@ void PrintSequenceEnd(const Options& o, size_t done, size_t frames, std::chrono:
   if (!o.stats.empty()) WriteSequenceStats(o.stats, stats);
 }
 
-// Rank 0 deals the frame's chunks to every rank (itself included), then writes it; the
-// others render the chunks dealt to them. Returns the exit status, the same on every rank.
-int RenderDealt(Cluster& cluster, const Options& o, Prepared& p, std::string* frameStats = nullptr) {
-  const ChunkPlan plan{o.spp, o.chunkSpp};
-  FrameRenderer& renderer = *p.view.renderer;
-  int status = 0;
-  if (cluster.Rank() != 0) {
-    RenderDealtChunks(cluster, ChunkRendererOf(renderer, plan));
-  } else {
-    DealtChunks source(cluster, renderer, plan);
-    status = Finish(o, p, p.client->Finish(p.view, source, p.settings), nullptr, frameStats);
-  }
-  return cluster.MaxOf(status);
+// How a run's frames are prepared and rendered: in this process (LocalFrames), or dealt
+// among an MPI job's ranks (DealtFrames). RunFrames is the one loop over frames for both;
+// a single image is a sequence of one frame.
+class FrameWay {
+ public:
+  virtual ~FrameWay() = default;
+  // Frame `i` (options `f`) prepared in `p`: loaded at the first, posed and built again
+  // after. Returns 0, or the exit status that ends the run.
+  virtual int Prepare(Prepared& p, const Options& o, const Options& f, size_t i) = 0;
+  // The frame rendered and written; its exit status, and its rendering time in `seconds`.
+  virtual int Render(const Options& f, Prepared& p, std::string* frameStats, double& seconds) = 0;
+  virtual bool Reports() const { return true; }  // this process prints and writes the run's results
+};
+
+// The output files of every frame of a sequence checked before the first is rendered.
+void CheckFramePaths(const Options& o) {
+  if (o.frames)
+    for (uint32_t k : FrameNumbers(*o.frames)) CheckOutputPath(FramePath(o.out, k));
 }
 
-}  // namespace
-
-// --frames: each frame posed, built, rendered and written in turn from one load; the
-// first signal ends the sequence after the frame it stops.
-int RunSequence(const Options& o) {
-  const std::vector<uint32_t> numbers = FrameNumbers(*o.frames);
-  for (uint32_t k : numbers) CheckOutputPath(FramePath(o.out, k));
-  Prepared p = Prepare(FrameOptions(o, numbers.front()), true);
-  const auto start = p.start;
-  GracefulStop stop;
-  std::vector<std::string> stats;  // with --stats, each frame's (about 2 KB)
-  int status = 0;
-  size_t i = 0;  // frames rendered
-  for (; i < numbers.size() && status == 0; ++i) {
-    const Options f = FrameOptions(o, numbers[i]);
-    if (i > 0) NextFrame(p, f, 1);
-    LocalPasses source(*p.view.renderer, o.chunkSpp);
+class LocalFrames : public FrameWay {
+ public:
+  int Prepare(Prepared& p, const Options& o, const Options& f, size_t i) override {
+    if (i == 0) {
+      CheckFramePaths(o);
+      p = vkpt::internal::Prepare(f, true);
+    } else {
+      NextFrame(p, f, 1);
+    }
+    return 0;
+  }
+  int Render(const Options& f, Prepared& p, std::string* frameStats, double& seconds) override {
+    std::optional<RenderedFrame> reference;
+    if (f.compare) reference = RenderReference(p, f);
+    // From here the first SIGINT/SIGTERM stops the render after its pass (a sequence after
+    // that frame), and the image of the samples taken is still written.
+    if (!stop_) stop_.emplace();
+    LocalPasses source(*p.view.renderer, f.chunkSpp);
     const RenderedView rendered = p.client->Finish(p.view, source, p.settings);
-    status = Finish(f, p, rendered, nullptr, FrameStats(o, stats));
-    PrintFrameLine(numbers[i], i, numbers.size(), f, p, rendered.frame.seconds);
+    seconds = rendered.frame.seconds;
+    return Finish(f, p, rendered, reference ? &*reference : nullptr, frameStats);
   }
-  PrintSequenceEnd(o, i, numbers.size(), start, stats);
-  return status;
-}
 
-int Run(const Options& o) {
-  if (o.listDevices) return ListDevices();
-  if (!o.diff.empty()) return Diff(o);
-  if (o.frames) return RunSequence(o);
-  Prepared p = Prepare(o, true);
-  std::optional<RenderedFrame> reference;
-  if (o.compare) reference = RenderReference(p, o);
-  LocalPasses source(*p.view.renderer, o.chunkSpp);
-  // From here the first SIGINT/SIGTERM stops the render after its pass, and the image of
-  // the samples taken is still written.
-  GracefulStop stop;
-  const RenderedView rendered = p.client->Finish(p.view, source, p.settings);
-  return Finish(o, p, rendered, reference ? &*reference : nullptr);
-}
+ private:
+  std::optional<GracefulStop> stop_;
+};
 
-// Under mpirun: every rank loads the file and builds each frame; the frames' chunks are
-// dealt among the ranks one frame after another (RenderDealt).
-int RunRank(Cluster& cluster, int argc, char** argv) {
-  Options o;
-  if (const int status = ParseOnEveryRank(cluster, argc, argv, o)) return status;
-  const bool root = cluster.Rank() == 0;
-  const uint32_t ranks = root ? uint32_t(cluster.Size()) : 1;
+// Every rank loads the file and builds each frame; rank 0 deals the frame's chunks to
+// every rank (itself included) and writes it, the others render the chunks dealt them.
+class DealtFrames : public FrameWay {
+ public:
+  explicit DealtFrames(Cluster& cluster) : cluster_(cluster) {}
+  int Prepare(Prepared& p, const Options& o, const Options& f, size_t i) override {
+    const uint32_t ranks = Reports() ? uint32_t(cluster_.Size()) : 1;
+    std::string message;
+    int status = Attempt(
+        [&] {
+          if (i > 0) {
+            NextFrame(p, f, ranks);
+          } else {
+            if (Reports()) CheckFramePaths(o);
+            p = vkpt::internal::Prepare(f, Reports(), ranks);
+          }
+        },
+        &message);
+    if ((status = AgreeOnOutcome(cluster_, status, message, "error")) || i > 0) return status;
+    if (cluster_.AllEqual(FrameKey(o, p))) return 0;
+    if (Reports())
+      PrintError("usage error",
+                 "the ranks were given different frames: only --backend, --device, --threads, --batch, "
+                 "--validation and -v may differ between ranks");
+    return 2;
+  }
+  // A signal makes rank 0 stop dealing; the others finish their chunk.
+  int Render(const Options& f, Prepared& p, std::string* frameStats, double& seconds) override {
+    if (!stop_) stop_.emplace();
+    const ChunkPlan plan{f.spp, f.chunkSpp};
+    FrameRenderer& renderer = *p.view.renderer;
+    int status = 0;
+    if (!Reports()) {
+      RenderDealtChunks(cluster_, ChunkRendererOf(renderer, plan));
+    } else {
+      DealtChunks source(cluster_, renderer, plan);
+      status = Finish(f, p, p.client->Finish(p.view, source, p.settings), nullptr, frameStats);
+    }
+    seconds = p.times().render;
+    return cluster_.MaxOf(status);
+  }
+  bool Reports() const override { return cluster_.Rank() == 0; }
+
+ private:
+  Cluster& cluster_;
+  std::optional<GracefulStop> stop_;
+};
+
+// Every frame in turn from one load; the first error or signal ends the run after that
+// frame. A sequence prints a line per frame and keeps each frame's stats for --stats.
+int RunFrames(const Options& o, FrameWay& way) {
   const std::vector<uint32_t> numbers = o.frames ? FrameNumbers(*o.frames) : std::vector<uint32_t>{0};
+  const bool sequence = o.frames && way.Reports();
   Prepared p;
-  std::vector<std::string> stats;    // with --stats, each frame's
-  std::optional<GracefulStop> stop;  // rank 0 stops dealing at a signal; the others finish their chunk
-  std::chrono::steady_clock::time_point start;
+  std::chrono::steady_clock::time_point start;  // of the first frame's preparation
+  std::vector<std::string> stats;               // with --stats, each frame's (about 2 KB)
   int status = 0;
   size_t i = 0;  // frames rendered
   for (; i < numbers.size() && status == 0; ++i) {
     const Options f = o.frames ? FrameOptions(o, numbers[i]) : o;
-    std::string message;
-    status = Attempt(
-        [&] {
-          if (i == 0 && o.frames && root)
-            for (uint32_t k : numbers) CheckOutputPath(FramePath(o.out, k));
-          if (i == 0) p = Prepare(f, root, ranks);
-          else NextFrame(p, f, ranks);
-        },
-        &message);
-    if ((status = AgreeOnOutcome(cluster, status, message, "error"))) return status;
-    if (i == 0) {
-      start = p.start;
-      stop.emplace();
-      if (!cluster.AllEqual(FrameKey(o, p))) {
-        if (root)
-          PrintError("usage error",
-                     "the ranks were given different frames: only --backend, --device, --threads, --batch, "
-                     "--validation and -v may differ between ranks");
-        return 2;
-      }
-    }
-    if (!o.frames) return RenderDealt(cluster, o, p);
-    status = RenderDealt(cluster, f, p, root ? FrameStats(o, stats) : nullptr);
-    if (root) PrintFrameLine(numbers[i], i, numbers.size(), f, p, p.times().render);
+    if (const int refused = way.Prepare(p, o, f, i)) return refused;
+    if (i == 0) start = p.start;
+    double seconds = 0.0;
+    status = way.Render(f, p, sequence ? FrameStats(o, stats) : nullptr, seconds);
+    if (sequence) PrintFrameLine(numbers[i], i, numbers.size(), f, p, seconds);
   }
-  if (root) PrintSequenceEnd(o, i, numbers.size(), start, stats);
+  if (sequence) PrintSequenceEnd(o, i, numbers.size(), start, stats);
   return status;
+}
+
+}  // namespace
+
+int Run(const Options& o) {
+  if (o.listDevices) return ListDevices();
+  if (!o.diff.empty()) return Diff(o);
+  LocalFrames local;
+  return RunFrames(o, local);
+}
+
+int RunRank(Cluster& cluster, int argc, char** argv) {
+  Options o;
+  if (const int status = ParseOnEveryRank(cluster, argc, argv, o)) return status;
+  DealtFrames dealt(cluster);
+  return RunFrames(o, dealt);
 }
 
 }  // namespace vkpt::internal

@@ -1,6 +1,7 @@
 // The runs of `vkpt` after its options are parsed: one process (Run), or one rank of an
-// MPI job (RunRank), each preparing the scene, rendering a session and writing its files
-// and reports; and the tools that render nothing (--list-devices, --diff).
+// MPI job (RunRank), each going through the same loop over frames (a single image is a
+// sequence of one): preparing the scene, rendering a session and writing its files and
+// reports; and the tools that render nothing (--list-devices, --diff).
 #pragma once
 
 #include "app/options.h"

@@ -18,6 +18,7 @@
 
 #include "cluster/chunk_message.h"
 #include "cluster/cluster.h"
+#include "cluster/rank_share.h"
 #include "render/film.h"
 
 namespace vkpt::internal {
@@ -38,14 +39,6 @@ using ChunkRenderer = std::function<FrameSums(uint32_t chunk, std::span<const ui
 // job (docs/testing.md), VKPT_TEST_CHUNK_DELAY_MS slows the rank down by that much per
 // chunk, and VKPT_TEST_FAIL_AFTER_CHUNKS=N makes it fail after N chunks of its own.
 ChunkRenderer ChunkRendererOf(FrameRenderer& frame, const ChunkPlan& plan);
-
-// What one rank did.
-struct RankShare {
-  std::string name;          // "rank 1 (host)"
-  uint32_t chunks = 0;       // chunks it rendered
-  uint64_t bytesSent = 0;    // its chunks' sums as sent to rank 0 (0 for rank 0)
-  double renderSeconds = 0;  // rendering its chunks, by its own clock
-};
 
 // Rank 0's side of a frame dealt among the ranks. The session (session/dealt_chunks.h)
 // opens the chunks before each decision point as it reaches it, and takes the chunks'

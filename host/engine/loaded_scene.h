@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "engine/render_backend.h"
 #include "engine/run_times.h"
 #include "engine/settings.h"
 #include "gltf/gltf_loader.h"
 #include "render/environment_map.h"
 #include "render/render_scene.h"
 #include "session/aov.h"
-#include "session/backend.h"
 #include "session/frame_memory.h"
 #include "shared/layout.h"
 #include "vk/context.h"

@@ -13,7 +13,7 @@
 
 #include <glm/glm.hpp>
 
-#include "cluster/chunk_dealer.h"
+#include "cluster/rank_share.h"
 #include "image/image.h"
 #include "render/denoise.h"
 #include "render/film.h"

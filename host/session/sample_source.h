@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "cluster/chunk_dealer.h"
+#include "cluster/rank_share.h"
 #include "render/film.h"
 
 namespace vkpt::internal {

@@ -1,4 +1,4 @@
-#include "session/backend.h"
+#include "engine/render_backend.h"
 
 #include "cpu/path_tracer.h"
 #include "vk/vk_denoise.h"
