@@ -73,7 +73,7 @@ struct Options {
   float envIntensity = vkpt::SceneOptions{}.environmentIntensity;  // --env-intensity: radiance scale
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;  // --splits
-  LightSampler lightSampler = LightSampler::kAuto;  // --light-sampler
+  LightSampler lightSampler = LightSampler::kAuto;     // --light-sampler
   bool textureLod = vkpt::RenderOptions{}.textureLod;  // --texture-lod cones (true) or none
   LoadLimits load;                      // --max-memory, --allow-external-uris
   std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)
