@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/options.h"
+#include "app/options_api.h"
 #include "app/scene_client.h"
 #include "test_util.h"
 #include "vkpt/api_terms.h"

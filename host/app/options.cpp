@@ -3,7 +3,7 @@
 #include <cstdlib>
 
 #include "app/option_table.h"
-#include "app/scene_client.h"
+#include "app/options_api.h"
 #include "session/budget.h"
 
 namespace vkpt::internal {

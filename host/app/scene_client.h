@@ -7,13 +7,9 @@
 
 #include "app/options.h"
 #include "session/sample_source.h"
-#include "vkpt/settings_schema.h"
 #include "vkpt/view.h"
 
 namespace vkpt::internal {
-
-// The options as the library's settings: what the library checks, the command line checks.
-ApiSettings ApiSettingsOf(const Options& o);
 
 class SceneClient {
  public:
