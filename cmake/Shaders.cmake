@@ -22,14 +22,15 @@ function(vkpt_compile_shader out_var source symbol)
   add_custom_command(
     OUTPUT "${header}" "${spv}"
     COMMAND "${CMAKE_COMMAND}" -E make_directory "${out_dir}"
-    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 "-I${PROJECT_SOURCE_DIR}/shaders" ${defines}
+    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 "-I${PROJECT_SOURCE_DIR}/shaders" "-I${VKPT_GPU_RECORDS_DIR}" ${defines}
             -o "${spv}" "${source}"
     COMMAND "${SPIRV_VAL}" --target-env vulkan1.2 "${spv}"
     # The depfile must name the first OUTPUT (the header), or make never rebuilds it
     # when an included header changes.
-    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 "-I${PROJECT_SOURCE_DIR}/shaders" ${defines}
+    COMMAND "${GLSLANG_VALIDATOR}" -V --target-env vulkan1.2 "-I${PROJECT_SOURCE_DIR}/shaders" "-I${VKPT_GPU_RECORDS_DIR}" ${defines}
             --depfile "${out_dir}/${symbol}.d" --vn "${symbol}" -o "${header}" "${source}"
     MAIN_DEPENDENCY "${source}"
+    DEPENDS ${VKPT_GPU_RECORDS_FILES}
     DEPFILE "${out_dir}/${symbol}.d"
     COMMENT "glslang: ${symbol} <- ${source}"
     VERBATIM)

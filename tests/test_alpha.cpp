@@ -72,7 +72,7 @@ Scene MaskedOccluderScene() {
   for (const SceneTriangle& t : s.triangles) s.uvs.push_back({{uv(t.v0), uv(t.v1), uv(t.v2)}, {}});
   s.images.push_back({"mask", 2, 2, {0, 0, 0, 127, 0, 0, 0, 128, 0, 0, 0, 128, 0, 0, 0, 127}});
   s.textures.push_back(TextureWithMode(0, 0u, true));
-  s.materials[1].baseColorTexture.texture = 0;
+  s.materials[1].texture(TextureSlot::kBaseColor).texture = 0;
   return s;
 }
 

@@ -40,7 +40,7 @@ Scene LitSquare(glm::vec3 toLight, const glm::u8vec3* texel, glm::vec4 tangent, 
     s.materials[0].normalScale = scale;
     s.images.push_back({"normal", 1, 1, {texel->r, texel->g, texel->b, 255}});
     s.textures.push_back(test::TextureWithMode(0, 0u));
-    s.materials[0].normalTexture.texture = 0;
+    s.materials[0].texture(TextureSlot::kNormal).texture = 0;
     s.uvs.assign(2, VertexUVs{});
     s.tangents.assign(2, VertexTangents{{tangent, tangent, tangent}});
   }

@@ -260,7 +260,7 @@ Agreement CompareWithFile(const std::string& path) {
   std::vector<glm::vec4> supplied;
   for (size_t i = 0; i < scene.triangles.size(); ++i) {
     const SceneTriangle& t = scene.triangles[i];
-    const MaterialTexture& ref = scene.materials[t.material].normalTexture;
+    const MaterialTexture& ref = scene.materials[t.material].texture(TextureSlot::kNormal);
     if (!ref.Present() || scene.normals.empty() || !scene.normals[i].Present()) continue;
     const VertexNormals& n = scene.normals[i];
     positions.insert(positions.end(), {t.v0, t.v1, t.v2});

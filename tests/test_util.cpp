@@ -450,7 +450,7 @@ Scene TexturedQuadScene() {
       0,
       shader::kWrapClampToEdge << shader::kTextureWrapSShift | shader::kWrapClampToEdge << shader::kTextureWrapTShift,
       true));
-  s.materials[0].baseColorTexture.texture = 0;
+  s.materials[0].texture(TextureSlot::kBaseColor).texture = 0;
   s.cameras.push_back(OrthographicAlongMinusZ(2.0f, 1.0f));
   return s;
 }

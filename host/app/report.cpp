@@ -45,7 +45,8 @@ std::string LayerNote(const Material& m) {
                        m.RefractsAsVolume() ? "" : "; unseen: it needs a transmissive volume of ior > 1");
   if (m.iridescence > 0.0f) {
     // Without a thickness texture the film is as thick as its maximum.
-    float thin = m.iridescenceThicknessTexture.Present() ? m.iridescenceThicknessMin : m.iridescenceThicknessMax;
+    float thin =
+        m.texture(TextureSlot::kIridescenceThickness).Present() ? m.iridescenceThicknessMin : m.iridescenceThicknessMax;
     std::snprintf(note + n, sizeof note - n, " iridescence %.3g (ior %.3g, %.4g-%.4g nm)", m.iridescence,
                   m.iridescenceIor, thin, m.iridescenceThicknessMax);
   }

@@ -66,8 +66,8 @@ std::string Shorten(std::string s) {
 // coat's, else its anisotropy texture's, else 0 for an anisotropic material; −1: it needs
 // none.
 int TangentUVSet(const Material& mat) {
-  for (const MaterialTexture* t : {&mat.normalTexture, &mat.clearcoatNormalTexture, &mat.anisotropyTexture})
-    if (t->Present()) return int(t->texCoord);
+  for (TextureSlot s : {TextureSlot::kNormal, TextureSlot::kClearcoatNormal, TextureSlot::kAnisotropy})
+    if (mat.texture(s).Present()) return int(mat.texture(s).texCoord);
   return mat.anisotropyStrength > 0.0f ? 0 : -1;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 #include "gltf/gltf_texture_images.h"
@@ -9,67 +10,20 @@
 namespace vkpt::internal {
 namespace {
 
-// A material's use of a texture: which of its textures, and whether its RGB is colour (sRGB).
-struct Slot {
-  MaterialTexture Material::*texture;
-  const char* field;
-  bool srgb;
-};
-const Slot kBaseColor{&Material::baseColorTexture, "pbrMetallicRoughness.baseColorTexture", true};
-const Slot kMetallicRoughness{&Material::metallicRoughnessTexture, "pbrMetallicRoughness.metallicRoughnessTexture",
-                              false};
-const Slot kEmissive{&Material::emissiveTexture, "emissiveTexture", true};
-const Slot kNormal{&Material::normalTexture, "normalTexture", false};
-// The material extensions' textures vkpt applies, and where each is read from.
-struct ExtensionSlot {
-  Slot slot;
-  const char* extension;
-  const char* field;
-};
-const ExtensionSlot kExtensionSlots[] = {
-    {{&Material::transmissionTexture, "extensions.KHR_materials_transmission.transmissionTexture", false},
-     "KHR_materials_transmission",
-     "transmissionTexture"},
-    {{&Material::specularTexture, "extensions.KHR_materials_specular.specularTexture", false},
-     "KHR_materials_specular",
-     "specularTexture"},
-    {{&Material::specularColorTexture, "extensions.KHR_materials_specular.specularColorTexture", true},
-     "KHR_materials_specular",
-     "specularColorTexture"},
-    {{&Material::clearcoatTexture, "extensions.KHR_materials_clearcoat.clearcoatTexture", false},
-     "KHR_materials_clearcoat",
-     "clearcoatTexture"},
-    {{&Material::clearcoatRoughnessTexture, "extensions.KHR_materials_clearcoat.clearcoatRoughnessTexture", false},
-     "KHR_materials_clearcoat",
-     "clearcoatRoughnessTexture"},
-    {{&Material::clearcoatNormalTexture, "extensions.KHR_materials_clearcoat.clearcoatNormalTexture", false},
-     "KHR_materials_clearcoat",
-     "clearcoatNormalTexture"},
-    {{&Material::sheenColorTexture, "extensions.KHR_materials_sheen.sheenColorTexture", true},
-     "KHR_materials_sheen",
-     "sheenColorTexture"},
-    {{&Material::sheenRoughnessTexture, "extensions.KHR_materials_sheen.sheenRoughnessTexture", false},
-     "KHR_materials_sheen",
-     "sheenRoughnessTexture"},
-    {{&Material::diffuseTransmissionTexture, "extensions.KHR_materials_diffuse_transmission.diffuseTransmissionTexture",
-      false},
-     "KHR_materials_diffuse_transmission",
-     "diffuseTransmissionTexture"},
-    {{&Material::diffuseTransmissionColorTexture,
-      "extensions.KHR_materials_diffuse_transmission.diffuseTransmissionColorTexture", true},
-     "KHR_materials_diffuse_transmission",
-     "diffuseTransmissionColorTexture"},
-    {{&Material::iridescenceTexture, "extensions.KHR_materials_iridescence.iridescenceTexture", false},
-     "KHR_materials_iridescence",
-     "iridescenceTexture"},
-    {{&Material::iridescenceThicknessTexture, "extensions.KHR_materials_iridescence.iridescenceThicknessTexture",
-      false},
-     "KHR_materials_iridescence",
-     "iridescenceThicknessTexture"},
-    {{&Material::anisotropyTexture, "extensions.KHR_materials_anisotropy.anisotropyTexture", false},
-     "KHR_materials_anisotropy",
-     "anisotropyTexture"},
-};
+// The textureInfo of a core texture slot of `mat` (TextureSlotInfo::path); tinygltf parses
+// these, and the extensions' (TextureReader::ExtensionTexture) are read from their JSON.
+tinygltf::TextureInfo CoreTexture(const tinygltf::Material& mat, const std::string& path) {
+  if (path == "pbrMetallicRoughness.baseColorTexture") return mat.pbrMetallicRoughness.baseColorTexture;
+  if (path == "pbrMetallicRoughness.metallicRoughnessTexture") return mat.pbrMetallicRoughness.metallicRoughnessTexture;
+  if (path == "emissiveTexture") return mat.emissiveTexture;
+  if (path != "normalTexture")
+    throw std::logic_error("gpu_records.def names a core texture the loader does not read: " + path);
+  tinygltf::TextureInfo normal;  // a normalTextureInfo is a textureInfo with a scale
+  normal.index = mat.normalTexture.index;
+  normal.texCoord = mat.normalTexture.texCoord;
+  normal.extensions = mat.normalTexture.extensions;
+  return normal;
+}
 
 using Wrap = TextureSampler::Wrap;
 using Mip = TextureSampler::Mip;
@@ -131,9 +85,10 @@ class TextureReader {
   TextureReader(const GltfSource& src, Scene& scene) : src_(src), scene_(scene) {}
 
   // Slot `slot` of materials[m] from `info` (a textureInfo; index −1: none).
-  void Read(uint32_t m, const Slot& slot, const tinygltf::TextureInfo& info) {
+  void Read(uint32_t m, uint32_t slot, const tinygltf::TextureInfo& info) {
     if (info.index < 0) return;
-    const std::string what = MaterialName(m) + "." + slot.field;
+    const TextureSlotInfo& s = kTextureSlotInfo[slot];
+    const std::string what = MaterialName(m) + "." + s.path;
     const std::string texture = "textures[" + std::to_string(info.index) + "]";
     if (TextureSource(src_, info.index) < 0) {
       if (src_.m.textures[info.index].extensions.count("KHR_texture_basisu"))
@@ -149,8 +104,8 @@ class TextureReader {
                                 "; vkpt reads TEXCOORD_0 and TEXCOORD_1, so the factor is used alone");
       return;
     }
-    ref.texture = TextureIndex(info.index, slot.srgb, what);
-    scene_.materials[m].*slot.texture = ref;
+    ref.texture = TextureIndex(info.index, s.srgb, what);
+    scene_.materials[m].textures[slot] = ref;
   }
 
   // The textureInfo `field` of materials[m]'s extension `extension` (index −1: none).
@@ -250,33 +205,29 @@ class TextureReader {
 // Every texture slot of materials[m], and its normal texture's scale.
 void ReadMaterialTextures(const GltfSource& src, uint32_t m, TextureReader& reader, Scene& scene) {
   const tinygltf::Material& mat = src.m.materials[m];
-  reader.Read(m, kBaseColor, mat.pbrMetallicRoughness.baseColorTexture);
-  reader.Read(m, kMetallicRoughness, mat.pbrMetallicRoughness.metallicRoughnessTexture);
-  reader.Read(m, kEmissive, mat.emissiveTexture);
-  tinygltf::TextureInfo normal;  // a normalTextureInfo is a textureInfo with a scale
-  normal.index = mat.normalTexture.index;
-  normal.texCoord = mat.normalTexture.texCoord;
-  normal.extensions = mat.normalTexture.extensions;
-  reader.Read(m, kNormal, normal);
+  for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+    const TextureSlotInfo& s = kTextureSlotInfo[slot];
+    reader.Read(m, slot, s.extension ? reader.ExtensionTexture(m, s.extension, s.field) : CoreTexture(mat, s.path));
+  }
   const double scale = mat.normalTexture.scale;
   if (!std::isfinite(scale) || std::abs(scale) > 1e6)
     src.Fail("materials[" + std::to_string(m) + "].normalTexture.scale is not a finite number of at most 1e6");
   scene.materials[m].normalScale = float(scale);
-  for (const ExtensionSlot& e : kExtensionSlots)
-    reader.Read(m, e.slot, reader.ExtensionTexture(m, e.extension, e.field));
 }
 
 }  // namespace
 
 bool IsAppliedExtensionTexture(const std::string& extension, const std::string& field) {
-  for (const ExtensionSlot& e : kExtensionSlots)
-    if (extension == e.extension && field == e.field) return true;
+  for (const TextureSlotInfo& s : kTextureSlotInfo)
+    if (s.extension && extension == s.extension && field == s.field) return true;
   return false;
 }
 
 bool UsesTangents(const Scene& scene) {
   for (const Material& m : scene.materials)
-    if (m.normalTexture.Present() || m.clearcoatNormalTexture.Present() || m.anisotropyStrength > 0.0f) return true;
+    if (m.texture(TextureSlot::kNormal).Present() || m.texture(TextureSlot::kClearcoatNormal).Present() ||
+        m.anisotropyStrength > 0.0f)
+      return true;
   return false;
 }
 

@@ -7,31 +7,9 @@
 namespace vkpt::internal {
 namespace {
 
-// A material's textures in the order of the shader's slots (kSlotBaseColor …).
-struct SlotTexture {
-  uint32_t slot;
-  MaterialTexture Material::*texture;
-};
-const SlotTexture kSlots[] = {
-    {shader::kSlotBaseColor, &Material::baseColorTexture},
-    {shader::kSlotMetallicRoughness, &Material::metallicRoughnessTexture},
-    {shader::kSlotEmissive, &Material::emissiveTexture},
-    {shader::kSlotNormal, &Material::normalTexture},
-    {shader::kSlotTransmission, &Material::transmissionTexture},
-    {shader::kSlotSpecular, &Material::specularTexture},
-    {shader::kSlotSpecularColor, &Material::specularColorTexture},
-    {shader::kSlotClearcoat, &Material::clearcoatTexture},
-    {shader::kSlotClearcoatRoughness, &Material::clearcoatRoughnessTexture},
-    {shader::kSlotClearcoatNormal, &Material::clearcoatNormalTexture},
-    {shader::kSlotSheenColor, &Material::sheenColorTexture},
-    {shader::kSlotSheenRoughness, &Material::sheenRoughnessTexture},
-    {shader::kSlotDiffuseTransmission, &Material::diffuseTransmissionTexture},
-    {shader::kSlotDiffuseTransmissionColor, &Material::diffuseTransmissionColorTexture},
-    {shader::kSlotIridescence, &Material::iridescenceTexture},
-    {shader::kSlotIridescenceThickness, &Material::iridescenceThicknessTexture},
-    {shader::kSlotAnisotropy, &Material::anisotropyTexture},
-};
-static_assert(sizeof kSlots / sizeof kSlots[0] == shader::kTextureSlots);
+// The scene's slots are the shaders' (both generated from gpu_records.def), in one order.
+static_assert(kTextureSlotCount == shader::kTextureSlots);
+static_assert(uint32_t(TextureSlot::kTransmission) == shader::kSlotTransmission);
 
 uint32_t AlphaBits(AlphaMode mode) {
   switch (mode) {
@@ -46,10 +24,10 @@ uint32_t AlphaBits(AlphaMode mode) {
 // extensions' slots) of the materials without.
 uint32_t TextureBits(const Material& m) {
   uint32_t bits = 0u;
-  for (const SlotTexture& s : kSlots) {
-    if (!(m.*s.texture).Present()) continue;
+  for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+    if (!m.textures[slot].Present()) continue;
     bits |= shader::kMaterialTextured;
-    if (s.slot >= shader::kSlotTransmission) bits |= shader::kMaterialExtensionTextured;
+    if (slot >= shader::kSlotTransmission) bits |= shader::kMaterialExtensionTextured;
   }
   return bits;
 }
@@ -91,12 +69,13 @@ shader::Material PackMaterial(const Material& m) {
 
 void PackTextureRefs(const Material& m, const std::vector<SceneTexture>& textures,
                      std::vector<shader::TextureRef>& refs) {
-  for (const SlotTexture& s : kSlots) {
-    const MaterialTexture& t = m.*s.texture;
-    const bool colour = shader::SlotIsSrgb(s.slot);
+  for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+    const MaterialTexture& t = m.textures[slot];
+    const bool colour = kTextureSlotInfo[slot].srgb;
     if (t.Present() && textures.at(t.texture).srgb != colour)
       throw Error("texture " + std::to_string(t.texture) + " holds " + (colour ? "data" : "sRGB colour") +
-                  ", but material slot " + std::to_string(s.slot) + " reads " + (colour ? "colour" : "data"));
+                  ", but material slot " + std::to_string(slot) + " (" + kTextureSlotInfo[slot].name + ") reads " +
+                  (colour ? "colour" : "data"));
     refs.push_back({t.Present() ? t.texture : shader::kInvalidIndex, t.texCoord, t.transformU.x, t.transformU.y,
                     t.transformU.z, t.transformV.x, t.transformV.y, t.transformV.z});
   }

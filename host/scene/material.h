@@ -4,9 +4,13 @@
 // (render/material_packing.h); nothing here knows it.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include <glm/glm.hpp>
+
+#include "scene/texture_slots.h"
 
 namespace vkpt::internal {
 
@@ -73,24 +77,12 @@ struct Material {
   // KHR_materials_dispersion: the volume's index varies with wavelength (shared/dispersion.h).
   float dispersion = 0.0f;  // 20 / the Abbe number Vd; 0: none
 
-  // The textures that scale the factors above (shared/material_textures.h says how).
-  MaterialTexture baseColorTexture;                 // RGB × baseColor, A × alpha (sRGB)
-  MaterialTexture metallicRoughnessTexture;         // G × roughness, B × metallic
-  MaterialTexture emissiveTexture;                  // RGB × emission (sRGB)
-  MaterialTexture normalTexture;                    // tangent-space normal, scaled by normalScale
-  MaterialTexture transmissionTexture;              // R × transmission
-  MaterialTexture specularTexture;                  // A × specular
-  MaterialTexture specularColorTexture;             // RGB × specularColor (sRGB)
-  MaterialTexture clearcoatTexture;                 // R × clearcoat
-  MaterialTexture clearcoatRoughnessTexture;        // G × clearcoatRoughness
-  MaterialTexture clearcoatNormalTexture;           // the coat's tangent-space normal, scaled by clearcoatNormalScale
-  MaterialTexture sheenColorTexture;                // RGB × sheenColor (sRGB)
-  MaterialTexture sheenRoughnessTexture;            // A × sheenRoughness
-  MaterialTexture diffuseTransmissionTexture;       // A × diffuseTransmission
-  MaterialTexture diffuseTransmissionColorTexture;  // RGB × diffuseTransmissionColor (sRGB)
-  MaterialTexture iridescenceTexture;               // R × iridescence
-  MaterialTexture iridescenceThicknessTexture;      // G: the thickness from its minimum (0) to its maximum (1)
-  MaterialTexture anisotropyTexture;                // RG direction in tangent space, B × anisotropyStrength
+  // The textures that scale the factors above, one per slot of the generated
+  // scene/texture_slots.h (declared in shaders/shared/gpu_records.def, which says what
+  // each slot scales; shared/material_textures.h applies them).
+  std::array<MaterialTexture, kTextureSlotCount> textures;
+  MaterialTexture& texture(TextureSlot s) { return textures[size_t(s)]; }
+  const MaterialTexture& texture(TextureSlot s) const { return textures[size_t(s)]; }
 
   // Whether the material refracts as the boundary of a volume, where alone its dispersion
   // is seen.
@@ -98,12 +90,8 @@ struct Material {
 
   // Whether some texture above is present.
   bool Textured() const {
-    for (const MaterialTexture* t :
-         {&baseColorTexture, &metallicRoughnessTexture, &emissiveTexture, &normalTexture, &transmissionTexture,
-          &specularTexture, &specularColorTexture, &clearcoatTexture, &clearcoatRoughnessTexture,
-          &clearcoatNormalTexture, &sheenColorTexture, &sheenRoughnessTexture, &diffuseTransmissionTexture,
-          &diffuseTransmissionColorTexture, &iridescenceTexture, &iridescenceThicknessTexture, &anisotropyTexture})
-      if (t->Present()) return true;
+    for (const MaterialTexture& t : textures)
+      if (t.Present()) return true;
     return false;
   }
 };
