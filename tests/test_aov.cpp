@@ -212,7 +212,7 @@ TEST(Aov, SppLayerFollowsTheNoise) {
   p.seed = 2;
   std::unique_ptr<FrameRenderer> adaptive = BeginCpuFrame(rs, p);
   RenderBudget budget;
-  budget.maxSpp = 256;
+  budget.spp = 256;
   budget.adaptive = true;
   budget.adaptiveThreshold = 4e-3;
   const RenderedFrame r = test::RenderUnderBudget(*adaptive, budget);

@@ -23,7 +23,9 @@ FrameRequest View(double orbit, double time = 0.0) {
   r.camera.orbit = orbit;
   r.picture.width = 24;
   r.picture.height = 16;
-  r.picture.spp = 4;
+  r.picture.maxDepth = 32;
+  r.picture.rrDepth = 3;
+  r.picture.textureLod = true;
   r.picture.time = time;
   return r;
 }
@@ -33,7 +35,7 @@ Image RenderOn(LoadedScene& scene, const FrameRequest& request) {
   const std::unique_ptr<FrameRenderer> renderer = scene.BeginFrame(frame.params, 0);
   LocalPasses source(*renderer, 4);
   SessionSettings settings;
-  settings.budget.maxSpp = request.picture.spp;
+  settings.budget.spp = 4;
   settings.budget.chunkSpp = 4;
   return RenderSession(source, settings).image;
 }

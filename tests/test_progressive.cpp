@@ -188,15 +188,15 @@ TEST(Progressive, DecisionPointsAreFixedSampleCounts) {
 
 // The budget the command line and the library both derive from what a user states.
 TEST(Progressive, BudgetDefaultsFollowWhatIsStated) {
-  EXPECT_EQ(BudgetFor({}).maxSpp, 64u);
+  EXPECT_EQ(BudgetFor({}).spp, 64u);
   EXPECT_FALSE(BudgetFor({}).adaptive);
-  EXPECT_EQ(BudgetFor({std::nullopt, 2.0, std::nullopt, std::nullopt}).maxSpp, kBudgetMaxSpp);
+  EXPECT_EQ(BudgetFor({std::nullopt, 2.0, std::nullopt, std::nullopt}).spp, kBudgetMaxSpp);
   const RenderBudget noise = BudgetFor({std::nullopt, std::nullopt, 0.004, std::nullopt});
-  EXPECT_EQ(noise.maxSpp, kBudgetMaxSpp);
+  EXPECT_EQ(noise.spp, kBudgetMaxSpp);
   EXPECT_TRUE(noise.adaptive);
   EXPECT_EQ(noise.adaptiveThreshold, 0.004);
   const RenderBudget stated = BudgetFor({100u, 2.0, 0.004, false, 5.0, 16});
-  EXPECT_EQ(stated.maxSpp, 100u);
+  EXPECT_EQ(stated.spp, 100u);
   EXPECT_FALSE(stated.adaptive);
   EXPECT_EQ(stated.seconds, 2.0);
   EXPECT_EQ(stated.checkpointSeconds, 5.0);
@@ -252,7 +252,7 @@ TEST(Adaptive, ANoisyNeighbourKeepsAPixelActiveAndStoppedPixelsStayStopped) {
 // The per-pixel sample counts of an adaptive render of the Cornell box, 32² up to 256 spp.
 RenderedFrame AdaptiveCornell(FrameRenderer& frame) {
   RenderBudget b;
-  b.maxSpp = 256;
+  b.spp = 256;
   b.adaptive = true;
   b.adaptiveThreshold = 4e-3;
   return test::RenderUnderBudget(frame, b);
@@ -359,7 +359,7 @@ TEST(Progressive, NoiseTargetIsReachedAgainstTheReference) {
   for (bool adaptive : {false, true}) {
     auto frame = BeginCpuFrame(c.cpu, c.Frame(128, 11));
     RenderBudget b;
-    b.maxSpp = 4096;
+    b.spp = 4096;
     b.noiseTarget = 1e-2;
     b.adaptive = adaptive;
     b.adaptiveThreshold = 1e-2;

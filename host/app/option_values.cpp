@@ -114,12 +114,10 @@ OptionValue OutValue() {
   return {"", [](Options& o, const GivenOption& g) { o.out = o.outGiven = g.value(); }, JsonOf(&Options::out)};
 }
 
+// --stats shows the bound the render takes, given or derived.
 OptionValue SppValue() {
   OptionValue v = Number(&Options::spp, SettingRange("spp"));
-  v.set = [number = v.set](Options& o, const GivenOption& g) {
-    number(o, g);
-    o.sppGiven = true;
-  };
+  v.json = [](const Options& o) { return std::to_string(o.Budget().spp); };
   return v;
 }
 

@@ -39,7 +39,6 @@ void Complete(Options& o) {
         "--compare renders both backends with the same samples; it takes no --time, --noise-target or --adaptive");
   if (o.compare && (!o.aovs.empty() || o.denoise))
     throw UsageError("--compare checks the backends against each other; it takes no --aov or --denoise");
-  if (!o.sppGiven) o.spp = BudgetFor({std::nullopt, o.time, o.noiseTarget, std::nullopt}).maxSpp;
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
   if (o.at && o.animation.empty()) throw UsageError(kTimeWithoutAnimation);
   if (o.frames && o.at) throw UsageError("--frames gives each frame its time (k / --fps); drop --at");

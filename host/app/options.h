@@ -29,8 +29,7 @@ struct Options {
   std::string out;  // default: <scene name>.png in the current directory
   std::string outGiven;  // --out exactly as given ("" when absent)
   std::optional<uint32_t> width, height;
-  uint32_t spp = 64;                  // the upper bound of samples per pixel
-  bool sppGiven = false;              // --spp was given (else a budget below may raise the bound)
+  std::optional<uint32_t> spp;        // --spp: the most samples a pixel takes (Budget() says the default)
   std::optional<double> time;         // --time: seconds of rendering
   std::optional<double> noiseTarget;  // --noise-target: estimated relMSE that ends the render
   std::optional<bool> adaptive;       // --adaptive / --no-adaptive; absent: on with --noise-target
@@ -83,7 +82,7 @@ struct Options {
   bool help = false;
   bool version = false;
 
-  // The render's budget; spp is already the bound (options.cpp fills it in from the others).
+  // The render's budget, as the library derives it (spp bound included).
   RenderBudget Budget() const { return BudgetFor({spp, time, noiseTarget, adaptive, checkpoint, chunkSpp}); }
 };
 

@@ -41,7 +41,7 @@ vkpt::RenderOptions RenderOptionsOf(const Options& o) {
   vkpt::RenderOptions r;
   r.width = o.width;
   r.height = o.height;
-  r.spp = o.spp;  // the bound, already raised by a time or noise target (options.cpp)
+  r.spp = o.spp;
   r.seconds = o.time;
   r.noiseTarget = o.noiseTarget;
   r.adaptive = o.adaptive;

@@ -21,7 +21,7 @@ RenderedFrame RenderReference(Prepared& p, const Options& o) {
   const std::unique_ptr<FrameRenderer> frame = cpu.BeginFrame(p.view.prepared.params, 0);
   LocalPasses source(*frame, o.chunkSpp);
   SessionSettings settings;
-  settings.budget.maxSpp = o.spp;
+  settings.budget.spp = o.Budget().spp;
   settings.budget.chunkSpp = o.chunkSpp;
   settings.stop = GracefulStop::Arrived;
   SessionHooks hooks;

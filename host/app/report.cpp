@@ -68,7 +68,7 @@ std::string StopReasonText(const RenderedFrame& frame, const Options& o) {
     case StopReason::kSignal:
       std::snprintf(why, sizeof why, "%s", GracefulStop::Signal() == SIGTERM ? "SIGTERM" : "SIGINT");
       break;
-    default: std::snprintf(why, sizeof why, "--spp %u", o.spp); break;
+    default: std::snprintf(why, sizeof why, "--spp %u", o.Budget().spp); break;
   }
   return why;
 }

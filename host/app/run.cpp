@@ -202,7 +202,7 @@ class DealtFrames : public FrameWay {
   // A signal makes rank 0 stop dealing; the others finish their chunk.
   int Render(const Options& f, Prepared& p, std::string* frameStats, double& seconds) override {
     if (!stop_) stop_.emplace();
-    const ChunkPlan plan{f.spp, f.chunkSpp};
+    const ChunkPlan plan{f.Budget().spp, f.chunkSpp};
     FrameRenderer& renderer = *p.view.renderer;
     int status = 0;
     if (!Reports()) {

@@ -132,7 +132,7 @@ shader::FrameParams LoadedScene::FrameParams(const Camera& cam, glm::uvec2 size,
   shader::FrameParams params = MakeFrameParams(rs_, cam, size.x, size.y);
   params.seed = p.seed;
   params.sampleBegin = 0;
-  params.sampleCount = p.spp;
+  params.sampleCount = 0;  // each pass of a render sets its own (FrameRenderer::AddSamples)
   params.maxDepth = p.maxDepth;
   params.rrDepth = p.rrDepth;
   params.textureLod = p.textureLod ? 1u : 0u;

@@ -48,10 +48,12 @@ struct CameraSettings {
   std::optional<double> orbit;  // degrees about the up axis through the look-at point
 };
 
+// No defaults here: the library sets every field from its public RenderOptions, whose
+// initialisers are the defaults (vkpt/client.cpp).
 struct PictureSettings {
   std::optional<uint32_t> width, height;  // a missing side follows the camera's aspect ratio
-  uint32_t seed = 0, spp = 64, maxDepth = 32, rrDepth = 3;
-  bool textureLod = true;
+  uint32_t seed = 0, maxDepth = 0, rrDepth = 0;
+  bool textureLod = false;
   // Constant environment radiance; absent: white for a scene without light sources (so any
   // model is visible), black otherwise. Ignored with an environment map.
   std::optional<glm::vec3> background;

@@ -33,7 +33,7 @@ uint32_t NextDecisionPoint(uint32_t spp, uint32_t chunkSpp) {
 }
 
 double FinishedFraction(const RenderBudget& budget, double spp, double seconds, double noise) {
-  double f = spp / budget.maxSpp;
+  double f = spp / budget.spp;
   if (budget.seconds) f = std::max(f, seconds / *budget.seconds);
   if (budget.noiseTarget && std::isfinite(noise)) f = std::max(f, *budget.noiseTarget / noise);
   return std::min(f, 1.0);

@@ -12,11 +12,13 @@
 
 namespace vkpt::internal {
 
-// The spp bound of a render given a time or noise target but no spp.
+// The spp bound of a render given no spp: kDefaultSpp, or kBudgetMaxSpp given a time or
+// noise target.
+constexpr uint32_t kDefaultSpp = 64;
 constexpr uint32_t kBudgetMaxSpp = 65536;
 
 struct RenderBudget {
-  uint32_t maxSpp = 64;               // --spp: no pixel takes more samples
+  uint32_t spp = kDefaultSpp;         // --spp: no pixel takes more samples
   std::optional<double> seconds;      // --time: rendering seconds
   std::optional<double> noiseTarget;  // --noise-target: estimated relMSE to reach
   bool adaptive = false;              // --adaptive: converged pixels stop taking samples
@@ -29,7 +31,7 @@ struct RenderBudget {
 // A budget as a user states it, the command line and the library alike; what is not
 // stated takes its default here.
 struct BudgetRequest {
-  std::optional<uint32_t> spp;  // default 64, or kBudgetMaxSpp given a time or noise target
+  std::optional<uint32_t> spp;  // default kDefaultSpp, or kBudgetMaxSpp given a time or noise target
   std::optional<double> seconds;
   std::optional<double> noiseTarget;
   std::optional<bool> adaptive;  // default: on with a noise target, whose threshold it takes
@@ -39,7 +41,7 @@ struct BudgetRequest {
 // Inline: the command line's option parsing (and its fuzz target) needs it alone.
 inline RenderBudget BudgetFor(const BudgetRequest& r) {
   RenderBudget b;
-  b.maxSpp = r.spp.value_or(r.seconds || r.noiseTarget ? kBudgetMaxSpp : 64);
+  b.spp = r.spp.value_or(r.seconds || r.noiseTarget ? kBudgetMaxSpp : kDefaultSpp);
   b.seconds = r.seconds;
   b.noiseTarget = r.noiseTarget;
   b.adaptive = r.adaptive.value_or(r.noiseTarget.has_value());

@@ -28,15 +28,15 @@ class FrameLoop {
   RenderedFrame Run() {
     while (!stoppedBy_.has_value()) {
       const uint32_t point = budget_.Decisions() ? NextDecisionPoint(done_, budget_.chunkSpp) : UINT32_MAX;
-      const uint32_t n = Step(std::min(budget_.maxSpp, point));
+      const uint32_t n = Step(std::min(budget_.spp, point));
       if (n == 0) {
-        stoppedBy_ = done_ >= budget_.maxSpp ? StopReason::kSpp : stopped_ ? StopReason::kSignal : StopReason::kTime;
+        stoppedBy_ = done_ >= budget_.spp ? StopReason::kSpp : stopped_ ? StopReason::kSignal : StopReason::kTime;
         break;
       }
       std::string line = PassLine(n);
       if (done_ == point) line += Judge();
       if (hooks_.report) hooks_.report(line);
-      if (!stoppedBy_ && done_ < budget_.maxSpp) Checkpoint();
+      if (!stoppedBy_ && done_ < budget_.spp) Checkpoint();
     }
     return Result();
   }

@@ -83,7 +83,6 @@ FrameRequest ToRequest(const vkpt::Camera& c, const vkpt::RenderOptions& o, cons
   p.width = o.width;
   p.height = o.height;
   p.seed = o.seed;
-  p.spp = ToBudget(o, client).maxSpp;
   p.maxDepth = o.maxDepth;
   p.rrDepth = o.rrDepth;
   p.textureLod = o.textureLod;
