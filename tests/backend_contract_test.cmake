@@ -9,7 +9,8 @@
 cmake_minimum_required(VERSION 3.25)
 
 set(contract_file "shaders/shared/backend_contract.h")
-set(cpp_estimator shaders/shared/cpp_prelude.h host/render/scene_access.h host/cpu/cpu_trace.h)
+set(cpp_estimator shaders/shared/cpp_prelude.h host/render/scene_access.h host/cpu/cpu_trace.h
+    host/cpu/light_importances_sse2.h)
 set(glsl_estimator shaders/shared/glsl_prelude.h shaders/scene_constants.glsl shaders/scene_fetch.glsl
     shaders/traverse.glsl)
 set(cpp_denoiser shaders/shared/cpp_prelude.h host/render/denoise.cpp)

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <random>
 
+#include "cpu/light_importances_sse2.h"  // first: the walk below takes the CPU's importances
 #include "cpu/path_tracer.h"
 #include "gltf/gltf_loader.h"
 #include "render/light_table.h"
@@ -206,7 +207,7 @@ TEST(LightTree, EveryLightThatReachesAPointCanBeChosenThere) {
   EXPECT_GT(mutant, 100) << "a tree whose orientation bounds are too narrow must be caught";
 }
 
-// LightNodeImportances (four nodes at once: SSE2 lanes on the CPU) gives what
+// LightNodeImportancesSse2 (four nodes at once, the CPU's) gives what
 // LightNodeImportance gives each node, exactly, at points far from, near and inside the
 // nodes' spheres and at their centres (a point light's), with and without a surface normal;
 // a lane of no node gives 0, and every importance is finite.
@@ -225,7 +226,7 @@ TEST(LightTree, FourNodeImportancesAreEachNodes) {
                                  : glm::vec3(rng.InBox(-5.0, 15.0));
     if (trial % 11 == 3) p = near.center;
     const glm::vec3 n = trial % 4 == 0 ? glm::vec3(0.0f) : glm::vec3(rng.Direction());
-    const shader::LightImportances four = shader::LightNodeImportances(rs, ids, p, n);
+    const shader::LightImportances four = LightNodeImportancesSse2(rs, ids, p, n);
     for (int lane = 0; lane < 4; ++lane) {
       const glm::vec2 one = ids[lane] == shader::kInvalidIndex
                                 ? glm::vec2(0.0f)

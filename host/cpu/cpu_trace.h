@@ -5,6 +5,7 @@
 // their own namespaces.
 #pragma once
 
+#include "cpu/light_importances_sse2.h"
 #include "cpu/path_tracer.h"
 #include "cpu/traversal.h"
 #include "render/render_scene.h"

@@ -51,6 +51,8 @@
 //   [function] TraceOccluded            bool TraceOccluded(VKPT_SCENE_PARAM …same…): any such hit
 //   [capability] VKPT_LIGHT_TYPES       lights.h: the light types in the table (bit 1 << kLight*)
 //   [capability] VKPT_LIGHT_TREE        light_tree.h: the scene has a light tree
+//   [capability] VKPT_LIGHT_IMPORTANCES(nodes, p, n)  light_tree.h: LightNodeImportancesEach's
+//                                       results, computed the backend's way (the CPU's SSE2)
 //   [capability] VKPT_GLOSSY_MATERIALS  bsdf.h: some material is not Lambertian
 //   [capability] VKPT_SMOOTH_NORMALS    shading_frame.h: some triangle has vertex normals
 //   [capability] VKPT_ENVIRONMENT_MAP   environment.h: the scene has an environment map

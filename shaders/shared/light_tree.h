@@ -29,6 +29,11 @@
 #ifndef VKPT_LIGHT_TREE
 #define VKPT_LIGHT_TREE true
 #endif
+// A backend may compute the four importances of a step its own way (the CPU in SSE2
+// lanes, cpu/light_importances_sse2.h), with the same results.
+#ifndef VKPT_LIGHT_IMPORTANCES
+#define VKPT_LIGHT_IMPORTANCES(nodes, p, n) LightNodeImportancesEach(VKPT_SCENE_ARG nodes, p, n)
+#endif
 
 VKPT_BEGIN_NAMESPACE
 
@@ -110,7 +115,7 @@ VKPT_FN void DescendLightTree(VKPT_SCENE_PARAM VKPT_INOUT(LightTreeWalk) w, vec3
   uvec4 candidates =
       uvec4(leftLeaf ? left : left + 1u, leftLeaf ? kInvalidIndex : RightLightNode(left, w.first, leftSplit),
             rightLeaf ? right : right + 1u, rightLeaf ? kInvalidIndex : RightLightNode(right, split, rightSplit));
-  LightImportances imp = LightNodeImportances(VKPT_SCENE_ARG candidates, p, n);
+  LightImportances imp = VKPT_LIGHT_IMPORTANCES(candidates, p, n);
   vec2 leftA = vec2(imp.bound.x, imp.estimate.x);
   vec2 leftB = vec2(imp.bound.y, imp.estimate.y);
   vec2 rightA = vec2(imp.bound.z, imp.estimate.z);
