@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gltf_builder.h"
+#include "image/aov_files.h"
 #include "scene/scene_ids.h"
 #include "session/aov.h"
 #include "test_util.h"

@@ -10,9 +10,9 @@
 
 #include "bvh/bvh.h"
 #include "engine/settings.h"
+#include "image/aov_layer.h"
 #include "image/view_transform.h"
 #include "scene/load_limits.h"
-#include "session/aov.h"
 #include "session/budget.h"
 #include "session/chunked_frame.h"
 #include "vkpt/vkpt.h"
@@ -76,7 +76,7 @@ struct Options {
   bool textureLod = vkpt::RenderOptions{}.textureLod;  // --texture-lod cones (true) or none
   LoadLimits load;                      // --max-memory, --allow-external-uris
   std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)
-  std::vector<Aov> aovs;                // --aov: written with the image (session/aov.h), in the order given
+  std::vector<Aov> aovs;                // --aov: written with the image (image/aov_files.h), in the order given
   bool denoise = false;                 // --denoise: --out denoised (render/denoise.h), the raw image beside it
   bool verbose = false;
   bool help = false;

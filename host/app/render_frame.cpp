@@ -8,6 +8,7 @@
 
 #include "app/report.h"
 #include "app/run_stats.h"
+#include "image/aov_files.h"
 #include "image/image.h"
 #include "session/aov.h"
 #include "session/local_passes.h"

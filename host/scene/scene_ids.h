@@ -1,4 +1,4 @@
-// The labels of the id AOVs (session/aov.h): which glTF node, material and mesh instance
+// The labels of the id AOVs (image/aov_layer.h): which glTF node, material and mesh instance
 // a scene triangle came from, and what each id names.
 #pragma once
 

@@ -3,6 +3,7 @@
 // is the public image and Image the engine's (vkpt::internal).
 #include <utility>
 
+#include "image/aov_files.h"
 #include "image/image.h"
 #include "image/view_transform.h"
 #include "session/aov.h"
