@@ -184,7 +184,7 @@ TEST(Options, RangeErrorsReadAsPeopleWriteThem) {
   EXPECT_EQ(ErrorOf({"--exposure", "nan"}), "--exposure must be in [-64, 64], got nan");
   EXPECT_EQ(ErrorOf({"--spp", "4x"}), "--spp expects a number, got \"4x\"");
   EXPECT_EQ(ErrorOf({"--seed", "-1"}), "--seed expects a number, got \"-1\"");
-  EXPECT_EQ(ErrorOf({"--backend", "foo"}), "--backend must be auto, vulkan or cpu, got \"foo\"");
+  EXPECT_EQ(ErrorOf({"--backend", "foo"}), "--backend must be auto, cpu or vulkan, got \"foo\"");
   EXPECT_EQ(ErrorOf({"--splits", "sbvh"}), "--splits must be auto, object or spatial, got \"sbvh\"");
   EXPECT_EQ(ErrorOf({"--texture-lod", "auto"}), "--texture-lod must be cones or none, got \"auto\"");
   EXPECT_EQ(ErrorOf({"--aov", "albedo,glow"}),
@@ -209,7 +209,7 @@ TEST(Options, HelpIsTheTable) {
   const std::string help = HelpText();
   for (const OptionDef& def : OptionTable()) EXPECT_NE(help.find("  " + def.Synopsis()), std::string::npos);
   EXPECT_NE(help.find("(values: [1, 15]) [default: 8]"), std::string::npos) << help;
-  EXPECT_NE(help.find("(values: auto, vulkan, cpu) [default: auto]"), std::string::npos) << help;
+  EXPECT_NE(help.find("(values: auto, cpu, vulkan) [default: auto]"), std::string::npos) << help;
   EXPECT_EQ(help.find('`'), std::string::npos) << help;
   std::istringstream lines(help);
   for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 92u) << line;

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <utility>
 
+#include "vkpt/setting_choices.h"
+
 namespace vkpt::internal {
 namespace {
 
@@ -62,7 +64,7 @@ std::vector<OptionDef> DeviceRows() {
   return {
       Row({"--backend"}, "NAME",
           "renderer: `vulkan` (compute shader), `cpu` (reference) or `auto` (vulkan if a device exists)", "auto",
-          Choice(&O::backend, {{"auto", Backend::Auto}, {"vulkan", Backend::Vulkan}, {"cpu", Backend::Cpu}})),
+          Choice(&O::backend, BackendChoices())),
       Row({"--device"}, "N|NAME", "Vulkan device by index or name substring", "discrete > integrated > virtual > CPU",
           Text(&O::device, "a device index or name")),
       Row({"--list-devices"}, "", "list Vulkan devices and exit", "", NoStats(Flag(&O::listDevices))),
@@ -136,9 +138,7 @@ std::vector<OptionDef> SceneRows() {
       Row({"--light-sampler"}, "MODE",
           "how light sampling chooses among emissive triangles, point and spot lights: `tree` (by how much each may "
           "light the shading point: a light tree), `power` (by power alone) or `auto` (the tree from 8 such lights on)",
-          "auto",
-          Choice(&O::lightSampler,
-                 {{"auto", LightSampler::kAuto}, {"power", LightSampler::kPower}, {"tree", LightSampler::kTree}})),
+          "auto", Choice(&O::lightSampler, LightSamplerChoices())),
       Row({"--leaf-size"}, "N", "maximum triangles per BVH leaf", "8", Number(&O::leafSize, {1, 15})),
       Row({"--splits"}, "MODE",
           "how the BVH divides the scene: `object`, `spatial` (SBVH) or `auto` (the lower SAH cost)", "auto",

@@ -33,7 +33,7 @@ Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error,
 
 // The checks between options, and what follows from them (the --spp bound, --out's name).
 void Complete(Options& o) {
-  if (o.compare && o.backend != Backend::Auto) throw UsageError("--compare uses both backends; drop --backend");
+  if (o.compare && o.backend != vkpt::Backend::Auto) throw UsageError("--compare uses both backends; drop --backend");
   if (o.compare && (o.time || o.noiseTarget || o.Budget().adaptive))
     throw UsageError(
         "--compare renders both backends with the same samples; it takes no --time, --noise-target or --adaptive");

@@ -39,7 +39,7 @@ struct Options {
   uint32_t chunkSpp = vkpt::RenderOptions{}.chunkSpp;  // --chunk
   uint32_t maxDepth = vkpt::RenderOptions{}.maxDepth;
   uint32_t rrDepth = vkpt::RenderOptions{}.rrDepth;
-  Backend backend = Backend::Auto;  // Vulkan when a device exists, else the CPU
+  vkpt::Backend backend = vkpt::SceneOptions{}.backend;  // Auto: Vulkan when a device exists, else the CPU
   std::string device;               // --device N|substring
   bool listDevices = false;
   bool validation = false;          // --validation or VKPT_VALIDATION=1
@@ -72,8 +72,8 @@ struct Options {
   float envIntensity = vkpt::SceneOptions{}.environmentIntensity;  // --env-intensity: radiance scale
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;  // --splits
-  LightSampler lightSampler = LightSampler::kAuto;     // --light-sampler
-  bool textureLod = vkpt::RenderOptions{}.textureLod;  // --texture-lod cones (true) or none
+  vkpt::LightSampler lightSampler = vkpt::SceneOptions{}.lightSampler;  // --light-sampler
+  bool textureLod = vkpt::RenderOptions{}.textureLod;                   // --texture-lod cones (true) or none
   LoadLimits load;                      // --max-memory, --allow-external-uris
   std::string stats;                    // --stats FILE.json: the run described as JSON (app/run_stats.h)
   std::vector<Aov> aovs;                // --aov: written with the image (image/aov_files.h), in the order given

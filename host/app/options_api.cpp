@@ -7,9 +7,7 @@ namespace {
 
 vkpt::SceneOptions SceneOptionsOf(const Options& o) {
   vkpt::SceneOptions s;
-  s.backend = o.backend == Backend::Cpu      ? vkpt::Backend::Cpu
-              : o.backend == Backend::Vulkan ? vkpt::Backend::Vulkan
-                                             : vkpt::Backend::Auto;
+  s.backend = o.backend;
   s.device = o.device;
   s.validation = o.validation;
   s.threads = o.threads;
@@ -20,9 +18,7 @@ vkpt::SceneOptions SceneOptionsOf(const Options& o) {
   s.animation = o.animation;
   s.environment = o.env;
   s.environmentIntensity = o.envIntensity;
-  s.lightSampler = o.lightSampler == LightSampler::kTree    ? vkpt::LightSampler::Tree
-                   : o.lightSampler == LightSampler::kPower ? vkpt::LightSampler::Power
-                                                            : vkpt::LightSampler::Auto;
+  s.lightSampler = o.lightSampler;
   return s;
 }
 

@@ -43,7 +43,7 @@ Prepared Prepare(const Options& o, bool report, uint32_t ranks) {
   CheckOutputPath(o.out);  // fail before a long render, not after
   if (!o.stats.empty()) CheckWritablePath(o.stats, "a stats");
   // lavapipe reads LP_NUM_THREADS when the device is created: --threads applies to it too.
-  if (o.threads && (o.backend != Backend::Cpu || o.compare))
+  if (o.threads && (o.backend != vkpt::Backend::Cpu || o.compare))
     setenv("LP_NUM_THREADS", std::to_string(o.threads).c_str(), 1);
   p.client = std::make_unique<SceneClient>(o, LogFor(o, report));
   PrepareFrame(p, o, report, ranks);

@@ -74,7 +74,7 @@ int Attempt(const std::function<void()>& step, std::string* message) {
 // The options that must be the same on every rank: all but where and how each renders.
 uint64_t FrameKey(const Options& o, Prepared& p) {
   Options shared = o;
-  shared.backend = Backend::Auto;
+  shared.backend = vkpt::Backend::Auto;
   shared.device.clear();
   shared.threads = 0;
   shared.batch = 0;

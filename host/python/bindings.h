@@ -14,10 +14,10 @@ namespace vkpt::python {
 
 namespace py = pybind11;
 
-// "auto", "cpu" or "vulkan"; ValueError for anything else.
+// A name of vkpt/setting_choices.h's BackendChoices; vkpt.SettingError (a ValueError) else.
 Backend BackendFrom(const std::string& name);
 
-// "auto", "power" or "tree"; ValueError for anything else.
+// A name of LightSamplerChoices; vkpt.SettingError (a ValueError) else.
 LightSampler LightSamplerFrom(const std::string& name);
 
 // None (the file's first camera), an int (the file's camera of that index) or a

@@ -5,23 +5,26 @@
 #include <pybind11/stl.h>
 
 #include "python/bindings.h"
+#include "vkpt/setting_choices.h"
 
 namespace vkpt::python {
 
 using namespace pybind11::literals;
 
-Backend BackendFrom(const std::string& name) {
-  if (name == "auto") return Backend::Auto;
-  if (name == "cpu") return Backend::Cpu;
-  if (name == "vulkan") return Backend::Vulkan;
-  throw py::value_error("backend must be \"auto\", \"cpu\" or \"vulkan\", got \"" + name + "\"");
+// A value of the schema's choices, its refusal a vkpt.SettingError (a ValueError).
+template <class E>
+E ChosenFor(const std::string& key, const internal::Choices<E>& choices, const std::string& name) {
+  try {
+    return internal::Chosen(key, choices, name);
+  } catch (const internal::SettingError& e) {
+    throw vkpt::SettingError(e.what());
+  }
 }
 
+Backend BackendFrom(const std::string& name) { return ChosenFor("backend", internal::BackendChoices(), name); }
+
 LightSampler LightSamplerFrom(const std::string& name) {
-  if (name == "auto") return LightSampler::Auto;
-  if (name == "power") return LightSampler::Power;
-  if (name == "tree") return LightSampler::Tree;
-  throw py::value_error("light_sampler must be \"auto\", \"power\" or \"tree\", got \"" + name + "\"");
+  return ChosenFor("light_sampler", internal::LightSamplerChoices(), name);
 }
 
 Camera CameraFrom(const py::object& camera) {

@@ -1,0 +1,34 @@
+// The names of the choice settings' values, each written once: the command line's
+// --backend and --light-sampler and Python's backend= and light_sampler= read them here.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vkpt/settings_schema.h"
+
+namespace vkpt::internal {
+
+template <class E>
+using Choices = std::vector<std::pair<std::string, E>>;
+
+const Choices<vkpt::Backend>& BackendChoices();            // auto, cpu, vulkan
+const Choices<vkpt::LightSampler>& LightSamplerChoices();  // auto, power, tree
+
+// "\"auto\", \"cpu\" or \"vulkan\"".
+std::string QuotedNames(const std::vector<std::string>& names);
+
+// The value named `name` among `choices` of the setting `key`, else a SettingError in
+// Python's terms: backend must be "auto", "cpu" or "vulkan", got "gpu".
+template <class E>
+E Chosen(const std::string& key, const Choices<E>& choices, const std::string& name) {
+  std::vector<std::string> names;
+  for (const auto& [n, value] : choices) {
+    if (n == name) return value;
+    names.push_back(n);
+  }
+  throw SettingError(key + " must be " + QuotedNames(names) + ", got \"" + name + "\"");
+}
+
+}  // namespace vkpt::internal
