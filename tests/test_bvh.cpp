@@ -85,6 +85,33 @@ uint32_t CheckSubtree(const RenderScene& rs, uint32_t i, uint32_t skip, uint32_t
   return CheckSubtree(rs, b, skip, maxLeaf, seen, leafTriangles, spatial);
 }
 
+// A leaf of the wide layout (CheckWideLayout): its packets copy its triangles exactly,
+// each counted in `inPackets`, inside `box` (spatial splits: meeting it; no box: the root
+// leaf), lanes past the count unused.
+void CheckWideLeaf(const RenderScene& rs, uint32_t code, const Bounds3f& box, bool spatial,
+                   std::vector<int>& inPackets) {
+  const BvhWideLayout& w = rs.wideLayout;
+  const uint32_t count = code & 15u;
+  ASSERT_LE((code >> 4) + (count + 3) / 4, w.packets.size());
+  for (uint32_t k = 0; k < (count + 3) / 4 * 4; ++k) {
+    const TrianglePacket& p = w.packets[(code >> 4) + k / 4];
+    const uint32_t lane = k % 4, i = p.index[lane];
+    if (k >= count) {
+      EXPECT_EQ(i, shader::kInvalidIndex);
+      continue;
+    }
+    ASSERT_LT(i, rs.triangles.size());
+    ++inPackets[i];
+    const shader::Triangle& t = rs.triangles[i];
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_TRUE(p.v0[axis][lane] == t.v0[axis] && p.e1[axis][lane] == t.e1[axis] && p.e2[axis][lane] == t.e2[axis]);
+    const Bounds3f tb = test::TriangleBounds(t);
+    if (box.Empty()) continue;  // the root leaf: no box
+    if (spatial) EXPECT_FALSE((Bounds3f{glm::max(box.lo, tb.lo), glm::min(box.hi, tb.hi)}.Empty()));
+    else EXPECT_TRUE(box.Contains(tb));
+  }
+}
+
 // The CPU's wide layout of copy 0 (bvh/wide_layout.h): every node reached once, after its
 // parent; each used lane's box contains its child's boxes or its leaf's triangles (with
 // spatial splits: meets them), packets copy their triangles exactly, and every leaf-order
@@ -94,30 +121,9 @@ uint32_t CheckSubtree(const RenderScene& rs, uint32_t i, uint32_t skip, uint32_t
 void CheckWideLayout(const RenderScene& rs, bool spatial) {
   const BvhWideLayout& w = rs.wideLayout;
   std::vector<int> inPackets(rs.triangles.size(), 0);
-  auto checkLeaf = [&](uint32_t code, const Bounds3f& box) {
-    const uint32_t count = code & 15u;
-    ASSERT_LE((code >> 4) + (count + 3) / 4, w.packets.size());
-    for (uint32_t k = 0; k < (count + 3) / 4 * 4; ++k) {
-      const TrianglePacket& p = w.packets[(code >> 4) + k / 4];
-      const uint32_t lane = k % 4, i = p.index[lane];
-      if (k >= count) {
-        EXPECT_EQ(i, shader::kInvalidIndex);
-        continue;
-      }
-      ASSERT_LT(i, rs.triangles.size());
-      ++inPackets[i];
-      const shader::Triangle& t = rs.triangles[i];
-      for (int axis = 0; axis < 3; ++axis)
-        EXPECT_TRUE(p.v0[axis][lane] == t.v0[axis] && p.e1[axis][lane] == t.e1[axis] && p.e2[axis][lane] == t.e2[axis]);
-      const Bounds3f tb = test::TriangleBounds(t);
-      if (box.Empty()) continue;  // the root leaf: no box
-      if (spatial) EXPECT_FALSE((Bounds3f{glm::max(box.lo, tb.lo), glm::min(box.hi, tb.hi)}.Empty()));
-      else EXPECT_TRUE(box.Contains(tb));
-    }
-  };
   if (w.nodes.empty()) {
     ASSERT_TRUE(IsLeafCode(w.rootLeaf));
-    checkLeaf(w.rootLeaf, Bounds3f{});
+    CheckWideLeaf(rs, w.rootLeaf, Bounds3f{}, spatial, inPackets);
   } else {
     EXPECT_EQ(w.rootLeaf, 0u);
     std::vector<int> reached(w.nodes.size(), 0);
@@ -139,7 +145,7 @@ void CheckWideLayout(const RenderScene& rs, bool spatial) {
         EXPECT_EQ(used++, k) << "node " << index << ": used lanes come first";
         EXPECT_TRUE(parentBox.Contains(box)) << "node " << index << " lane " << k;
         if (IsLeafCode(n.child[k])) {
-          checkLeaf(n.child[k], box);
+          CheckWideLeaf(rs, n.child[k], box, spatial, inPackets);
         } else {
           ++inner;
           EXPECT_GT(n.child[k] >> 4, index) << "a child follows its parent";

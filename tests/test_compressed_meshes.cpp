@@ -267,53 +267,50 @@ std::string EncodeIndices(const std::vector<uint16_t>& indices, bool sequence) {
   return Bytes(out);
 }
 
-// The grid with every stream meshopt-compressed: positions lossless; normals as
-// octahedral 8-bit snorm (KHR_mesh_quantization); UVs through the exponential filter;
-// indices as TRIANGLES or as an INDICES sequence. The fallback buffer has no uri.
-GltfBuilder MeshoptGrid(const Grid& g, bool sequence, const std::string& cutPositions = "") {
-  GltfBuilder b;
-  AddTexturedMaterial(b);
+// A meshopt stream: its encoded bytes and what they decode to.
+struct EncodedStream {
+  std::string bytes;
+  size_t count, stride;
+  std::string mode, filter;
+};
+
+// The grid's streams: positions lossless (or `cutPositions`); normals as octahedral 8-bit
+// snorm (KHR_mesh_quantization); UVs through the exponential filter; indices as
+// TRIANGLES or as an INDICES sequence.
+std::vector<EncodedStream> GridStreams(const Grid& g, bool sequence, const std::string& cutPositions) {
   const size_t n = g.Vertices();
+  std::vector<float> four;
+  for (size_t i = 0; i < n; ++i)
+    four.insert(four.end(), {g.normals[3 * i], g.normals[3 * i + 1], g.normals[3 * i + 2], 0});
   std::vector<int8_t> oct(n * 4);
-  meshopt_encodeFilterOct(
-      oct.data(), n, 4, 8,
-      [&] {
-        std::vector<float> four;
-        for (size_t i = 0; i < n; ++i)
-          four.insert(four.end(), {g.normals[3 * i], g.normals[3 * i + 1], g.normals[3 * i + 2], 0});
-        return four;
-      }()
-          .data());
+  meshopt_encodeFilterOct(oct.data(), n, 4, 8, four.data());
   std::vector<uint32_t> expUv(n * 2);
   meshopt_encodeFilterExp(expUv.data(), n, 8, 15, g.uvs.data());
-  // Buffer 0 holds the encoded streams one after another; each compressed view names its
-  // stream there and its decoded place in the fallback buffer (buffer 1).
-  struct Stream {
-    std::string bytes;
-    size_t count, stride;
-    std::string mode, filter;
-  };
-  const std::vector<Stream> streams = {
+  return {
       {cutPositions.empty() ? EncodeVertices(g.positions.data(), n, 12) : cutPositions, n, 12, "ATTRIBUTES", "NONE"},
       {EncodeVertices(oct.data(), n, 4), n, 4, "ATTRIBUTES", "OCTAHEDRAL"},
       {EncodeVertices(expUv.data(), n, 8), n, 8, "ATTRIBUTES", "EXPONENTIAL"},
       {EncodeIndices(g.indices, sequence), g.indices.size(), 2, sequence ? "INDICES" : "TRIANGLES", "NONE"}};
+}
+
+// The streams into b: buffer 0 holds them one after another, and each compressed view
+// names its stream there and its decoded place in the fallback buffer (buffer 1, no uri).
+// Returns the views, in the streams' order.
+std::vector<int> AddMeshoptViews(GltfBuilder& b, const std::vector<EncodedStream>& streams) {
   std::vector<size_t> offsets;
-  size_t at = 0;
   std::string encoded;
-  for (const Stream& s : streams) {
-    offsets.push_back(at);
+  for (const EncodedStream& s : streams) {
+    offsets.push_back(encoded.size());
     std::string bytes = s.bytes;
     bytes.resize((bytes.size() + 3) / 4 * 4, '\0');
     encoded += bytes;
-    at += bytes.size();
   }
   const size_t base = (b.BinSize() + 3) / 4 * 4;
   b.View(encoded);
   std::vector<int> views;
   size_t fallback = 0;
   for (size_t i = 0; i < streams.size(); ++i) {
-    const Stream& s = streams[i];
+    const EncodedStream& s = streams[i];
     const size_t length = s.count * s.stride;
     std::string v =
         "{\"buffer\":1,\"byteOffset\":" + std::to_string(fallback) + ",\"byteLength\":" + std::to_string(length);
@@ -327,6 +324,15 @@ GltfBuilder MeshoptGrid(const Grid& g, bool sequence, const std::string& cutPosi
   }
   b.extraBuffers.push_back("{\"byteLength\":" + std::to_string(fallback) +
                            ",\"extensions\":{\"EXT_meshopt_compression\":{\"fallback\":true}}}");
+  return views;
+}
+
+// The grid with every stream meshopt-compressed (GridStreams).
+GltfBuilder MeshoptGrid(const Grid& g, bool sequence, const std::string& cutPositions = "") {
+  GltfBuilder b;
+  AddTexturedMaterial(b);
+  const size_t n = g.Vertices();
+  const std::vector<int> views = AddMeshoptViews(b, GridStreams(g, sequence, cutPositions));
   const int pos = b.Accessor(views[0], kFloat, n, "VEC3", ",\"min\":[0,0,-1],\"max\":[8,8,1]");
   const int nrm = b.Accessor(views[1], kByte, n, "VEC3", ",\"normalized\":true");
   const int uv = b.Accessor(views[2], kFloat, n, "VEC2");

@@ -29,6 +29,29 @@ enum class Encoding {
   kTwoSets,            // the middle vertices' second joint in JOINTS_1/WEIGHTS_1
 };
 
+// The bar's nodes, skin and animation (Bar says which).
+void AddArmature(GltfBuilder& b, double bend, bool inverseBinds) {
+  const std::string q = "[0,0," + Num(std::sin(bend / 2)) + "," + Num(std::cos(bend / 2)) + "]";
+  b.Node(R"({"translation":[5,0,0],"children":[1]})");
+  b.Node(R"({"children":[2]})");
+  b.Node(R"({"translation":[1,0,0],"rotation":)" + q + "}");
+  b.Node(R"({"mesh":0,"skin":0,"translation":[100,0,0],"scale":[3,3,3]})");
+  b.scenes = {R"({"nodes":[0,3]})"};
+  std::string skin = R"({"joints":[1,2])";
+  if (inverseBinds) {
+    const std::vector<float> ibm = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0,  0, 0, 1,   // joint 0: identity
+                                    1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1};  // joint 1: T(−1, 0, 0)
+    skin += ",\"inverseBindMatrices\":" + std::to_string(b.Accessor(b.View(Bytes(ibm)), kFloat, 2, "MAT4"));
+  }
+  b.skins = {skin + "}"};
+  const std::vector<float> times = {0, 1},
+                           turns = {0, 0, 0, 1, 0, 0, float(std::sin(kPi / 4)), float(std::cos(kPi / 4))};
+  const int in = b.Accessor(b.View(Bytes(times)), kFloat, 2, "SCALAR", ",\"min\":[0],\"max\":[1]");
+  const int out = b.Accessor(b.View(Bytes(turns)), kFloat, 2, "VEC4");
+  b.animations = {R"({"name":"bend","samplers":[{"input":)" + std::to_string(in) + ",\"output\":" +
+                  std::to_string(out) + R"(}],"channels":[{"sampler":0,"target":{"node":2,"path":"rotation"}}]})"};
+}
+
 // The bar: x ∈ {0, 0.5, 1, 1.5, 2} × y ∈ {0, 0.2} in the xy plane, NORMALs along +x (so
 // that bending about z turns them). Vertices at x < 1 follow joint 0, at x > 1 joint 1,
 // at x = 1 half each. Joint 0 is nodes[1] at the origin of the armature root nodes[0]
@@ -75,25 +98,7 @@ GltfBuilder Bar(double bend, Encoding enc = Encoding::kFloatWeights, bool invers
                   ",\"WEIGHTS_1\":" + std::to_string(b.Accessor(b.View(Bytes(w1)), kFloat, p.size(), "VEC4"));
   b.meshes.push_back("{\"primitives\":[{\"attributes\":{" + attributes +
                      "},\"indices\":" + std::to_string(b.Indices(idx)) + "}]}");
-  const std::string q = "[0,0," + Num(std::sin(bend / 2)) + "," + Num(std::cos(bend / 2)) + "]";
-  b.Node(R"({"translation":[5,0,0],"children":[1]})");
-  b.Node(R"({"children":[2]})");
-  b.Node(R"({"translation":[1,0,0],"rotation":)" + q + "}");
-  b.Node(R"({"mesh":0,"skin":0,"translation":[100,0,0],"scale":[3,3,3]})");
-  b.scenes = {R"({"nodes":[0,3]})"};
-  std::string skin = R"({"joints":[1,2])";
-  if (inverseBinds) {
-    const std::vector<float> ibm = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0,  0, 0, 1,   // joint 0: identity
-                                    1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1};  // joint 1: T(−1, 0, 0)
-    skin += ",\"inverseBindMatrices\":" + std::to_string(b.Accessor(b.View(Bytes(ibm)), kFloat, 2, "MAT4"));
-  }
-  b.skins = {skin + "}"};
-  const std::vector<float> times = {0, 1},
-                           turns = {0, 0, 0, 1, 0, 0, float(std::sin(kPi / 4)), float(std::cos(kPi / 4))};
-  const int in = b.Accessor(b.View(Bytes(times)), kFloat, 2, "SCALAR", ",\"min\":[0],\"max\":[1]");
-  const int out = b.Accessor(b.View(Bytes(turns)), kFloat, 2, "VEC4");
-  b.animations = {R"({"name":"bend","samplers":[{"input":)" + std::to_string(in) + ",\"output\":" +
-                  std::to_string(out) + R"(}],"channels":[{"sampler":0,"target":{"node":2,"path":"rotation"}}]})"};
+  AddArmature(b, bend, inverseBinds);
   return b;
 }
 

@@ -93,69 +93,80 @@ ProcessResult RunVkpt(const std::vector<std::string>& args, double timeoutSecond
   return RunProgram(VKPT_BINARY, args, timeoutSeconds, cwd, env, limits, signals);
 }
 
-ProcessResult RunProgram(const std::string& program, const std::vector<std::string>& args, double timeoutSeconds,
-                         const std::string& cwd, const std::vector<std::string>& env, const ChildLimits& limits,
-                         const ChildSignals& signals) {
-  ProcessResult r;
-  int outPipe[2], errPipe[2];
-  if (pipe(outPipe) != 0 || pipe(errPipe) != 0) {
-    r.err = "pipe failed";
-    return r;
+namespace {
+
+// In the forked child: stdout and stderr to the pipes, stdin from /dev/null, the limits
+// and environment set, then `program`.
+[[noreturn]] void ExecChild(const std::string& program, const std::vector<std::string>& args, const std::string& cwd,
+                            const std::vector<std::string>& env, const ChildLimits& limits, int outPipe[2],
+                            int errPipe[2]) {
+  dup2(outPipe[1], STDOUT_FILENO);
+  dup2(errPipe[1], STDERR_FILENO);
+  close(outPipe[0]);
+  close(errPipe[0]);
+  int devnull = open("/dev/null", O_RDONLY);
+  dup2(devnull, STDIN_FILENO);
+  if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(126);
+  for (const std::string& kv : env) putenv(const_cast<char*>(kv.c_str()));
+  for (auto [resource, bytes] : {std::pair{RLIMIT_FSIZE, limits.fileSize}, {RLIMIT_AS, limits.addressSpace}}) {
+    rlimit limit{bytes.value_or(RLIM_INFINITY), bytes.value_or(RLIM_INFINITY)};
+    if (bytes && setrlimit(resource, &limit) != 0) _exit(126);
   }
-  const auto start = std::chrono::steady_clock::now();
-  pid_t pid = fork();
-  if (pid == 0) {
-    dup2(outPipe[1], STDOUT_FILENO);
-    dup2(errPipe[1], STDERR_FILENO);
-    close(outPipe[0]);
-    close(errPipe[0]);
-    int devnull = open("/dev/null", O_RDONLY);
-    dup2(devnull, STDIN_FILENO);
-    if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(126);
-    for (const std::string& kv : env) putenv(const_cast<char*>(kv.c_str()));
-    for (auto [resource, bytes] : {std::pair{RLIMIT_FSIZE, limits.fileSize}, {RLIMIT_AS, limits.addressSpace}}) {
-      rlimit limit{bytes.value_or(RLIM_INFINITY), bytes.value_or(RLIM_INFINITY)};
-      if (bytes && setrlimit(resource, &limit) != 0) _exit(126);
-    }
-    std::vector<char*> argv;
-    std::string bin = program;
-    argv.push_back(bin.data());
-    std::vector<std::string> copy = args;
-    for (std::string& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(bin.c_str(), argv.data());
-    _exit(127);
+  std::vector<char*> argv;
+  std::string bin = program;
+  argv.push_back(bin.data());
+  std::vector<std::string> copy = args;
+  for (std::string& a : copy) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  execv(bin.c_str(), argv.data());
+  _exit(127);
+}
+
+// Sends the child `signals` once its stdout shows signals.after: the first after
+// delaySeconds, each next gapSeconds after the last.
+class SignalSender {
+ public:
+  SignalSender(pid_t pid, const ChildSignals& signals, std::chrono::steady_clock::time_point start)
+      : pid_(pid), signals_(signals), start_(start) {}
+
+  bool Pending() const { return sent_ < signals_.signals.size(); }
+
+  void Poll(ProcessResult& r) {
+    if (!Pending() || r.out.find(signals_.after) == std::string::npos) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (!triggered_) seen_ = now;
+    triggered_ = true;
+    if (std::chrono::duration<double>(now - seen_).count() < signals_.delaySeconds) return;
+    if (sent_ > 0 && std::chrono::duration<double>(now - last_).count() < signals_.gapSeconds) return;
+    kill(pid_, signals_.signals[sent_++]);
+    last_ = now;
+    r.sentAt = std::chrono::duration<double>(now - start_).count();
   }
-  close(outPipe[1]);
-  close(errPipe[1]);
+
+ private:
+  pid_t pid_;
+  const ChildSignals& signals_;
+  std::chrono::steady_clock::time_point start_, last_, seen_;
+  size_t sent_ = 0;
+  bool triggered_ = false;
+};
+
+// Reads the child's stdout and stderr into r until both close, or until the deadline,
+// when it kills the child (r.timedOut).
+void CollectOutput(pid_t pid, int out, int err, double timeoutSeconds, SignalSender& sender, ProcessResult& r) {
   auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds * kTimeScale);
-  pollfd fds[2] = {{outPipe[0], POLLIN, 0}, {errPipe[0], POLLIN, 0}};
+  pollfd fds[2] = {{out, POLLIN, 0}, {err, POLLIN, 0}};
   std::string* sinks[2] = {&r.out, &r.err};
   int open = 2;
-  size_t signalsSent = 0;
-  std::chrono::steady_clock::time_point lastSignal, seen;
-  bool triggered = false;
-  auto sendSignals = [&] {
-    if (signalsSent == signals.signals.size() || r.out.find(signals.after) == std::string::npos) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (!triggered) seen = now;
-    triggered = true;
-    if (std::chrono::duration<double>(now - seen).count() < signals.delaySeconds) return;
-    if (signalsSent > 0 && std::chrono::duration<double>(now - lastSignal).count() < signals.gapSeconds) return;
-    kill(pid, signals.signals[signalsSent++]);
-    lastSignal = now;
-    r.sentAt = std::chrono::duration<double>(now - start).count();
-  };
   while (open > 0) {
-    sendSignals();
+    sender.Poll(r);
     auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
       kill(pid, SIGKILL);
       r.timedOut = true;
       break;
     }
-    if (poll(fds, 2, int(std::min<long long>(left.count(), signalsSent < signals.signals.size() ? 10 : 1000))) < 0)
-      break;
+    if (poll(fds, 2, int(std::min<long long>(left.count(), sender.Pending() ? 10 : 1000))) < 0) break;
     for (int i = 0; i < 2; ++i) {
       if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP))) continue;
       char buf[4096];
@@ -171,6 +182,26 @@ ProcessResult RunProgram(const std::string& program, const std::vector<std::stri
   }
   for (pollfd& f : fds)
     if (f.fd >= 0) close(f.fd);
+}
+
+}  // namespace
+
+ProcessResult RunProgram(const std::string& program, const std::vector<std::string>& args, double timeoutSeconds,
+                         const std::string& cwd, const std::vector<std::string>& env, const ChildLimits& limits,
+                         const ChildSignals& signals) {
+  ProcessResult r;
+  int outPipe[2], errPipe[2];
+  if (pipe(outPipe) != 0 || pipe(errPipe) != 0) {
+    r.err = "pipe failed";
+    return r;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  pid_t pid = fork();
+  if (pid == 0) ExecChild(program, args, cwd, env, limits, outPipe, errPipe);
+  close(outPipe[1]);
+  close(errPipe[1]);
+  SignalSender sender(pid, signals, start);
+  CollectOutput(pid, outPipe[0], errPipe[0], timeoutSeconds, sender, r);
   int status = 0;
   struct rusage usage {};
   wait4(pid, &status, 0, &usage);

@@ -234,19 +234,10 @@ void WriteDracoSeeds() {
   WriteDraco("cube-edgebreaker-valence.drc", *cube, edgebreaker);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: fuzz_seeds OUTDIR\n");
-    return 2;
-  }
-  out = argv[1];
-  for (const char* dir : {"env", "pfm", "texture", "draco", "meshopt"})
-    std::filesystem::create_directories(out + "/" + dir);
-
-  // Environment maps: EXR as vkpt writes it (RGB; RGB with AOV channels), Radiance HDR
-  // flat (narrow) and run-length encoded (8 to 32767 wide).
+// Environment maps: EXR as vkpt writes it (RGB; RGB with AOV channels), Radiance HDR
+// flat (narrow) and run-length encoded (8 to 32767 wide); PFM as vkpt writes it
+// (little-endian) and the same big-endian (positive scale).
+void WriteImageSeeds() {
   const vkpt::internal::Image small = Gradient(5, 3), wide = Gradient(16, 2);
   Write("env/rgb.exr", vkpt::internal::EncodeExr(small, "rgb.exr"));
   std::vector<vkpt::internal::ExrChannel> channels = vkpt::internal::RgbChannels(small);
@@ -259,7 +250,6 @@ int main(int argc, char** argv) {
     Write(img == &small ? "env/flat.hdr" : "env/rle.hdr", bytes);
   }
 
-  // PFM: little-endian as vkpt writes it, and the same big-endian (positive scale).
   std::vector<uint8_t> le = vkpt::internal::EncodePfm(small);
   Write("pfm/little-endian.pfm", le);
   const std::string header = "PF\n5 3\n1.0\n";
@@ -272,8 +262,11 @@ int main(int argc, char** argv) {
         for (int b = 3; b >= 0; --b) be.push_back(uint8_t(u >> (8 * b)));
       }
   Write("pfm/big-endian.pfm", be);
+}
 
-  // Textures: PNG grey, grey+alpha, RGB, RGBA; JPEG grey and RGB.
+// Textures: PNG grey, grey+alpha, RGB, RGBA; JPEG grey and RGB; WebP lossless (RGBA)
+// and lossy (RGB), as libwebp encodes them.
+void WriteTextureSeeds() {
   std::vector<uint8_t> texels(6 * 5 * 4);
   for (size_t i = 0; i < texels.size(); ++i) texels[i] = uint8_t(i * 37);
   for (int comp = 1; comp <= 4; ++comp) {
@@ -286,7 +279,6 @@ int main(int argc, char** argv) {
     stbi_write_jpg_to_func(Append, &bytes, 6, 5, comp, texels.data(), 90);
     Write("texture/" + std::to_string(comp) + "-channel.jpg", bytes);
   }
-  // WebP lossless (RGBA) and lossy (RGB), as libwebp encodes them.
   uint8_t* webp = nullptr;
   size_t size = WebPEncodeLosslessRGBA(texels.data(), 6, 5, 6 * 4, &webp);
   Write("texture/lossless.webp", std::vector<uint8_t>(webp, webp + size));
@@ -294,7 +286,21 @@ int main(int argc, char** argv) {
   size = WebPEncodeRGB(texels.data(), 6, 5, 6 * 3, 80.0f, &webp);
   Write("texture/lossy.webp", std::vector<uint8_t>(webp, webp + size));
   WebPFree(webp);
+}
 
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: fuzz_seeds OUTDIR\n");
+    return 2;
+  }
+  out = argv[1];
+  for (const char* dir : {"env", "pfm", "texture", "draco", "meshopt"})
+    std::filesystem::create_directories(out + "/" + dir);
+
+  WriteImageSeeds();
+  WriteTextureSeeds();
   WriteDracoSeeds();
   WriteMeshoptSeeds();
   return 0;
