@@ -24,6 +24,12 @@ LightSampler LightSamplerFrom(const std::string& name);
 // vkpt.Camera; TypeError for anything else.
 Camera CameraFrom(const py::object& camera);
 
+// The keywords of one part of the settings schema (vkpt/settings_schema.h) for a
+// docstring, one line each: "max_depth: maximum number of bounces … [0, 1024]", each
+// setting's own doc in Python's terms. `part`: "SceneOptions::", "Camera::" or
+// "RenderOptions::".
+std::string KeywordDocs(const std::string& part);
+
 // vkpt.Camera: keyword construction, fields read and written as Python values; the matrix
 // as a 4 × 4 NumPy array M with M @ (x, y, z, 1) in world space.
 void BindCamera(py::module_& m);

@@ -68,14 +68,18 @@ py::object MatrixArray(const Matrix& matrix) {
 }  // namespace
 
 void BindCamera(py::module_& m) {
-  py::class_<Camera>(m, "Camera", R"(Where a render looks from.
+  py::class_<Camera>(m, "Camera",
+                     (R"(Where a render looks from.
 
 Camera(index=None, *, matrix=None, look_from=None, look_at=None, up=None, fov=None, orbit=0.0)
 
 The file's camera `index` (without cameras: one framing the scene), or its lens placed by
 `matrix` (4 x 4, camera to world: the camera looks along its -Z with +Y up); then moved to
 look_from, aimed at look_at with `up` up, turned `orbit` degrees about `up` through the
-look-at point (or the scene's centre), with a vertical field of view of `fov` degrees.)")
+look-at point (or the scene's centre), with a vertical field of view of `fov` degrees.
+
+)" + KeywordDocs("Camera::"))
+                         .c_str())
       .def(py::init([](std::optional<uint32_t> index, const py::object& matrix,
                        std::optional<std::array<float, 3>> lookFrom, std::optional<std::array<float, 3>> lookAt,
                        std::optional<std::array<float, 3>> up, std::optional<double> fov, double orbit) {

@@ -2,6 +2,7 @@
 // the library API of vkpt/vkpt.h with images as NumPy arrays (docs/python.md). Renders
 // release the GIL; Ctrl-C or an exception from a progress callback cancels a render
 // between passes and is raised when it returns.
+#include <algorithm>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -15,6 +16,7 @@
 
 #include "python/bindings.h"
 #include "vkpt/api_terms.h"
+#include "vkpt/setting_choices.h"
 #include "vkpt/settings_schema.h"
 #include "vkpt/vkpt.h"
 
@@ -137,21 +139,31 @@ PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint3
   return Render(self, camera, std::move(o), progress);
 }
 
-// The signatures pybind11 puts above each docstring show the keywords and their defaults.
+// The signatures pybind11 puts above each docstring show the keywords and their defaults;
+// the lines below them what each keyword does (KeywordDocs).
 void BindScene(py::module_& m) {
-  py::class_<PyScene>(m, "Scene", R"(A glTF 2.0 scene loaded once and rendered any number of times.
+  const std::string sceneDoc = R"(A glTF 2.0 scene loaded once and rendered any number of times.
 
-backend: "auto" (the Vulkan device when one opens, else the CPU), "cpu" or "vulkan".
-light_sampler: how light sampling chooses among emissive triangles, point and spot
-lights: "tree" (by how much each may light the shading point), "power" (by power
-alone) or "auto" (the tree from 8 such lights on).
 Raises vkpt.Error naming the file and the problem, vkpt.SettingError for a setting out
-of its range.)")
-      .def(py::init(&OpenScene), "path"_a, py::kw_only(), "backend"_a = "auto", "device"_a = kScene.device,
+of its range.
+
+)" + KeywordDocs("SceneOptions::");
+  const std::string renderDoc = R"(Renders a view and returns a vkpt.Render (np.asarray(render) is the image).
+
+camera: None (the file's first camera), an int (the file's camera of that index) or a
+vkpt.Camera. The GIL is released while rendering; progress(fraction) is called now and
+then. aovs: albedo, normal, depth, position, variance, spp, heatmap, object_id,
+material_id, instance_id, or "all". A setting out of its range raises vkpt.SettingError.
+
+)" + KeywordDocs("RenderOptions::");
+  py::class_<PyScene>(m, "Scene", sceneDoc.c_str())
+      .def(py::init(&OpenScene), "path"_a, py::kw_only(),
+           "backend"_a = internal::ChoiceName(internal::BackendChoices(), kScene.backend), "device"_a = kScene.device,
            "validation"_a = kScene.validation, "threads"_a = kScene.threads, "max_memory"_a = kScene.maxMemory,
            "max_texels"_a = kScene.maxTexels, "allow_external_uris"_a = kScene.allowExternalUris,
            "variant"_a = kScene.variant, "animation"_a = kScene.animation, "environment"_a = kScene.environment,
-           "environment_intensity"_a = kScene.environmentIntensity, "light_sampler"_a = "auto")
+           "environment_intensity"_a = kScene.environmentIntensity,
+           "light_sampler"_a = internal::ChoiceName(internal::LightSamplerChoices(), kScene.lightSampler))
       .def_property_readonly("camera_count", [](PyScene& s) { return s.scene.CameraCount(); })
       .def_property_readonly("device", [](PyScene& s) { return s.scene.Device(); })
       .def("render", &RenderWith, "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(),
@@ -160,24 +172,35 @@ of its range.)")
            "rr_depth"_a = kRender.rrDepth, "chunk_spp"_a = kRender.chunkSpp, "batch"_a = kRender.batch,
            "time"_a = kRender.time, "background"_a = py::none(), "environment_rotation"_a = kRender.environmentRotation,
            "texture_lod"_a = kRender.textureLod, "aovs"_a = kRender.aovs, "denoise"_a = kRender.denoise,
-           "progress"_a = py::none(),
-           R"(Renders a view and returns a vkpt.Render (np.asarray(render) is the image).
-
-camera: None (the file's first camera), an int (the file's camera of that index) or a
-vkpt.Camera. The GIL is released while rendering; progress(fraction) is called now and
-then. aovs: albedo, normal, depth, position, variance, spp, heatmap, object_id,
-material_id, instance_id, or "all". A setting out of its range raises vkpt.SettingError.)");
+           "progress"_a = py::none(), renderDoc.c_str());
 }
+
+}  // namespace
+
+std::string KeywordDocs(const std::string& part) {
+  std::string text;
+  for (const internal::Setting& s : internal::Settings()) {
+    if (s.field.rfind(part, 0) != 0) continue;
+    std::string doc = internal::InTerms(s.doc, internal::Terms::kCommandLine, internal::Terms::kPython);
+    doc.erase(std::remove(doc.begin(), doc.end(), '`'), doc.end());
+    text += s.key + ": " + doc + (s.range ? " (values: " + internal::RangeText(*s.range) + ")" : "") + "\n";
+  }
+  return text;
+}
+
+namespace {
 
 // vkpt._settings(): the settings schema (vkpt/settings_schema.h) for tests that try every
 // setting: each one's keyword, where it goes ("scene", "camera" or "render"), its
-// command-line option, type, default numbers and, for a number, its range.
+// command-line option, type, default numbers, doc (in Python's terms) and, for a number,
+// its range.
 void BindSettings(py::module_& m) {
   m.def("_settings", [] {
     py::list settings;
     for (const internal::Setting& s : internal::Settings()) {
       py::dict d("key"_a = s.key, "flag"_a = s.flag, "field"_a = s.field, "python"_a = s.PythonName(),
-                 "type"_a = s.type, "default"_a = s.numbers({}));
+                 "type"_a = s.type, "default"_a = s.numbers({}),
+                 "doc"_a = internal::InTerms(s.doc, internal::Terms::kCommandLine, internal::Terms::kPython));
       d["where"] = s.field.rfind("Scene", 0) == 0 ? "scene" : s.field.rfind("Camera", 0) == 0 ? "camera" : "render";
       if (s.range)
         d["range"] = py::make_tuple(s.range->lo, s.range->hi, s.range->loOpen, internal::RangeText(*s.range));

@@ -20,6 +20,7 @@ std::vector<Spellings> SpellingsByLength(Terms from) {
       {"--width/--height", "RenderOptions::width/height", "width/height"},
       {"--width and --height", "RenderOptions::width and height", "width and height"},
       {"--backend cpu", "Backend::Cpu", "backend=\"cpu\""},
+      {"--adaptive", "RenderOptions::adaptive", "adaptive"},
       {"--look-from/--look-at/--up", "Camera::lookFrom/lookAt/up", "Camera.look_from/look_at/up"},
       {"(see --list-devices)", "(`vkpt --list-devices` lists them)", "(`vkpt --list-devices` lists them)"},
   };

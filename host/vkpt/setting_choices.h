@@ -2,6 +2,7 @@
 // --backend and --light-sampler and Python's backend= and light_sampler= read them here.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +30,14 @@ E Chosen(const std::string& key, const Choices<E>& choices, const std::string& n
     names.push_back(n);
   }
   throw SettingError(key + " must be " + QuotedNames(names) + ", got \"" + name + "\"");
+}
+
+// The name of `value` among `choices` (every value has one).
+template <class E>
+const std::string& ChoiceName(const Choices<E>& choices, E value) {
+  for (const auto& [name, v] : choices)
+    if (v == value) return name;
+  throw std::logic_error("a choice without a name");
 }
 
 }  // namespace vkpt::internal

@@ -81,14 +81,15 @@ std::string TypeOf() {
 // The setting `key` (--flag, Struct::field) of `member` in the part `part` of ApiSettings.
 template <class Part, class Field>
 Setting Row(std::string key, std::string flag, std::string field, std::optional<Range> range, Part ApiSettings::*part,
-            Field Part::*member) {
+            Field Part::*member, std::string doc) {
   return {std::move(key),
           std::move(flag),
           std::move(field),
           TypeOf<typename ValueOf<Field>::type>(),
           range,
           [part, member](const ApiSettings& s) { return NumbersOf(s.*part.*member); },
-          [part, member](ApiSettings& s, double v) { return Assign(s.*part.*member, v); }};
+          [part, member](ApiSettings& s, double v) { return Assign(s.*part.*member, v); },
+          std::move(doc)};
 }
 
 constexpr double kMaxCount = double(1u << 30);  // spp, chunks, batches
@@ -105,56 +106,85 @@ constexpr auto kRender = &ApiSettings::render;
 
 std::vector<Setting> SceneRows() {
   return {
-      Row("backend", "--backend", "SceneOptions::backend", {}, kScene, &S::backend),
-      Row("device", "--device", "SceneOptions::device", {}, kScene, &S::device),
-      Row("validation", "--validation", "SceneOptions::validation", {}, kScene, &S::validation),
-      Row("threads", "--threads", "SceneOptions::threads", Range{0, 1024}, kScene, &S::threads),
+      Row("backend", "--backend", "SceneOptions::backend", {}, kScene, &S::backend,
+          "renderer: `vulkan` (compute shader), `cpu` (reference) or `auto` (vulkan if a device exists)"),
+      Row("device", "--device", "SceneOptions::device", {}, kScene, &S::device,
+          "Vulkan device by index or name substring"),
+      Row("validation", "--validation", "SceneOptions::validation", {}, kScene, &S::validation,
+          "Vulkan validation layer (also `VKPT_VALIDATION=1`); any message: exit status 3"),
+      Row("threads", "--threads", "SceneOptions::threads", Range{0, 1024}, kScene, &S::threads,
+          "CPU threads (0: all cores); also `LP_NUM_THREADS` for lavapipe"),
       // Bytes (0: half the RAM): any count, the load refusing a scene that needs more.
       Row("max_memory", "--max-memory", "SceneOptions::maxMemory", Range{0, 18446744073709551615.0}, kScene,
-          &S::maxMemory),
-      Row("max_texels", "--max-texels", "SceneOptions::maxTexels", Range{0, double(1u << 31)}, kScene, &S::maxTexels),
+          &S::maxMemory, "host memory a scene may need, checked before it is read"),
+      Row("max_texels", "--max-texels", "SceneOptions::maxTexels", Range{0, double(1u << 31)}, kScene, &S::maxTexels,
+          "texels the scene's texture images may have, checked from their headers"),
       Row("allow_external_uris", "--allow-external-uris", "SceneOptions::allowExternalUris", {}, kScene,
-          &S::allowExternalUris),
-      Row("variant", "--variant", "SceneOptions::variant", {}, kScene, &S::variant),
-      Row("animation", "--animation", "SceneOptions::animation", {}, kScene, &S::animation),
-      Row("environment", "--env", "SceneOptions::environment", {}, kScene, &S::environment),
+          &S::allowExternalUris, "let a glTF read files outside its own folder"),
+      Row("variant", "--variant", "SceneOptions::variant", {}, kScene, &S::variant,
+          "render the materials of this KHR_materials_variants variant"),
+      Row("animation", "--animation", "SceneOptions::animation", {}, kScene, &S::animation,
+          "pose the scene by this glTF animation"),
+      Row("environment", "--env", "SceneOptions::environment", {}, kScene, &S::environment,
+          "equirectangular environment map, `.hdr` or `.exr`, lighting the scene instead of a background"),
       Row("environment_intensity", "--env-intensity", "SceneOptions::environmentIntensity", kRadiance, kScene,
-          &S::environmentIntensity),
-      Row("light_sampler", "--light-sampler", "SceneOptions::lightSampler", {}, kScene, &S::lightSampler),
+          &S::environmentIntensity, "multiply the environment map's radiance by this"),
+      Row("light_sampler", "--light-sampler", "SceneOptions::lightSampler", {}, kScene, &S::lightSampler,
+          "how light sampling chooses among emissive triangles, point and spot lights: `tree` (by how much each may "
+          "light the shading point: a light tree), `power` (by power alone) or `auto` (the tree from 8 such lights "
+          "on)"),
   };
 }
 
 std::vector<Setting> CameraRows() {
   return {
-      Row("index", "--camera", "Camera::index", Range{0, 1u << 20}, kCamera, &C::index),
-      Row("look_from", "--look-from", "Camera::lookFrom", kCoordinate, kCamera, &C::lookFrom),
-      Row("look_at", "--look-at", "Camera::lookAt", kCoordinate, kCamera, &C::lookAt),
-      Row("up", "--up", "Camera::up", kCoordinate, kCamera, &C::up),
-      Row("fov", "--fov", "Camera::fovDegrees", Range{0.0, 179.0, true}, kCamera, &C::fovDegrees),
-      Row("orbit", "--orbit", "Camera::orbitDegrees", kTurn, kCamera, &C::orbitDegrees),
+      Row("index", "--camera", "Camera::index", Range{0, 1u << 20}, kCamera, &C::index,
+          "glTF camera to render from, in scene order; without one, a camera framing the scene"),
+      Row("look_from", "--look-from", "Camera::lookFrom", kCoordinate, kCamera, &C::lookFrom,
+          "move the camera to this point (scene units)"),
+      Row("look_at", "--look-at", "Camera::lookAt", kCoordinate, kCamera, &C::lookAt, "aim the camera at this point"),
+      Row("up", "--up", "Camera::up", kCoordinate, kCamera, &C::up, "the direction that is up in the image"),
+      Row("fov", "--fov", "Camera::fovDegrees", Range{0.0, 179.0, true}, kCamera, &C::fovDegrees,
+          "vertical field of view of a perspective camera"),
+      Row("orbit", "--orbit", "Camera::orbitDegrees", kTurn, kCamera, &C::orbitDegrees,
+          "turn the camera about the up axis through `--look-at` (else the scene's centre), counter-clockwise seen "
+          "from above"),
   };
 }
 
 std::vector<Setting> RenderRows() {
   return {
-      Row("width", "--width", "RenderOptions::width", Range{1, kMaxSide}, kRender, &R::width),
-      Row("height", "--height", "RenderOptions::height", Range{1, kMaxSide}, kRender, &R::height),
-      Row("spp", "--spp", "RenderOptions::spp", Range{1, kMaxCount}, kRender, &R::spp),
-      Row("seconds", "--time", "RenderOptions::seconds", Range{1e-3, 1e7}, kRender, &R::seconds),
+      Row("width", "--width", "RenderOptions::width", Range{1, kMaxSide}, kRender, &R::width,
+          "image width in pixels; give one side and the other follows the camera's aspect ratio"),
+      Row("height", "--height", "RenderOptions::height", Range{1, kMaxSide}, kRender, &R::height,
+          "image height in pixels"),
+      Row("spp", "--spp", "RenderOptions::spp", Range{1, kMaxCount}, kRender, &R::spp,
+          "samples per pixel; with `--time` or `--noise-target` the most any pixel takes"),
+      Row("seconds", "--time", "RenderOptions::seconds", Range{1e-3, 1e7}, kRender, &R::seconds,
+          "render passes until this many seconds of rendering are spent (after loading, BVH build and upload)"),
       Row("noise_target", "--noise-target", "RenderOptions::noiseTarget", Range{0.0, 1.0, true}, kRender,
-          &R::noiseTarget),
-      Row("seed", "--seed", "RenderOptions::seed", Range{0, 4294967295.0}, kRender, &R::seed),
-      Row("max_depth", "--max-depth", "RenderOptions::maxDepth", Range{0, 1024}, kRender, &R::maxDepth),
-      Row("rr_depth", "--rr-depth", "RenderOptions::rrDepth", Range{0, 1024}, kRender, &R::rrDepth),
-      Row("chunk_spp", "--chunk", "RenderOptions::chunkSpp", Range{1, kMaxCount}, kRender, &R::chunkSpp),
-      Row("batch", "--batch", "RenderOptions::batch", Range{0, kMaxCount}, kRender, &R::batch),
-      Row("time", "--at", "RenderOptions::time", Range{0.0, 1e9}, kRender, &R::time),
-      Row("background", "--background", "RenderOptions::background", kRadiance, kRender, &R::background),
+          &R::noiseTarget, "stop once the image's estimated relMSE is at most this; turns on `--adaptive`"),
+      Row("seed", "--seed", "RenderOptions::seed", Range{0, 4294967295.0}, kRender, &R::seed,
+          "random seed; same seed and device give a bit-identical image"),
+      Row("max_depth", "--max-depth", "RenderOptions::maxDepth", Range{0, 1024}, kRender, &R::maxDepth,
+          "maximum number of bounces (0: emission seen directly only)"),
+      Row("rr_depth", "--rr-depth", "RenderOptions::rrDepth", Range{0, 1024}, kRender, &R::rrDepth,
+          "bounces before Russian roulette starts"),
+      Row("chunk_spp", "--chunk", "RenderOptions::chunkSpp", Range{1, kMaxCount}, kRender, &R::chunkSpp,
+          "samples per pixel per chunk: the image depends on it, not on passes or MPI ranks"),
+      Row("batch", "--batch", "RenderOptions::batch", Range{0, kMaxCount}, kRender, &R::batch,
+          "Vulkan: samples per pixel per queue submission (0: automatic)"),
+      Row("time", "--at", "RenderOptions::time", Range{0.0, 1e9}, kRender, &R::time,
+          "time in the `--animation` at which the scene is posed"),
+      Row("background", "--background", "RenderOptions::background", kRadiance, kRender, &R::background,
+          "constant environment radiance for rays that leave the scene"),
       Row("environment_rotation", "--env-rotation", "RenderOptions::environmentRotation", kTurn, kRender,
-          &R::environmentRotation),
-      Row("texture_lod", "--texture-lod", "RenderOptions::textureLod", {}, kRender, &R::textureLod),
-      Row("aovs", "--aov", "RenderOptions::aovs", {}, kRender, &R::aovs),
-      Row("denoise", "--denoise", "RenderOptions::denoise", {}, kRender, &R::denoise),
+          &R::environmentRotation, "turn the map about +Y, counter-clockwise seen from above"),
+      Row("texture_lod", "--texture-lod", "RenderOptions::textureLod", {}, kRender, &R::textureLod,
+          "mip levels of colour textures after the camera's hit: by each path's ray cone, or level 0 everywhere"),
+      Row("aovs", "--aov", "RenderOptions::aovs", {}, kRender, &R::aovs, "also make these AOVs"),
+      Row("denoise", "--denoise", "RenderOptions::denoise", {}, kRender, &R::denoise,
+          "filter the image with vkpt's own denoiser and keep the raw image too"),
   };
 }
 

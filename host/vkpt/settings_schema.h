@@ -1,6 +1,6 @@
 // The settings of the library, each declared once (settings_schema.cpp): how the command
-// line, C++ and Python spell it, the numbers it accepts, and where it lives in the public
-// structs. The command line's parser takes its ranges from here, the library checks every
+// line, C++ and Python spell it, the numbers it accepts, what it does, and where it lives
+// in the public structs. The command line's parser takes its ranges from here, the library checks every
 // render's settings against them (CheckSettings), messages are put in each front end's
 // terms from the spellings here (vkpt/api_terms.h), and the tests walk the table to try
 // every setting out of range in every front end.
@@ -65,6 +65,9 @@ struct Setting {
   // Sets the setting (each of its numbers) to v, for tests that try every value; false if
   // its type cannot hold v (a negative count, a NaN count) or it is not a number.
   std::function<bool(ApiSettings& s, double v)> set;
+  // What it does, in one line of the command line's terms (InTerms puts it in another's):
+  // the meaning column of --help and docs/options.md, and the Python docstrings' line.
+  std::string doc;
 
   std::string PythonName() const;  // "max_depth"; a camera's: "Camera.fov"
 };

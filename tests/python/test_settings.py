@@ -8,7 +8,7 @@ import re
 import pytest
 
 import vkpt
-from conftest import CORNELL
+from conftest import CORNELL, SOURCE
 from vkpt import _vkpt
 
 SETTINGS = _vkpt._settings()
@@ -72,6 +72,51 @@ def test_the_keywords_defaults_are_the_librarys():
         assert float(shown.group(1).replace("True", "1").replace("False", "0")) == s["default"][0], s["key"]
         compared += 1
     assert compared >= 8
+
+
+def docstrings():
+    return {"scene": vkpt.Scene.__doc__, "render": vkpt.Scene.render.__doc__, "camera": vkpt.Camera.__doc__}
+
+
+def test_every_keyword_is_documented_by_its_settings_doc():
+    docs = docstrings()
+    for s in SETTINGS:
+        line = f"\n{s['key']}: {s['doc'].replace('`', '')}"
+        assert line in docs[s["where"]], f"{s['key']}: no line {line!r} in the docstring"
+        assert "--" not in s["doc"] or "--" in line, s["key"]  # no flag left untranslated
+    assert all("--" not in d for d in docs.values()), "a command-line option in a docstring"
+
+
+def keyword_defaults(text, start):
+    """keyword → default (as written) of the signature that starts at text[start:] ("name(")."""
+    args, depth, current = [], 0, ""
+    for c in text[text.index("(", start) + 1:]:
+        if c in "([" or (c == ")" and depth) or c == "]":
+            depth += 1 if c in "([" else -1
+        elif c == ")":
+            break
+        if c == "," and depth == 0:
+            args.append(current)
+            current = ""
+        else:
+            current += c
+    defaults = {}
+    for arg in args + [current]:
+        name, _, default = arg.partition("=")
+        if default:
+            defaults[name.split(":")[0].strip()] = default.strip().replace("'", '"')
+    return defaults
+
+
+def test_the_python_docs_signatures_are_the_bindings():
+    """docs/python.md writes the signatures of Scene() and render() out; their defaults must
+    be the binding's, which are the library's (a second default written there fails)."""
+    doc = (SOURCE / "docs" / "python.md").read_text()
+    for written, bound in [("vkpt.Scene(path, *", vkpt.Scene.__init__.__doc__),
+                           ("scene.render(camera=", vkpt.Scene.render.__doc__)]:
+        assert written in doc, written
+        have, want = keyword_defaults(doc, doc.index(written)), keyword_defaults(bound, 0)
+        assert have == want, written
 
 
 def test_settings_at_odds_are_refused():
