@@ -45,7 +45,10 @@ std::string WithoutRawStrings(const std::string& text) {
       continue;  // inside the last one, or the end of a name or of a plain string ("SCALAR")
     const size_t open = text.find('(', raw);
     if (open == std::string::npos) break;
-    const std::string close = ")" + text.substr(raw + 2, open - raw - 2) + "\"";
+    // Appended piece by piece: GCC 12 warns falsely on ")" + std::string (bug 105651).
+    std::string close = ")";
+    close += text.substr(raw + 2, open - raw - 2);
+    close += '"';
     const size_t end = text.find(close, open);
     if (end == std::string::npos) break;
     out += text.substr(at, raw - at) + "R\"\"";

@@ -36,10 +36,10 @@ TEST(Options, StatsObjectOfTheDefaults) {
     "noise_target": null, "adaptive": false, "checkpoint": null, "seed": 0, "chunk": 16, "max_depth": 32,
     "rr_depth": 3, "backend": "auto", "device": "", "threads": 0, "batch": 0, "compare": false,
     "validation": false, "camera": null, "look_from": null, "look_at": null, "up": null, "fov": null,
-    "orbit": null, "exposure": 0, "background": null, "env": "", "env_rotation": 0,
+    "orbit": 0, "exposure": 0, "background": null, "env": "", "env_rotation": 0,
     "env_intensity": 1, "texture_lod": "cones", "light_sampler": "auto", "leaf_size": 8, "splits": "auto", "max_memory": 0,
     "max_texels": 0, "allow_external_uris": false, "aov": [], "denoise": false, "stats": "",
-    "variant": "", "animation": "", "at": null, "frames": null, "fps": 24, "verbose": false, "view": "neutral"})"));
+    "variant": "", "animation": "", "at": 0, "frames": null, "fps": 24, "verbose": false, "view": "neutral"})"));
 }
 
 TEST(Options, StatsObjectOfEveryOptionGiven) {
@@ -201,7 +201,7 @@ TEST(Options, ValuesFollowTheOptionOrItsEqualsSign) {
   EXPECT_EQ(ErrorOf({"--denoise=yes"}), "--denoise takes no value, got \"--denoise=yes\"");
   EXPECT_EQ(ErrorOf({"--frobnicate"}), "unknown option \"--frobnicate\" (see --help)");
   EXPECT_EQ(Parse({"--diff", "a.pfm", "b.pfm"}).diff, (std::vector<std::string>{"a.pfm", "b.pfm"}));
-  EXPECT_EQ(Parse({"--scene=x.glb", "--spp=3", "-v"}).spp, 3u);
+  EXPECT_EQ(Parse({"--scene=x.glb", "--spp=3", "-v"}).api.render.spp, 3u);
 }
 
 // --help lists every option of the table with its values and default, within 92 columns.

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "app/options.h"
-#include "app/options_api.h"
 #include "app/scene_client.h"
 #include "test_util.h"
 #include "vkpt/api_terms.h"
@@ -103,7 +102,7 @@ TEST(Settings, EveryNumberOfTheLibraryHasARange) {
 
 TEST(Settings, TheCommandLinesDefaultsAreTheLibrarys) {
   const char* argv[] = {"vkpt", "--scene", "s.gltf"};
-  const ApiSettings cli = ApiSettingsOf(ParseOptions(3, argv));
+  const ApiSettings cli = ParseOptions(3, argv).api;
   const ApiSettings library;
   int compared = 0;
   for (const Setting& setting : Settings()) {

@@ -15,6 +15,12 @@ OptionDef Row(std::vector<std::string> names, std::string value, std::string mea
 }
 
 using O = Options;
+using S = vkpt::SceneOptions;
+using C = vkpt::Camera;
+using R = vkpt::RenderOptions;
+constexpr auto kScenePart = &ApiSettings::scene;
+constexpr auto kCameraPart = &ApiSettings::camera;
+constexpr auto kRenderPart = &ApiSettings::render;
 
 // The row of a setting of the library's schema (vkpt/settings_schema.h): its flag and
 // meaning are the schema's, to which `more` adds what only the command line does.
@@ -33,16 +39,17 @@ const vkpt::RenderOptions kRender;
 // The image, its samples and how they are taken.
 std::vector<OptionDef> RenderRows() {
   return {
-      Row({"--scene"}, "FILE", "glTF 2.0 scene to render, `.gltf` or `.glb` (required)", "", Text(&O::scene)),
+      Row({"--scene"}, "FILE", "glTF 2.0 scene to render, `.gltf` or `.glb` (required)", "", Text(Own(&O::scene))),
       Row({"--out"}, "FILE", "output image: `.png` (8-bit sRGB), `.pfm` or `.exr` (linear float), written atomically",
           "`<scene name>.png`", OutValue()),
-      SettingRow("width", "N", "512", Number(&O::width, SettingRange("width"))),
-      SettingRow("height", "N", "from the camera's aspect ratio, else 512", Number(&O::height, SettingRange("height"))),
+      SettingRow("width", "N", "512", Number(Api(kRenderPart, &R::width), SettingRange("width"))),
+      SettingRow("height", "N", "from the camera's aspect ratio, else 512",
+                 Number(Api(kRenderPart, &R::height), SettingRange("height"))),
       SettingRow("spp", "N",
                  FormatNumber(kDefaultSpp) + "; " + FormatNumber(kBudgetMaxSpp) + " with `--time` or `--noise-target`",
                  SppValue()),
-      SettingRow("seconds", "SECONDS", "none", Number(&O::time, SettingRange("seconds"))),
-      SettingRow("noise_target", "X", "none", Number(&O::noiseTarget, SettingRange("noise_target"))),
+      SettingRow("seconds", "SECONDS", "none", Number(Api(kRenderPart, &R::seconds), SettingRange("seconds"))),
+      SettingRow("noise_target", "X", "none", Number(Api(kRenderPart, &R::noiseTarget), SettingRange("noise_target"))),
       Row({"--adaptive"}, "",
           "adaptive sampling: a pixel stops once its and its neighbours' estimated error is below `--noise-target`",
           "on with `--noise-target`", AdaptiveValue(true)),
@@ -50,28 +57,32 @@ std::vector<OptionDef> RenderRows() {
       SettingRow("aovs", "LIST", ", written in layers of an `.exr` `--out`, else to files beside it", "none",
                  AovValue()),
       SettingRow("denoise", "", ": `--out` denoised, the raw image beside it as `NAME.raw.EXT`", "off",
-                 Flag(&O::denoise)),
+                 Flag(Api(kRenderPart, &R::denoise))),
       Row({"--checkpoint"}, "SECONDS", "rewrite `--out` every SECONDS during the render, with the samples so far",
           "none", CheckpointValue()),
-      SettingRow("seed", "N", FormatNumber(kRender.seed), Number(&O::seed, SettingRange("seed"))),
-      SettingRow("chunk_spp", "N", FormatNumber(kRender.chunkSpp), Number(&O::chunkSpp, SettingRange("chunk_spp"))),
-      SettingRow("max_depth", "N", FormatNumber(kRender.maxDepth), Number(&O::maxDepth, SettingRange("max_depth"))),
-      SettingRow("rr_depth", "N", FormatNumber(kRender.rrDepth), Number(&O::rrDepth, SettingRange("rr_depth"))),
+      SettingRow("seed", "N", FormatNumber(kRender.seed), Number(Api(kRenderPart, &R::seed), SettingRange("seed"))),
+      SettingRow("chunk_spp", "N", FormatNumber(kRender.chunkSpp),
+                 Number(Api(kRenderPart, &R::chunkSpp), SettingRange("chunk_spp"))),
+      SettingRow("max_depth", "N", FormatNumber(kRender.maxDepth),
+                 Number(Api(kRenderPart, &R::maxDepth), SettingRange("max_depth"))),
+      SettingRow("rr_depth", "N", FormatNumber(kRender.rrDepth),
+                 Number(Api(kRenderPart, &R::rrDepth), SettingRange("rr_depth"))),
   };
 }
 
 // Which renderer and device, and the modes that compare instead of render.
 std::vector<OptionDef> DeviceRows() {
   return {
-      SettingRow("backend", "NAME", "auto", Choice(&O::backend, BackendChoices())),
+      SettingRow("backend", "NAME", "auto", Choice(Api(kScenePart, &S::backend), BackendChoices())),
       SettingRow("device", "N|NAME", "discrete > integrated > virtual > CPU",
-                 Text(&O::device, "a device index or name")),
-      Row({"--list-devices"}, "", "list Vulkan devices and exit", "", NoStats(Flag(&O::listDevices))),
-      SettingRow("validation", "", "off", Flag(&O::validation)),
-      SettingRow("batch", "N", "about 2^20 paths per submission", Number(&O::batch, SettingRange("batch"))),
-      SettingRow("threads", "N", "all cores", Number(&O::threads, SettingRange("threads"))),
+                 Text(Api(kScenePart, &S::device), "a device index or name")),
+      Row({"--list-devices"}, "", "list Vulkan devices and exit", "", NoStats(Flag(Own(&O::listDevices)))),
+      SettingRow("validation", "", "off", Flag(Api(kScenePart, &S::validation))),
+      SettingRow("batch", "N", "about 2^20 paths per submission",
+                 Number(Api(kRenderPart, &R::batch), SettingRange("batch"))),
+      SettingRow("threads", "N", "all cores", Number(Api(kScenePart, &S::threads), SettingRange("threads"))),
       Row({"--compare"}, "", "render on the CPU and on Vulkan with the same seed and report how they agree", "",
-          Flag(&O::compare)),
+          Flag(Own(&O::compare))),
       Row({"--diff"}, "A B", "compare two `.pfm` images without rendering; heat map to `--out` if given", "",
           DiffValue()),
   };
@@ -80,14 +91,15 @@ std::vector<OptionDef> DeviceRows() {
 // Where the camera stands and looks.
 std::vector<OptionDef> CameraRows() {
   return {
-      SettingRow("index", "N", "0", Number(&O::camera, SettingRange("index"))),
-      SettingRow("look_from", "X,Y,Z", "the camera's position", PointValue(&O::lookFrom, "look_from")),
+      SettingRow("index", "N", "0", Number(Api(kCameraPart, &C::index), SettingRange("index"))),
+      SettingRow("look_from", "X,Y,Z", "the camera's position",
+                 PointValue(Api(kCameraPart, &C::lookFrom), "look_from")),
       SettingRow("look_at", "X,Y,Z", "the scene's centre with `--look-from`, else straight ahead",
-                 PointValue(&O::lookAt, "look_at")),
-      SettingRow("up", "X,Y,Z", "+Y, glTF's up", PointValue(&O::up, "up")),
-      SettingRow("fov", "DEGREES", "the camera's", Number(&O::fov, SettingRange("fov"))),
+                 PointValue(Api(kCameraPart, &C::lookAt), "look_at")),
+      SettingRow("up", "X,Y,Z", "+Y, glTF's up", PointValue(Api(kCameraPart, &C::up), "up")),
+      SettingRow("fov", "DEGREES", "the camera's", Number(Api(kCameraPart, &C::fovDegrees), SettingRange("fov"))),
       SettingRow("orbit", "DEGREES", FormatNumber(vkpt::Camera{}.orbitDegrees),
-                 Number(&O::orbit, SettingRange("orbit"))),
+                 Number(Api(kCameraPart, &C::orbitDegrees), SettingRange("orbit"))),
   };
 }
 
@@ -96,34 +108,36 @@ std::vector<OptionDef> SceneRows() {
   return {
       SettingRow("background", "R,G,B", " (one number: grey)", "1 if the scene has no lights, else 0",
                  BackgroundValue()),
-      SettingRow("environment", "FILE", "none", Text(&O::env, "an .hdr or .exr file")),
+      SettingRow("environment", "FILE", "none", Text(Api(kScenePart, &S::environment), "an .hdr or .exr file")),
       SettingRow("environment_rotation", "DEGREES", FormatNumber(kRender.environmentRotation),
-                 Number(&O::envRotation, SettingRange("environment_rotation"))),
+                 Number(Api(kRenderPart, &R::environmentRotation), SettingRange("environment_rotation"))),
       SettingRow("environment_intensity", "X", FormatNumber(vkpt::SceneOptions{}.environmentIntensity),
-                 Number(&O::envIntensity, SettingRange("environment_intensity"))),
+                 Number(Api(kScenePart, &S::environmentIntensity), SettingRange("environment_intensity"))),
       Row({"--exposure"}, "STOPS", "PNG only: multiply radiance by 2^STOPS before the view transform", "0",
-          Number(&O::exposure, {-64, 64})),
+          Number(Own(&O::exposure), {-64, 64})),
       Row({"--view"}, "NAME",
           "PNG only: how radiance is shown: `neutral` (Khronos PBR Neutral), `agx` (Blender's AgX), `aces` (Hill's "
           "ACES fit) or `clamp` (clipped at 1)",
           "neutral",
-          Choice(&O::view,
+          Choice(Own(&O::view),
                  {{"neutral", View::kNeutral}, {"agx", View::kAgx}, {"aces", View::kAces}, {"clamp", View::kClamp}})),
-      SettingRow("variant", "NAME|INDEX", " (-v lists them)", "none", Text(&O::variant, "a variant name or index")),
+      SettingRow("variant", "NAME|INDEX", " (-v lists them)", "none",
+                 Text(Api(kScenePart, &S::variant), "a variant name or index")),
       SettingRow("animation", "NAME|INDEX", " (-v lists them)", "none: the nodes' own transforms",
-                 Text(&O::animation, "an animation name or index")),
-      SettingRow("time", "SECONDS", "0", Number(&O::at, SettingRange("time"))),
+                 Text(Api(kScenePart, &S::animation), "an animation name or index")),
+      SettingRow("time", "SECONDS", "0", Number(Api(kRenderPart, &R::time), SettingRange("time"))),
       Row({"--frames"}, "FIRST:LAST[:STEP]",
           "render a sequence from one load: frame k at k / `--fps` s into the `--animation`, turned by k × `--orbit`, "
           "written to `--out` with the frame number (`NAME.####.EXT`, or in place of a run of `#`)",
           "one image", FramesValue()),
-      Row({"--fps"}, "N", "frames per second of `--frames`", "24", Number(&O::fps, {0.0, 1e6, true})),
-      SettingRow("texture_lod", "MODE", "cones", Choice(&O::textureLod, {{"cones", true}, {"none", false}})),
-      SettingRow("light_sampler", "MODE", "auto", Choice(&O::lightSampler, LightSamplerChoices())),
-      Row({"--leaf-size"}, "N", "maximum triangles per BVH leaf", "8", Number(&O::leafSize, {1, 15})),
+      Row({"--fps"}, "N", "frames per second of `--frames`", "24", Number(Own(&O::fps), {0.0, 1e6, true})),
+      SettingRow("texture_lod", "MODE", "cones",
+                 Choice(Api(kRenderPart, &R::textureLod), {{"cones", true}, {"none", false}})),
+      SettingRow("light_sampler", "MODE", "auto", Choice(Api(kScenePart, &S::lightSampler), LightSamplerChoices())),
+      Row({"--leaf-size"}, "N", "maximum triangles per BVH leaf", "8", Number(Own(&O::leafSize), {1, 15})),
       Row({"--splits"}, "MODE",
           "how the BVH divides the scene: `object`, `spatial` (SBVH) or `auto` (the lower SAH cost)", "auto",
-          Choice(&O::splits,
+          Choice(Own(&O::splits),
                  {{"auto", SplitMode::kAuto}, {"object", SplitMode::kObject}, {"spatial", SplitMode::kSpatial}})),
       SettingRow("max_memory", "SIZE", " (bytes, or `K`/`M`/`G`/`T`)", "half of physical RAM", MaxMemoryValue()),
       SettingRow("max_texels", "N", " (or `K`/`M`/`G`)", "256M", MaxTexelsValue()),
@@ -135,11 +149,11 @@ std::vector<OptionDef> SceneRows() {
 std::vector<OptionDef> ReportRows() {
   return {
       Row({"--stats"}, "FILE", "after the image, write the run as one JSON object (schema in docs/stats.md)", "",
-          Text(&O::stats, "a file name")),
+          Text(Own(&O::stats), "a file name")),
       Row({"-v", "--verbose"}, "", "print what was loaded, warnings, ignored glTF features and a line per pass", "",
-          Flag(&O::verbose)),
-      Row({"-h", "--help"}, "", "print the help and exit", "", NoStats(Flag(&O::help))),
-      Row({"--version"}, "", "print the version and exit", "", NoStats(Flag(&O::version))),
+          Flag(Own(&O::verbose))),
+      Row({"-h", "--help"}, "", "print the help and exit", "", NoStats(Flag(Own(&O::help)))),
+      Row({"--version"}, "", "print the version and exit", "", NoStats(Flag(Own(&O::version)))),
   };
 }
 

@@ -51,35 +51,15 @@ std::vector<std::string> SplitCommas(const std::string& text) {
 
 }  // namespace
 
-using JsonFn = std::function<std::string(const Options&)>;
-
-JsonFn JsonOf(uint32_t Options::*f) {
-  return [f](const Options& o) { return std::to_string(o.*f); };
-}
-JsonFn JsonOf(std::optional<uint32_t> Options::*f) {
-  return [f](const Options& o) { return o.*f ? std::to_string(*(o.*f)) : Null(); };
-}
-JsonFn JsonOf(double Options::*f) {
-  return [f](const Options& o) { return JsonNumber(o.*f); };
-}
-JsonFn JsonOf(std::optional<double> Options::*f) {
-  return [f](const Options& o) { return o.*f ? JsonNumber(*(o.*f)) : Null(); };
-}
-JsonFn JsonOf(float Options::*f) {
-  return [f](const Options& o) { return JsonNumber(o.*f); };
-}
-JsonFn JsonOf(bool Options::*f) {
-  return [f](const Options& o) { return std::string(o.*f ? "true" : "false"); };
-}
-JsonFn JsonOf(std::string Options::*f) {
-  return [f](const Options& o) { return JsonString(o.*f); };
-}
-JsonFn JsonOf(std::optional<std::array<float, 3>> Options::*f) {
-  return [f](const Options& o) {
-    if (!(o.*f)) return Null();
-    const std::array<float, 3>& v = *(o.*f);
-    return JsonArray({JsonNumber(v[0]), JsonNumber(v[1]), JsonNumber(v[2])});
-  };
+std::string JsonValue(uint32_t v) { return std::to_string(v); }
+std::string JsonValue(const std::optional<uint32_t>& v) { return v ? std::to_string(*v) : Null(); }
+std::string JsonValue(double v) { return JsonNumber(v); }
+std::string JsonValue(const std::optional<double>& v) { return v ? JsonNumber(*v) : Null(); }
+std::string JsonValue(float v) { return JsonNumber(v); }
+std::string JsonValue(bool v) { return v ? "true" : "false"; }
+std::string JsonValue(const std::string& v) { return JsonString(v); }
+std::string JsonValue(const std::optional<std::array<float, 3>>& v) {
+  return v ? JsonArray({JsonNumber((*v)[0]), JsonNumber((*v)[1]), JsonNumber((*v)[2])}) : Null();
 }
 
 std::string ChoicesText(const std::vector<std::string>& names) {
@@ -92,15 +72,15 @@ void ThrowNotAChoice(const GivenOption& g, const std::vector<std::string>& names
   throw UsageError(g.name + " must be " + OrList(names) + ", got \"" + g.value() + "\"");
 }
 
-OptionValue Flag(bool Options::*f) {
-  return {"", [f](Options& o, const GivenOption&) { o.*f = true; }, JsonOf(f)};
+OptionValue Flag(Field<bool> f) {
+  return {"", [f](Options& o, const GivenOption&) { f(o) = true; }, JsonOf(f)};
 }
 
-OptionValue Text(std::string Options::*f, const char* needs) {
+OptionValue Text(Field<std::string> f, const char* needs) {
   return {"",
           [f, needs](Options& o, const GivenOption& g) {
             if (needs && g.value().empty()) throw UsageError(g.name + " needs " + needs);
-            o.*f = g.value();
+            f(o) = g.value();
           },
           JsonOf(f)};
 }
@@ -111,24 +91,24 @@ OptionValue NoStats(OptionValue v) {
 }
 
 OptionValue OutValue() {
-  return {"", [](Options& o, const GivenOption& g) { o.out = o.outGiven = g.value(); }, JsonOf(&Options::out)};
+  return {"", [](Options& o, const GivenOption& g) { o.out = o.outGiven = g.value(); }, JsonOf(Own(&Options::out))};
 }
 
 // --stats shows the bound the render takes, given or derived.
 OptionValue SppValue() {
-  OptionValue v = Number(&Options::spp, SettingRange("spp"));
+  OptionValue v = Number(Api(&ApiSettings::render, &vkpt::RenderOptions::spp), SettingRange("spp"));
   v.json = [](const Options& o) { return std::to_string(o.Budget().spp); };
   return v;
 }
 
 OptionValue AdaptiveValue(bool on) {
-  OptionValue v{"", [on](Options& o, const GivenOption&) { o.adaptive = on; }, nullptr};
+  OptionValue v{"", [on](Options& o, const GivenOption&) { o.api.render.adaptive = on; }, nullptr};
   if (on) v.json = [](const Options& o) { return std::string(o.Budget().adaptive ? "true" : "false"); };
   return v;
 }
 
 OptionValue CheckpointValue() {
-  OptionValue v = Number(&Options::checkpoint, {1e-3, 1e7});
+  OptionValue v = Number(Own(&Options::checkpoint), {1e-3, 1e7});
   v.json = [](const Options& o) { return o.checkpoint > 0.0 ? JsonNumber(o.checkpoint) : Null(); };
   return v;
 }
@@ -145,19 +125,19 @@ OptionValue BackgroundValue() {
       throw UsageError(g.name + " expects R,G,B or one number, got \"" + g.value() + "\"");
     std::array<float, 3> c{};
     for (size_t k = 0; k < 3; ++k) c[k] = ParseNumber<float>(g.name, parts[parts.size() == 1 ? 0 : k], range);
-    o.background = c;
+    o.api.render.background = c;
   };
-  return {"each " + RangeText(range), set, JsonOf(&Options::background)};
+  return {"each " + RangeText(range), set, JsonOf(Api(&ApiSettings::render, &vkpt::RenderOptions::background))};
 }
 
-OptionValue PointValue(std::optional<std::array<float, 3>> Options::*field, const std::string& key) {
+OptionValue PointValue(Field<std::optional<std::array<float, 3>>> field, const std::string& key) {
   const Range range = SettingRange(key);
   auto set = [field, range](Options& o, const GivenOption& g) {
     const std::vector<std::string> parts = SplitCommas(g.value());
     if (parts.size() != 3) throw UsageError(g.name + " expects X,Y,Z, got \"" + g.value() + "\"");
     std::array<float, 3> p{};
     for (size_t k = 0; k < 3; ++k) p[k] = ParseNumber<float>(g.name, parts[k], range);
-    o.*field = p;
+    field(o) = p;
   };
   return {"three numbers, each " + RangeText(range), set, JsonOf(field)};
 }
@@ -168,14 +148,15 @@ OptionValue AovValue() {
   names.push_back("all");
   auto set = [](Options& o, const GivenOption& g) {
     try {
-      o.aovs = AovsFromNames(SplitCommas(g.value()));
+      o.api.render.aovs.clear();
+      for (Aov aov : AovsFromNames(SplitCommas(g.value()))) o.api.render.aovs.emplace_back(AovName(aov));
     } catch (const Error& e) {
       throw UsageError(g.name + ": " + e.what());
     }
   };
   auto json = [](const Options& o) {
     std::vector<std::string> aovs;
-    for (Aov aov : o.aovs) aovs.push_back(JsonString(AovName(aov)));
+    for (const std::string& aov : o.api.render.aovs) aovs.push_back(JsonString(aov));
     return JsonArray(aovs);
   };
   return {ChoicesText(names) + ", comma-separated", set, json};
@@ -187,9 +168,9 @@ OptionValue MaxMemoryValue() {
     if (!bytes || *bytes < (uint64_t(1) << 20))
       throw UsageError(g.name + " expects a size of at least 1M (bytes, or with K, M, G or T), got \"" + g.value() +
                        "\"");
-    o.load.maxMemory = *bytes;
+    o.api.scene.maxMemory = *bytes;
   };
-  return {"≥ 1M", set, [](const Options& o) { return std::to_string(o.load.maxMemory); }};
+  return {"≥ 1M", set, [](const Options& o) { return std::to_string(o.api.scene.maxMemory); }};
 }
 
 OptionValue MaxTexelsValue() {
@@ -198,15 +179,14 @@ OptionValue MaxTexelsValue() {
     std::optional<uint64_t> texels = ParseByteSize(g.value());
     if (!texels) throw UsageError(g.name + " expects a count (a number, or with K, M or G), got \"" + g.value() + "\"");
     if (!range.Holds(double(*texels))) throw UsageError(OutOfRange(g.name, range, double(*texels), g.value()));
-    o.load.maxTextureTexels = *texels;
+    o.api.scene.maxTexels = *texels;
   };
-  return {RangeText(range) + " (0: 256M)", set,
-          [](const Options& o) { return std::to_string(o.load.maxTextureTexels); }};
+  return {RangeText(range) + " (0: 256M)", set, [](const Options& o) { return std::to_string(o.api.scene.maxTexels); }};
 }
 
 OptionValue AllowExternalUrisValue() {
-  return {"", [](Options& o, const GivenOption&) { o.load.allowExternalUris = true; },
-          [](const Options& o) { return std::string(o.load.allowExternalUris ? "true" : "false"); }};
+  return {"", [](Options& o, const GivenOption&) { o.api.scene.allowExternalUris = true; },
+          [](const Options& o) { return std::string(o.api.scene.allowExternalUris ? "true" : "false"); }};
 }
 
 OptionValue FramesValue() {

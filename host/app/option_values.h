@@ -36,21 +36,44 @@ Range SettingRange(const std::string& key);
 template <class T>
 T ParseNumber(const std::string& opt, const std::string& text, const Range& r);
 
-std::function<std::string(const Options&)> JsonOf(uint32_t Options::*field);
-std::function<std::string(const Options&)> JsonOf(std::optional<uint32_t> Options::*field);
-std::function<std::string(const Options&)> JsonOf(double Options::*field);
-std::function<std::string(const Options&)> JsonOf(std::optional<double> Options::*field);
-std::function<std::string(const Options&)> JsonOf(float Options::*field);
-std::function<std::string(const Options&)> JsonOf(bool Options::*field);
-std::function<std::string(const Options&)> JsonOf(std::string Options::*field);
-std::function<std::string(const Options&)> JsonOf(std::optional<std::array<float, 3>> Options::*field);
+// Where an option keeps its value: a member of Options (Own) or of the library's settings
+// in Options::api (Api: the part of ApiSettings, then the member).
+template <class T>
+struct Field {
+  std::function<T&(Options&)> at;
+  T& operator()(Options& o) const { return at(o); }
+  const T& operator()(const Options& o) const { return at(const_cast<Options&>(o)); }
+};
+template <class T>
+Field<T> Own(T Options::*member) {
+  return {[member](Options& o) -> T& { return o.*member; }};
+}
+template <class Part, class T>
+Field<T> Api(Part ApiSettings::*part, T Part::*member) {
+  return {[part, member](Options& o) -> T& { return o.api.*part.*member; }};
+}
+
+// A value as --stats writes it: a number, true/false, a string, null for an absent one.
+std::string JsonValue(uint32_t v);
+std::string JsonValue(const std::optional<uint32_t>& v);
+std::string JsonValue(double v);
+std::string JsonValue(const std::optional<double>& v);
+std::string JsonValue(float v);
+std::string JsonValue(bool v);
+std::string JsonValue(const std::string& v);
+std::string JsonValue(const std::optional<std::array<float, 3>>& v);
+
+template <class T>
+std::function<std::string(const Options&)> JsonOf(Field<T> field) {
+  return [field](const Options& o) { return JsonValue(field(o)); };
+}
 
 // A number in `range` stored in `field` (plain or optional).
-template <class Field>
-OptionValue Number(Field Options::*field, Range range) {
+template <class T>
+OptionValue Number(Field<T> field, Range range) {
   return {RangeText(range),
           [field, range](Options& o, const GivenOption& g) {
-            o.*field = ParseNumber<typename ValueOf<Field>::type>(g.name, g.value(), range);
+            field(o) = ParseNumber<typename ValueOf<T>::type>(g.name, g.value(), range);
           },
           JsonOf(field)};
 }
@@ -61,25 +84,25 @@ std::string ChoicesText(const std::vector<std::string>& names);
 
 // One of the named values of `field`, its name in the stats.
 template <class E>
-OptionValue Choice(E Options::*field, std::vector<std::pair<std::string, E>> choices) {
+OptionValue Choice(Field<E> field, std::vector<std::pair<std::string, E>> choices) {
   std::vector<std::string> names;
   for (const auto& [name, value] : choices) names.push_back(name);
   return {ChoicesText(names),
           [field, choices, names](Options& o, const GivenOption& g) {
             for (const auto& [name, value] : choices)
-              if (name == g.value()) return void(o.*field = value);
+              if (name == g.value()) return void(field(o) = value);
             ThrowNotAChoice(g, names);
           },
           [field, choices](const Options& o) {
             for (const auto& [name, value] : choices)
-              if (value == o.*field) return "\"" + name + "\"";
+              if (value == field(o)) return "\"" + name + "\"";
             return std::string("null");
           }};
 }
 
-OptionValue Flag(bool Options::*field);  // sets it true; false in the stats when absent
+OptionValue Flag(Field<bool> field);  // sets it true; false in the stats when absent
 // Any text (`needs` null), or a non-empty one: `needs` completes "--opt needs ..." if empty.
-OptionValue Text(std::string Options::*field, const char* needs = nullptr);
+OptionValue Text(Field<std::string> field, const char* needs = nullptr);
 OptionValue NoStats(OptionValue v);  // the option leaves no value in the stats
 
 // The values of the options whose values are of their own kind (option_values.cpp).
@@ -90,7 +113,7 @@ OptionValue CheckpointValue();
 OptionValue DiffValue();
 OptionValue BackgroundValue();
 // X,Y,Z: a point or direction in scene units.
-OptionValue PointValue(std::optional<std::array<float, 3>> Options::*field, const std::string& key);
+OptionValue PointValue(Field<std::optional<std::array<float, 3>>> field, const std::string& key);
 OptionValue AovValue();
 OptionValue FramesValue();  // FIRST:LAST[:STEP]
 OptionValue MaxMemoryValue();

@@ -3,7 +3,6 @@
 #include <cstdlib>
 
 #include "app/option_table.h"
-#include "app/options_api.h"
 #include "session/budget.h"
 
 namespace vkpt::internal {
@@ -33,18 +32,20 @@ Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error,
 
 // The checks between options, and what follows from them (the --spp bound, --out's name).
 void Complete(Options& o) {
-  if (o.compare && o.backend != vkpt::Backend::Auto) throw UsageError("--compare uses both backends; drop --backend");
-  if (o.compare && (o.time || o.noiseTarget || o.Budget().adaptive))
+  if (o.compare && o.api.scene.backend != vkpt::Backend::Auto)
+    throw UsageError("--compare uses both backends; drop --backend");
+  if (o.compare && (o.api.render.seconds || o.api.render.noiseTarget || o.Budget().adaptive))
     throw UsageError(
         "--compare renders both backends with the same samples; it takes no --time, --noise-target or --adaptive");
-  if (o.compare && (!o.aovs.empty() || o.denoise))
+  if (o.compare && (!o.api.render.aovs.empty() || o.api.render.denoise))
     throw UsageError("--compare checks the backends against each other; it takes no --aov or --denoise");
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
-  if (o.at && o.animation.empty()) throw UsageError(kTimeWithoutAnimation);
-  if (o.frames && o.at) throw UsageError("--frames gives each frame its time (k / --fps); drop --at");
+  if (o.api.render.time != 0.0 && o.api.scene.animation.empty()) throw UsageError(kTimeWithoutAnimation);
+  if (o.frames && o.api.render.time != 0.0)
+    throw UsageError("--frames gives each frame its time (k / --fps); drop --at");
   if (o.frames && o.compare) throw UsageError("--compare checks one image; drop --frames");
   try {
-    CheckSettings(ApiSettingsOf(o));  // the library's own checks
+    CheckSettings(o.api);  // the library's own checks
   } catch (const SettingError& e) {
     throw UsageError(e.what());
   }
@@ -82,7 +83,7 @@ Options ParseOptions(int argc, const char* const* argv) {
     }
     def->how.set(o, GivenOption{arg, values});
   }
-  if (const char* env = std::getenv("VKPT_VALIDATION"); env && std::string(env) == "1") o.validation = true;
+  if (const char* env = std::getenv("VKPT_VALIDATION"); env && std::string(env) == "1") o.api.scene.validation = true;
   if (o.help || o.version || o.listDevices) return o;
   if (!o.diff.empty()) {
     if (!o.scene.empty() || o.compare || !o.stats.empty())

@@ -32,7 +32,8 @@ void PrepareFrame(Prepared& p, const Options& o, bool report, uint32_t ranks) {
   if (report && o.verbose) {
     const PreparedFrame& frame = p.view.prepared;
     PrintLoadReport(p.scene(), p.rs(), frame.camera, frame.cameraIndex);
-    if (!o.env.empty()) std::printf("  environment: rotated %g° about +Y\n", o.envRotation);
+    if (!o.api.scene.environment.empty())
+      std::printf("  environment: rotated %g° about +Y\n", o.api.render.environmentRotation);
     std::printf("  memory: %s counted for the %u × %u image (%s)\n", FormatBytes(frame.memory).c_str(), frame.size.x,
                 frame.size.y, DescribeParts(frame.parts).c_str());
   }
@@ -43,8 +44,8 @@ Prepared Prepare(const Options& o, bool report, uint32_t ranks) {
   CheckOutputPath(o.out);  // fail before a long render, not after
   if (!o.stats.empty()) CheckWritablePath(o.stats, "a stats");
   // lavapipe reads LP_NUM_THREADS when the device is created: --threads applies to it too.
-  if (o.threads && (o.backend != vkpt::Backend::Cpu || o.compare))
-    setenv("LP_NUM_THREADS", std::to_string(o.threads).c_str(), 1);
+  if (o.api.scene.threads && (o.api.scene.backend != vkpt::Backend::Cpu || o.compare))
+    setenv("LP_NUM_THREADS", std::to_string(o.api.scene.threads).c_str(), 1);
   p.client = std::make_unique<SceneClient>(o, LogFor(o, report));
   PrepareFrame(p, o, report, ranks);
   return p;

@@ -18,12 +18,12 @@
 namespace vkpt::internal {
 
 RenderedFrame RenderReference(Prepared& p, const Options& o) {
-  const RenderBackend cpu(nullptr, p.rs(), o.threads);
+  const RenderBackend cpu(nullptr, p.rs(), o.api.scene.threads);
   const std::unique_ptr<FrameRenderer> frame = cpu.BeginFrame(p.view.prepared.params, 0);
-  LocalPasses source(*frame, o.chunkSpp);
+  LocalPasses source(*frame, o.api.render.chunkSpp);
   SessionSettings settings;
   settings.budget.spp = o.Budget().spp;
-  settings.budget.chunkSpp = o.chunkSpp;
+  settings.budget.chunkSpp = o.api.render.chunkSpp;
   settings.stop = GracefulStop::Arrived;
   SessionHooks hooks;
   hooks.progress = ProgressLine();

@@ -62,8 +62,10 @@ std::string DiffPath(const std::string& out) {
 std::string StopReasonText(const RenderedFrame& frame, const Options& o) {
   char why[96];
   switch (frame.stoppedBy) {
-    case StopReason::kTime: std::snprintf(why, sizeof why, "--time %g s", *o.time); break;
-    case StopReason::kNoiseTarget: std::snprintf(why, sizeof why, "--noise-target %g", *o.noiseTarget); break;
+    case StopReason::kTime: std::snprintf(why, sizeof why, "--time %g s", *o.api.render.seconds); break;
+    case StopReason::kNoiseTarget:
+      std::snprintf(why, sizeof why, "--noise-target %g", *o.api.render.noiseTarget);
+      break;
     case StopReason::kConverged: std::snprintf(why, sizeof why, "every pixel converged (--adaptive)"); break;
     case StopReason::kSignal:
       std::snprintf(why, sizeof why, "%s", GracefulStop::Signal() == SIGTERM ? "SIGTERM" : "SIGINT");
@@ -96,9 +98,9 @@ void PrintOutputs(const RenderedFrame& frame, const Options& o, const std::vecto
   for (const RankShare& rank : frame.ranks)
     std::printf("  %s: %u chunk(s) in %.3f s, %s sent\n", rank.name.c_str(), rank.chunks, rank.renderSeconds,
                 FormatBytes(rank.bytesSent).c_str());
-  if (!o.aovs.empty()) {
+  if (!o.api.render.aovs.empty()) {
     std::string names, written;
-    for (Aov aov : o.aovs) names += std::string(names.empty() ? "" : ", ") + AovName(aov);
+    for (const std::string& aov : o.api.render.aovs) names += (names.empty() ? "" : ", ") + aov;
     for (size_t k = 1; k < files.size(); ++k) written += std::string(written.empty() ? "" : ", ") + files[k];
     if (written.empty()) written = o.out;
     std::printf("  AOVs: %s (%u samples per pixel, %.3f s) in %s\n", names.c_str(), frame.aovs.samples,
@@ -204,7 +206,7 @@ int CompareBackends(const RenderedFrame& reference, const RenderedFrame& frame, 
   ImageComparison c = CompareImages(reference.image, frame.image);
   WriteImage(DifferenceHeatmap(reference.image, frame.image), DiffPath(o.out));
   std::printf("vkpt: --compare: A = %s (%.3f s), B = %s (%.3f s), seed %u\n%s\n  heat map: %s\n",
-              reference.engine.c_str(), reference.seconds, frame.engine.c_str(), frame.seconds, o.seed,
+              reference.engine.c_str(), reference.seconds, frame.engine.c_str(), frame.seconds, o.api.render.seed,
               c.Summary().c_str(), DiffPath(o.out).c_str());
   if (c.lockstepAgree && c.statisticallyAgree) return 0;
   std::fprintf(stderr, "vkpt: --compare: the CPU and Vulkan images DISAGREE\n");

@@ -74,11 +74,11 @@ int Attempt(const std::function<void()>& step, std::string* message) {
 // The options that must be the same on every rank: all but where and how each renders.
 uint64_t FrameKey(const Options& o, Prepared& p) {
   Options shared = o;
-  shared.backend = vkpt::Backend::Auto;
-  shared.device.clear();
-  shared.threads = 0;
-  shared.batch = 0;
-  shared.validation = shared.verbose = false;
+  shared.api.scene.backend = vkpt::Backend::Auto;
+  shared.api.scene.device.clear();
+  shared.api.scene.threads = 0;
+  shared.api.render.batch = 0;
+  shared.api.scene.validation = shared.verbose = false;
   const std::string key = OptionsAsJson(shared) + std::to_string(p.scene().contentHash);
   ContentHash hash;
   hash.Add({reinterpret_cast<const unsigned char*>(key.data()), key.size()});
@@ -110,7 +110,7 @@ void NextFrame(Prepared& p, const Options& f, uint32_t ranks) {
 
 void PrintFrameLine(uint32_t number, size_t i, size_t frames, const Options& f, Prepared& p, double seconds) {
   std::printf("vkpt: frame %u (%zu of %zu, %.6g s): pose %.3f s, BVH and arrays %.3f s, upload %.3f s, render %.3f s\n",
-              number, i + 1, frames, f.at.value_or(0.0), p.times().pose, p.times().prepare, p.times().upload, seconds);
+              number, i + 1, frames, f.api.render.time, p.times().pose, p.times().prepare, p.times().upload, seconds);
   std::fflush(stdout);
 }
 
@@ -163,7 +163,7 @@ class LocalFrames : public FrameWay {
     // From here the first SIGINT/SIGTERM stops the render after its pass (a sequence after
     // that frame), and the image of the samples taken is still written.
     if (!stop_) stop_.emplace();
-    LocalPasses source(*p.view.renderer, f.chunkSpp);
+    LocalPasses source(*p.view.renderer, f.api.render.chunkSpp);
     const RenderedView rendered = p.client->Finish(p.view, source, p.settings);
     seconds = rendered.frame.seconds;
     return Finish(f, p, rendered, reference ? &*reference : nullptr, frameStats);
@@ -202,7 +202,7 @@ class DealtFrames : public FrameWay {
   // A signal makes rank 0 stop dealing; the others finish their chunk.
   int Render(const Options& f, Prepared& p, std::string* frameStats, double& seconds) override {
     if (!stop_) stop_.emplace();
-    const ChunkPlan plan{f.Budget().spp, f.chunkSpp};
+    const ChunkPlan plan{f.Budget().spp, f.api.render.chunkSpp};
     FrameRenderer& renderer = *p.view.renderer;
     int status = 0;
     if (!Reports()) {

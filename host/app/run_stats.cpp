@@ -88,7 +88,7 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
 
   JsonObject j;
   j.Str("vkpt_version", VKPT_VERSION).Obj("scene", SceneJson(run)).Str("device", p.engine);
-  j.Obj("options", OptionsJson(o)).Int("seed", o.seed).Int("width", image.width).Int("height", image.height);
+  j.Obj("options", OptionsJson(o)).Int("seed", o.api.render.seed).Int("width", image.width).Int("height", image.height);
   j.Int("frame_memory_counted", run.frameMemory);
   j.Int("spp", p.spp).Raw("spp_per_pass", JsonArray(passes)).Int("samples", samples);
   j.Str("stopped_by", StopReasonName(p.stoppedBy)).Num("estimated_rel_mse", p.estimatedRelMse);
@@ -99,7 +99,7 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   j.Num("rays_per_s", double(sums.rays) / p.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));
   j.Int("non_finite_samples", sums.nonFinite).Int("cut_short_samples", sums.cutShort);
   j.Obj("bvh", BvhJson(run.rs.bvhStats)).Int("aov_samples", p.aovs.samples).Raw("files", Strings(run.files));
-  if (!p.ranks.empty()) j.Obj("mpi", MpiJson(p.ranks, o.chunkSpp));
+  if (!p.ranks.empty()) j.Obj("mpi", MpiJson(p.ranks, o.api.render.chunkSpp));
   if (run.reference) {
     JsonObject ref;
     ref.Str("device", run.reference->engine).Num("render_s", run.reference->seconds);

@@ -5,7 +5,6 @@
 #include <utility>
 #include <vector>
 
-#include "app/options_api.h"
 #include "app/report.h"
 #include "image/image.h"
 #include "session/aov.h"
@@ -16,7 +15,7 @@ namespace vkpt::internal {
 namespace {
 
 ClientScene ClientSceneOf(const Options& o, const EngineLog& log) {
-  return {o.leafSize, o.splits, o.compare, !o.frames, o.at.value_or(0.0), log};
+  return {o.leafSize, o.splits, o.compare, !o.frames, o.api.render.time, log};
 }
 
 }  // namespace
@@ -49,7 +48,7 @@ struct SceneClient::Impl {
 };
 
 SceneClient::SceneClient(const Options& o, const EngineLog& log)
-    : impl_(std::make_unique<Impl>(Impl{OpenScene(o.scene, ApiSettingsOf(o).scene, ClientSceneOf(o, log)), {}})) {}
+    : impl_(std::make_unique<Impl>(Impl{OpenScene(o.scene, o.api.scene, ClientSceneOf(o, log)), {}})) {}
 
 SceneClient::~SceneClient() = default;
 SceneClient::SceneClient(SceneClient&&) noexcept = default;
@@ -58,7 +57,7 @@ SceneClient& SceneClient::operator=(SceneClient&&) noexcept = default;
 LoadedScene& SceneClient::Engine() { return EngineOf(impl_->scene); }
 
 BegunView SceneClient::Begin(const Options& o, const ClientView& client) {
-  const ApiSettings settings = ApiSettingsOf(o);
+  const ApiSettings& settings = o.api;
   impl_->frame = settings.render;
   impl_->frame.progress = ProgressLine();
   impl_->frame.cancel = GracefulStop::Arrived;

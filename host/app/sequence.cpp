@@ -33,9 +33,9 @@ std::string FramePath(const std::string& out, uint32_t frame) {
 
 Options FrameOptions(const Options& o, uint32_t frame) {
   Options f = o;
-  if (!o.animation.empty()) f.at = frame / o.fps;
+  if (!o.api.scene.animation.empty()) f.api.render.time = frame / o.fps;
   // A whole turn is no turn: the angle stays within --orbit's range however many frames.
-  if (o.orbit) f.orbit = std::fmod(*o.orbit * frame, 360.0);
+  f.api.camera.orbitDegrees = std::fmod(o.api.camera.orbitDegrees * frame, 360.0);
   f.out = FramePath(o.out, frame);
   f.stats.clear();
   return f;
