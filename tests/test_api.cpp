@@ -1,6 +1,7 @@
 // The library API (vkpt/vkpt.h): renders of one loaded Scene equal the command line's,
 // bit for bit; a camera change equals a fresh load with that camera; Scenes render on two
-// threads at once as they do alone; every failure is a vkpt::Error naming its cause.
+// threads at once as they do alone; every failure is a vkpt::Error naming its cause; the
+// devices listed are the command line's.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -199,6 +200,28 @@ TEST(Api, CancelEndsTheRenderWithTheSamplesTaken) {
   const vkpt::RenderResult whole = scene.Render(vkpt::Camera{}, fixed);
   EXPECT_EQ(whole.stoppedBy, "spp");
   EXPECT_EQ(cancelled.image.data, whole.image.data);
+}
+
+// Devices() lists what --list-devices prints, and a Scene opened on a device by its index
+// renders there (lavapipe in CI: one device, a CPU, with a compute queue).
+TEST(Api, DevicesAreTheCommandLinesList) {
+  const std::vector<vkpt::Device> devices = vkpt::Devices();
+  ASSERT_FALSE(devices.empty()) << "lavapipe (mesa-vulkan-drivers) should be installed";
+  const test::ProcessResult r = test::RunVkpt({"--list-devices"});
+  ASSERT_TRUE(r.ExitedWith(0)) << r.Describe();
+  std::string listed;
+  for (size_t i = 0; i < devices.size(); ++i) {
+    const vkpt::Device& d = devices[i];
+    EXPECT_EQ(d.index, i);
+    EXPECT_GE(d.apiMajor * 10 + d.apiMinor, 12u) << d.name;
+    listed += std::to_string(d.index) + ": " + d.name + " (" + d.type + ", Vulkan " + std::to_string(d.apiMajor) + "." +
+              std::to_string(d.apiMinor) + ")" + (d.compute ? "" : " [no compute queue]") + "\n";
+  }
+  EXPECT_EQ(r.out, listed);
+  vkpt::SceneOptions options;
+  options.backend = vkpt::Backend::Vulkan;
+  options.device = std::to_string(devices.back().index);
+  EXPECT_EQ(vkpt::Scene(kCornell, options).Device(), devices.back().name);
 }
 
 }  // namespace

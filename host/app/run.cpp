@@ -27,21 +27,19 @@
 #include "util/content_hash.h"
 #include "util/error.h"
 #include "util/graceful_stop.h"
-#include "vk/context.h"
 
 namespace vkpt::internal {
 namespace {
 
 int ListDevices() {
-  std::vector<vk::DeviceInfo> devices = vk::ListDevices();
+  const std::vector<vkpt::Device> devices = vkpt::Devices();
   if (devices.empty()) {
     std::printf("no Vulkan devices (install mesa-vulkan-drivers for lavapipe, a software device)\n");
     return 0;
   }
-  for (const vk::DeviceInfo& d : devices)
-    std::printf("%u: %s (%s, Vulkan %u.%u)%s\n", d.index, d.name.c_str(), d.TypeName(),
-                VK_API_VERSION_MAJOR(d.apiVersion), VK_API_VERSION_MINOR(d.apiVersion),
-                d.hasComputeQueue ? "" : " [no compute queue]");
+  for (const vkpt::Device& d : devices)
+    std::printf("%u: %s (%s, Vulkan %u.%u)%s\n", d.index, d.name.c_str(), d.type.c_str(), d.apiMajor, d.apiMinor,
+                d.compute ? "" : " [no compute queue]");
   return 0;
 }
 

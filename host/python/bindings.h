@@ -52,4 +52,7 @@ class PyRender {
 
 void BindRender(py::module_& m);
 
+// vkpt.devices() and vkpt.Device (vkpt::Devices).
+void BindDevices(py::module_& m);
+
 }  // namespace vkpt::python

@@ -241,4 +241,5 @@ PYBIND11_MODULE(_vkpt, m) {
   BindCamera(m);
   BindRender(m);
   BindScene(m);
+  BindDevices(m);
 }

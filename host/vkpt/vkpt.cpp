@@ -1,8 +1,9 @@
 // The library's facade: a Scene's render (vkpt/client.h's view, as the command line
-// renders it) given back in the public types of vkpt/vkpt.h, and Save. Below, vkpt::Image
+// renders it) given back in the public types of vkpt/vkpt.h, Save and Devices. Below, vkpt::Image
 // is the public image and Image the engine's (vkpt::internal).
 #include <utility>
 
+#include "engine/devices.h"
 #include "image/aov_files.h"
 #include "image/image.h"
 #include "image/view_transform.h"
@@ -93,6 +94,15 @@ RenderResult Scene::Render(const Camera& camera, const RenderOptions& options) {
 std::vector<std::string> v1::Save(const RenderResult& result, const std::string& path, const std::string& view,
                                   float exposure) {
   return internal::SaveRender(result, path, view, exposure);
+}
+
+std::vector<Device> v1::Devices() {
+  return internal::Translated([] {
+    std::vector<Device> devices;
+    for (const internal::DeviceDescription& d : internal::DescribeDevices())
+      devices.push_back({d.index, d.name, d.type, d.apiMajor, d.apiMinor, d.compute});
+    return devices;
+  });
 }
 
 }  // namespace vkpt

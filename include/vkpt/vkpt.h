@@ -163,6 +163,20 @@ class VKPT_API Scene {
   std::unique_ptr<Impl> impl_;
 };
 
+// A Vulkan device a Scene can render on: SceneOptions::device names it by index or by a
+// substring of its name.
+struct Device {
+  uint32_t index = 0;
+  std::string name;
+  std::string type;                     // "discrete GPU", "integrated GPU", "virtual GPU", "CPU" or "other"
+  uint32_t apiMajor = 0, apiMinor = 0;  // the Vulkan version it supports
+  bool compute = false;                 // it has a compute queue, which vkpt needs
+};
+
+// The Vulkan devices of this machine, in index order; empty without a Vulkan loader or
+// driver (the CPU backend renders all the same).
+VKPT_API std::vector<Device> Devices();
+
 // Writes a render as the command line writes it, by the extension of `path`: .exr holds the
 // image and its AOVs as layers ("depth.Z", …); beside a .pfm or .png each AOV goes to
 // NAME.<aov>.EXT; with RenderOptions::denoise the raw image goes to NAME.raw.EXT, and the

@@ -227,3 +227,15 @@ def test_renders_of_one_scene_keep_no_heap(backend):
         scene.render(**small)
     gc.collect()
     assert _heap_in_use() - after50 <= 256 * 1024
+
+
+def test_devices_are_the_command_lines_list():
+    devices = vkpt.devices()
+    assert devices, "lavapipe (mesa-vulkan-drivers) should be installed"
+    listed = run_vkpt("--list-devices").stdout
+    for d in devices:
+        major, minor = d.api_version
+        assert f"{d.index}: {d.name} ({d.type}, Vulkan {major}.{minor})" in listed
+        assert d.compute and repr(d).startswith("vkpt.Device(index=")
+    scene = vkpt.Scene(CORNELL, backend="vulkan", device=str(devices[-1].index))
+    assert scene.device == devices[-1].name

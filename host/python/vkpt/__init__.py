@@ -10,6 +10,6 @@
 See docs/python.md.
 """
 
-from ._vkpt import Camera, Error, Render, Scene, SettingError, __version__
+from ._vkpt import Camera, Device, Error, Render, Scene, SettingError, __version__, devices
 
-__all__ = ["Camera", "Error", "Render", "Scene", "SettingError", "__version__"]
+__all__ = ["Camera", "Device", "Error", "Render", "Scene", "SettingError", "__version__", "devices"]
