@@ -9,12 +9,9 @@
 #include <vector>
 
 #include "bvh/bvh.h"
-#include "engine/settings.h"
 #include "image/aov_layer.h"
 #include "image/view_transform.h"
-#include "scene/load_limits.h"
 #include "session/budget.h"
-#include "session/chunked_frame.h"
 #include "vkpt/settings_schema.h"
 #include "vkpt/vkpt.h"
 
