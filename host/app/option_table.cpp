@@ -18,9 +18,6 @@ using O = Options;
 using S = vkpt::SceneOptions;
 using C = vkpt::Camera;
 using R = vkpt::RenderOptions;
-constexpr auto kScenePart = &ApiSettings::scene;
-constexpr auto kCameraPart = &ApiSettings::camera;
-constexpr auto kRenderPart = &ApiSettings::render;
 
 // The row of a setting of the library's schema (vkpt/settings_schema.h): its flag and
 // meaning are the schema's, to which `more` adds what only the command line does.

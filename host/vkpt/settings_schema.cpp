@@ -100,36 +100,33 @@ constexpr Range kRadiance{0.0};                 // a radiance or its scale
 using S = vkpt::SceneOptions;
 using C = vkpt::Camera;
 using R = vkpt::RenderOptions;
-constexpr auto kScene = &ApiSettings::scene;
-constexpr auto kCamera = &ApiSettings::camera;
-constexpr auto kRender = &ApiSettings::render;
 
 std::vector<Setting> SceneRows() {
   return {
-      Row("backend", "--backend", "SceneOptions::backend", {}, kScene, &S::backend,
+      Row("backend", "--backend", "SceneOptions::backend", {}, kScenePart, &S::backend,
           "renderer: `vulkan` (compute shader), `cpu` (reference) or `auto` (vulkan if a device exists)"),
-      Row("device", "--device", "SceneOptions::device", {}, kScene, &S::device,
+      Row("device", "--device", "SceneOptions::device", {}, kScenePart, &S::device,
           "Vulkan device by index or name substring"),
-      Row("validation", "--validation", "SceneOptions::validation", {}, kScene, &S::validation,
+      Row("validation", "--validation", "SceneOptions::validation", {}, kScenePart, &S::validation,
           "Vulkan validation layer (also `VKPT_VALIDATION=1`); any message: exit status 3"),
-      Row("threads", "--threads", "SceneOptions::threads", Range{0, 1024}, kScene, &S::threads,
+      Row("threads", "--threads", "SceneOptions::threads", Range{0, 1024}, kScenePart, &S::threads,
           "CPU threads (0: all cores); also `LP_NUM_THREADS` for lavapipe"),
       // Bytes (0: half the RAM): any count, the load refusing a scene that needs more.
-      Row("max_memory", "--max-memory", "SceneOptions::maxMemory", Range{0, 18446744073709551615.0}, kScene,
+      Row("max_memory", "--max-memory", "SceneOptions::maxMemory", Range{0, 18446744073709551615.0}, kScenePart,
           &S::maxMemory, "host memory a scene may need, checked before it is read"),
-      Row("max_texels", "--max-texels", "SceneOptions::maxTexels", Range{0, double(1u << 31)}, kScene, &S::maxTexels,
-          "texels the scene's texture images may have, checked from their headers"),
-      Row("allow_external_uris", "--allow-external-uris", "SceneOptions::allowExternalUris", {}, kScene,
+      Row("max_texels", "--max-texels", "SceneOptions::maxTexels", Range{0, double(1u << 31)}, kScenePart,
+          &S::maxTexels, "texels the scene's texture images may have, checked from their headers"),
+      Row("allow_external_uris", "--allow-external-uris", "SceneOptions::allowExternalUris", {}, kScenePart,
           &S::allowExternalUris, "let a glTF read files outside its own folder"),
-      Row("variant", "--variant", "SceneOptions::variant", {}, kScene, &S::variant,
+      Row("variant", "--variant", "SceneOptions::variant", {}, kScenePart, &S::variant,
           "render the materials of this KHR_materials_variants variant"),
-      Row("animation", "--animation", "SceneOptions::animation", {}, kScene, &S::animation,
+      Row("animation", "--animation", "SceneOptions::animation", {}, kScenePart, &S::animation,
           "pose the scene by this glTF animation"),
-      Row("environment", "--env", "SceneOptions::environment", {}, kScene, &S::environment,
+      Row("environment", "--env", "SceneOptions::environment", {}, kScenePart, &S::environment,
           "equirectangular environment map, `.hdr` or `.exr`, lighting the scene instead of a background"),
-      Row("environment_intensity", "--env-intensity", "SceneOptions::environmentIntensity", kRadiance, kScene,
+      Row("environment_intensity", "--env-intensity", "SceneOptions::environmentIntensity", kRadiance, kScenePart,
           &S::environmentIntensity, "multiply the environment map's radiance by this"),
-      Row("light_sampler", "--light-sampler", "SceneOptions::lightSampler", {}, kScene, &S::lightSampler,
+      Row("light_sampler", "--light-sampler", "SceneOptions::lightSampler", {}, kScenePart, &S::lightSampler,
           "how light sampling chooses among emissive triangles, point and spot lights: `tree` (by how much each may "
           "light the shading point: a light tree), `power` (by power alone) or `auto` (the tree from 8 such lights "
           "on)"),
@@ -138,15 +135,16 @@ std::vector<Setting> SceneRows() {
 
 std::vector<Setting> CameraRows() {
   return {
-      Row("index", "--camera", "Camera::index", Range{0, 1u << 20}, kCamera, &C::index,
+      Row("index", "--camera", "Camera::index", Range{0, 1u << 20}, kCameraPart, &C::index,
           "glTF camera to render from, in scene order; without one, a camera framing the scene"),
-      Row("look_from", "--look-from", "Camera::lookFrom", kCoordinate, kCamera, &C::lookFrom,
+      Row("look_from", "--look-from", "Camera::lookFrom", kCoordinate, kCameraPart, &C::lookFrom,
           "move the camera to this point (scene units)"),
-      Row("look_at", "--look-at", "Camera::lookAt", kCoordinate, kCamera, &C::lookAt, "aim the camera at this point"),
-      Row("up", "--up", "Camera::up", kCoordinate, kCamera, &C::up, "the direction that is up in the image"),
-      Row("fov", "--fov", "Camera::fovDegrees", Range{0.0, 179.0, true}, kCamera, &C::fovDegrees,
+      Row("look_at", "--look-at", "Camera::lookAt", kCoordinate, kCameraPart, &C::lookAt,
+          "aim the camera at this point"),
+      Row("up", "--up", "Camera::up", kCoordinate, kCameraPart, &C::up, "the direction that is up in the image"),
+      Row("fov", "--fov", "Camera::fovDegrees", Range{0.0, 179.0, true}, kCameraPart, &C::fovDegrees,
           "vertical field of view of a perspective camera"),
-      Row("orbit", "--orbit", "Camera::orbitDegrees", kTurn, kCamera, &C::orbitDegrees,
+      Row("orbit", "--orbit", "Camera::orbitDegrees", kTurn, kCameraPart, &C::orbitDegrees,
           "turn the camera about the up axis through `--look-at` (else the scene's centre), counter-clockwise seen "
           "from above"),
   };
@@ -154,36 +152,36 @@ std::vector<Setting> CameraRows() {
 
 std::vector<Setting> RenderRows() {
   return {
-      Row("width", "--width", "RenderOptions::width", Range{1, kMaxSide}, kRender, &R::width,
+      Row("width", "--width", "RenderOptions::width", Range{1, kMaxSide}, kRenderPart, &R::width,
           "image width in pixels; give one side and the other follows the camera's aspect ratio"),
-      Row("height", "--height", "RenderOptions::height", Range{1, kMaxSide}, kRender, &R::height,
+      Row("height", "--height", "RenderOptions::height", Range{1, kMaxSide}, kRenderPart, &R::height,
           "image height in pixels"),
-      Row("spp", "--spp", "RenderOptions::spp", Range{1, kMaxCount}, kRender, &R::spp,
+      Row("spp", "--spp", "RenderOptions::spp", Range{1, kMaxCount}, kRenderPart, &R::spp,
           "samples per pixel; with `--time` or `--noise-target` the most any pixel takes"),
-      Row("seconds", "--time", "RenderOptions::seconds", Range{1e-3, 1e7}, kRender, &R::seconds,
+      Row("seconds", "--time", "RenderOptions::seconds", Range{1e-3, 1e7}, kRenderPart, &R::seconds,
           "render passes until this many seconds of rendering are spent (after loading, BVH build and upload)"),
-      Row("noise_target", "--noise-target", "RenderOptions::noiseTarget", Range{0.0, 1.0, true}, kRender,
+      Row("noise_target", "--noise-target", "RenderOptions::noiseTarget", Range{0.0, 1.0, true}, kRenderPart,
           &R::noiseTarget, "stop once the image's estimated relMSE is at most this; turns on `--adaptive`"),
-      Row("seed", "--seed", "RenderOptions::seed", Range{0, 4294967295.0}, kRender, &R::seed,
+      Row("seed", "--seed", "RenderOptions::seed", Range{0, 4294967295.0}, kRenderPart, &R::seed,
           "random seed; same seed and device give a bit-identical image"),
-      Row("max_depth", "--max-depth", "RenderOptions::maxDepth", Range{0, 1024}, kRender, &R::maxDepth,
+      Row("max_depth", "--max-depth", "RenderOptions::maxDepth", Range{0, 1024}, kRenderPart, &R::maxDepth,
           "maximum number of bounces (0: emission seen directly only)"),
-      Row("rr_depth", "--rr-depth", "RenderOptions::rrDepth", Range{0, 1024}, kRender, &R::rrDepth,
+      Row("rr_depth", "--rr-depth", "RenderOptions::rrDepth", Range{0, 1024}, kRenderPart, &R::rrDepth,
           "bounces before Russian roulette starts"),
-      Row("chunk_spp", "--chunk", "RenderOptions::chunkSpp", Range{1, kMaxCount}, kRender, &R::chunkSpp,
+      Row("chunk_spp", "--chunk", "RenderOptions::chunkSpp", Range{1, kMaxCount}, kRenderPart, &R::chunkSpp,
           "samples per pixel per chunk: the image depends on it, not on passes or MPI ranks"),
-      Row("batch", "--batch", "RenderOptions::batch", Range{0, kMaxCount}, kRender, &R::batch,
+      Row("batch", "--batch", "RenderOptions::batch", Range{0, kMaxCount}, kRenderPart, &R::batch,
           "Vulkan: samples per pixel per queue submission (0: automatic)"),
-      Row("time", "--at", "RenderOptions::time", Range{0.0, 1e9}, kRender, &R::time,
+      Row("time", "--at", "RenderOptions::time", Range{0.0, 1e9}, kRenderPart, &R::time,
           "time in the `--animation` at which the scene is posed"),
-      Row("background", "--background", "RenderOptions::background", kRadiance, kRender, &R::background,
+      Row("background", "--background", "RenderOptions::background", kRadiance, kRenderPart, &R::background,
           "constant environment radiance for rays that leave the scene"),
-      Row("environment_rotation", "--env-rotation", "RenderOptions::environmentRotation", kTurn, kRender,
+      Row("environment_rotation", "--env-rotation", "RenderOptions::environmentRotation", kTurn, kRenderPart,
           &R::environmentRotation, "turn the map about +Y, counter-clockwise seen from above"),
-      Row("texture_lod", "--texture-lod", "RenderOptions::textureLod", {}, kRender, &R::textureLod,
+      Row("texture_lod", "--texture-lod", "RenderOptions::textureLod", {}, kRenderPart, &R::textureLod,
           "mip levels of colour textures after the camera's hit: by each path's ray cone, or level 0 everywhere"),
-      Row("aovs", "--aov", "RenderOptions::aovs", {}, kRender, &R::aovs, "also make these AOVs"),
-      Row("denoise", "--denoise", "RenderOptions::denoise", {}, kRender, &R::denoise,
+      Row("aovs", "--aov", "RenderOptions::aovs", {}, kRenderPart, &R::aovs, "also make these AOVs"),
+      Row("denoise", "--denoise", "RenderOptions::denoise", {}, kRenderPart, &R::denoise,
           "filter the image with vkpt's own denoiser and keep the raw image too"),
   };
 }

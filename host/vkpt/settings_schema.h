@@ -51,6 +51,12 @@ struct ApiSettings {
   vkpt::RenderOptions render;
 };
 
+// The parts of ApiSettings, for the tables that name a setting by its part and member
+// (settings_schema.cpp, the command line's option table).
+inline constexpr auto kScenePart = &ApiSettings::scene;
+inline constexpr auto kCameraPart = &ApiSettings::camera;
+inline constexpr auto kRenderPart = &ApiSettings::render;
+
 struct Setting {
   std::string key;    // the Python keyword and the --stats key: "max_depth"
   std::string flag;   // the command line's option: "--max-depth"
