@@ -3,6 +3,7 @@
 // release the GIL; Ctrl-C or an exception from a progress callback cancels a render
 // between passes and is raised when it returns.
 #include <algorithm>
+#include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -13,6 +14,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "python/bindings.h"
 #include "vkpt/api_terms.h"
@@ -90,11 +92,11 @@ PyRender Render(PyScene& self, const py::object& camera, RenderOptions options, 
 const SceneOptions kScene;
 const RenderOptions kRender;
 
-std::unique_ptr<PyScene> OpenScene(const std::string& path, const std::string& backend, const std::string& device,
-                                   bool validation, unsigned threads, uint64_t maxMemory, uint64_t maxTexels,
-                                   bool allowExternalUris, const std::string& variant, const std::string& animation,
-                                   const std::string& environment, float environmentIntensity,
-                                   const std::string& lightSampler) {
+std::unique_ptr<PyScene> OpenScene(const std::filesystem::path& path, const std::string& backend,
+                                   const std::string& device, bool validation, unsigned threads, uint64_t maxMemory,
+                                   uint64_t maxTexels, bool allowExternalUris, const std::string& variant,
+                                   const std::string& animation, const std::string& environment,
+                                   float environmentIntensity, const std::string& lightSampler) {
   SceneOptions o;
   o.backend = BackendFrom(backend);
   o.device = device;
@@ -109,7 +111,7 @@ std::unique_ptr<PyScene> OpenScene(const std::string& path, const std::string& b
   o.environmentIntensity = environmentIntensity;
   o.lightSampler = LightSamplerFrom(lightSampler);
   py::gil_scoped_release released;
-  return std::make_unique<PyScene>(Scene(path, o));
+  return std::make_unique<PyScene>(Scene(path.string(), o));
 }
 
 PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint32_t> width,

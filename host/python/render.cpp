@@ -1,8 +1,10 @@
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "python/bindings.h"
 
@@ -75,9 +77,9 @@ image. The arrays are views of the render's memory.)")
       .def_property_readonly("engine", [](const PyRender& r) { return r.Result().engine; })
       .def(
           "save",
-          [](const PyRender& r, const std::string& path, const std::string& view, float exposure) {
+          [](const PyRender& r, const std::filesystem::path& path, const std::string& view, float exposure) {
             py::gil_scoped_release released;
-            return Save(r.Result(), path, view, exposure);
+            return Save(r.Result(), path.string(), view, exposure);
           },
           "path"_a, "view"_a = "neutral", "exposure"_a = 0.0f,
           R"(Writes the render as the vkpt command does, by the extension: .exr (AOVs as layers),

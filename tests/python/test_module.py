@@ -5,6 +5,7 @@ import _thread
 import ctypes
 import gc
 import json
+import pathlib
 import threading
 import time
 
@@ -239,3 +240,13 @@ def test_devices_are_the_command_lines_list():
         assert d.compute and repr(d).startswith("vkpt.Device(index=")
     scene = vkpt.Scene(CORNELL, backend="vulkan", device=str(devices[-1].index))
     assert scene.device == devices[-1].name
+
+
+def test_paths_may_be_pathlike(tmp_path):
+    scene = vkpt.Scene(pathlib.Path(CORNELL), backend="cpu")
+    render = scene.render(**SMALL)
+    written = render.save(tmp_path / "cornell.pfm")
+    assert written == [str(tmp_path / "cornell.pfm")]
+    assert np.array_equal(read_pfm(written[0]), np.asarray(render))
+    with pytest.raises(TypeError):
+        vkpt.Scene(42)
