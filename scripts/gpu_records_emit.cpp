@@ -87,10 +87,9 @@ void Fetch(std::ostringstream& o, const Record& r) {
   o << "  return r;\n}\n\n";
   for (const Item& i : r.items) {
     if (!i.isField || !i.field.fetch) continue;
-    const std::string type = i.field.type == "uvec4" ? "uvec4" : i.field.type;
     const unsigned t = i.field.offset / 16;
     o << "// " << r.name << "::" << i.field.name << " alone.\n"
-      << type << " Fetch" << r.shortName << Capitalized(i.field.name) << "(uint i) {\n"
+      << i.field.type << " Fetch" << r.shortName << Capitalized(i.field.name) << "(uint i) {\n"
       << "  uvec4 x" << t << " = texelFetch(" << r.sampler << ", " << TexelIndex(r, t) << ");\n"
       << "  return " << Read(i.field, false) << ";\n}\n\n";
   }

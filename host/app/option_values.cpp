@@ -5,8 +5,10 @@
 #include <charconv>
 
 #include "app/json_object.h"
+#include "image/aov_layer.h"
 #include "util/byte_size.h"
 #include "util/error.h"
+#include "vkpt/setting_choices.h"
 
 namespace vkpt::internal {
 
@@ -30,13 +32,6 @@ template double ParseNumber<double>(const std::string&, const std::string&, cons
 namespace {
 
 std::string Null() { return "null"; }
-
-// "a, b or c".
-std::string OrList(const std::vector<std::string>& names) {
-  std::string list;
-  for (size_t k = 0; k < names.size(); ++k) list += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
-  return list;
-}
 
 // The comma-separated parts of `text` ("a,,b": "a", "", "b").
 std::vector<std::string> SplitCommas(const std::string& text) {

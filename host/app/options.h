@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "bvh/bvh.h"
-#include "image/aov_layer.h"
 #include "image/view_transform.h"
 #include "session/budget.h"
 #include "vkpt/settings_schema.h"
@@ -53,8 +52,6 @@ struct Options {
     const vkpt::RenderOptions& r = api.render;
     return BudgetFor({r.spp, r.seconds, r.noiseTarget, r.adaptive, checkpoint, r.chunkSpp});
   }
-  // The AOVs asked for (--aov), in the order given.
-  std::vector<Aov> Aovs() const { return AovsFromNames(api.render.aovs); }
 };
 
 // Throws UsageError for anything malformed; the message says which option and why.

@@ -14,11 +14,10 @@ const Choices<vkpt::LightSampler>& LightSamplerChoices() {
   return choices;
 }
 
-std::string QuotedNames(const std::vector<std::string>& names) {
-  std::string text;
-  for (size_t i = 0; i < names.size(); ++i)
-    text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + ("\"" + names[i] + "\"");
-  return text;
+std::string OrList(const std::vector<std::string>& names) {
+  std::string list;
+  for (size_t k = 0; k < names.size(); ++k) list += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
+  return list;
 }
 
 }  // namespace vkpt::internal

@@ -17,8 +17,8 @@ using Choices = std::vector<std::pair<std::string, E>>;
 const Choices<vkpt::Backend>& BackendChoices();            // auto, cpu, vulkan
 const Choices<vkpt::LightSampler>& LightSamplerChoices();  // auto, power, tree
 
-// "\"auto\", \"cpu\" or \"vulkan\"".
-std::string QuotedNames(const std::vector<std::string>& names);
+// "a, b or c": how a message lists the values a setting takes.
+std::string OrList(const std::vector<std::string>& names);
 
 // The value named `name` among `choices` of the setting `key`, else a SettingError in
 // Python's terms: backend must be "auto", "cpu" or "vulkan", got "gpu".
@@ -27,9 +27,9 @@ E Chosen(const std::string& key, const Choices<E>& choices, const std::string& n
   std::vector<std::string> names;
   for (const auto& [n, value] : choices) {
     if (n == name) return value;
-    names.push_back(n);
+    names.push_back("\"" + n + "\"");
   }
-  throw SettingError(key + " must be " + QuotedNames(names) + ", got \"" + name + "\"");
+  throw SettingError(key + " must be " + OrList(names) + ", got \"" + name + "\"");
 }
 
 // The name of `value` among `choices` (every value has one).
