@@ -31,7 +31,7 @@ void PrepareFrame(Prepared& p, const Options& o, bool report, uint32_t ranks) {
   p.view = p.client->Begin(o, p.settings);
   if (report && o.verbose) {
     const PreparedFrame& frame = p.view.prepared;
-    PrintLoadReport(p.scene(), p.rs(), frame.camera, frame.cameraIndex);
+    PrintLoadReport(p.scene(), CameraOf(p.view));
     if (!o.api.scene.environment.empty())
       std::printf("  environment: rotated %g° about +Y\n", o.api.render.environmentRotation);
     std::printf("  memory: %s counted for the %u × %u image (%s)\n", FormatBytes(frame.memory).c_str(), frame.size.x,

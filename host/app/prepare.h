@@ -7,6 +7,7 @@
 
 #include "app/options.h"
 #include "app/scene_client.h"
+#include "vkpt/client.h"
 
 namespace vkpt::internal {
 
@@ -16,10 +17,8 @@ struct Prepared {
   ClientView settings;  // the frame's, beyond the API's render options
   BegunView view;       // the frame: its camera, constants, memory and renderer
 
-  LoadedScene& loaded() { return client->Engine(); }
-  const Scene& scene() { return loaded().scene(); }
-  const RenderScene& rs() { return loaded().Arrays(); }
-  RunTimes& times() { return loaded().times; }
+  vkpt::Scene& scene() { return client->Public(); }
+  RunTimes& times() { return TimesOf(scene()); }
 };
 
 // `report`: this process prints the load report (-v) and warnings (rank 0 of an MPI job).

@@ -11,23 +11,19 @@
 #include "image/aov_files.h"
 #include "image/image.h"
 #include "session/aov.h"
-#include "session/local_passes.h"
 #include "util/atomic_write.h"
 #include "util/graceful_stop.h"
 
 namespace vkpt::internal {
 
 RenderedFrame RenderReference(Prepared& p, const Options& o) {
-  const RenderBackend cpu(nullptr, p.rs(), o.api.scene.threads);
-  const std::unique_ptr<FrameRenderer> frame = cpu.BeginFrame(p.view.prepared.params, 0);
-  LocalPasses source(*frame, o.api.render.chunkSpp);
   SessionSettings settings;
   settings.budget.spp = o.Budget().spp;
   settings.budget.chunkSpp = o.api.render.chunkSpp;
   settings.stop = GracefulStop::Arrived;
   SessionHooks hooks;
   hooks.progress = ProgressLine();
-  const RenderedFrame reference = RenderSession(source, settings, hooks);
+  const RenderedFrame reference = RenderOnCpu(p.scene(), p.view, settings, hooks);
   EndProgressLine();
   return reference;
 }
@@ -60,9 +56,8 @@ int Finish(const Options& o, Prepared& p, const RenderedView& rendered, const Re
   const std::vector<std::string> files = WriteFiles(rendered, o);
   phase.Lap(times.write);
   int status = reference ? CompareBackends(*reference, frame, o) : 0;
-  PrintRenderReport(p.scene(), p.rs(), frame, o, files, p.loaded().Backend().DenoiserName());
-  const vk::Context* device = p.loaded().Device();
-  const uint32_t validationMessages = device ? device->ValidationMessages() : 0;
+  PrintRenderReport(p.scene().Stats(), frame, o, files, rendered.denoiser);
+  const uint32_t validationMessages = ValidationMessagesOf(p.scene());
   if (validationMessages) {
     std::fprintf(stderr, "vkpt: %u Vulkan validation message(s) were reported\n", validationMessages);
     status = 3;
@@ -75,8 +70,8 @@ int Finish(const Options& o, Prepared& p, const RenderedView& rendered, const Re
   }
   if (!o.stats.empty() || frameStats) {
     times.total = SecondsSince(p.start);
-    const std::string json = StatsJson(
-        o, {p.scene(), p.rs(), frame, reference, times, validationMessages, status, files, p.view.prepared.memory});
+    const std::string json =
+        StatsJson(o, {p.scene(), frame, reference, times, validationMessages, status, files, p.view.prepared.memory});
     if (frameStats) *frameStats = json;
     else WriteFileAtomically(o.stats, {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
   }

@@ -14,39 +14,43 @@ namespace vkpt::internal {
 namespace {
 
 // " alpha MASK (cutoff c)", " alpha BLEND", or nothing for OPAQUE; with the factor's alpha.
-std::string AlphaNote(const Material& m) {
+std::string AlphaNote(const vkpt::MaterialInfo& m) {
   char note[64] = "";
-  if (m.alphaMode == AlphaMode::kMask)
-    std::snprintf(note, sizeof note, " alpha MASK %.3g (cutoff %.3g)", m.alpha, m.alphaCutoff);
-  else if (m.alphaMode == AlphaMode::kBlend) std::snprintf(note, sizeof note, " alpha BLEND %.3g", m.alpha);
+  if (m.alphaMode == "MASK") std::snprintf(note, sizeof note, " alpha MASK %.3g (cutoff %.3g)", m.alpha, m.alphaCutoff);
+  else if (m.alphaMode == "BLEND") std::snprintf(note, sizeof note, " alpha BLEND %.3g", m.alpha);
   return note;
 }
 
+// Whether the material refracts as the boundary of a volume, where alone its dispersion
+// is seen (as the tracers' Material::RefractsAsVolume decides).
+bool RefractsAsVolume(const vkpt::MaterialInfo& m) {
+  return m.volume && m.transmission > 0.0f && m.ior > 1.0f && !m.unlit;
+}
+
 // The layers and lobes a material adds to the metallic-roughness model, as -v lists them.
-std::string LayerNote(const Material& m) {
+std::string LayerNote(const vkpt::MaterialInfo& m) {
   char note[512] = "";  // room for every layer at once
   int n = 0;
   if (m.clearcoat > 0.0f)
     n +=
         std::snprintf(note + n, sizeof note - n, " clearcoat %.3g (roughness %.3g)", m.clearcoat, m.clearcoatRoughness);
-  if (m.sheenColor != glm::vec3(0.0f))
-    n += std::snprintf(note + n, sizeof note - n, " sheen (%.3g, %.3g, %.3g) roughness %.3g", m.sheenColor.x,
-                       m.sheenColor.y, m.sheenColor.z, m.sheenRoughness);
+  if (m.sheenColor != vkpt::Rgb{})
+    n += std::snprintf(note + n, sizeof note - n, " sheen (%.3g, %.3g, %.3g) roughness %.3g", m.sheenColor[0],
+                       m.sheenColor[1], m.sheenColor[2], m.sheenRoughness);
   if (m.diffuseTransmission > 0.0f)
     n +=
         std::snprintf(note + n, sizeof note - n, " diffuse transmission %.3g (%.3g, %.3g, %.3g)", m.diffuseTransmission,
-                      m.diffuseTransmissionColor.x, m.diffuseTransmissionColor.y, m.diffuseTransmissionColor.z);
+                      m.diffuseTransmissionColor[0], m.diffuseTransmissionColor[1], m.diffuseTransmissionColor[2]);
   if (m.anisotropyStrength > 0.0f)
     n += std::snprintf(note + n, sizeof note - n, " anisotropy %.3g (rotation %.3g rad)", m.anisotropyStrength,
                        m.anisotropyRotation);
   if (m.dispersion > 0.0f)
     n += std::snprintf(note + n, sizeof note - n, " dispersion %.3g (Abbe number %.3g%s)", m.dispersion,
                        20.0f / m.dispersion,
-                       m.RefractsAsVolume() ? "" : "; unseen: it needs a transmissive volume of ior > 1");
+                       RefractsAsVolume(m) ? "" : "; unseen: it needs a transmissive volume of ior > 1");
   if (m.iridescence > 0.0f) {
     // Without a thickness texture the film is as thick as its maximum.
-    float thin =
-        m.texture(TextureSlot::kIridescenceThickness).Present() ? m.iridescenceThicknessMin : m.iridescenceThicknessMax;
+    float thin = m.textures.count("iridescenceThickness") ? m.iridescenceThicknessMin : m.iridescenceThicknessMax;
     std::snprintf(note + n, sizeof note - n, " iridescence %.3g (ior %.3g, %.4g-%.4g nm)", m.iridescence,
                   m.iridescenceIor, thin, m.iridescenceThicknessMax);
   }
@@ -75,21 +79,21 @@ std::string StopReasonText(const RenderedFrame& frame, const Options& o) {
   return why;
 }
 
-void PrintSceneLine(const Scene& scene, const RenderScene& rs) {
-  const BvhStats& bvh = rs.bvhStats;
-  const char* kind = bvh.spatialSplits ? "spatial" : "object";
+void PrintSceneLine(const vkpt::SceneStats& scene) {
+  const vkpt::BvhInfo& bvh = scene.bvh;
   char choice[96] = "";
   if (bvh.rejectedSahCost > 0.0)
     std::snprintf(choice, sizeof choice, " (auto: %s splits' SAH cost was %.3f)",
-                  bvh.spatialSplits ? "object" : "spatial", bvh.rejectedSahCost);
+                  bvh.splits == "spatial" ? "object" : "spatial", bvh.rejectedSahCost);
   std::printf(
-      "  scene: %zu triangles (%u degenerate skipped), %zu emissive; BVH: %s splits%s, %u nodes, %u leaves, "
+      "  scene: %llu triangles (%llu degenerate skipped), %llu emissive; BVH: %s splits%s, %u nodes, %u leaves, "
       "depth %u, %u triangle references, SAH cost %.3f, built in %.2f ms\n",
-      scene.triangles.size(), rs.degenerateTriangles, rs.lights.size(), kind, choice, bvh.nodes, bvh.leaves, bvh.depth,
-      bvh.references, bvh.sahCost, bvh.buildMs);
-  if (!rs.textures.empty())
-    std::printf("  textures: %zu, %s with their mip levels\n", rs.textures.size(),
-                FormatBytes(rs.texels.size() * sizeof(uint32_t)).c_str());
+      (unsigned long long)scene.triangles, (unsigned long long)scene.degenerateTriangles,
+      (unsigned long long)scene.lights, bvh.splits.c_str(), choice, bvh.nodes, bvh.leaves, bvh.depth, bvh.references,
+      bvh.sahCost, bvh.buildMs);
+  if (scene.textures)
+    std::printf("  textures: %llu, %s with their mip levels\n", (unsigned long long)scene.textures,
+                FormatBytes(scene.textureBytes).c_str());
 }
 
 // The ranks of an MPI job, the AOVs and the denoised image.
@@ -111,59 +115,67 @@ void PrintOutputs(const RenderedFrame& frame, const Options& o, const std::vecto
                 files.back().c_str());
 }
 
+void PrintMaterial(const vkpt::MaterialInfo& m) {
+  std::printf(
+      "  material %u \"%s\": baseColor (%.4g, %.4g, %.4g) metallic %.3g roughness %.3g specular %.3g ior %.3g "
+      "transmission %.3g%s emission (%.6g, %.6g, %.6g)%s%s%s%s\n",
+      m.index, m.name.c_str(), m.baseColor[0], m.baseColor[1], m.baseColor[2], m.metallic, m.roughness, m.specular,
+      m.ior, m.transmission, m.volume ? " (volume)" : "", m.emission[0], m.emission[1], m.emission[2],
+      LayerNote(m).c_str(), m.doubleSided ? " double-sided" : "", m.unlit ? " unlit" : "", AlphaNote(m).c_str());
+}
+
+void PrintCamera(const vkpt::CameraInfo& cam, size_t cameras) {
+  char which[16] = "default";
+  if (cameras) std::snprintf(which, sizeof which, "#%u", cam.index);
+  std::printf("  cameras: %zu; using %s \"%s\" at (%.6g, %.6g, %.6g) looking (%.4g, %.4g, %.4g), %s %.4g\n", cameras,
+              which, cam.name.c_str(), cam.position[0], cam.position[1], cam.position[2], cam.forward[0],
+              cam.forward[1], cam.forward[2], cam.orthographic ? "orthographic ymag" : "perspective yfov(deg)",
+              cam.orthographic ? cam.ymag : cam.yfovDegrees);
+}
+
+// The file's variants and animations, and which of them the scene is rendered with.
+void PrintChoices(const vkpt::Scene& scene, const vkpt::SceneStats& stats) {
+  const std::vector<std::string> variants = scene.Variants();
+  if (!variants.empty()) {
+    std::printf("  material variants (--variant NAME|INDEX):");
+    for (size_t i = 0; i < variants.size(); ++i) std::printf("%s %zu \"%s\"", i ? "," : "", i, variants[i].c_str());
+    std::printf("; rendering %s\n",
+                stats.variant ? ("\"" + variants[*stats.variant] + "\"").c_str() : "the default materials");
+  }
+  const std::vector<vkpt::AnimationInfo> animations = scene.Animations();
+  if (!animations.empty()) {
+    std::printf("  animations (--animation NAME|INDEX, --at SECONDS):");
+    for (const vkpt::AnimationInfo& a : animations)
+      std::printf("%s %u \"%s\" %.6g s", a.index ? "," : "", a.index, a.name.c_str(), a.duration);
+    if (!stats.animation) std::printf("; posing none (the nodes' own transforms)\n");
+    else std::printf("; posing %u at %.6g s\n", *stats.animation, stats.animationTime);
+  }
+}
+
 }  // namespace
 
-void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& cam, uint32_t camIndex) {
-  std::printf("scene: %s\n", scene.path.c_str());
-  std::printf("  triangles: %zu, materials: %zu (incl. default), lights: %zu\n", scene.triangles.size(),
-              scene.materials.size(), rs.lights.size());
-  for (size_t i = 0; i < scene.materials.size(); ++i) {
-    const Material& m = scene.materials[i];
-    std::printf(
-        "  material %zu \"%s\": baseColor (%.4g, %.4g, %.4g) metallic %.3g roughness %.3g specular %.3g ior %.3g "
-        "transmission %.3g%s emission (%.6g, %.6g, %.6g)%s%s%s%s\n",
-        i, scene.materialNames[i].c_str(), m.baseColor.x, m.baseColor.y, m.baseColor.z, m.metallic, m.roughness,
-        m.specular, m.ior, m.transmission, m.volume ? " (volume)" : "", m.emission.x, m.emission.y, m.emission.z,
-        LayerNote(m).c_str(), m.doubleSided ? " double-sided" : "", m.unlit ? " unlit" : "", AlphaNote(m).c_str());
-  }
-  if (!scene.colors.empty()) std::printf("  vertex colours (COLOR_0): multiply the base colour\n");
-  if (!scene.textures.empty()) {
-    uint64_t texels = 0;
-    for (const TextureImage& im : scene.images) texels += uint64_t(im.width) * im.height;
-    std::printf("  textures: %zu from %zu images, %llu texels at level 0\n", scene.textures.size(), scene.images.size(),
-                (unsigned long long)texels);
-  }
-  if (scene.generatedTangentPrimitives > 0)
+void PrintLoadReport(const vkpt::Scene& scene, const vkpt::CameraInfo& cam) {
+  const vkpt::SceneStats stats = scene.Stats();
+  const std::vector<vkpt::MaterialInfo> materials = scene.Materials();
+  std::printf("scene: %s\n", stats.path.c_str());
+  std::printf("  triangles: %llu, materials: %zu (incl. default), lights: %llu\n", (unsigned long long)stats.triangles,
+              materials.size(), (unsigned long long)stats.lights);
+  for (const vkpt::MaterialInfo& m : materials) PrintMaterial(m);
+  if (stats.vertexColors) std::printf("  vertex colours (COLOR_0): multiply the base colour\n");
+  if (stats.textures)
+    std::printf("  textures: %llu from %llu images, %llu texels at level 0\n", (unsigned long long)stats.textures,
+                (unsigned long long)stats.images, (unsigned long long)stats.texels);
+  if (stats.generatedTangentPrimitives > 0)
     std::printf("  tangents: generated (MikkTSpace) for %u normal-mapped primitive(s) without TANGENT\n",
-                scene.generatedTangentPrimitives);
-  std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", scene.bounds.lo.x, scene.bounds.lo.y,
-              scene.bounds.lo.z, scene.bounds.hi.x, scene.bounds.hi.y, scene.bounds.hi.z);
-  char which[16] = "default";
-  if (!scene.cameras.empty()) std::snprintf(which, sizeof which, "#%u", camIndex);
-  std::printf("  cameras: %zu; using %s \"%s\" at (%.6g, %.6g, %.6g) looking (%.4g, %.4g, %.4g), %s %.4g\n",
-              scene.cameras.size(), which, cam.name.c_str(), cam.position.x, cam.position.y, cam.position.z,
-              cam.forward.x, cam.forward.y, cam.forward.z,
-              cam.orthographic ? "orthographic ymag" : "perspective yfov(deg)",
-              cam.orthographic ? cam.ymag : cam.yfov * 180.0 / M_PI);
-  std::printf("  memory: %s counted for the scene, of --max-memory %s\n", FormatBytes(scene.memoryCounted).c_str(),
-              FormatBytes(scene.memoryLimit).c_str());
-  if (!scene.materialVariants.empty()) {
-    std::printf("  material variants (--variant NAME|INDEX):");
-    for (size_t i = 0; i < scene.materialVariants.size(); ++i)
-      std::printf("%s %zu \"%s\"", i ? "," : "", i, scene.materialVariants[i].c_str());
-    std::printf("; rendering %s\n", scene.variant < 0 ? "the default materials"
-                                                      : ("\"" + scene.materialVariants[scene.variant] + "\"").c_str());
-  }
-  if (!scene.animations.empty()) {
-    std::printf("  animations (--animation NAME|INDEX, --at SECONDS):");
-    for (size_t i = 0; i < scene.animations.size(); ++i)
-      std::printf("%s %zu \"%s\" %.6g s", i ? "," : "", i, scene.animations[i].name.c_str(),
-                  scene.animations[i].duration);
-    if (scene.animation < 0) std::printf("; posing none (the nodes' own transforms)\n");
-    else std::printf("; posing %zu at %.6g s\n", size_t(scene.animation), scene.animationTime);
-  }
-  for (const std::string& w : scene.warnings) std::printf("  warning: %s\n", w.c_str());
-  for (const std::string& f : scene.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
+                stats.generatedTangentPrimitives);
+  std::printf("  bounds: (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", stats.boundsMin[0], stats.boundsMin[1],
+              stats.boundsMin[2], stats.boundsMax[0], stats.boundsMax[1], stats.boundsMax[2]);
+  PrintCamera(cam, scene.CameraCount());
+  std::printf("  memory: %s counted for the scene, of --max-memory %s\n", FormatBytes(stats.memoryCounted).c_str(),
+              FormatBytes(stats.memoryLimit).c_str());
+  PrintChoices(scene, stats);
+  for (const std::string& w : stats.warnings) std::printf("  warning: %s\n", w.c_str());
+  for (const std::string& f : stats.ignoredFeatures) std::printf("  ignored: %s\n", f.c_str());
 }
 
 std::function<void(double)> ProgressLine() {
@@ -175,7 +187,7 @@ void EndProgressLine() {
   if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r%*s\r", 20, "");
 }
 
-void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderedFrame& frame, const Options& o,
+void PrintRenderReport(const vkpt::SceneStats& scene, const RenderedFrame& frame, const Options& o,
                        const std::vector<std::string>& files, const char* denoiser) {
   const Image& image = frame.image;
   glm::dvec3 mean(0.0);
@@ -191,7 +203,7 @@ void PrintRenderReport(const Scene& scene, const RenderScene& rs, const Rendered
                 (unsigned long long)frame.activePixels);
   std::printf("\n  time %.3f s, %.3f Msamples/s, %.3f Mrays/s, mean radiance (%.6g, %.6g, %.6g)\n", frame.seconds,
               samples / frame.seconds * 1e-6, double(frame.sums.rays) / frame.seconds * 1e-6, mean.x, mean.y, mean.z);
-  PrintSceneLine(scene, rs);
+  PrintSceneLine(scene);
   if (frame.sums.nonFinite)
     std::printf("  warning: %llu non-finite samples were discarded\n", (unsigned long long)frame.sums.nonFinite);
   if (frame.sums.cutShort)

@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "app/options.h"
-#include "render/render_scene.h"
-#include "scene/scene.h"
 #include "session/render_session.h"
+#include "vkpt/vkpt.h"
 
 namespace vkpt::internal {
 
-void PrintLoadReport(const Scene& scene, const RenderScene& rs, const Camera& cam, uint32_t camIndex);
+// -v: what the scene holds, and the camera `cam` of the frame begun.
+void PrintLoadReport(const vkpt::Scene& scene, const vkpt::CameraInfo& cam);
 
 // "rendering: 42.0%" rewritten in place on a terminal (empty when stderr is not one), and
 // its erasure when the render is over.
@@ -24,7 +24,7 @@ void EndProgressLine();
 // The summary after a render: samples and why they stopped, rates, the image's mean, the
 // scene and its BVH, warnings; then the ranks, the AOVs and the denoised image, and the
 // `files` written (--out first).
-void PrintRenderReport(const Scene& scene, const RenderScene& rs, const RenderedFrame& frame, const Options& o,
+void PrintRenderReport(const vkpt::SceneStats& scene, const RenderedFrame& frame, const Options& o,
                        const std::vector<std::string>& files, const char* denoiser);
 
 // --compare: the CPU reference (A) against the Vulkan render (B), with a heat map beside

@@ -16,7 +16,6 @@
 #include "app/sequence.h"
 #include "cluster/agreement.h"
 #include "cluster/chunk_dealer.h"
-#include "engine/render_backend.h"
 #include "image/image.h"
 #include "image/image_compare.h"
 #include "session/aov.h"
@@ -77,7 +76,7 @@ uint64_t FrameKey(const Options& o, Prepared& p) {
   shared.api.scene.threads = 0;
   shared.api.render.batch = 0;
   shared.api.scene.validation = shared.verbose = false;
-  const std::string key = OptionsAsJson(shared) + std::to_string(p.scene().contentHash);
+  const std::string key = OptionsAsJson(shared) + std::to_string(p.scene().Stats().contentHash);
   ContentHash hash;
   hash.Add({reinterpret_cast<const unsigned char*>(key.data()), key.size()});
   return hash.Value();

@@ -25,25 +25,23 @@ JsonObject OptionsJson(const Options& o) {
   return j;
 }
 
-JsonObject SceneJson(const RunOutcome& run) {
+JsonObject SceneJson(const vkpt::Scene& scene, const vkpt::SceneStats& stats) {
   char hash[32];
-  std::snprintf(hash, sizeof hash, "fnv1a64:%016" PRIx64, run.scene.contentHash);
-  JsonObject scene;
-  scene.Str("path", run.scene.path).Str("content_hash", hash).Int("triangles", run.scene.triangles.size());
-  scene.Int("degenerate_triangles", run.rs.degenerateTriangles).Int("materials", run.scene.materials.size());
-  scene.Int("lights", run.rs.lights.size()).Int("cameras", run.scene.cameras.size());
-  scene.Int("memory_counted", run.scene.memoryCounted).Int("memory_limit", run.scene.memoryLimit);
-  scene.Raw("material_variant",
-            run.scene.variant < 0 ? "null" : JsonString(run.scene.materialVariants[size_t(run.scene.variant)]));
-  scene.Raw("animation",
-            run.scene.animation < 0 ? "null" : JsonString(run.scene.animations[size_t(run.scene.animation)].name));
-  scene.Num("animation_time", run.scene.animationTime);
-  return scene;
+  std::snprintf(hash, sizeof hash, "fnv1a64:%016" PRIx64, stats.contentHash);
+  JsonObject j;
+  j.Str("path", stats.path).Str("content_hash", hash).Int("triangles", stats.triangles);
+  j.Int("degenerate_triangles", stats.degenerateTriangles).Int("materials", scene.Materials().size());
+  j.Int("lights", stats.lights).Int("cameras", scene.CameraCount());
+  j.Int("memory_counted", stats.memoryCounted).Int("memory_limit", stats.memoryLimit);
+  j.Raw("material_variant", stats.variant ? JsonString(scene.Variants()[*stats.variant]) : "null");
+  j.Raw("animation", stats.animation ? JsonString(scene.Animations()[*stats.animation].name) : "null");
+  j.Num("animation_time", stats.animationTime);
+  return j;
 }
 
-JsonObject BvhJson(const BvhStats& b) {
+JsonObject BvhJson(const vkpt::BvhInfo& b) {
   JsonObject bvh;
-  bvh.Str("splits", b.spatialSplits ? "spatial" : "object").Int("nodes", b.nodes).Int("leaves", b.leaves);
+  bvh.Str("splits", b.splits).Int("nodes", b.nodes).Int("leaves", b.leaves);
   bvh.Int("depth", b.depth).Int("references", b.references).Num("sah_cost", b.sahCost).Num("build_ms", b.buildMs);
   return bvh;
 }
@@ -86,8 +84,9 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   for (const glm::vec3& px : image.pixels) mean += glm::dvec3(px);
   mean /= double(uint64_t(image.width) * image.height);
 
+  const vkpt::SceneStats stats = run.scene.Stats();
   JsonObject j;
-  j.Str("vkpt_version", VKPT_VERSION).Obj("scene", SceneJson(run)).Str("device", p.engine);
+  j.Str("vkpt_version", VKPT_VERSION).Obj("scene", SceneJson(run.scene, stats)).Str("device", p.engine);
   j.Obj("options", OptionsJson(o)).Int("seed", o.api.render.seed).Int("width", image.width).Int("height", image.height);
   j.Int("frame_memory_counted", run.frameMemory);
   j.Int("spp", p.spp).Raw("spp_per_pass", JsonArray(passes)).Int("samples", samples);
@@ -98,14 +97,14 @@ std::string StatsJson(const Options& o, const RunOutcome& run) {
   j.Obj("times_s", TimesJson(run.times)).Int("rays", sums.rays).Num("samples_per_s", double(samples) / p.seconds);
   j.Num("rays_per_s", double(sums.rays) / p.seconds).Raw("mean_radiance", Vec3(mean.x, mean.y, mean.z));
   j.Int("non_finite_samples", sums.nonFinite).Int("cut_short_samples", sums.cutShort);
-  j.Obj("bvh", BvhJson(run.rs.bvhStats)).Int("aov_samples", p.aovs.samples).Raw("files", Strings(run.files));
+  j.Obj("bvh", BvhJson(stats.bvh)).Int("aov_samples", p.aovs.samples).Raw("files", Strings(run.files));
   if (!p.ranks.empty()) j.Obj("mpi", MpiJson(p.ranks, o.api.render.chunkSpp));
   if (run.reference) {
     JsonObject ref;
     ref.Str("device", run.reference->engine).Num("render_s", run.reference->seconds);
     j.Obj("compare_reference", ref);
   }
-  j.Raw("warnings", Strings(run.scene.warnings)).Raw("ignored_features", Strings(run.scene.ignoredFeatures));
+  j.Raw("warnings", Strings(stats.warnings)).Raw("ignored_features", Strings(stats.ignoredFeatures));
   j.Int("validation_messages", run.validationMessages).Int("exit_status", uint64_t(run.exitStatus));
   return j.Text() + "\n";
 }

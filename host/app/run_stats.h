@@ -8,16 +8,14 @@
 #include <vector>
 
 #include "app/options.h"
-#include "engine/run_times.h"
-#include "render/render_scene.h"
-#include "scene/scene.h"
 #include "session/render_session.h"
+#include "session/run_times.h"
+#include "vkpt/vkpt.h"
 
 namespace vkpt::internal {
 
 struct RunOutcome {
-  const Scene& scene;
-  const RenderScene& rs;
+  const vkpt::Scene& scene;
   const RenderedFrame& frame;
   const RenderedFrame* reference;  // --compare: the CPU render; else null
   RunTimes times;

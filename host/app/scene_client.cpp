@@ -54,7 +54,7 @@ SceneClient::~SceneClient() = default;
 SceneClient::SceneClient(SceneClient&&) noexcept = default;
 SceneClient& SceneClient::operator=(SceneClient&&) noexcept = default;
 
-LoadedScene& SceneClient::Engine() { return EngineOf(impl_->scene); }
+vkpt::Scene& SceneClient::Public() { return impl_->scene; }
 
 BegunView SceneClient::Begin(const Options& o, const ClientView& client) {
   const ApiSettings& settings = o.api;

@@ -20,7 +20,7 @@ class SceneClient {
   SceneClient(SceneClient&&) noexcept;
   SceneClient& operator=(SceneClient&&) noexcept;
 
-  LoadedScene& Engine();
+  vkpt::Scene& Public();
 
   // The frame the options describe (their camera, size, --at), prepared and begun.
   BegunView Begin(const Options& o, const ClientView& client);

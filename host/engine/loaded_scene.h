@@ -12,13 +12,13 @@
 #include <vector>
 
 #include "engine/render_backend.h"
-#include "engine/run_times.h"
 #include "engine/settings.h"
 #include "gltf/gltf_loader.h"
 #include "render/environment_map.h"
 #include "render/render_scene.h"
 #include "session/aov.h"
 #include "session/frame_memory.h"
+#include "session/run_times.h"
 #include "shared/layout.h"
 #include "vk/context.h"
 

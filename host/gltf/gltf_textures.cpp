@@ -190,7 +190,7 @@ class TextureReader {
     if (added) {
       const tinygltf::Texture& tex = src_.m.textures[gltfTexture];
       const int image = TextureSource(src_, gltfTexture);
-      scene_.textures.push_back({uint32_t(image), ReadSampler(src_, tex.sampler), srgb});
+      scene_.textures.push_back({uint32_t(image), ReadSampler(src_, tex.sampler), srgb, uint32_t(gltfTexture)});
       users_.try_emplace(image, what);
     }
     return it->second;

@@ -55,4 +55,7 @@ void BindRender(py::module_& m);
 // vkpt.devices() and vkpt.Device (vkpt::Devices).
 void BindDevices(py::module_& m);
 
+// The records a Scene's properties return (include/vkpt/scene_info.h).
+void BindSceneInfo(py::module_& m);
+
 }  // namespace vkpt::python

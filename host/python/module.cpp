@@ -141,6 +141,12 @@ PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint3
   return Render(self, camera, std::move(o), progress);
 }
 
+// A getter of one of Scene's lists as a tuple (read-only, as the scene's records are).
+template <class T>
+auto TupleOf(std::vector<T> (Scene::*list)() const) {
+  return [list](PyScene& s) { return py::tuple(py::cast((s.scene.*list)())); };
+}
+
 // The signatures pybind11 puts above each docstring show the keywords and their defaults;
 // the lines below them what each keyword does (KeywordDocs).
 void BindScene(py::module_& m) {
@@ -166,8 +172,20 @@ material_id, instance_id, or "all". A setting out of its range raises vkpt.Setti
            "variant"_a = kScene.variant, "animation"_a = kScene.animation, "environment"_a = kScene.environment,
            "environment_intensity"_a = kScene.environmentIntensity,
            "light_sampler"_a = internal::ChoiceName(internal::LightSamplerChoices(), kScene.lightSampler))
-      .def_property_readonly("camera_count", [](PyScene& s) { return s.scene.CameraCount(); })
-      .def_property_readonly("device", [](PyScene& s) { return s.scene.Device(); })
+      .def_property_readonly(
+          "camera_count", [](PyScene& s) { return s.scene.CameraCount(); }, "how many cameras the file has")
+      .def_property_readonly(
+          "device", [](PyScene& s) { return s.scene.Device(); }, "\"cpu\", or the Vulkan device's name")
+      .def_property_readonly("materials", TupleOf(&Scene::Materials),
+                             "the file's materials (vkpt.MaterialInfo), vkpt's default last")
+      .def_property_readonly("cameras", TupleOf(&Scene::Cameras),
+                             "the file's cameras (vkpt.CameraInfo), in scene-graph order")
+      .def_property_readonly("lights", TupleOf(&Scene::Lights),
+                             "the punctual lights (vkpt.LightInfo), in scene-graph order")
+      .def_property_readonly("animations", TupleOf(&Scene::Animations), "the file's animations (vkpt.AnimationInfo)")
+      .def_property_readonly("variants", TupleOf(&Scene::Variants), "the KHR_materials_variants names, in index order")
+      .def_property_readonly(
+          "stats", [](PyScene& s) { return s.scene.Stats(); }, "the scene's counts (vkpt.SceneStats)")
       .def("render", &RenderWith, "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(),
            "height"_a = py::none(), "spp"_a = py::none(), "seconds"_a = py::none(), "noise_target"_a = py::none(),
            "adaptive"_a = py::none(), "seed"_a = kRender.seed, "max_depth"_a = kRender.maxDepth,
@@ -242,6 +260,7 @@ PYBIND11_MODULE(_vkpt, m) {
   BindSettings(m);
   BindCamera(m);
   BindRender(m);
+  BindSceneInfo(m);
   BindScene(m);
   BindDevices(m);
 }

@@ -71,6 +71,7 @@ struct SceneTexture {
   uint32_t image = 0;  // into Scene::images
   TextureSampler sampler;
   bool srgb = false;
+  uint32_t fileIndex = 0;  // the file's texture it was made from (glTF textures[i])
 };
 
 struct Camera {

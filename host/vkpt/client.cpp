@@ -5,28 +5,12 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "engine/loaded_scene.h"
 #include "session/aov.h"
 #include "session/budget.h"
+#include "session/local_passes.h"
 #include "vkpt/client.h"
-
-namespace vkpt {
-
-struct Scene::Impl {
-  std::unique_ptr<internal::LoadedScene> loaded;
-  SceneOptions options;  // as opened: each render's settings are checked with them
-};
-
-struct v1::SceneAccess {
-  static Scene Make(std::unique_ptr<internal::LoadedScene> loaded, const SceneOptions& options) {
-    return Scene(std::make_unique<Scene::Impl>(Scene::Impl{std::move(loaded), options}));
-  }
-  static const SceneOptions& Options(const Scene& scene) { return scene.impl_->options; }
-  static internal::LoadedScene& Engine(Scene& scene) { return *scene.impl_->loaded; }
-  static const internal::LoadedScene& Engine(const Scene& scene) { return *scene.impl_->loaded; }
-};
-
-}  // namespace vkpt
+#include "vkpt/scene_access.h"
+#include "vkpt/scene_records.h"
 
 namespace vkpt::internal {
 namespace {
@@ -109,7 +93,16 @@ vkpt::Scene OpenScene(const std::string& path, const vkpt::SceneOptions& options
   return vkpt::SceneAccess::Make(std::make_unique<LoadedScene>(ToSettings(path, options, client), client.log), options);
 }
 
+namespace {
 LoadedScene& EngineOf(vkpt::Scene& scene) { return vkpt::SceneAccess::Engine(scene); }
+}  // namespace
+
+RunTimes& TimesOf(vkpt::Scene& scene) { return EngineOf(scene).times; }
+
+uint32_t ValidationMessagesOf(const vkpt::Scene& scene) {
+  const vk::Context* device = vkpt::SceneAccess::Engine(scene).Device();
+  return device ? device->ValidationMessages() : 0;
+}
 
 BegunView BeginView(vkpt::Scene& scene, const vkpt::Camera& camera, const vkpt::RenderOptions& options,
                     const ClientView& client) {
@@ -139,7 +132,21 @@ RenderedView FinishView(vkpt::Scene& scene, BegunView& view, SampleSource& sourc
   const RenderedFrame& f = rendered.frame;
   rendered.aovs = ResolveAovs(view.aovs, f.aovs, f.sums, f.image, loaded.IdsOf());
   if (WantsIds(view.aovs)) rendered.ids = loaded.IdsJson();
+  rendered.denoiser = loaded.Backend().DenoiserName();
   return rendered;
+}
+
+vkpt::CameraInfo CameraOf(const BegunView& view) {
+  return CameraInfoOf(view.prepared.camera, view.prepared.cameraIndex);
+}
+
+RenderedFrame RenderOnCpu(vkpt::Scene& scene, const BegunView& view, const SessionSettings& settings,
+                          const SessionHooks& hooks) {
+  LoadedScene& loaded = EngineOf(scene);
+  const RenderBackend cpu(nullptr, loaded.Arrays(), loaded.Settings().threads);
+  const std::unique_ptr<FrameRenderer> frame = cpu.BeginFrame(view.prepared.params, 0);
+  LocalPasses source(*frame, settings.budget.chunkSpp);
+  return RenderSession(source, settings, hooks);
 }
 
 }  // namespace vkpt::internal

@@ -56,6 +56,7 @@ struct RenderedView {
   RenderedFrame frame;
   std::vector<AovLayer> aovs;
   std::string ids;
+  const char* denoiser = "";  // the filter's device ("vulkan" or "cpu")
 };
 
 }  // namespace vkpt::internal

@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "vkpt/scene_info.h"
+
 // What the shared library libvkpt.so exports: these declarations and nothing else.
 #if defined(__GNUC__)
 #define VKPT_API __attribute__((visibility("default")))
@@ -155,6 +157,16 @@ class VKPT_API Scene {
 
   uint32_t CameraCount() const;
   std::string Device() const;  // "cpu", or the Vulkan device's name
+
+  // What the file declares (vkpt/scene_info.h): the materials (vkpt's default last), the
+  // cameras and punctual lights in scene-graph order, the animations and variants.
+  std::vector<MaterialInfo> Materials() const;
+  std::vector<CameraInfo> Cameras() const;
+  std::vector<LightInfo> Lights() const;
+  std::vector<AnimationInfo> Animations() const;
+  std::vector<std::string> Variants() const;
+  // Its counts as loaded, and as last built for a render.
+  SceneStats Stats() const;
 
  private:
   struct Impl;

@@ -250,3 +250,43 @@ def test_paths_may_be_pathlike(tmp_path):
     assert np.array_equal(read_pfm(written[0]), np.asarray(render))
     with pytest.raises(TypeError):
         vkpt.Scene(42)
+
+
+def test_the_scene_describes_what_the_file_holds(cpu_scene):
+    with open(CORNELL) as f:
+        gltf = json.load(f)
+    materials = cpu_scene.materials
+    assert isinstance(materials, tuple) and len(materials) == len(gltf["materials"]) + 1  # vkpt's default last
+    for info, m in zip(materials, gltf["materials"]):
+        pbr = m["pbrMetallicRoughness"]
+        assert info.name == m["name"] and repr(info) == f"vkpt.MaterialInfo(index={info.index}, name={m['name']!r})"
+        assert info.base_color == pytest.approx(pbr.get("baseColorFactor", [1, 1, 1, 1])[:3])
+        assert info.roughness == pytest.approx(pbr.get("roughnessFactor", 1.0))
+        assert info.alpha_mode == m.get("alphaMode", "OPAQUE") and info.textures == {}
+    yfov = gltf["cameras"][0]["perspective"]["yfov"]
+    assert cpu_scene.cameras[0].yfov_degrees == pytest.approx(yfov * 180 / 3.141592653589793, rel=1e-6)
+    assert len(cpu_scene.cameras) == len(gltf["cameras"]) == cpu_scene.camera_count
+    assert cpu_scene.lights == () and cpu_scene.animations == () and cpu_scene.variants == ()
+    stats = cpu_scene.stats
+    assert stats.path == CORNELL and stats.triangles > 0 and stats.variant is None
+    assert all(lo < hi for lo, hi in zip(*stats.bounds))
+
+
+def test_the_stats_count_the_scene_as_built():
+    scene = vkpt.Scene(CORNELL, backend="cpu")
+    assert scene.stats.bvh.nodes == 0  # nothing built before the first render
+    scene.render(**SMALL)
+    stats = scene.stats
+    assert stats.bvh.nodes > 0 and stats.lights > 0 and stats.bvh.splits in ("object", "spatial")
+
+
+def test_every_record_property_is_documented_and_readable(cpu_scene):
+    records = [cpu_scene.materials[0], cpu_scene.cameras[0], cpu_scene.stats, cpu_scene.stats.bvh]
+    for record in records:
+        kind = type(record)
+        assert kind.__doc__, kind.__name__
+        for name, attr in vars(kind).items():
+            if isinstance(attr, property):
+                getattr(record, name)  # each converts to Python
+    for name in ("materials", "cameras", "lights", "animations", "variants", "stats", "camera_count", "device"):
+        assert vars(vkpt.Scene)[name].__doc__, f"Scene.{name} has no docstring"

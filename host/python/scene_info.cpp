@@ -1,0 +1,123 @@
+// vkpt.MaterialInfo, CameraInfo, LightInfo, AnimationInfo, SceneStats and BvhInfo: the
+// read-only records of include/vkpt/scene_info.h, their vectors as tuples.
+#include <string>
+
+#include <pybind11/stl.h>
+
+#include "python/bindings.h"
+
+namespace vkpt::python {
+namespace {
+
+template <class T>
+T Py(const T& value) {
+  return value;
+}
+py::tuple Py(const std::array<float, 3>& v) { return py::make_tuple(v[0], v[1], v[2]); }
+
+// "vkpt.Kind(index=i, name='name')"
+template <class Record>
+std::string Repr(const char* kind, const Record& r) {
+  return std::string("vkpt.") + kind + "(index=" + std::to_string(r.index) +
+         ", name=" + std::string(py::repr(py::str(r.name))) + ")";
+}
+
+void BindMaterial(py::module_& m) {
+  py::class_<MaterialTextureInfo>(m, "MaterialTextureInfo", "A material's use of one of the file's textures.")
+      .def_readonly("texture", &MaterialTextureInfo::texture, "the file's texture (glTF textures[i])")
+      .def_readonly("tex_coord", &MaterialTextureInfo::texCoord, "the TEXCOORD set it is read at")
+      .def("__repr__", [](const MaterialTextureInfo& t) {
+        return "vkpt.MaterialTextureInfo(texture=" + std::to_string(t.texture) +
+               ", tex_coord=" + std::to_string(t.texCoord) + ")";
+      });
+  py::class_<MaterialInfo> material(m, "MaterialInfo", R"(A material's factors as the renderer reads them (glTF's
+defaults where the file is silent); Scene.materials lists them, vkpt's default last.)");
+  material.def_readonly("index", &MaterialInfo::index).def_readonly("name", &MaterialInfo::name);
+#define VKPT_BIND_FACTOR(type, member, python, doc) \
+  material.def_property_readonly(                   \
+      python, [](const MaterialInfo& i) { return Py(i.member); }, doc);
+  VKPT_MATERIAL_FACTORS(VKPT_BIND_FACTOR)
+#undef VKPT_BIND_FACTOR
+  material.def_readonly("alpha_mode", &MaterialInfo::alphaMode, "\"OPAQUE\", \"MASK\" or \"BLEND\"")
+      .def_readonly("textures", &MaterialInfo::textures,
+                    "slot name (\"baseColor\", \"normal\", …) → MaterialTextureInfo")
+      .def("__repr__", [](const MaterialInfo& i) { return Repr("MaterialInfo", i); });
+}
+
+void BindCameraAndLight(py::module_& m) {
+  py::class_<CameraInfo>(m, "CameraInfo", "One of the file's cameras, in world space (Scene.cameras).")
+      .def_readonly("index", &CameraInfo::index)
+      .def_readonly("name", &CameraInfo::name)
+      .def_property_readonly("position", [](const CameraInfo& c) { return Py(c.position); })
+      .def_property_readonly(
+          "forward", [](const CameraInfo& c) { return Py(c.forward); }, "unit")
+      .def_property_readonly(
+          "up", [](const CameraInfo& c) { return Py(c.up); }, "unit")
+      .def_readonly("orthographic", &CameraInfo::orthographic)
+      .def_readonly("yfov_degrees", &CameraInfo::yfovDegrees, "perspective: the vertical field of view")
+      .def_readonly("ymag", &CameraInfo::ymag, "orthographic: half the view height")
+      .def_readonly("aspect_ratio", &CameraInfo::aspectRatio, "width / height from the file; 0 when absent")
+      .def("__repr__", [](const CameraInfo& c) { return Repr("CameraInfo", c); });
+  py::class_<LightInfo>(m, "LightInfo", "A KHR_lights_punctual light as placed in the scene (Scene.lights).")
+      .def_readonly("index", &LightInfo::index)
+      .def_readonly("name", &LightInfo::name)
+      .def_readonly("type", &LightInfo::type, "\"point\", \"spot\" or \"directional\"")
+      .def_property_readonly(
+          "intensity", [](const LightInfo& l) { return Py(l.intensity); },
+          "colour × intensity: candela (point, spot) or lux (directional)")
+      .def_property_readonly("position", [](const LightInfo& l) { return Py(l.position); })
+      .def_property_readonly(
+          "direction", [](const LightInfo& l) { return Py(l.direction); }, "unit, the way the light travels")
+      .def_readonly("range", &LightInfo::range, "0: unbounded")
+      .def_readonly("inner_cone_degrees", &LightInfo::innerConeDegrees)
+      .def_readonly("outer_cone_degrees", &LightInfo::outerConeDegrees)
+      .def("__repr__", [](const LightInfo& l) { return Repr("LightInfo", l); });
+  py::class_<AnimationInfo>(m, "AnimationInfo", "One of the file's animations (Scene.animations).")
+      .def_readonly("index", &AnimationInfo::index)
+      .def_readonly("name", &AnimationInfo::name)
+      .def_readonly("duration", &AnimationInfo::duration, "seconds")
+      .def("__repr__", [](const AnimationInfo& a) { return Repr("AnimationInfo", a); });
+}
+
+void BindStats(py::module_& m) {
+  py::class_<BvhInfo>(m, "BvhInfo", "The BVH of the scene as last built.")
+      .def_readonly("splits", &BvhInfo::splits, "\"object\" or \"spatial\"")
+      .def_readonly("nodes", &BvhInfo::nodes)
+      .def_readonly("leaves", &BvhInfo::leaves)
+      .def_readonly("depth", &BvhInfo::depth)
+      .def_readonly("references", &BvhInfo::references, "triangle references in the leaves")
+      .def_readonly("sah_cost", &BvhInfo::sahCost)
+      .def_readonly("build_ms", &BvhInfo::buildMs);
+  py::class_<SceneStats>(m, "SceneStats", R"(The counts of a scene as loaded, and (lights, degenerate
+triangles, bvh, texture bytes) as last built for a render, zero before the first.)")
+      .def_readonly("path", &SceneStats::path)
+      .def_readonly("content_hash", &SceneStats::contentHash, "FNV-1a of the file and what it references")
+      .def_readonly("triangles", &SceneStats::triangles)
+      .def_readonly("degenerate_triangles", &SceneStats::degenerateTriangles, "of zero area, left out of the BVH")
+      .def_readonly("lights", &SceneStats::lights, "emissive triangles and punctual lights sampled")
+      .def_readonly("textures", &SceneStats::textures)
+      .def_readonly("images", &SceneStats::images)
+      .def_readonly("texels", &SceneStats::texels, "of the images at full size")
+      .def_readonly("texture_bytes", &SceneStats::textureBytes, "every texture with its mip levels, as rendered")
+      .def_property_readonly(
+          "bounds", [](const SceneStats& s) { return py::make_tuple(Py(s.boundsMin), Py(s.boundsMax)); },
+          "(min, max) corners")
+      .def_readonly("memory_counted", &SceneStats::memoryCounted, "bytes")
+      .def_readonly("memory_limit", &SceneStats::memoryLimit, "bytes")
+      .def_readonly("variant", &SceneStats::variant, "the variant rendered, or None")
+      .def_readonly("animation", &SceneStats::animation, "the animation posing the scene, or None")
+      .def_readonly("animation_time", &SceneStats::animationTime, "the pose last built, seconds")
+      .def_readonly("warnings", &SceneStats::warnings)
+      .def_readonly("ignored_features", &SceneStats::ignoredFeatures, "what the file uses that vkpt does not render")
+      .def_readonly("bvh", &SceneStats::bvh);
+}
+
+}  // namespace
+
+void BindSceneInfo(py::module_& m) {
+  BindMaterial(m);
+  BindCameraAndLight(m);
+  BindStats(m);
+}
+
+}  // namespace vkpt::python
