@@ -9,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "api_test_util.h"
 #include "image/image.h"
 #include "test_util.h"
 
@@ -17,16 +18,7 @@
 namespace vkpt::internal {
 namespace {
 
-const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
-
-vkpt::RenderOptions Small(uint32_t seed = 0) {
-  vkpt::RenderOptions o;
-  o.width = 24;
-  o.height = 16;
-  o.spp = o.chunkSpp = 4;  // one chunk of 4 samples per pixel
-  o.seed = seed;
-  return o;
-}
+const std::string kCornell = test::Cornell();
 
 vkpt::Camera Orbit(double degrees) {
   vkpt::Camera c;
@@ -53,10 +45,10 @@ TEST(Api, RendersOfOneSceneEqualTheCommandLines) {
     vkpt::SceneOptions options;
     options.backend = std::string(backend) == "cpu" ? vkpt::Backend::Cpu : vkpt::Backend::Vulkan;
     vkpt::Scene scene(kCornell, options);
-    vkpt::RenderOptions depth = Small(7);
+    vkpt::RenderOptions depth = test::SmallRender(7);
     depth.aovs = {"depth"};
     const vkpt::RenderResult a = scene.Render(vkpt::Camera{}, depth);
-    const vkpt::RenderResult b = scene.Render(Orbit(30.0), Small(3));
+    const vkpt::RenderResult b = scene.Render(Orbit(30.0), test::SmallRender(3));
     EXPECT_EQ(a.image.data, CliRender({"--backend", backend, "--seed", "7", "--aov", "depth"}, dir + "/a.pfm"))
         << backend;
     EXPECT_EQ(b.image.data, CliRender({"--backend", backend, "--seed", "3", "--orbit", "30"}, dir + "/b.pfm"))
@@ -77,12 +69,12 @@ TEST(Api, CameraChangeEqualsAFreshLoad) {
   cpu.backend = vkpt::Backend::Cpu;
   vkpt::Scene scene(kCornell, cpu);
   EXPECT_EQ(scene.CameraCount(), 1u);  // known before the first render
-  scene.Render(vkpt::Camera{}, Small());
+  scene.Render(vkpt::Camera{}, test::SmallRender());
   vkpt::Camera moved;
   moved.lookFrom = {{278.0f, 400.0f, -600.0f}};
   moved.fovDegrees = 50.0;
-  const vkpt::RenderResult after = scene.Render(moved, Small());
-  EXPECT_EQ(after.image.data, vkpt::Scene(kCornell, cpu).Render(moved, Small()).image.data);
+  const vkpt::RenderResult after = scene.Render(moved, test::SmallRender());
+  EXPECT_EQ(after.image.data, vkpt::Scene(kCornell, cpu).Render(moved, test::SmallRender()).image.data);
   EXPECT_EQ(after.image.width, 24u);
   EXPECT_EQ(after.image.height, 16u);
   EXPECT_EQ(after.image.channels, 3u);
@@ -99,10 +91,11 @@ TEST(Api, CameraMatrixPlacesTheLens) {
   vkpt::Scene scene(kCornell, cpu);
   vkpt::Camera placed;
   placed.matrix = {{-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 278, 273, -800, 1}};
-  EXPECT_EQ(scene.Render(placed, Small()).image.data, scene.Render(vkpt::Camera{}, Small()).image.data);
+  EXPECT_EQ(scene.Render(placed, test::SmallRender()).image.data,
+            scene.Render(vkpt::Camera{}, test::SmallRender()).image.data);
   placed.matrix->at(10) = 0.0f;
   try {
-    scene.Render(placed, Small());
+    scene.Render(placed, test::SmallRender());
     ADD_FAILURE() << "a singular camera matrix was accepted";
   } catch (const vkpt::Error& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -116,11 +109,11 @@ TEST(Api, ScenesOnTwoThreadsRenderAsAlone) {
   vulkan.backend = vkpt::Backend::Vulkan;
   vulkan.validation = true;
   vkpt::Scene a(kCornell, vulkan), b(kCornell, vulkan);
-  const std::vector<float> aloneA = a.Render(vkpt::Camera{}, Small(1)).image.data;
-  const std::vector<float> aloneB = b.Render(Orbit(45.0), Small(2)).image.data;
+  const std::vector<float> aloneA = a.Render(vkpt::Camera{}, test::SmallRender(1)).image.data;
+  const std::vector<float> aloneB = b.Render(Orbit(45.0), test::SmallRender(2)).image.data;
   std::vector<float> together[2];
-  std::thread ta([&] { together[0] = a.Render(vkpt::Camera{}, Small(1)).image.data; });
-  std::thread tb([&] { together[1] = b.Render(Orbit(45.0), Small(2)).image.data; });
+  std::thread ta([&] { together[0] = a.Render(vkpt::Camera{}, test::SmallRender(1)).image.data; });
+  std::thread tb([&] { together[1] = b.Render(Orbit(45.0), test::SmallRender(2)).image.data; });
   ta.join();
   tb.join();
   EXPECT_EQ(together[0], aloneA);
@@ -141,7 +134,7 @@ TEST(Api, FailuresAreErrorsNamingTheirCause) {
   const std::string missing = test::TempPath("no-such.glb");
   EXPECT_NE(message([&] { vkpt::Scene(missing, cpu); }).find(missing), std::string::npos);
   vkpt::Scene scene(kCornell, cpu);
-  vkpt::RenderOptions bad = Small();
+  vkpt::RenderOptions bad = test::SmallRender();
   bad.aovs = {"depht"};
   EXPECT_EQ(message([&] { scene.Render(vkpt::Camera{}, bad); }),
             "unknown AOV \"depht\" (albedo, normal, depth, position, variance, spp, heatmap, object_id, material_id, "
@@ -149,7 +142,7 @@ TEST(Api, FailuresAreErrorsNamingTheirCause) {
   vkpt::Camera third;
   third.index = 3;
   // The message names no command-line option.
-  EXPECT_EQ(message([&] { scene.Render(third, Small()); }),
+  EXPECT_EQ(message([&] { scene.Render(third, test::SmallRender()); }),
             kCornell + ": camera 3 is out of range; the scene has 1 camera(s)");
   vkpt::SceneOptions tiny = cpu;
   tiny.maxMemory = 1024;
@@ -164,13 +157,13 @@ TEST(Api, FailuresAreErrorsNamingTheirCause) {
   EXPECT_EQ(message([&] { vkpt::Scene(kCornell, ninth); }),
             "SceneOptions::device 9: there are only 1 Vulkan device(s) (`vkpt --list-devices` lists them)");
   // The scene still renders after a failed render.
-  EXPECT_EQ(scene.Render(vkpt::Camera{}, Small()).image.data.size(), 24u * 16u * 3u);
+  EXPECT_EQ(scene.Render(vkpt::Camera{}, test::SmallRender()).image.data.size(), 24u * 16u * 3u);
 }
 
 TEST(Api, DenoisedImageKeepsTheRawOne) {
   vkpt::SceneOptions cpu;
   cpu.backend = vkpt::Backend::Cpu;
-  vkpt::RenderOptions o = Small();
+  vkpt::RenderOptions o = test::SmallRender();
   o.denoise = true;
   o.aovs = {"all"};
   const vkpt::RenderResult r = vkpt::Scene(kCornell, cpu).Render(vkpt::Camera{}, o);
@@ -186,7 +179,7 @@ TEST(Api, CancelEndsTheRenderWithTheSamplesTaken) {
   vkpt::SceneOptions cpu;
   cpu.backend = vkpt::Backend::Cpu;
   vkpt::Scene scene(kCornell, cpu);
-  vkpt::RenderOptions o = Small();
+  vkpt::RenderOptions o = test::SmallRender();
   o.spp = 256;
   int asked = 0;
   o.cancel = [&asked] { return ++asked == 3; };
@@ -195,7 +188,7 @@ TEST(Api, CancelEndsTheRenderWithTheSamplesTaken) {
   EXPECT_EQ(cancelled.stoppedBy, "cancelled");
   ASSERT_GT(cancelled.spp, 0u);
   ASSERT_LT(cancelled.spp, 256u);
-  vkpt::RenderOptions fixed = Small();
+  vkpt::RenderOptions fixed = test::SmallRender();
   fixed.spp = cancelled.spp;
   const vkpt::RenderResult whole = scene.Render(vkpt::Camera{}, fixed);
   EXPECT_EQ(whole.stoppedBy, "spp");

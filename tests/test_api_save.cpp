@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "api_test_util.h"
 #include "test_util.h"
 
 #include "vkpt/vkpt.h"
@@ -14,16 +15,7 @@
 namespace vkpt::internal {
 namespace {
 
-const std::string kCornell = test::SourcePath("scenes/cornell.gltf");
-
-vkpt::RenderOptions Small() {
-  vkpt::RenderOptions o;
-  o.width = 24;
-  o.height = 16;
-  o.spp = o.chunkSpp = 4;
-  o.seed = 5;
-  return o;
-}
+const std::string kCornell = test::Cornell();
 
 // The command line's render of the Cornell box on the CPU with `extra`, into `out`.
 void CliRender(std::vector<std::string> extra, const std::string& out) {
@@ -43,7 +35,7 @@ vkpt::Scene CpuScene() {
 TEST(ApiSave, FilesEqualTheCommandLines) {
   const std::string dir = test::FreshTempDirectory("api-save");
   vkpt::Scene scene = CpuScene();
-  vkpt::RenderOptions options = Small();
+  vkpt::RenderOptions options = test::SmallRender(5);
   options.aovs = {"normal", "depth", "albedo"};
   const vkpt::RenderResult result = scene.Render(vkpt::Camera{}, options);
   for (const std::string ext : {"exr", "png", "pfm"}) {
@@ -58,7 +50,7 @@ TEST(ApiSave, FilesEqualTheCommandLines) {
   }
   // Another view and exposure change the picture, as --view and --exposure do.
   CliRender({"--view", "agx", "--exposure", "1.5"}, dir + "/agx.png");
-  Save(scene.Render(vkpt::Camera{}, Small()), dir + "/api-agx.png", "agx", 1.5f);
+  Save(scene.Render(vkpt::Camera{}, test::SmallRender(5)), dir + "/api-agx.png", "agx", 1.5f);
   EXPECT_EQ(test::ReadFile(dir + "/api-agx.png"), test::ReadFile(dir + "/agx.png"));
   EXPECT_NE(test::ReadFile(dir + "/api-agx.png"), test::ReadFile(dir + "/api.png"));
 }
@@ -66,7 +58,7 @@ TEST(ApiSave, FilesEqualTheCommandLines) {
 TEST(ApiSave, DenoisedRenderKeepsItsRawImageBeside) {
   const std::string dir = test::FreshTempDirectory("api-save-denoise");
   vkpt::Scene scene = CpuScene();
-  vkpt::RenderOptions options = Small();
+  vkpt::RenderOptions options = test::SmallRender(5);
   options.denoise = true;
   const std::vector<std::string> files = Save(scene.Render(vkpt::Camera{}, options), dir + "/api.pfm");
   ASSERT_EQ(files, (std::vector<std::string>{dir + "/api.pfm", dir + "/api.raw.pfm"}));
@@ -78,7 +70,7 @@ TEST(ApiSave, DenoisedRenderKeepsItsRawImageBeside) {
 TEST(ApiSave, RefusesWhatItCannotWrite) {
   const std::string dir = test::FreshTempDirectory("api-save-errors");
   vkpt::Scene scene = CpuScene();
-  vkpt::RenderResult result = scene.Render(vkpt::Camera{}, Small());
+  vkpt::RenderResult result = scene.Render(vkpt::Camera{}, test::SmallRender(5));
   auto message = [&](const std::string& path, const std::string& view = "neutral") {
     try {
       Save(result, path, view);

@@ -101,6 +101,16 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
   return frame;
 }
 
+void LoadedScene::SetMaterial(uint32_t index, const Material& material) {
+  asset_->SetMaterial(index, material);
+  builtAt_.reset();
+}
+
+void LoadedScene::SetEnvironmentIntensity(float intensity) {
+  settings_.envIntensity = intensity;
+  builtAt_.reset();
+}
+
 const RenderBackend& LoadedScene::Backend() {
   if (!backend_) {
     backend_ = std::make_unique<RenderBackend>(ctx_.get(), rs_, settings_.threads);

@@ -55,6 +55,7 @@ class LoadedScene {
 
   const SceneSettings& Settings() const { return settings_; }
   const Scene& scene() const { return asset_->scene(); }
+  bool HasEnvironmentMap() const { return !settings_.env.empty(); }
   const vk::Context* Device() const { return ctx_.get(); }
   const RenderScene& Arrays() const { return rs_; }
 
@@ -73,6 +74,11 @@ class LoadedScene {
   // scene as posed (scene/scene_ids.h).
   TriangleIdsOf IdsOf() const;
   std::string IdsJson() const;
+
+  // Edits (vkpt::Scene::Update): the next Prepare builds the arrays again, as a fresh load
+  // of the file so edited would; the pose is kept.
+  void SetMaterial(uint32_t index, const Material& material);
+  void SetEnvironmentIntensity(float intensity);
 
   RunTimes times;  // load, environment, pose, prepare and upload, as they happen
 

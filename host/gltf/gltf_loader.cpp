@@ -261,6 +261,8 @@ const Scene& GltfAsset::scene() const { return parts_->scene; }
 
 Scene GltfAsset::TakeScene() { return std::move(parts_->scene); }
 
+void GltfAsset::SetMaterial(uint32_t index, const Material& material) { parts_->scene.materials.at(index) = material; }
+
 Scene LoadGltf(const std::string& path, const LoadLimits& limits, const SceneChoice& choice) {
   GltfAsset asset(path, limits, choice);
   asset.PoseAt(choice.time);

@@ -35,6 +35,8 @@ class GltfAsset {
   void ReleaseSource();
   const Scene& scene() const;
   Scene TakeScene();  // the asset is spent
+  // Material `index` replaced, for this pose and every later one.
+  void SetMaterial(uint32_t index, const Material& material);
 
   struct Parts;  // the parsed file, its decoded meshes and rest pose (gltf_loader.cpp)
 

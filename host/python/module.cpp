@@ -141,6 +141,47 @@ PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint3
   return Render(self, camera, std::move(o), progress);
 }
 
+// Waits for a render of the scene on another thread (the GIL released meanwhile).
+template <class F>
+auto WhenIdle(PyScene& self, F&& f) {
+  py::gil_scoped_release released;
+  std::lock_guard<std::mutex> lock(self.rendering);
+  return f();
+}
+
+py::dict ParametersOf(PyScene& self) {
+  py::dict d;
+  for (const auto& [key, value] : WhenIdle(self, [&] { return self.scene.Parameters(); }))
+    d[py::str(key)] = std::visit(
+        [](const auto& v) -> py::object {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, Rgb>) return py::make_tuple(v[0], v[1], v[2]);
+          else return py::cast(v);
+        },
+        value);
+  return d;
+}
+
+// A Python number, bool or sequence of 3 numbers as a parameter's value; TypeError else.
+ParameterValue ParameterFrom(const std::string& key, const py::handle& value) {
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+  if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) return value.cast<double>();
+  if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value) && py::len(value) == 3) {
+    const py::sequence s = value.cast<py::sequence>();
+    return Rgb{s[0].cast<float>(), s[1].cast<float>(), s[2].cast<float>()};
+  }
+  throw py::type_error(key + ": a parameter is a number, a bool or 3 numbers, not " +
+                       std::string(py::str(value.get_type().attr("__name__"))));
+}
+
+void UpdateFrom(PyScene& self, const py::dict& changes) {
+  ParameterMap map;
+  for (const auto& [key, value] : changes) {
+    const std::string k = py::str(key);
+    map[k] = ParameterFrom(k, value);
+  }
+  WhenIdle(self, [&] { self.scene.Update(map); });
+}
+
 // A getter of one of Scene's lists as a tuple (read-only, as the scene's records are).
 template <class T>
 auto TupleOf(std::vector<T> (Scene::*list)() const) {
@@ -186,6 +227,17 @@ material_id, instance_id, or "all". A setting out of its range raises vkpt.Setti
       .def_property_readonly("variants", TupleOf(&Scene::Variants), "the KHR_materials_variants names, in index order")
       .def_property_readonly(
           "stats", [](PyScene& s) { return s.scene.Stats(); }, "the scene's counts (vkpt.SceneStats)")
+      .def("parameters", &ParametersOf,
+           R"(Every editable value of the scene, as a dict from a key to a float, a bool or an
+RGB tuple: "materials/<index>/<field>" for each field of vkpt.MaterialInfo that is a
+factor ("base_color", "roughness", ...), and "environment/intensity" with an
+environment map. Change values and pass the dict (or any part of it) to update().)")
+      .def("update", &UpdateFrom, "changes"_a,
+           R"(Applies a dict of parameters() keys to new values. Every value is checked
+first: an unknown key, a value of the wrong kind or out of its range raises
+vkpt.SettingError, and then nothing changes. The next render builds the scene's arrays
+again (the file is not read again) and equals, bit for bit, a render of the file so
+edited.)")
       .def("render", &RenderWith, "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(),
            "height"_a = py::none(), "spp"_a = py::none(), "seconds"_a = py::none(), "noise_target"_a = py::none(),
            "adaptive"_a = py::none(), "seed"_a = kRender.seed, "max_depth"_a = kRender.maxDepth,

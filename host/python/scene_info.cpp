@@ -33,8 +33,8 @@ void BindMaterial(py::module_& m) {
   py::class_<MaterialInfo> material(m, "MaterialInfo", R"(A material's factors as the renderer reads them (glTF's
 defaults where the file is silent); Scene.materials lists them, vkpt's default last.)");
   material.def_readonly("index", &MaterialInfo::index).def_readonly("name", &MaterialInfo::name);
-#define VKPT_BIND_FACTOR(type, member, python, doc) \
-  material.def_property_readonly(                   \
+#define VKPT_BIND_FACTOR(type, member, python, lo, hi, doc) \
+  material.def_property_readonly(                           \
       python, [](const MaterialInfo& i) { return Py(i.member); }, doc);
   VKPT_MATERIAL_FACTORS(VKPT_BIND_FACTOR)
 #undef VKPT_BIND_FACTOR

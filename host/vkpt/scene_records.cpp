@@ -47,7 +47,7 @@ vkpt::MaterialInfo MaterialInfoOf(const Scene& scene, uint32_t index) {
   vkpt::MaterialInfo info;
   info.index = index;
   info.name = scene.materialNames[index];
-#define VKPT_COPY_FACTOR(type, member, python, doc) info.member = Public(m.member);
+#define VKPT_COPY_FACTOR(type, member, python, lo, hi, doc) info.member = Public(m.member);
   VKPT_MATERIAL_FACTORS(VKPT_COPY_FACTOR)
 #undef VKPT_COPY_FACTOR
   info.alphaMode = AlphaModeName(m.alphaMode);

@@ -17,38 +17,41 @@ using Rgb = std::array<float, 3>;
 using Vec3 = std::array<float, 3>;
 
 // A material's factors as the renderer reads them (glTF's defaults where the file is
-// silent), one X(type, member, Python name, doc) per field: MaterialInfo holds them, and
-// the Python binding and the command line's -v report list them from here.
-#define VKPT_MATERIAL_FACTORS(X)                                                                         \
-  X(Rgb, baseColor, "base_color", "baseColorFactor's RGB")                                               \
-  X(float, alpha, "alpha", "baseColorFactor's alpha")                                                    \
-  X(float, metallic, "metallic", "metallicFactor")                                                       \
-  X(float, roughness, "roughness", "roughnessFactor")                                                    \
-  X(Rgb, emission, "emission", "emitted radiance: emissiveFactor times KHR_materials_emissive_strength") \
-  X(float, specular, "specular", "KHR_materials_specular's specularFactor (0: no specular layer)")       \
-  X(Rgb, specularColor, "specular_color", "KHR_materials_specular's specularColorFactor")                \
-  X(float, ior, "ior", "KHR_materials_ior (1.5 when absent)")                                            \
-  X(float, transmission, "transmission", "KHR_materials_transmission's transmissionFactor")              \
-  X(bool, volume, "volume", "KHR_materials_volume: the surface bounds a volume (thickness > 0)")         \
-  X(Rgb, attenuation, "attenuation", "the volume's attenuation coefficient per unit length")             \
-  X(float, normalScale, "normal_scale", "normalTexture.scale")                                           \
-  X(float, alphaCutoff, "alpha_cutoff", "alphaCutoff (alpha_mode MASK)")                                 \
-  X(bool, doubleSided, "double_sided", "doubleSided")                                                    \
-  X(bool, unlit, "unlit", "KHR_materials_unlit")                                                         \
-  X(float, clearcoat, "clearcoat", "KHR_materials_clearcoat's clearcoatFactor (0: no coat)")             \
-  X(float, clearcoatRoughness, "clearcoat_roughness", "KHR_materials_clearcoat's roughness")             \
-  X(float, clearcoatNormalScale, "clearcoat_normal_scale", "clearcoatNormalTexture.scale")               \
-  X(Rgb, sheenColor, "sheen_color", "KHR_materials_sheen's sheenColorFactor (black: no sheen)")          \
-  X(float, sheenRoughness, "sheen_roughness", "KHR_materials_sheen's sheenRoughnessFactor")              \
-  X(float, diffuseTransmission, "diffuse_transmission", "KHR_materials_diffuse_transmission's factor")   \
-  X(Rgb, diffuseTransmissionColor, "diffuse_transmission_color", "its diffuseTransmissionColorFactor")   \
-  X(float, iridescence, "iridescence", "KHR_materials_iridescence's iridescenceFactor (0: no film)")     \
-  X(float, iridescenceIor, "iridescence_ior", "the film's index of refraction")                          \
-  X(float, iridescenceThicknessMin, "iridescence_thickness_min", "the film's least thickness, nm")       \
-  X(float, iridescenceThicknessMax, "iridescence_thickness_max", "the film's greatest thickness, nm")    \
-  X(float, anisotropyStrength, "anisotropy_strength", "KHR_materials_anisotropy's strength")             \
-  X(float, anisotropyRotation, "anisotropy_rotation", "its rotation, radians from the tangent")          \
-  X(float, dispersion, "dispersion", "KHR_materials_dispersion: 20 / the Abbe number (0: none)")
+// silent), one X(type, member, Python name, lo, hi, doc) per field: MaterialInfo holds
+// them, the Python binding lists them, and Scene::Parameters() offers each for editing as
+// "materials/<index>/<Python name>", within [lo, hi] (each channel of an Rgb; a bool is 0
+// or 1).
+#define VKPT_MATERIAL_FACTORS(X)                                                                                    \
+  X(Rgb, baseColor, "base_color", 0, 1, "baseColorFactor's RGB")                                                    \
+  X(float, alpha, "alpha", 0, 1, "baseColorFactor's alpha")                                                         \
+  X(float, metallic, "metallic", 0, 1, "metallicFactor")                                                            \
+  X(float, roughness, "roughness", 0, 1, "roughnessFactor")                                                         \
+  X(Rgb, emission, "emission", 0, 3.4e38, "emitted radiance: emissiveFactor times KHR_materials_emissive_strength") \
+  X(float, specular, "specular", 0, 1, "KHR_materials_specular's specularFactor (0: no specular layer)")            \
+  X(Rgb, specularColor, "specular_color", 0, 3.4e38, "KHR_materials_specular's specularColorFactor")                \
+  X(float, ior, "ior", 0, 1e6, "KHR_materials_ior (1.5 when absent)")                                               \
+  X(float, transmission, "transmission", 0, 1, "KHR_materials_transmission's transmissionFactor")                   \
+  X(bool, volume, "volume", 0, 1, "KHR_materials_volume: the surface bounds a volume (thickness > 0)")              \
+  X(Rgb, attenuation, "attenuation", 0, 3.4e38, "the volume's attenuation coefficient per unit length")             \
+  X(float, normalScale, "normal_scale", -1e6, 1e6, "normalTexture.scale")                                           \
+  X(float, alphaCutoff, "alpha_cutoff", 0, 3.4e38, "alphaCutoff (alpha_mode MASK)")                                 \
+  X(bool, doubleSided, "double_sided", 0, 1, "doubleSided")                                                         \
+  X(bool, unlit, "unlit", 0, 1, "KHR_materials_unlit")                                                              \
+  X(float, clearcoat, "clearcoat", 0, 1, "KHR_materials_clearcoat's clearcoatFactor (0: no coat)")                  \
+  X(float, clearcoatRoughness, "clearcoat_roughness", 0, 1, "KHR_materials_clearcoat's roughness")                  \
+  X(float, clearcoatNormalScale, "clearcoat_normal_scale", -1e6, 1e6, "clearcoatNormalTexture.scale")               \
+  X(Rgb, sheenColor, "sheen_color", 0, 1, "KHR_materials_sheen's sheenColorFactor (black: no sheen)")               \
+  X(float, sheenRoughness, "sheen_roughness", 0, 1, "KHR_materials_sheen's sheenRoughnessFactor")                   \
+  X(float, diffuseTransmission, "diffuse_transmission", 0, 1, "KHR_materials_diffuse_transmission's factor")        \
+  X(Rgb, diffuseTransmissionColor, "diffuse_transmission_color", 0, 1, "its diffuseTransmissionColorFactor")        \
+  X(float, iridescence, "iridescence", 0, 1, "KHR_materials_iridescence's iridescenceFactor (0: no film)")          \
+  X(float, iridescenceIor, "iridescence_ior", 1, 1e6, "the film's index of refraction")                             \
+  X(float, iridescenceThicknessMin, "iridescence_thickness_min", 0, 1e6, "the film's least thickness, nm")          \
+  X(float, iridescenceThicknessMax, "iridescence_thickness_max", 0, 1e6, "the film's greatest thickness, nm")       \
+  X(float, anisotropyStrength, "anisotropy_strength", 0, 1, "KHR_materials_anisotropy's strength")                  \
+  X(float, anisotropyRotation, "anisotropy_rotation", -3.14159275, 3.14159275,                                      \
+    "its rotation, radians from the tangent")                                                                       \
+  X(float, dispersion, "dispersion", 0, 1000, "KHR_materials_dispersion: 20 / the Abbe number (0: none)")
 
 // A material's use of a texture: which of the file's textures (glTF textures[i]), read at
 // which TEXCOORD set.
@@ -60,7 +63,7 @@ struct MaterialTextureInfo {
 struct MaterialInfo {
   uint32_t index = 0;  // the glTF material's (the last one: vkpt's default material)
   std::string name;
-#define VKPT_MATERIAL_FIELD(type, member, python, doc) type member{};
+#define VKPT_MATERIAL_FIELD(type, member, python, lo, hi, doc) type member{};
   VKPT_MATERIAL_FACTORS(VKPT_MATERIAL_FIELD)
 #undef VKPT_MATERIAL_FIELD
   std::string alphaMode;  // "OPAQUE", "MASK" or "BLEND"

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "vkpt/parameters.h"
 #include "vkpt/scene_info.h"
 
 // What the shared library libvkpt.so exports: these declarations and nothing else.
@@ -167,6 +168,15 @@ class VKPT_API Scene {
   std::vector<std::string> Variants() const;
   // Its counts as loaded, and as last built for a render.
   SceneStats Stats() const;
+
+  // Every editable value (vkpt/parameters.h), as the scene holds it now.
+  ParameterMap Parameters() const;
+  // Applies `changes`, any of Parameters()'s keys: every value is checked first (a
+  // SettingError names an unknown key, a value of the wrong kind or out of its range, and
+  // then nothing changes). The next Render builds the scene's arrays again, without
+  // reading or posing the file, and renders what a fresh load of the file so edited would,
+  // bit for bit.
+  void Update(const ParameterMap& changes);
 
  private:
   struct Impl;

@@ -290,3 +290,35 @@ def test_every_record_property_is_documented_and_readable(cpu_scene):
                 getattr(record, name)  # each converts to Python
     for name in ("materials", "cameras", "lights", "animations", "variants", "stats", "camera_count", "device"):
         assert vars(vkpt.Scene)[name].__doc__, f"Scene.{name} has no docstring"
+
+
+def test_an_edited_parameter_renders_as_the_edited_file(tmp_path):
+    with open(CORNELL) as f:
+        gltf = json.load(f)
+    green = gltf["materials"][2]["pbrMetallicRoughness"]["baseColorFactor"][:3]
+    gltf["materials"][2]["pbrMetallicRoughness"]["baseColorFactor"] = [0.2, 0.3, 0.9, 1.0]
+    (tmp_path / "cornell.bin").write_bytes((pathlib.Path(CORNELL).parent / "cornell.bin").read_bytes())
+    (tmp_path / "cornell.gltf").write_text(json.dumps(gltf))
+    fresh = vkpt.Scene(tmp_path / "cornell.gltf", backend="cpu")
+    live = vkpt.Scene(CORNELL, backend="cpu")
+    before = np.asarray(live.render(**SMALL))
+    p = live.parameters()
+    assert p["materials/2/base_color"] == pytest.approx(green)
+    p["materials/2/base_color"] = (0.2, 0.3, 0.9)
+    live.update(p)
+    assert live.parameters() == fresh.parameters() and live.materials[2].base_color != pytest.approx(green)
+    after = np.asarray(live.render(**SMALL))
+    assert np.array_equal(after, np.asarray(fresh.render(**SMALL))) and not np.array_equal(after, before)
+
+
+def test_a_refused_parameter_changes_nothing(cpu_scene):
+    original = cpu_scene.parameters()
+    with pytest.raises(vkpt.SettingError, match=r"materials/1/roughness must be in \[0, 1\], got -0.5"):
+        cpu_scene.update({"materials/0/roughness": 0.5, "materials/1/roughness": -0.5})
+    with pytest.raises(vkpt.SettingError, match="no scene parameter \"materials/0/shine\""):
+        cpu_scene.update({"materials/0/shine": 1.0})
+    with pytest.raises(TypeError, match="materials/0/base_color: a parameter is a number, a bool or 3 numbers"):
+        cpu_scene.update({"materials/0/base_color": "red"})
+    with pytest.raises(vkpt.SettingError, match="takes an RGB triple, not a number"):
+        cpu_scene.update({"materials/0/base_color": 0.5})
+    assert cpu_scene.parameters() == original
