@@ -1,9 +1,12 @@
-// The pieces of the Python module (module.cpp): option values from Python objects, the
-// Camera type, and a render's result whose images are NumPy arrays.
+// The pieces of the Python module (module.cpp): the Scene as Python holds it, option values
+// from Python objects, the Camera type, a render's result whose images are NumPy arrays, the
+// scene's records and parameters, and the library's log as Python's logging.
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <string>
+#include <utility>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -13,6 +16,22 @@
 namespace vkpt::python {
 
 namespace py = pybind11;
+
+// A Scene for Python: renders on one Scene are serialised, as the library requires (Python
+// threads may call render at once, the GIL being released while it runs).
+struct PyScene {
+  explicit PyScene(Scene s) : scene(std::move(s)) {}
+  Scene scene;
+  std::mutex rendering;
+};
+
+// A message of the library (SceneOptions::log) to Python's logging, logger "vkpt".
+void ToLogging(LogLevel level, const std::string& message);
+
+// Scene.parameters() and Scene.update() (vkpt/parameters.h): values as floats, bools and
+// RGB tuples.
+py::dict ParametersOf(PyScene& self);
+void UpdateFrom(PyScene& self, const py::dict& changes);
 
 // A name of vkpt/setting_choices.h's BackendChoices; vkpt.SettingError (a ValueError) else.
 Backend BackendFrom(const std::string& name);

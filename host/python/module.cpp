@@ -28,14 +28,6 @@ using namespace pybind11::literals;
 namespace vkpt::python {
 namespace {
 
-// A Scene for Python: renders on one Scene are serialised, as the library requires (Python
-// threads may call render at once, the GIL being released while it runs).
-struct PyScene {
-  explicit PyScene(Scene s) : scene(std::move(s)) {}
-  Scene scene;
-  std::mutex rendering;
-};
-
 // One render's callbacks into Python, from the rendering thread: each takes the GIL (the
 // progress hook is set only when there is a callback to call). The
 // first exception (KeyboardInterrupt from Ctrl-C, or one the progress callback raised)
@@ -110,6 +102,7 @@ std::unique_ptr<PyScene> OpenScene(const std::filesystem::path& path, const std:
   o.environment = environment;
   o.environmentIntensity = environmentIntensity;
   o.lightSampler = LightSamplerFrom(lightSampler);
+  o.log = ToLogging;
   py::gil_scoped_release released;
   return std::make_unique<PyScene>(Scene(path.string(), o));
 }
@@ -139,47 +132,6 @@ PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint3
   o.aovs = std::move(aovs);
   o.denoise = denoise;
   return Render(self, camera, std::move(o), progress);
-}
-
-// Waits for a render of the scene on another thread (the GIL released meanwhile).
-template <class F>
-auto WhenIdle(PyScene& self, F&& f) {
-  py::gil_scoped_release released;
-  std::lock_guard<std::mutex> lock(self.rendering);
-  return f();
-}
-
-py::dict ParametersOf(PyScene& self) {
-  py::dict d;
-  for (const auto& [key, value] : WhenIdle(self, [&] { return self.scene.Parameters(); }))
-    d[py::str(key)] = std::visit(
-        [](const auto& v) -> py::object {
-          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, Rgb>) return py::make_tuple(v[0], v[1], v[2]);
-          else return py::cast(v);
-        },
-        value);
-  return d;
-}
-
-// A Python number, bool or sequence of 3 numbers as a parameter's value; TypeError else.
-ParameterValue ParameterFrom(const std::string& key, const py::handle& value) {
-  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
-  if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) return value.cast<double>();
-  if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value) && py::len(value) == 3) {
-    const py::sequence s = value.cast<py::sequence>();
-    return Rgb{s[0].cast<float>(), s[1].cast<float>(), s[2].cast<float>()};
-  }
-  throw py::type_error(key + ": a parameter is a number, a bool or 3 numbers, not " +
-                       std::string(py::str(value.get_type().attr("__name__"))));
-}
-
-void UpdateFrom(PyScene& self, const py::dict& changes) {
-  ParameterMap map;
-  for (const auto& [key, value] : changes) {
-    const std::string k = py::str(key);
-    map[k] = ParameterFrom(k, value);
-  }
-  WhenIdle(self, [&] { self.scene.Update(map); });
 }
 
 // A getter of one of Scene's lists as a tuple (read-only, as the scene's records are).

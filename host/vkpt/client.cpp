@@ -8,6 +8,7 @@
 #include "session/aov.h"
 #include "session/budget.h"
 #include "session/local_passes.h"
+#include "vkpt/caller_log.h"
 #include "vkpt/client.h"
 #include "vkpt/scene_access.h"
 #include "vkpt/scene_records.h"
@@ -156,7 +157,13 @@ namespace vkpt {
 Scene::Scene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 Scene::Scene(const std::string& path, const SceneOptions& options)
-    : Scene(internal::Translated([&] { return std::move(internal::OpenScene(path, options, {}).impl_); })) {}
+    : Scene(internal::Translated([&] {
+        internal::ClientScene client;
+        client.log = internal::EngineLogOf(options.log);
+        return std::move(internal::OpenScene(path, options, client).impl_);
+      })) {
+  internal::LogLoad(options.log, SceneAccess::Engine(*this).scene());
+}
 
 Scene::~Scene() = default;
 Scene::Scene(Scene&&) noexcept = default;

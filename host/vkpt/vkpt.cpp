@@ -9,7 +9,9 @@
 #include "image/view_transform.h"
 #include "session/aov.h"
 #include "session/local_passes.h"
+#include "vkpt/caller_log.h"
 #include "vkpt/client.h"
+#include "vkpt/scene_access.h"
 
 namespace vkpt::internal {
 namespace {
@@ -42,9 +44,14 @@ AovLayer ToLayer(const std::string& name, const vkpt::Image& aov, const vkpt::Im
 
 vkpt::RenderResult RenderView(vkpt::Scene& scene, const vkpt::Camera& camera, const vkpt::RenderOptions& options) {
   return Translated([&] {
-    BegunView view = BeginView(scene, camera, options, {});
+    const vkpt::LogCallback& log = vkpt::SceneAccess::Options(scene).log;
+    const ClientView client = LoggedView(log);
+    const uint32_t validationBefore = ValidationMessagesOf(scene);
+    BegunView view = BeginView(scene, camera, options, client);
     LocalPasses source(*view.renderer, options.chunkSpp);
-    RenderedView rendered = FinishView(scene, view, source, options, {});
+    RenderedView rendered = FinishView(scene, view, source, options, client);
+    if (const uint32_t validation = ValidationMessagesOf(scene) - validationBefore; validation && log)
+      log(vkpt::LogLevel::Warning, std::to_string(validation) + " Vulkan validation message(s) in this render");
     const RenderedFrame& frame = rendered.frame;
     vkpt::RenderResult result;
     const uint32_t w = view.prepared.size.x, h = view.prepared.size.y;

@@ -66,6 +66,12 @@ enum class Backend {
 // from 8 such lights on.
 enum class LightSampler { Auto, Power, Tree };
 
+// How much a message of SceneOptions::log matters: Warning (the image may not be what the
+// file means: an ignored extension, a black image ahead, a fallback to the CPU, validation
+// messages), Info (notices), Debug (what the command line prints with -v).
+enum class LogLevel { Debug, Info, Warning };
+using LogCallback = std::function<void(LogLevel level, const std::string& message)>;
+
 struct SceneOptions {
   Backend backend = Backend::Auto;
   std::string device;              // a Vulkan device by index or name substring ("": the best)
@@ -79,6 +85,9 @@ struct SceneOptions {
   std::string environment;         // an equirectangular .hdr or .exr lighting the scene
   float environmentIntensity = 1.0f;
   LightSampler lightSampler = LightSampler::Auto;
+  // Receives the load's and every render's messages, from the thread that loads or
+  // renders (none: they are dropped).
+  LogCallback log;
 };
 
 // The file's camera `index` (without cameras: one framing the scene), or its lens placed by

@@ -322,3 +322,17 @@ def test_a_refused_parameter_changes_nothing(cpu_scene):
     with pytest.raises(vkpt.SettingError, match="takes an RGB triple, not a number"):
         cpu_scene.update({"materials/0/base_color": 0.5})
     assert cpu_scene.parameters() == original
+
+
+def test_warnings_go_to_the_vkpt_logger(tmp_path, caplog):
+    with open(CORNELL) as f:
+        gltf = json.load(f)
+    gltf.setdefault("extensionsUsed", []).append("EXT_made_up")
+    (tmp_path / "cornell.bin").write_bytes((pathlib.Path(CORNELL).parent / "cornell.bin").read_bytes())
+    (tmp_path / "cornell.gltf").write_text(json.dumps(gltf))
+    with caplog.at_level("DEBUG", logger="vkpt"):
+        scene = vkpt.Scene(tmp_path / "cornell.gltf", backend="cpu")
+        scene.render(**SMALL)
+    records = [(r.name, r.levelname, r.getMessage()) for r in caplog.records]
+    assert ("vkpt", "WARNING", f"{tmp_path / 'cornell.gltf'}: ignored: extension EXT_made_up") in records
+    assert any(level == "DEBUG" and message.startswith("pass 1: ") for _, level, message in records), records
