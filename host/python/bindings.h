@@ -3,8 +3,10 @@
 // scene's records and parameters, and the library's log as Python's logging.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -19,19 +21,23 @@ namespace py = pybind11;
 
 // A Scene for Python: renders on one Scene are serialised, as the library requires (Python
 // threads may call render at once, the GIL being released while it runs).
+// Scene.close() releases it (its device and memory): then every use raises vkpt.Error.
 struct PyScene {
   explicit PyScene(Scene s) : scene(std::move(s)) {}
-  Scene scene;
+  Scene& Get() {
+    if (!scene) throw Error("the scene is closed");
+    return *scene;
+  }
+  std::optional<Scene> scene;
   std::mutex rendering;
+  std::atomic<bool> cancelled{false};  // Scene.cancel() during the render running now
 };
 
 // A message of the library (SceneOptions::log) to Python's logging, logger "vkpt".
 void ToLogging(LogLevel level, const std::string& message);
 
-// Scene.parameters() and Scene.update() (vkpt/parameters.h): values as floats, bools and
-// RGB tuples.
-py::dict ParametersOf(PyScene& self);
-void UpdateFrom(PyScene& self, const py::dict& changes);
+// vkpt.Scene's records, parameters, cancel, close and repr (scene_state.cpp).
+void BindSceneState(py::class_<PyScene>& scene);
 
 // A name of vkpt/setting_choices.h's BackendChoices; vkpt.SettingError (a ValueError) else.
 Backend BackendFrom(const std::string& name);
@@ -68,6 +74,10 @@ class PyRender {
   py::array View(Image& image) const;
   std::shared_ptr<RenderResult> result_;
 };
+
+// Renders a view of the scene, the GIL released; Ctrl-C, an exception from `progress`,
+// `progress` returning False or Scene.cancel() end it at its next pass.
+PyRender RenderOn(PyScene& self, const py::object& camera, RenderOptions options, const py::object& progress);
 
 void BindRender(py::module_& m);
 

@@ -28,58 +28,6 @@ using namespace pybind11::literals;
 namespace vkpt::python {
 namespace {
 
-// One render's callbacks into Python, from the rendering thread: each takes the GIL (the
-// progress hook is set only when there is a callback to call). The
-// first exception (KeyboardInterrupt from Ctrl-C, or one the progress callback raised)
-// cancels the render and is raised once it has returned.
-class Callbacks {
- public:
-  explicit Callbacks(py::object progress) : progress_(std::move(progress)) {}
-
-  void Progress(double fraction) {
-    py::gil_scoped_acquire gil;
-    if (error_) return;
-    try {
-      progress_(fraction);
-    } catch (py::error_already_set& e) {
-      error_.emplace(std::move(e));
-    }
-  }
-
-  bool Cancel() {
-    py::gil_scoped_acquire gil;
-    if (!error_ && PyErr_CheckSignals() != 0) error_.emplace();  // takes the pending exception
-    return error_.has_value();
-  }
-
-  void RaiseAny() {
-    if (error_) {
-      py::error_already_set e = std::move(*error_);
-      error_.reset();
-      throw e;
-    }
-  }
-
- private:
-  py::object progress_;
-  std::optional<py::error_already_set> error_;
-};
-
-PyRender Render(PyScene& self, const py::object& camera, RenderOptions options, const py::object& progress) {
-  const Camera view = CameraFrom(camera);
-  auto callbacks = std::make_shared<Callbacks>(progress);
-  if (!progress.is_none()) options.progress = [callbacks](double f) { callbacks->Progress(f); };
-  options.cancel = [callbacks] { return callbacks->Cancel(); };
-  auto result = std::make_shared<RenderResult>();
-  {
-    py::gil_scoped_release released;
-    std::lock_guard<std::mutex> lock(self.rendering);
-    *result = self.scene.Render(view, options);
-  }
-  callbacks->RaiseAny();
-  return PyRender(std::move(result));
-}
-
 // The keywords' defaults are the library's (vkpt/vkpt.h).
 const SceneOptions kScene;
 const RenderOptions kRender;
@@ -131,13 +79,7 @@ PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint3
   o.textureLod = textureLod;
   o.aovs = std::move(aovs);
   o.denoise = denoise;
-  return Render(self, camera, std::move(o), progress);
-}
-
-// A getter of one of Scene's lists as a tuple (read-only, as the scene's records are).
-template <class T>
-auto TupleOf(std::vector<T> (Scene::*list)() const) {
-  return [list](PyScene& s) { return py::tuple(py::cast((s.scene.*list)())); };
+  return RenderOn(self, camera, std::move(o), progress);
 }
 
 // The signatures pybind11 puts above each docstring show the keywords and their defaults;
@@ -153,11 +95,15 @@ of its range.
 
 camera: None (the file's first camera), an int (the file's camera of that index) or a
 vkpt.Camera. The GIL is released while rendering; progress(fraction) is called now and
-then. aovs: albedo, normal, depth, position, variance, spp, heatmap, object_id,
-material_id, instance_id, or "all". A setting out of its range raises vkpt.SettingError.
+then, and returning False ends the render at its next pass with what it has (stopped_by
+"cancelled"), as Scene.cancel() from another thread does. aovs: albedo, normal, depth,
+position, variance, spp, heatmap, object_id, material_id, instance_id, or "all". A
+setting out of its range raises vkpt.SettingError.
 
 )" + KeywordDocs("RenderOptions::");
-  py::class_<PyScene>(m, "Scene", sceneDoc.c_str())
+  py::class_<PyScene> scene(m, "Scene", sceneDoc.c_str());
+  BindSceneState(scene);
+  scene
       .def(py::init(&OpenScene), "path"_a, py::kw_only(),
            "backend"_a = internal::ChoiceName(internal::BackendChoices(), kScene.backend), "device"_a = kScene.device,
            "validation"_a = kScene.validation, "threads"_a = kScene.threads, "max_memory"_a = kScene.maxMemory,
@@ -165,31 +111,6 @@ material_id, instance_id, or "all". A setting out of its range raises vkpt.Setti
            "variant"_a = kScene.variant, "animation"_a = kScene.animation, "environment"_a = kScene.environment,
            "environment_intensity"_a = kScene.environmentIntensity,
            "light_sampler"_a = internal::ChoiceName(internal::LightSamplerChoices(), kScene.lightSampler))
-      .def_property_readonly(
-          "camera_count", [](PyScene& s) { return s.scene.CameraCount(); }, "how many cameras the file has")
-      .def_property_readonly(
-          "device", [](PyScene& s) { return s.scene.Device(); }, "\"cpu\", or the Vulkan device's name")
-      .def_property_readonly("materials", TupleOf(&Scene::Materials),
-                             "the file's materials (vkpt.MaterialInfo), vkpt's default last")
-      .def_property_readonly("cameras", TupleOf(&Scene::Cameras),
-                             "the file's cameras (vkpt.CameraInfo), in scene-graph order")
-      .def_property_readonly("lights", TupleOf(&Scene::Lights),
-                             "the punctual lights (vkpt.LightInfo), in scene-graph order")
-      .def_property_readonly("animations", TupleOf(&Scene::Animations), "the file's animations (vkpt.AnimationInfo)")
-      .def_property_readonly("variants", TupleOf(&Scene::Variants), "the KHR_materials_variants names, in index order")
-      .def_property_readonly(
-          "stats", [](PyScene& s) { return s.scene.Stats(); }, "the scene's counts (vkpt.SceneStats)")
-      .def("parameters", &ParametersOf,
-           R"(Every editable value of the scene, as a dict from a key to a float, a bool or an
-RGB tuple: "materials/<index>/<field>" for each field of vkpt.MaterialInfo that is a
-factor ("base_color", "roughness", ...), and "environment/intensity" with an
-environment map. Change values and pass the dict (or any part of it) to update().)")
-      .def("update", &UpdateFrom, "changes"_a,
-           R"(Applies a dict of parameters() keys to new values. Every value is checked
-first: an unknown key, a value of the wrong kind or out of its range raises
-vkpt.SettingError, and then nothing changes. The next render builds the scene's arrays
-again (the file is not read again) and equals, bit for bit, a render of the file so
-edited.)")
       .def("render", &RenderWith, "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(),
            "height"_a = py::none(), "spp"_a = py::none(), "seconds"_a = py::none(), "noise_target"_a = py::none(),
            "adaptive"_a = py::none(), "seed"_a = kRender.seed, "max_depth"_a = kRender.maxDepth,

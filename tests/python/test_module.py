@@ -336,3 +336,39 @@ def test_warnings_go_to_the_vkpt_logger(tmp_path, caplog):
     records = [(r.name, r.levelname, r.getMessage()) for r in caplog.records]
     assert ("vkpt", "WARNING", f"{tmp_path / 'cornell.gltf'}: ignored: extension EXT_made_up") in records
     assert any(level == "DEBUG" and message.startswith("pass 1: ") for _, level, message in records), records
+
+
+def test_progress_returning_false_keeps_the_render_so_far(cpu_scene):
+    calls = []
+    render = cpu_scene.render(width=32, height=32, spp=65536, progress=lambda f: calls.append(f) or False)
+    assert render.stopped_by == "cancelled" and 1 <= render.spp < 65536 and len(calls) == 1
+    assert np.isfinite(render.image).all() and render.image.max() > 0
+
+
+def test_a_render_on_another_thread_is_cancelled_by_scene_cancel():
+    scene = vkpt.Scene(CORNELL, backend="cpu")
+    renders = []
+    worker = threading.Thread(target=lambda: renders.append(scene.render(width=128, height=128, spp=65536)))
+    start = time.monotonic()
+    worker.start()
+    time.sleep(0.3)
+    scene.cancel()
+    worker.join(timeout=30)
+    assert not worker.is_alive() and time.monotonic() - start < 30
+    assert renders[0].stopped_by == "cancelled" and 1 <= renders[0].spp < 65536
+    assert np.isfinite(renders[0].image).all()
+    assert scene.render(**SMALL).stopped_by == "spp"  # a later render is not cancelled
+
+
+def test_a_scene_closes_and_is_a_context_manager():
+    with vkpt.Scene(pathlib.Path(CORNELL), backend="cpu") as scene:
+        stats = scene.stats
+        assert repr(scene) == (f"<vkpt.Scene {CORNELL!r} on cpu: {stats.triangles} triangles, "
+                               f"{len(scene.materials)} materials>")
+        assert scene.render(**SMALL).spp == 4
+    assert repr(scene) == "<vkpt.Scene closed>"
+    for use in (lambda: scene.render(**SMALL), lambda: scene.materials, lambda: scene.parameters(),
+                lambda: scene.update({}), lambda: scene.camera_count):
+        with pytest.raises(vkpt.Error, match="^the scene is closed$"):
+            use()
+    scene.close()  # again: nothing
