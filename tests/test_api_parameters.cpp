@@ -77,6 +77,8 @@ TEST(ApiParameters, ARefusedEditChangesNothing) {
       {{{"materials/99/roughness", 0.5}}, "no scene parameter \"materials/99/roughness\""},
       {{{"materials/0/shininess", 0.5}}, "materials/<0 to 4>/<base_color, alpha"},
       {{{"materials/x/roughness", 0.5}}, "no scene parameter"},
+      {{{"materials/00/roughness", 0.5}}, "no scene parameter \"materials/00/roughness\""},
+      {{{std::string(1000, 'x'), 0.5}}, "no scene parameter \"" + std::string(80, 'x') + "…\": the keys"},
       {{{"environment/intensity", 2.0}}, "no scene parameter"},  // no environment map
       {{{"materials/0/ior", std::nan("")}}, "materials/0/ior must be in [0, 1e+06], got nan"},
   };

@@ -42,7 +42,14 @@ ParameterValue ParameterFrom(const std::string& key, const py::handle& value) {
   if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) return value.cast<double>();
   if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value) && py::len(value) == 3) {
     const py::sequence s = value.cast<py::sequence>();
-    return Rgb{s[0].cast<float>(), s[1].cast<float>(), s[2].cast<float>()};
+    Rgb rgb;
+    for (size_t c = 0; c < 3; ++c) {
+      if (!py::isinstance<py::float_>(s[c]) && !py::isinstance<py::int_>(s[c]))
+        throw py::type_error(key + ": an RGB triple is 3 numbers, not a " +
+                             std::string(py::str(s[c].get_type().attr("__name__"))));
+      rgb[c] = s[c].cast<float>();
+    }
+    return rgb;
   }
   throw py::type_error(key + ": a parameter is a number, a bool or 3 numbers, not " +
                        std::string(py::str(value.get_type().attr("__name__"))));

@@ -73,14 +73,15 @@ const MaterialField kMaterialFields[] = {VKPT_MATERIAL_FACTORS(VKPT_MATERIAL_FIE
   for (const MaterialField& f : kMaterialFields) fields += std::string(fields.empty() ? "" : ", ") + f.name;
   std::string keys = "materials/<0 to " + std::to_string(loaded.scene().materials.size() - 1) + ">/<" + fields + ">";
   if (loaded.HasEnvironmentMap()) keys += " and " + std::string(kEnvironmentIntensity);
-  throw SettingError("no scene parameter \"" + key + "\": the keys are " + keys);
+  const std::string shown = key.size() > 80 ? key.substr(0, 80) + "…" : key;
+  throw SettingError("no scene parameter \"" + shown + "\": the keys are " + keys);
 }
 
 // "materials/<i>/<field>" as the material's index and its field; Unknown if it is not one.
 std::pair<uint32_t, const MaterialField*> MaterialKey(const std::string& key, const LoadedScene& loaded) {
   const size_t slash = key.find('/', sizeof kMaterials - 1);
   const std::string index = key.substr(sizeof kMaterials - 1, slash - (sizeof kMaterials - 1));
-  if (slash == std::string::npos || index.empty() || index.size() > 9 ||
+  if (slash == std::string::npos || index.empty() || index.size() > 9 || (index.size() > 1 && index[0] == '0') ||
       index.find_first_not_of("0123456789") != std::string::npos)
     Unknown(key, loaded);
   const uint32_t i = uint32_t(std::stoul(index));

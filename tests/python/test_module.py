@@ -319,6 +319,8 @@ def test_a_refused_parameter_changes_nothing(cpu_scene):
         cpu_scene.update({"materials/0/shine": 1.0})
     with pytest.raises(TypeError, match="materials/0/base_color: a parameter is a number, a bool or 3 numbers"):
         cpu_scene.update({"materials/0/base_color": "red"})
+    with pytest.raises(TypeError, match="materials/0/base_color: an RGB triple is 3 numbers, not a str"):
+        cpu_scene.update({"materials/0/base_color": ("r", "g", "b")})
     with pytest.raises(vkpt.SettingError, match="takes an RGB triple, not a number"):
         cpu_scene.update({"materials/0/base_color": 0.5})
     assert cpu_scene.parameters() == original
