@@ -5,12 +5,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include "api_test_util.h"
 #include "test_util.h"
 
 #include "vkpt/vkpt.h"
@@ -116,11 +120,11 @@ TEST(ApiRecords, PunctualLightsAreTheFilesColourTimesIntensity) {
   const std::string path = test::SharedData("gltf-pbr/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf");
   const json file = ReadJson(path);
   const json& declared = file["extensions"]["KHR_lights_punctual"]["lights"];
-  std::vector<json> placed;  // one per light node, in scene-graph order
+  std::vector<size_t> placed;  // the light of each light node, in scene-graph order
   std::function<void(uint32_t)> visit = [&](uint32_t n) {
     const json& node = file["nodes"][n];
     if (node.contains("extensions") && node["extensions"].contains("KHR_lights_punctual"))
-      placed.push_back(declared[node["extensions"]["KHR_lights_punctual"]["light"].get<size_t>()]);
+      placed.push_back(node["extensions"]["KHR_lights_punctual"]["light"].get<size_t>());
     for (const json& child : node.value("children", json::array())) visit(child.get<uint32_t>());
   };
   for (const json& root : file["scenes"][file.value("scene", 0)]["nodes"]) visit(root.get<uint32_t>());
@@ -129,8 +133,11 @@ TEST(ApiRecords, PunctualLightsAreTheFilesColourTimesIntensity) {
   for (size_t i = 0; i < lights.size(); ++i) {
     SCOPED_TRACE("light " + std::to_string(i));
     EXPECT_EQ(lights[i].index, i);
-    EXPECT_EQ(lights[i].type, placed[i]["type"].get<std::string>());
-    ExpectRgb(lights[i].intensity, placed[i].value("color", json{1, 1, 1}), placed[i].value("intensity", 1.0f));
+    const json& light = declared[placed[i]];
+    EXPECT_EQ(lights[i].light, placed[i]);
+    EXPECT_EQ(lights[i].type, light["type"].get<std::string>());
+    ExpectRgb(lights[i].color, light.value("color", json{1, 1, 1}));
+    EXPECT_FLOAT_EQ(float(lights[i].intensity), light.value("intensity", 1.0f));
   }
 }
 
@@ -148,6 +155,77 @@ TEST(ApiRecords, AnimationsHaveTheFilesNamesAndDurations) {
     EXPECT_EQ(animations[i].name, a["name"].get<std::string>());
     EXPECT_NEAR(animations[i].duration, end, 1e-6);
   }
+}
+
+// glm's matrix of a record's translation, rotation and scale.
+glm::dmat4 Local(const vkpt::NodeInfo& n) {
+  const glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
+  return glm::translate(glm::dmat4(1.0), glm::dvec3(n.translation[0], n.translation[1], n.translation[2])) *
+         glm::mat4_cast(q) * glm::scale(glm::dmat4(1.0), glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+}
+
+TEST(ApiRecords, CornellNodesAndMeshesAreTheFiles) {
+  const std::string path = test::SourcePath("scenes/cornell.gltf");
+  const json file = ReadJson(path);
+  vkpt::Scene scene = OnCpu(path);
+  const std::vector<vkpt::NodeInfo> nodes = scene.Nodes();
+  ASSERT_EQ(nodes.size(), file["nodes"].size());
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const json& n = file["nodes"][i];
+    EXPECT_EQ(nodes[i].index, i);
+    EXPECT_EQ(nodes[i].name, n.value("name", ""));
+    EXPECT_EQ(nodes[i].mesh, n.contains("mesh") ? std::optional<uint32_t>(n["mesh"]) : std::nullopt);
+    EXPECT_EQ(nodes[i].camera, n.contains("camera") ? std::optional<uint32_t>(n["camera"]) : std::nullopt);
+    EXPECT_FALSE(nodes[i].light || nodes[i].matrix);
+    ExpectRgb(nodes[i].translation, n.value("translation", json{0, 0, 0}));
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(nodes[i].rotation[c], n.value("rotation", json{0, 0, 0, 1})[c].get<float>());
+    ExpectRgb(nodes[i].scale, n.value("scale", json{1, 1, 1}));
+  }
+  const std::vector<vkpt::MeshInfo> meshes = scene.Meshes();
+  ASSERT_EQ(meshes.size(), file["meshes"].size());
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    const json& primitives = file["meshes"][i]["primitives"];
+    EXPECT_EQ(meshes[i].name, file["meshes"][i].value("name", ""));
+    ASSERT_EQ(meshes[i].primitives.size(), primitives.size());
+    for (size_t p = 0; p < primitives.size(); ++p) {
+      EXPECT_EQ(meshes[i].primitives[p].material, primitives[p]["material"].get<uint32_t>());
+      EXPECT_EQ(meshes[i].primitives[p].triangles,
+                file["accessors"][primitives[p]["indices"].get<size_t>()]["count"].get<uint64_t>() / 3);
+    }
+  }
+}
+
+// A skinned model whose nodes are placed by matrices: each record is the matrix's
+// decomposition, flagged; an edit of one part replaces the matrix by all three.
+TEST(ApiRecords, MatrixNodesAreDecomposedAndEditedAsTrs) {
+  VKPT_REQUIRE_SHARED_DATA();
+  const std::string path = test::SharedData("gltf-ext/RiggedSimple/glTF-Binary/RiggedSimple.glb");
+  const std::string glb = test::ReadFile(path);
+  uint32_t jsonLength = 0;
+  std::memcpy(&jsonLength, glb.data() + 12, 4);
+  const json file = json::parse(glb.substr(20, jsonLength));
+  vkpt::Scene scene = OnCpu(path);
+  const std::vector<vkpt::NodeInfo> nodes = scene.Nodes();
+  ASSERT_EQ(nodes.size(), file["nodes"].size());
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    SCOPED_TRACE("node " + std::to_string(i));
+    const json& n = file["nodes"][i];
+    EXPECT_EQ(nodes[i].name, n["name"].get<std::string>());
+    EXPECT_EQ(nodes[i].children, n.value("children", std::vector<uint32_t>{}));
+    EXPECT_EQ(nodes[i].matrix, n.contains("matrix"));
+    if (!n.contains("matrix")) continue;
+    const glm::dmat4 local = Local(nodes[i]);
+    for (int k = 0; k < 16; ++k) EXPECT_NEAR(local[k / 4][k % 4], n["matrix"][k].get<double>(), 1e-6) << k;
+  }
+  EXPECT_EQ(nodes[2].mesh, 0u);
+  const vkpt::NodeInfo before = nodes[1];
+  scene.Update({{"nodes/1/translation", vkpt::Vec3{0.0f, 2.0f, 0.0f}}});
+  const vkpt::NodeInfo after = scene.Nodes()[1];
+  EXPECT_FALSE(after.matrix);
+  EXPECT_EQ(after.translation, (vkpt::Vec3{0.0f, 2.0f, 0.0f}));
+  EXPECT_EQ(after.rotation, before.rotation);
+  EXPECT_EQ(after.scale, before.scale);
+  EXPECT_GT(scene.Render({}, test::SmallRender(1)).samples, 0u);
 }
 
 }  // namespace

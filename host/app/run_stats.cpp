@@ -30,7 +30,7 @@ JsonObject SceneJson(const vkpt::Scene& scene, const vkpt::SceneStats& stats) {
   std::snprintf(hash, sizeof hash, "fnv1a64:%016" PRIx64, stats.contentHash);
   JsonObject j;
   j.Str("path", stats.path).Str("content_hash", hash).Int("triangles", stats.triangles);
-  j.Int("degenerate_triangles", stats.degenerateTriangles).Int("materials", scene.Materials().size());
+  j.Int("degenerate_triangles", stats.degenerateTriangles).Int("materials", stats.materials);
   j.Int("lights", stats.lights).Int("cameras", scene.CameraCount());
   j.Int("memory_counted", stats.memoryCounted).Int("memory_limit", stats.memoryLimit);
   j.Raw("material_variant", stats.variant ? JsonString(scene.Variants()[*stats.variant]) : "null");

@@ -84,7 +84,7 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
   frame.size = ImageSize(frame.camera, request.picture);
   if (request.shape.aovIds) CheckIdsAreExact(IdCountsOf(scene()), settings_.path);
   ChargeFrame(frame, request);
-  if (settings_.once || !animated) asset_->ReleaseSource();  // no other pose will be asked for
+  if (settings_.once) asset_->ReleaseSource();  // no other pose will be asked for
   phase.Restart();
   if (!builtAt_ || *builtAt_ != posedAt_) {
     backend_.reset();  // the last pose's device buffers and arrays go before the next's are made
@@ -103,6 +103,11 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
 
 void LoadedScene::SetMaterial(uint32_t index, const Material& material) {
   asset_->SetMaterial(index, material);
+  builtAt_.reset();
+}
+
+void LoadedScene::Edit(const AssetEdits& edits) {
+  asset_->Edit(edits, posedAt_);
   builtAt_.reset();
 }
 

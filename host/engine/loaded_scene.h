@@ -1,6 +1,6 @@
 // A glTF file loaded once, with its environment map and the device it renders on, for
 // any number of renders. Each render poses the scene (again only when an animation is
-// chosen and its time changes), builds the BVH and the renderers' arrays (once per pose),
+// chosen and its time changes, or an edit moved a node), builds the BVH and the renderers' arrays (once per pose),
 // uploads them to the device (once per build) and makes its frame's constants from a
 // camera and a picture's settings.
 #pragma once
@@ -79,6 +79,12 @@ class LoadedScene {
   // of the file so edited would; the pose is kept.
   void SetMaterial(uint32_t index, const Material& material);
   void SetEnvironmentIntensity(float intensity);
+  // The file's nodes and lights edited (GltfAsset::Edit) and the scene posed again; throws
+  // Error, leaving the scene as it was, where the file so edited would be refused.
+  void Edit(const AssetEdits& edits);
+  // The file's nodes, meshes and lights (GltfAsset): a scene loaded for one render
+  // (SceneSettings::once) keeps none of them once it is built.
+  const GltfAsset& Asset() const { return *asset_; }
 
   RunTimes times;  // load, environment, pose, prepare and upload, as they happen
 

@@ -65,6 +65,9 @@ PunctualLight PlaceLight(const GltfSource& src, int lightIndex, const glm::dmat4
   out.direction = glm::vec3(direction / length);
   const glm::dvec3 color = in.color.empty() ? glm::dvec3(1.0) : glm::dvec3(in.color[0], in.color[1], in.color[2]);
   out.intensity = glm::vec3(color * in.intensity);
+  out.light = uint32_t(lightIndex);
+  out.color = glm::vec3(color);
+  out.lightIntensity = float(in.intensity);
   out.range = float(in.range);
   if (out.type == PunctualLight::Type::kSpot) {
     out.cosInner = float(std::cos(in.spot.innerConeAngle));

@@ -12,6 +12,7 @@
 #include "gltf/geometry_budget.h"
 #include "gltf/gltf_accessors.h"
 #include "gltf/gltf_animation.h"
+#include "gltf/gltf_asset_parts.h"
 #include "gltf/gltf_draco.h"
 #include "gltf/gltf_instancing.h"
 #include "gltf/gltf_lights.h"
@@ -30,17 +31,6 @@
 #include "util/error.h"
 
 namespace vkpt::internal {
-
-struct GltfAsset::Parts {
-  tinygltf::Model model;
-  Scene scene;
-  std::vector<int> parents;                           // CheckNodeGraph's
-  std::vector<std::vector<DecodedPrimitive>> meshes;  // decoded, in object space
-  std::vector<NodePose> rest;                         // as the file places the nodes
-  std::vector<Skin> skins;
-  size_t readWarnings = 0;  // the scene's warnings from reading it; each pose adds its own
-  bool released = false;    // ReleaseSource() freed the above
-};
 
 namespace {
 

@@ -1,9 +1,15 @@
 // glTF 2.0 (.gltf / .glb) → Scene.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "scene/load_limits.h"
 #include "scene/scene.h"
@@ -15,6 +21,46 @@ struct SceneChoice {
   std::string variant{};    // a KHR_materials_variants variant, by name or index; "": the primitives' own materials
   std::string animation{};  // an animation, by name or index; "": the nodes' own transforms
   double time = 0.0;        // seconds into the animation (LoadedScene: of its first pose)
+};
+
+// A node of the file (vkpt::Scene::Nodes): what it links to, and its local transform as
+// the file places it — a matrix as its decomposition, which drops any shear.
+struct NodeSummary {
+  std::string name;
+  int mesh = -1, camera = -1, light = -1;  // −1: none
+  std::vector<uint32_t> children;
+  glm::dvec3 translation{0.0};
+  glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+  glm::dvec3 scale{1.0};
+  bool matrix = false;
+};
+
+// A mesh of the file: per triangle primitive, its material (in the chosen variant) and
+// its triangle count.
+struct MeshSummary {
+  std::string name;
+  std::vector<std::pair<uint32_t, uint64_t>> primitives;
+};
+
+// A KHR_lights_punctual light of the file: its colour and intensity.
+struct LightSource {
+  glm::dvec3 color{1.0};
+  double intensity = 1.0;
+};
+
+// Changes to the file's nodes and lights, by index (vkpt::Scene::Update).
+struct NodeEdit {
+  std::optional<glm::dvec3> translation, scale;
+  std::optional<glm::dquat> rotation;
+};
+struct LightEdit {
+  std::optional<glm::dvec3> color;
+  std::optional<double> intensity;
+};
+struct AssetEdits {
+  std::map<uint32_t, NodeEdit> nodes;
+  std::map<uint32_t, LightEdit> lights;
+  bool Empty() const { return nodes.empty() && lights.empty(); }
 };
 
 // A glTF file read, checked and decoded once — materials, textures, meshes, skins and
@@ -37,6 +83,16 @@ class GltfAsset {
   Scene TakeScene();  // the asset is spent
   // Material `index` replaced, for this pose and every later one.
   void SetMaterial(uint32_t index, const Material& material);
+
+  // The file's nodes, meshes and lights (gltf_edits.cpp); not after ReleaseSource.
+  std::vector<NodeSummary> Nodes() const;
+  std::vector<MeshSummary> Meshes() const;
+  std::vector<LightSource> Lights() const;
+  // Applies `edits` as a file so edited would load — a node given a translation, rotation
+  // or scale loses its matrix, its other two taken from the matrix's decomposition — and
+  // poses the scene at `time`. Throws Error where the file so edited would be refused
+  // (then the asset is as it was, posed at `time`). Not after ReleaseSource.
+  void Edit(const AssetEdits& edits, double time);
 
   struct Parts;  // the parsed file, its decoded meshes and rest pose (gltf_loader.cpp)
 

@@ -29,8 +29,7 @@ class MaterialReader {
       mat.specularColor = Color(NumberArray(*c, "KHR_materials_specular.specularColorFactor"), 3,
                                 "KHR_materials_specular.specularColorFactor", INFINITY);
     const double ior = ExtensionNumber("KHR_materials_ior", "ior", 1.5);
-    if (!(ior == 0.0 || (ior >= 1.0 && std::isfinite(ior))))
-      Fail("KHR_materials_ior.ior must be 0 or a finite number >= 1");
+    if (!IorHolds(ior)) Fail("KHR_materials_ior.ior must be 0 or in [1, 1e6]");
     mat.ior = float(ior);
     mat.transmission = float(Unit(ExtensionNumber("KHR_materials_transmission", "transmissionFactor", 0.0),
                                   "KHR_materials_transmission.transmissionFactor"));
@@ -57,10 +56,9 @@ class MaterialReader {
     if (!(in_.alphaCutoff >= 0.0 && std::isfinite(in_.alphaCutoff))) Fail("alphaCutoff must be a finite number >= 0");
     mat.alpha = float(alpha);
     mat.alphaCutoff = float(in_.alphaCutoff);
-    if (in_.alphaMode == "OPAQUE") mat.alphaMode = AlphaMode::kOpaque;
-    else if (in_.alphaMode == "MASK") mat.alphaMode = AlphaMode::kMask;
-    else if (in_.alphaMode == "BLEND") mat.alphaMode = AlphaMode::kBlend;
-    else Fail("alphaMode \"" + in_.alphaMode + "\" is not OPAQUE, MASK or BLEND");
+    const auto* mode = std::find(std::begin(kAlphaModeNames), std::end(kAlphaModeNames), in_.alphaMode);
+    if (mode == std::end(kAlphaModeNames)) Fail("alphaMode \"" + in_.alphaMode + "\" is not OPAQUE, MASK or BLEND");
+    mat.alphaMode = AlphaMode(mode - std::begin(kAlphaModeNames));
   }
 
   // KHR_materials_volume: a thickness > 0 makes the transmissive surface the boundary of

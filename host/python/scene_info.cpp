@@ -1,4 +1,5 @@
-// vkpt.MaterialInfo, CameraInfo, LightInfo, AnimationInfo, SceneStats and BvhInfo: the
+// vkpt.MaterialInfo, CameraInfo, LightInfo, NodeInfo, MeshInfo, PrimitiveInfo,
+// AnimationInfo, SceneStats and BvhInfo: the
 // read-only records of include/vkpt/scene_info.h, their vectors as tuples.
 #include <string>
 
@@ -14,6 +15,7 @@ T Py(const T& value) {
   return value;
 }
 py::tuple Py(const std::array<float, 3>& v) { return py::make_tuple(v[0], v[1], v[2]); }
+py::tuple Py(const std::array<float, 4>& v) { return py::make_tuple(v[0], v[1], v[2], v[3]); }
 
 // "vkpt.Kind(index=i, name='name')"
 template <class Record>
@@ -60,11 +62,13 @@ void BindCameraAndLight(py::module_& m) {
       .def("__repr__", [](const CameraInfo& c) { return Repr("CameraInfo", c); });
   py::class_<LightInfo>(m, "LightInfo", "A KHR_lights_punctual light as placed in the scene (Scene.lights).")
       .def_readonly("index", &LightInfo::index)
+      .def_readonly("light", &LightInfo::light,
+                    "the file's KHR_lights_punctual lights[light]: parameters \"lights/<light>/...\" edit it")
       .def_readonly("name", &LightInfo::name)
       .def_readonly("type", &LightInfo::type, "\"point\", \"spot\" or \"directional\"")
       .def_property_readonly(
-          "intensity", [](const LightInfo& l) { return Py(l.intensity); },
-          "colour × intensity: candela (point, spot) or lux (directional)")
+          "color", [](const LightInfo& l) { return Py(l.color); }, "linear, in [0, 1]")
+      .def_readonly("intensity", &LightInfo::intensity, "candela (point, spot) or lux (directional)")
       .def_property_readonly("position", [](const LightInfo& l) { return Py(l.position); })
       .def_property_readonly(
           "direction", [](const LightInfo& l) { return Py(l.direction); }, "unit, the way the light travels")
@@ -77,6 +81,35 @@ void BindCameraAndLight(py::module_& m) {
       .def_readonly("name", &AnimationInfo::name)
       .def_readonly("duration", &AnimationInfo::duration, "seconds")
       .def("__repr__", [](const AnimationInfo& a) { return Repr("AnimationInfo", a); });
+}
+
+void BindNodeAndMesh(py::module_& m) {
+  py::class_<NodeInfo>(m, "NodeInfo", R"(A node of the file (glTF nodes[index], Scene.nodes): what it places and
+its local transform, which the parameters "nodes/<index>/translation", ".../rotation" and
+".../scale" edit.)")
+      .def_readonly("index", &NodeInfo::index)
+      .def_readonly("name", &NodeInfo::name, "\"\" where the file gives none")
+      .def_readonly("mesh", &NodeInfo::mesh, "the file's mesh it places, or None")
+      .def_readonly("camera", &NodeInfo::camera, "the file's camera it places, or None")
+      .def_readonly("light", &NodeInfo::light, "the KHR_lights_punctual light it places, or None")
+      .def_readonly("children", &NodeInfo::children, "its children's indices")
+      .def_property_readonly("translation", [](const NodeInfo& n) { return Py(n.translation); })
+      .def_property_readonly(
+          "rotation", [](const NodeInfo& n) { return Py(n.rotation); }, "a unit quaternion (x, y, z, w)")
+      .def_property_readonly("scale", [](const NodeInfo& n) { return Py(n.scale); })
+      .def_readonly("matrix", &NodeInfo::matrix, R"(placed by a matrix: translation, rotation and scale are its
+decomposition (without shear), and editing one replaces the matrix by all three)")
+      .def("__repr__", [](const NodeInfo& n) { return Repr("NodeInfo", n); });
+  py::class_<PrimitiveInfo>(m, "PrimitiveInfo", "A triangle primitive of a mesh.")
+      .def_readonly("material", &PrimitiveInfo::material, "its material, in the variant chosen")
+      .def_readonly("triangles", &PrimitiveInfo::triangles);
+  py::class_<MeshInfo>(m, "MeshInfo", "A mesh of the file (glTF meshes[index], Scene.meshes).")
+      .def_readonly("index", &MeshInfo::index)
+      .def_readonly("name", &MeshInfo::name, "\"\" where the file gives none")
+      .def_property_readonly(
+          "primitives", [](const MeshInfo& mesh) { return py::tuple(py::cast(mesh.primitives)); },
+          "its triangle primitives (vkpt.PrimitiveInfo); points and lines are left out")
+      .def("__repr__", [](const MeshInfo& mesh) { return Repr("MeshInfo", mesh); });
 }
 
 void BindStats(py::module_& m) {
@@ -95,6 +128,7 @@ triangles, bvh, texture bytes) as last built for a render, zero before the first
       .def_readonly("triangles", &SceneStats::triangles)
       .def_readonly("degenerate_triangles", &SceneStats::degenerateTriangles, "of zero area, left out of the BVH")
       .def_readonly("lights", &SceneStats::lights, "emissive triangles and punctual lights sampled")
+      .def_readonly("materials", &SceneStats::materials, "the file's, and vkpt's default material")
       .def_readonly("textures", &SceneStats::textures)
       .def_readonly("images", &SceneStats::images)
       .def_readonly("texels", &SceneStats::texels, "of the images at full size")
@@ -117,6 +151,7 @@ triangles, bvh, texture bytes) as last built for a render, zero before the first
 void BindSceneInfo(py::module_& m) {
   BindMaterial(m);
   BindCameraAndLight(m);
+  BindNodeAndMesh(m);
   BindStats(m);
 }
 

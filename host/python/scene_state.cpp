@@ -29,29 +29,38 @@ py::dict ParametersOf(PyScene& self) {
   for (const auto& [key, value] : WhenIdle(self, [&] { return self.Get().Parameters(); }))
     d[py::str(key)] = std::visit(
         [](const auto& v) -> py::object {
-          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, Rgb>) return py::make_tuple(v[0], v[1], v[2]);
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, Vec3>) return py::make_tuple(v[0], v[1], v[2]);
+          else if constexpr (std::is_same_v<T, Quat>) return py::make_tuple(v[0], v[1], v[2], v[3]);
           else return py::cast(v);
         },
         value);
   return d;
 }
 
-// A Python number, bool or sequence of 3 numbers as a parameter's value; TypeError else.
+// `n` Python numbers as floats; TypeError naming `key` else.
+template <size_t N>
+std::array<float, N> Numbers(const std::string& key, const py::sequence& s) {
+  std::array<float, N> out;
+  for (size_t c = 0; c < N; ++c) {
+    if (!py::isinstance<py::float_>(s[c]) && !py::isinstance<py::int_>(s[c]))
+      throw py::type_error(key + ": " + std::to_string(N) + " numbers, not a " +
+                           std::string(py::str(s[c].get_type().attr("__name__"))));
+    out[c] = s[c].cast<float>();
+  }
+  return out;
+}
+
+// A Python number, bool or sequence of 3 or 4 numbers as a parameter's value; TypeError else.
 ParameterValue ParameterFrom(const std::string& key, const py::handle& value) {
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
   if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) return value.cast<double>();
-  if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value) && py::len(value) == 3) {
+  if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value)) {
     const py::sequence s = value.cast<py::sequence>();
-    Rgb rgb;
-    for (size_t c = 0; c < 3; ++c) {
-      if (!py::isinstance<py::float_>(s[c]) && !py::isinstance<py::int_>(s[c]))
-        throw py::type_error(key + ": an RGB triple is 3 numbers, not a " +
-                             std::string(py::str(s[c].get_type().attr("__name__"))));
-      rgb[c] = s[c].cast<float>();
-    }
-    return rgb;
+    if (py::len(s) == 3) return Numbers<3>(key, s);
+    if (py::len(s) == 4) return Numbers<4>(key, s);
   }
-  throw py::type_error(key + ": a parameter is a number, a bool or 3 numbers, not " +
+  throw py::type_error(key + ": a parameter is a number, a bool, or 3 or 4 numbers, not " +
                        std::string(py::str(value.get_type().attr("__name__"))));
 }
 
@@ -75,14 +84,13 @@ std::string Describe(PyScene& self) {
   if (!self.scene) return "<vkpt.Scene closed>";
   const SceneStats stats = self.scene->Stats();
   return "<vkpt.Scene " + std::string(py::repr(py::str(stats.path))) + " on " + self.scene->Device() + ": " +
-         std::to_string(stats.triangles) + " triangles, " + std::to_string(self.scene->Materials().size()) +
-         " materials>";
+         std::to_string(stats.triangles) + " triangles, " + std::to_string(stats.materials) + " materials>";
 }
 
 // A getter of one of Scene's lists as a tuple (read-only, as the scene's records are).
 template <class T>
 auto TupleOf(std::vector<T> (Scene::*list)() const) {
-  return [list](PyScene& s) { return py::tuple(py::cast((s.Get().*list)())); };
+  return [list](PyScene& s) { return py::tuple(py::cast(WhenIdle(s, [&] { return (s.Get().*list)(); }))); };
 }
 
 }  // namespace
@@ -99,6 +107,8 @@ void BindSceneState(py::class_<PyScene>& scene) {
                              "the file's cameras (vkpt.CameraInfo), in scene-graph order")
       .def_property_readonly("lights", TupleOf(&Scene::Lights),
                              "the punctual lights (vkpt.LightInfo), in scene-graph order")
+      .def_property_readonly("nodes", TupleOf(&Scene::Nodes), "the file's nodes (vkpt.NodeInfo), by index")
+      .def_property_readonly("meshes", TupleOf(&Scene::Meshes), "the file's meshes (vkpt.MeshInfo), by index")
       .def_property_readonly("animations", TupleOf(&Scene::Animations), "the file's animations (vkpt.AnimationInfo)")
       .def_property_readonly("variants", TupleOf(&Scene::Variants), "the KHR_materials_variants names, in index order")
       .def_property_readonly(

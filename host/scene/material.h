@@ -20,6 +20,11 @@ enum class AlphaMode {
   kMask,    // the surface is present where alpha >= alphaCutoff
   kBlend,   // the surface is present with probability alpha
 };
+// glTF's names of the modes, in the enum's order.
+inline constexpr const char* kAlphaModeNames[] = {"OPAQUE", "MASK", "BLEND"};
+
+// KHR_materials_ior: 0 (Fresnel is 1 at every angle) or an index of refraction in [1, 1e6].
+inline bool IorHolds(double ior) { return ior == 0.0 || (ior >= 1.0 && ior <= 1e6); }
 
 // A material's use of a texture (glTF textureInfo): which of Scene::textures, which
 // TEXCOORD set, and KHR_texture_transform as a 2×3 matrix, the texture read at

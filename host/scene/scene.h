@@ -94,6 +94,10 @@ struct PunctualLight {
   glm::vec3 position{0.0f};                // world space; unused for directional lights
   glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit, the way light travels: the node's world −Z
   glm::vec3 intensity{1.0f};               // color × intensity: candela for point/spot, lux for directional
+  // As the file gives them: KHR_lights_punctual lights[light], its color and intensity.
+  uint32_t light = 0;
+  glm::vec3 color{1.0f};
+  float lightIntensity = 1.0f;
   float range = 0.0f;                      // distance beyond which the light has no effect; 0 = infinite
   float cosInner = 0.0f, cosOuter = 0.0f;  // spot: full intensity within the inner cone, none outside the outer
   std::string name;

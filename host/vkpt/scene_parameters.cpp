@@ -6,52 +6,14 @@
 
 #include "util/error.h"
 #include "vkpt/client.h"
+#include "vkpt/parameter_values.h"
 #include "vkpt/scene_access.h"
-#include "vkpt/settings_schema.h"
 
 namespace vkpt::internal {
 namespace {
 
-const char kMaterials[] = "materials/";
+const char kMaterials[] = "materials/", kNodes[] = "nodes/", kLights[] = "lights/";
 const char kEnvironmentIntensity[] = "environment/intensity";
-
-vkpt::ParameterValue ValueOf(float v) { return double(v); }
-vkpt::ParameterValue ValueOf(bool v) { return v; }
-vkpt::ParameterValue ValueOf(glm::vec3 v) { return vkpt::Rgb{v.x, v.y, v.z}; }
-
-const char* KindOf(const vkpt::ParameterValue& v) {
-  return std::holds_alternative<double>(v) ? "a number"
-         : std::holds_alternative<bool>(v) ? "a switch"
-                                           : "an RGB triple";
-}
-
-template <class Want>
-const Want& Expect(const vkpt::ParameterValue& v, const std::string& key) {
-  const Want* want = std::get_if<Want>(&v);
-  if (!want) {
-    const vkpt::ParameterValue kind = Want{};
-    throw SettingError(key + " takes " + KindOf(kind) + ", not " + KindOf(v));
-  }
-  return *want;
-}
-
-float Checked(double v, const Range& range, const std::string& name) {
-  if (!range.Holds(v)) throw SettingError(OutOfRange(name, range, v, FormatNumber(v)));
-  return float(v);
-}
-
-// `field` set to `v`, checked against `range` (a bool: none).
-void Assign(float& field, const vkpt::ParameterValue& v, const Range& range, const std::string& key) {
-  field = Checked(Expect<double>(v, key), range, key);
-}
-void Assign(bool& field, const vkpt::ParameterValue& v, const Range&, const std::string& key) {
-  field = Expect<bool>(v, key);
-}
-void Assign(glm::vec3& field, const vkpt::ParameterValue& v, const Range& range, const std::string& key) {
-  const vkpt::Rgb& rgb = Expect<vkpt::Rgb>(v, key);
-  field = glm::vec3(Checked(rgb[0], range, key + "[0]"), Checked(rgb[1], range, key + "[1]"),
-                    Checked(rgb[2], range, key + "[2]"));
-}
 
 // One editable field of a material, from VKPT_MATERIAL_FACTORS.
 struct MaterialField {
@@ -61,70 +23,153 @@ struct MaterialField {
 };
 
 #define VKPT_MATERIAL_FIELD(type, member, python, lo, hi, doc)              \
-  {python, [](const Material& m) { return ValueOf(m.member); },             \
+  {python, [](const Material& m) { return ParameterOf(m.member); },         \
    [](Material& m, const vkpt::ParameterValue& v, const std::string& key) { \
      Assign(m.member, v, Range{lo, hi}, key);                               \
    }},
 const MaterialField kMaterialFields[] = {VKPT_MATERIAL_FACTORS(VKPT_MATERIAL_FIELD)};
 #undef VKPT_MATERIAL_FIELD
 
+// A node's and a light's fields. Their values are checked by the rules that check a file
+// (GltfAsset::Edit): a node's numbers finite and its rotation one that can be made unit, a
+// light's colour in [0, 1] and its intensity finite and >= 0.
+struct NodeField {
+  const char* name;
+  vkpt::ParameterValue (*get)(const NodeSummary&);
+  void (*set)(NodeEdit&, const vkpt::ParameterValue&, const std::string& key);
+};
+const NodeField kNodeFields[] = {
+    {"translation", [](const NodeSummary& n) { return ParameterOf(n.translation); },
+     [](NodeEdit& e, const vkpt::ParameterValue& v, const std::string& key) {
+       const vkpt::Vec3& t = Expect<vkpt::Vec3>(v, key);
+       e.translation = glm::dvec3(t[0], t[1], t[2]);
+     }},
+    {"rotation", [](const NodeSummary& n) { return ParameterOf(n.rotation); },
+     [](NodeEdit& e, const vkpt::ParameterValue& v, const std::string& key) {
+       const vkpt::Quat& q = Expect<vkpt::Quat>(v, key);
+       e.rotation = glm::dquat(q[3], q[0], q[1], q[2]);  // (w, x, y, z)
+     }},
+    {"scale", [](const NodeSummary& n) { return ParameterOf(n.scale); },
+     [](NodeEdit& e, const vkpt::ParameterValue& v, const std::string& key) {
+       const vkpt::Vec3& s = Expect<vkpt::Vec3>(v, key);
+       e.scale = glm::dvec3(s[0], s[1], s[2]);
+     }},
+};
+
+struct LightField {
+  const char* name;
+  vkpt::ParameterValue (*get)(const LightSource&);
+  void (*set)(LightEdit&, const vkpt::ParameterValue&, const std::string& key);
+};
+const LightField kLightFields[] = {
+    {"color", [](const LightSource& l) { return ParameterOf(l.color); },
+     [](LightEdit& e, const vkpt::ParameterValue& v, const std::string& key) {
+       const vkpt::Rgb& c = Expect<vkpt::Rgb>(v, key);
+       e.color = glm::dvec3(c[0], c[1], c[2]);
+     }},
+    {"intensity", [](const LightSource& l) { return ParameterOf(l.intensity); },
+     [](LightEdit& e, const vkpt::ParameterValue& v, const std::string& key) { e.intensity = Expect<double>(v, key); }},
+};
+
+// "<group><i>/<field>" for every item i and every field of `fields`.
+template <class Field, size_t N, class Item>
+void List(vkpt::ParameterMap& p, const char* group, const std::vector<Item>& items, const Field (&fields)[N]) {
+  for (size_t i = 0; i < items.size(); ++i)
+    for (const Field& f : fields) p[group + std::to_string(i) + "/" + f.name] = f.get(items[i]);
+}
+
+// "<group>/<0 to n-1>/<field, field, …>", or "" for n = 0.
+template <class Field, size_t N>
+std::string KeyShape(const char* group, size_t n, const Field (&fields)[N]) {
+  if (n == 0) return "";
+  std::string names;
+  for (const Field& f : fields) names += std::string(names.empty() ? "" : ", ") + f.name;
+  return group + std::string("<0 to ") + std::to_string(n - 1) + ">/<" + names + ">";
+}
+
 [[noreturn]] void Unknown(const std::string& key, const LoadedScene& loaded) {
-  std::string fields;
-  for (const MaterialField& f : kMaterialFields) fields += std::string(fields.empty() ? "" : ", ") + f.name;
-  std::string keys = "materials/<0 to " + std::to_string(loaded.scene().materials.size() - 1) + ">/<" + fields + ">";
-  if (loaded.HasEnvironmentMap()) keys += " and " + std::string(kEnvironmentIntensity);
+  std::vector<std::string> shapes = {KeyShape(kMaterials, loaded.scene().materials.size(), kMaterialFields),
+                                     KeyShape(kNodes, loaded.Asset().Nodes().size(), kNodeFields),
+                                     KeyShape(kLights, loaded.Asset().Lights().size(), kLightFields)};
+  if (loaded.HasEnvironmentMap()) shapes.push_back(kEnvironmentIntensity);
+  std::string keys;
+  for (const std::string& s : shapes)
+    if (!s.empty()) keys += (keys.empty() ? "" : "; ") + s;
   const std::string shown = key.size() > 80 ? key.substr(0, 80) + "…" : key;
   throw SettingError("no scene parameter \"" + shown + "\": the keys are " + keys);
 }
 
-// "materials/<i>/<field>" as the material's index and its field; Unknown if it is not one.
-std::pair<uint32_t, const MaterialField*> MaterialKey(const std::string& key, const LoadedScene& loaded) {
-  const size_t slash = key.find('/', sizeof kMaterials - 1);
-  const std::string index = key.substr(sizeof kMaterials - 1, slash - (sizeof kMaterials - 1));
-  if (slash == std::string::npos || index.empty() || index.size() > 9 || (index.size() > 1 && index[0] == '0') ||
-      index.find_first_not_of("0123456789") != std::string::npos)
-    Unknown(key, loaded);
-  const uint32_t i = uint32_t(std::stoul(index));
-  if (i >= loaded.scene().materials.size()) Unknown(key, loaded);
-  for (const MaterialField& f : kMaterialFields)
-    if (key.compare(slash + 1, std::string::npos, f.name) == 0) return {i, &f};
-  Unknown(key, loaded);
+// A key of Parameters() in `group` as its index and the field's name after it.
+std::pair<uint32_t, std::string> Split(const std::string& key, const char* group) {
+  const size_t start = std::char_traits<char>::length(group), slash = key.find('/', start);
+  return {uint32_t(std::stoul(key.substr(start, slash - start))), key.substr(slash + 1)};
+}
+
+template <class Field, size_t N>
+const Field& FieldNamed(const std::string& name, const Field (&fields)[N]) {
+  for (const Field& f : fields)
+    if (name == f.name) return f;
+  throw std::logic_error("no field " + name);
+}
+
+// What an update changes, every value checked.
+struct Changes {
+  std::map<uint32_t, Material> materials;  // the materials edited, as they will be
+  AssetEdits asset;
+  std::optional<float> environmentIntensity;
+};
+
+void Add(Changes& c, const LoadedScene& loaded, const std::string& key, const vkpt::ParameterValue& value) {
+  if (key == kEnvironmentIntensity) {
+    c.environmentIntensity = Checked(Expect<double>(value, key), *SettingOf("environment_intensity").range, key);
+  } else if (key.rfind(kMaterials, 0) == 0) {
+    const auto [i, field] = Split(key, kMaterials);
+    auto [it, added] = c.materials.try_emplace(i, loaded.scene().materials[i]);
+    FieldNamed(field, kMaterialFields).set(it->second, value, key);
+  } else if (key.rfind(kNodes, 0) == 0) {
+    const auto [i, field] = Split(key, kNodes);
+    FieldNamed(field, kNodeFields).set(c.asset.nodes[i], value, key);
+  } else {
+    const auto [i, field] = Split(key, kLights);
+    FieldNamed(field, kLightFields).set(c.asset.lights[i], value, key);
+  }
 }
 
 }  // namespace
 
 vkpt::ParameterMap ParametersOf(const LoadedScene& loaded) {
   vkpt::ParameterMap p;
-  const std::vector<Material>& materials = loaded.scene().materials;
-  for (size_t i = 0; i < materials.size(); ++i)
-    for (const MaterialField& f : kMaterialFields)
-      p[kMaterials + std::to_string(i) + "/" + f.name] = f.get(materials[i]);
+  List(p, kMaterials, loaded.scene().materials, kMaterialFields);
+  List(p, kNodes, loaded.Asset().Nodes(), kNodeFields);
+  List(p, kLights, loaded.Asset().Lights(), kLightFields);
   if (loaded.HasEnvironmentMap()) p[kEnvironmentIntensity] = double(loaded.Settings().envIntensity);
   return p;
 }
 
 void ApplyParameters(LoadedScene& loaded, const vkpt::ParameterMap& changes) {
-  std::map<uint32_t, Material> edited;  // the materials changed, as they will be
-  float intensity = loaded.Settings().envIntensity;
+  const vkpt::ParameterMap now = ParametersOf(loaded);
+  Changes c;
   for (const auto& [key, value] : changes) {
-    if (key == kEnvironmentIntensity && loaded.HasEnvironmentMap()) {
-      const Setting& s = SettingOf("environment_intensity");
-      intensity = Checked(Expect<double>(value, key), *s.range, key);
-    } else if (key.rfind(kMaterials, 0) == 0) {
-      const auto [index, field] = MaterialKey(key, loaded);
-      auto [it, added] = edited.try_emplace(index, loaded.scene().materials[index]);
-      field->set(it->second, value, key);
-    } else {
-      Unknown(key, loaded);
+    const auto it = now.find(key);
+    if (it == now.end()) Unknown(key, loaded);
+    if (value.index() != it->second.index())
+      throw SettingError(key + " takes " + KindOf(it->second) + ", not " + KindOf(value));
+    if (value != it->second) Add(c, loaded, key, value);
+  }
+  for (const auto& [index, material] : c.materials)
+    if (!IorHolds(material.ior))
+      throw SettingError(kMaterials + std::to_string(index) + "/ior is " + FormatNumber(material.ior) +
+                         ": it must be 0 or in [1, 1e6] (KHR_materials_ior)");
+  // The file's rules, last: a refused edit leaves the scene as it was.
+  if (!c.asset.Empty()) {
+    try {
+      loaded.Edit(c.asset);
+    } catch (const Error& e) {
+      throw SettingError(std::string("refused: ") + e.what());
     }
   }
-  for (const auto& [index, material] : edited)
-    for (const MaterialField& f : kMaterialFields)
-      if (f.get(material) != f.get(loaded.scene().materials[index])) {
-        loaded.SetMaterial(index, material);
-        break;
-      }
-  if (intensity != loaded.Settings().envIntensity) loaded.SetEnvironmentIntensity(intensity);
+  for (const auto& [index, material] : c.materials) loaded.SetMaterial(index, material);
+  if (c.environmentIntensity) loaded.SetEnvironmentIntensity(*c.environmentIntensity);
 }
 
 }  // namespace vkpt::internal

@@ -2,22 +2,11 @@
 
 #include <cmath>
 
+#include "vkpt/public_values.h"
 #include "vkpt/scene_access.h"
 
 namespace vkpt::internal {
 namespace {
-
-float Public(float v) { return v; }
-bool Public(bool v) { return v; }
-std::array<float, 3> Public(glm::vec3 v) { return {v.x, v.y, v.z}; }
-
-const char* AlphaModeName(AlphaMode mode) {
-  switch (mode) {
-    case AlphaMode::kMask: return "MASK";
-    case AlphaMode::kBlend: return "BLEND";
-    default: return "OPAQUE";
-  }
-}
 
 const char* LightTypeName(PunctualLight::Type type) {
   switch (type) {
@@ -50,7 +39,7 @@ vkpt::MaterialInfo MaterialInfoOf(const Scene& scene, uint32_t index) {
 #define VKPT_COPY_FACTOR(type, member, python, lo, hi, doc) info.member = Public(m.member);
   VKPT_MATERIAL_FACTORS(VKPT_COPY_FACTOR)
 #undef VKPT_COPY_FACTOR
-  info.alphaMode = AlphaModeName(m.alphaMode);
+  info.alphaMode = kAlphaModeNames[size_t(m.alphaMode)];
   for (uint32_t s = 0; s < kTextureSlotCount; ++s)
     if (const MaterialTexture& t = m.textures[s]; t.Present())
       info.textures[kTextureSlotInfo[s].name] = {scene.textures[t.texture].fileIndex, t.texCoord};
@@ -65,14 +54,24 @@ vkpt::CameraInfo CameraInfoOf(const Camera& c, uint32_t index) {
 vkpt::LightInfo LightInfoOf(const PunctualLight& l, uint32_t index) {
   const bool spot = l.type == PunctualLight::Type::kSpot;
   return {index,
+          l.light,
           l.name,
           LightTypeName(l.type),
-          Public(l.intensity),
+          Public(l.color),
+          l.lightIntensity,
           Public(l.position),
           Public(l.direction),
           l.range,
           spot ? Degrees(std::acos(double(l.cosInner))) : 0.0,
           spot ? Degrees(std::acos(double(l.cosOuter))) : 0.0};
+}
+
+vkpt::NodeInfo NodeInfoOf(const NodeSummary& n, uint32_t index) {
+  const auto optional = [](int i) { return i < 0 ? std::nullopt : std::optional<uint32_t>(uint32_t(i)); };
+  const glm::vec3 t(n.translation), s(n.scale);
+  const glm::quat r(n.rotation);
+  return {index,      n.name,    optional(n.mesh),     optional(n.camera), optional(n.light),
+          n.children, Public(t), {r.x, r.y, r.z, r.w}, Public(s),          n.matrix};
 }
 
 vkpt::SceneStats StatsOf(const LoadedScene& loaded) {
@@ -83,6 +82,7 @@ vkpt::SceneStats StatsOf(const LoadedScene& loaded) {
   s.contentHash = scene.contentHash;
   s.triangles = scene.triangles.size();
   s.degenerateTriangles = rs.degenerateTriangles;
+  s.materials = scene.materials.size();
   s.lights = rs.lights.size();
   s.textures = scene.textures.size();
   s.images = scene.images.size();
@@ -126,6 +126,23 @@ std::vector<LightInfo> Scene::Lights() const {
   std::vector<LightInfo> lights;
   for (uint32_t i = 0; i < scene.lights.size(); ++i) lights.push_back(internal::LightInfoOf(scene.lights[i], i));
   return lights;
+}
+
+std::vector<NodeInfo> Scene::Nodes() const {
+  std::vector<NodeInfo> nodes;
+  for (const internal::NodeSummary& n : SceneAccess::Engine(*this).Asset().Nodes())
+    nodes.push_back(internal::NodeInfoOf(n, uint32_t(nodes.size())));
+  return nodes;
+}
+
+std::vector<MeshInfo> Scene::Meshes() const {
+  std::vector<MeshInfo> meshes;
+  for (const internal::MeshSummary& m : SceneAccess::Engine(*this).Asset().Meshes()) {
+    MeshInfo info{uint32_t(meshes.size()), m.name, {}};
+    for (const auto& [material, triangles] : m.primitives) info.primitives.push_back({material, triangles});
+    meshes.push_back(std::move(info));
+  }
+  return meshes;
 }
 
 std::vector<AnimationInfo> Scene::Animations() const {

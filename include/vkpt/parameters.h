@@ -16,12 +16,18 @@
 namespace vkpt {
 inline namespace v1 {
 
-// A number, a switch or an RGB triple, as the key's field is.
-using ParameterValue = std::variant<double, bool, Rgb>;
+// A number, a switch, 3 numbers (an RGB colour, a vector) or a rotation, as the key's
+// field is.
+using ParameterValue = std::variant<double, bool, Vec3, Quat>;
 
-// Keys: "materials/<index>/<field>" for every field of VKPT_MATERIAL_FACTORS (its Python
-// name: "base_color", "roughness", …), and "environment/intensity" in a scene lit by an
-// environment map.
+// Keys, each index the file's (glTF's):
+//   "materials/<i>/<field>" for every field of VKPT_MATERIAL_FACTORS (its Python name:
+//     "base_color", "roughness", …);
+//   "nodes/<i>/translation", "nodes/<i>/rotation" and "nodes/<i>/scale": the node's local
+//     transform (NodeInfo);
+//   "lights/<i>/color" and "lights/<i>/intensity": KHR_lights_punctual lights[i];
+//   "environment/intensity" in a scene lit by an environment map.
+// A node's and a light's values are checked as the file's are when it loads.
 using ParameterMap = std::map<std::string, ParameterValue>;
 
 }  // namespace v1

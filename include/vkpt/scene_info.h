@@ -15,6 +15,7 @@ inline namespace v1 {
 
 using Rgb = std::array<float, 3>;
 using Vec3 = std::array<float, 3>;
+using Quat = std::array<float, 4>;  // a rotation as glTF writes it: x, y, z, w
 
 // A material's factors as the renderer reads them (glTF's defaults where the file is
 // silent), one X(type, member, Python name, lo, hi, doc) per field: MaterialInfo holds
@@ -81,16 +82,47 @@ struct CameraInfo {
   double aspectRatio = 0.0;  // width / height from the file; 0 when absent
 };
 
-// A KHR_lights_punctual light as placed in the scene.
+// A KHR_lights_punctual light as placed in the scene by a node.
 struct LightInfo {
   uint32_t index = 0;
+  uint32_t light = 0;  // the file's KHR_lights_punctual lights[light]: "lights/<light>/…" edits it
   std::string name;
-  std::string type;    // "point", "spot" or "directional"
-  Rgb intensity{};     // colour × intensity: candela (point, spot) or lux (directional)
-  Vec3 position{};     // world space (not for a directional light)
-  Vec3 direction{};    // unit, the way the light travels (spot, directional)
-  double range = 0.0;  // 0: unbounded
+  std::string type;                                       // "point", "spot" or "directional"
+  Rgb color{};                                            // linear, in [0, 1]
+  double intensity = 0.0;                                 // candela (point, spot) or lux (directional)
+  Vec3 position{};                                        // world space (not for a directional light)
+  Vec3 direction{};                                       // unit, the way the light travels (spot, directional)
+  double range = 0.0;                                     // 0: unbounded
   double innerConeDegrees = 0.0, outerConeDegrees = 0.0;  // spot
+};
+
+// A node of the file (glTF nodes[index]): what it places and its local transform, which
+// "nodes/<index>/translation", "…/rotation" and "…/scale" edit.
+struct NodeInfo {
+  uint32_t index = 0;
+  std::string name;  // "" where the file gives none
+  // The file's meshes[i], cameras[i] and KHR_lights_punctual lights[i] the node places.
+  std::optional<uint32_t> mesh, camera, light;
+  std::vector<uint32_t> children;
+  Vec3 translation{};
+  Quat rotation{0.0f, 0.0f, 0.0f, 1.0f};  // unit
+  Vec3 scale{1.0f, 1.0f, 1.0f};
+  // Placed by a matrix: the three above are its decomposition (without any shear), and an
+  // edit of one of them replaces the matrix by all three.
+  bool matrix = false;
+};
+
+// A triangle primitive of a mesh: its material (in the variant chosen) and triangles.
+struct PrimitiveInfo {
+  uint32_t material = 0;
+  uint64_t triangles = 0;
+};
+
+// A mesh of the file (glTF meshes[index]), its points and lines left out.
+struct MeshInfo {
+  uint32_t index = 0;
+  std::string name;  // "" where the file gives none
+  std::vector<PrimitiveInfo> primitives;
 };
 
 struct AnimationInfo {
@@ -115,6 +147,7 @@ struct SceneStats {
   uint64_t contentHash = 0;  // FNV-1a of the file and what it references
   uint64_t triangles = 0;
   uint64_t degenerateTriangles = 0;  // of zero area, left out of the BVH
+  uint64_t materials = 0;            // the file's, and vkpt's default material
   uint64_t lights = 0;               // emissive triangles and punctual lights sampled
   uint64_t textures = 0, images = 0;
   uint64_t texels = 0;                      // of the images at full size

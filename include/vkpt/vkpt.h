@@ -173,6 +173,9 @@ class VKPT_API Scene {
   std::vector<MaterialInfo> Materials() const;
   std::vector<CameraInfo> Cameras() const;
   std::vector<LightInfo> Lights() const;
+  // The file's nodes and meshes, by their glTF index.
+  std::vector<NodeInfo> Nodes() const;
+  std::vector<MeshInfo> Meshes() const;
   std::vector<AnimationInfo> Animations() const;
   std::vector<std::string> Variants() const;
   // Its counts as loaded, and as last built for a render.

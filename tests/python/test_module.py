@@ -281,14 +281,16 @@ def test_the_stats_count_the_scene_as_built():
 
 
 def test_every_record_property_is_documented_and_readable(cpu_scene):
-    records = [cpu_scene.materials[0], cpu_scene.cameras[0], cpu_scene.stats, cpu_scene.stats.bvh]
+    records = [cpu_scene.materials[0], cpu_scene.cameras[0], cpu_scene.nodes[8], cpu_scene.meshes[0],
+               cpu_scene.meshes[0].primitives[0], cpu_scene.stats, cpu_scene.stats.bvh]
     for record in records:
         kind = type(record)
         assert kind.__doc__, kind.__name__
         for name, attr in vars(kind).items():
             if isinstance(attr, property):
                 getattr(record, name)  # each converts to Python
-    for name in ("materials", "cameras", "lights", "animations", "variants", "stats", "camera_count", "device"):
+    for name in ("materials", "cameras", "lights", "nodes", "meshes", "animations", "variants", "stats",
+                 "camera_count", "device"):
         assert vars(vkpt.Scene)[name].__doc__, f"Scene.{name} has no docstring"
 
 
@@ -311,17 +313,39 @@ def test_an_edited_parameter_renders_as_the_edited_file(tmp_path):
     assert np.array_equal(after, np.asarray(fresh.render(**SMALL))) and not np.array_equal(after, before)
 
 
+def test_a_moved_node_renders_as_the_file_moved(tmp_path):
+    with open(CORNELL) as f:
+        gltf = json.load(f)
+    box = gltf["nodes"][7]
+    assert vkpt.Scene(CORNELL, backend="cpu").nodes[7].name == box["name"] == "tallBox"
+    box.update(translation=[556.0, 0.0, 560.0], rotation=[0.0, 1.0, 0.0, 0.0], scale=[1.0, 0.5, 1.0])
+    (tmp_path / "cornell.bin").write_bytes((pathlib.Path(CORNELL).parent / "cornell.bin").read_bytes())
+    (tmp_path / "cornell.gltf").write_text(json.dumps(gltf))
+    fresh = vkpt.Scene(tmp_path / "cornell.gltf", backend="cpu")
+    live = vkpt.Scene(CORNELL, backend="cpu")
+    live.render(**SMALL)
+    live.update({"nodes/7/translation": (556, 0, 560), "nodes/7/rotation": (0, 1, 0, 0), "nodes/7/scale": [1, 0.5, 1]})
+    assert live.nodes[7].translation == (556.0, 0.0, 560.0) and live.nodes[7].rotation == (0.0, 1.0, 0.0, 0.0)
+    assert live.parameters() == fresh.parameters()
+    assert np.array_equal(np.asarray(live.render(**SMALL)), np.asarray(fresh.render(**SMALL)))
+    with pytest.raises(vkpt.SettingError, match=r"nodes\[7\].rotation is not a unit quaternion"):
+        live.update({"nodes/7/rotation": (0, 0, 0, 0)})
+    with pytest.raises(TypeError, match="nodes/7/rotation: 4 numbers, not a str"):
+        live.update({"nodes/7/rotation": (0, 0, 0, "w")})
+    assert live.parameters() == fresh.parameters()
+
+
 def test_a_refused_parameter_changes_nothing(cpu_scene):
     original = cpu_scene.parameters()
     with pytest.raises(vkpt.SettingError, match=r"materials/1/roughness must be in \[0, 1\], got -0.5"):
         cpu_scene.update({"materials/0/roughness": 0.5, "materials/1/roughness": -0.5})
     with pytest.raises(vkpt.SettingError, match="no scene parameter \"materials/0/shine\""):
         cpu_scene.update({"materials/0/shine": 1.0})
-    with pytest.raises(TypeError, match="materials/0/base_color: a parameter is a number, a bool or 3 numbers"):
+    with pytest.raises(TypeError, match="materials/0/base_color: a parameter is a number, a bool, or 3 or 4 numbers"):
         cpu_scene.update({"materials/0/base_color": "red"})
-    with pytest.raises(TypeError, match="materials/0/base_color: an RGB triple is 3 numbers, not a str"):
+    with pytest.raises(TypeError, match="materials/0/base_color: 3 numbers, not a str"):
         cpu_scene.update({"materials/0/base_color": ("r", "g", "b")})
-    with pytest.raises(vkpt.SettingError, match="takes an RGB triple, not a number"):
+    with pytest.raises(vkpt.SettingError, match="takes 3 numbers, not a number"):
         cpu_scene.update({"materials/0/base_color": 0.5})
     assert cpu_scene.parameters() == original
 
