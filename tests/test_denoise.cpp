@@ -61,7 +61,7 @@ struct EdgeWall {
 
 TEST(Denoise, KeepsAHardEdgeBetweenTwoAlbedos) {
   const EdgeWall wall;
-  const Image out = FinishDenoise(wall.input, AtrousCpu(wall.input));
+  const Image out = FinishDenoise(wall.input, *AtrousCpu(wall.input));
   const double before = RelativeMse(wall.raw, wall.truth), after = RelativeMse(out, wall.truth);
   std::printf("edge wall: relMSE %.4g raw, %.4g denoised\n", before, after);
   EXPECT_LT(after, before / 8.0);
@@ -80,10 +80,28 @@ class DenoiseGpu : public test::ValidatedGpuTest {};
 
 TEST_F(DenoiseGpu, FiltersAsTheCpuDoes) {
   const EdgeWall wall;
-  const std::vector<glm::vec4> cpu = AtrousCpu(wall.input), gpu = vk::AtrousGpu(test::Gpu(), wall.input);
+  const std::vector<glm::vec4> cpu = *AtrousCpu(wall.input), gpu = *vk::AtrousGpu(test::Gpu(), wall.input);
   ASSERT_EQ(cpu.size(), gpu.size());
   for (size_t i = 0; i < cpu.size(); ++i)
     for (int c = 0; c < 4; ++c) EXPECT_NEAR(gpu[i][c], cpu[i][c], 1e-4f * std::max(1.0f, std::abs(cpu[i][c]))) << i;
+}
+
+// A stop asked before an iteration abandons the filter, on either backend; one that never
+// says so changes nothing.
+TEST_F(DenoiseGpu, AStopAbandonsTheFilterBetweenIterations) {
+  const EdgeWall wall;
+  for (uint32_t allowed : {0u, 2u}) {
+    uint32_t asked = 0;
+    const StopFilter stop = [&] { return asked++ >= allowed; };
+    EXPECT_FALSE(AtrousCpu(wall.input, 0, stop));
+    EXPECT_EQ(asked, allowed + 1);
+    asked = 0;
+    EXPECT_FALSE(vk::AtrousGpu(test::Gpu(), wall.input, stop));
+    EXPECT_EQ(asked, allowed + 1);
+  }
+  const StopFilter never = [] { return false; };
+  EXPECT_EQ(*AtrousCpu(wall.input, 0, never), *AtrousCpu(wall.input));
+  EXPECT_EQ(*vk::AtrousGpu(test::Gpu(), wall.input, never), *vk::AtrousGpu(test::Gpu(), wall.input));
 }
 
 TEST(Denoise, LowersTheCornellBoxRelMse) {
@@ -106,7 +124,7 @@ TEST(Denoise, LowersTheCornellBoxRelMse) {
     done = spp;
     const Image raw = ResolveFilm(frame->Sums());
     const DenoiseInput input = PrepareDenoise(raw, aovs);
-    const Image denoised = FinishDenoise(input, AtrousCpu(input));
+    const Image denoised = FinishDenoise(input, *AtrousCpu(input));
     const double before = RelativeMse(raw, ref), after = RelativeMse(denoised, ref);
     std::printf("Cornell 256², %u spp: relMSE %.4g raw, %.4g denoised\n", spp, before, after);
     EXPECT_LT(after, before / 4.0) << spp;

@@ -63,9 +63,10 @@ int Finish(const Options& o, Prepared& p, const RenderedView& rendered, const Re
     status = 3;
   }
   if (const int sig = GracefulStop::Signal()) {
-    std::fprintf(stderr, "vkpt: interrupted by %s: %s holds the %u spp rendered (%s)\n",
+    std::fprintf(stderr, "vkpt: interrupted by %s: %s holds the %u spp rendered (%s%s)\n",
                  sig == SIGTERM ? "SIGTERM" : "SIGINT", o.out.c_str(), frame.spp,
-                 frame.stoppedBy == StopReason::kSignal ? "stopped early" : "the render had finished");
+                 frame.stoppedBy == StopReason::kSignal ? "stopped early" : "the render had finished",
+                 o.api.render.denoise && !frame.denoised ? ", not denoised" : "");
     status = 128 + sig;
   }
   if (!o.stats.empty() || frameStats) {

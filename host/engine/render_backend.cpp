@@ -18,8 +18,11 @@ std::unique_ptr<FrameRenderer> RenderBackend::BeginFrame(const shader::FramePara
 }
 
 Denoiser RenderBackend::MakeDenoiser() const {
-  if (ctx_) return [ctx = ctx_](const DenoiseInput& input) { return vk::AtrousGpu(*ctx, input); };
-  return [threads = threads_](const DenoiseInput& input) { return AtrousCpu(input, threads); };
+  if (ctx_)
+    return [ctx = ctx_](const DenoiseInput& input, const StopFilter& stop) { return vk::AtrousGpu(*ctx, input, stop); };
+  return [threads = threads_](const DenoiseInput& input, const StopFilter& stop) {
+    return AtrousCpu(input, threads, stop);
+  };
 }
 
 }  // namespace vkpt::internal

@@ -122,7 +122,8 @@ void BindRender(py::module_& m) {
   py::class_<PyRender>(m, "Render", R"(One render: its image, AOVs and figures.
 
 image: linear Rec.709 radiance, float32 H x W x 3 (denoised with denoise=True);
-raw: the image before the filter (None without denoise); aovs: name -> H x W x C array;
+raw: the image before the filter (None without denoise, or when cancelled before the
+filter ended: then image is unfiltered); aovs: name -> H x W x C array;
 ids: with an id AOV, what its ids name (a dict), else None; np.asarray(render) is the
 image. The arrays are views of the render's memory.)")
       .def_property_readonly("image", &PyRender::ImageArray)

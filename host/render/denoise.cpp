@@ -49,9 +49,10 @@ DenoiseInput PrepareDenoise(const Image& image, const AovSums& aovs) {
   return in;
 }
 
-std::vector<glm::vec4> AtrousCpu(const DenoiseInput& input, unsigned threads) {
+std::optional<std::vector<glm::vec4>> AtrousCpu(const DenoiseInput& input, unsigned threads, const StopFilter& stop) {
   std::vector<glm::vec4> from = input.color, to(from.size());
   for (uint32_t it = 0; it < shader::kDenoiseIterations; ++it) {
+    if (stop && stop()) return std::nullopt;
     const DenoiseView view{from.data(), input.guide.data(), input.albedo.data()};
     ParallelFor(input.height, ThreadCount(threads), [&](size_t y) {
       for (uint32_t x = 0; x < input.width; ++x)

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -28,8 +30,13 @@ constexpr float kMinAlbedo = 1e-3f;
 // `image` must carry its variance; `aovs` are the AOV pass's sums of the same frame.
 DenoiseInput PrepareDenoise(const Image& image, const AovSums& aovs);
 
-// Every iteration on the CPU; returns the filtered colour (RGB, variance).
-std::vector<glm::vec4> AtrousCpu(const DenoiseInput& input, unsigned threads = 0);
+// Asked before each of the filter's iterations: true abandons the filter.
+using StopFilter = std::function<bool()>;
+
+// Every iteration on the CPU; returns the filtered colour (RGB, variance), or nothing once
+// `stop` said so.
+std::optional<std::vector<glm::vec4>> AtrousCpu(const DenoiseInput& input, unsigned threads = 0,
+                                                const StopFilter& stop = {});
 
 // The filtered colour times the albedo again: the denoised image (with the filtered
 // variance).

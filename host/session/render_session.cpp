@@ -156,15 +156,19 @@ class FrameLoop {
 
 RenderedFrame RenderSession(SampleSource& source, const SessionSettings& settings, const SessionHooks& hooks) {
   RenderedFrame frame = FrameLoop(source, settings, hooks).Run();
-  if (settings.aovPass || settings.denoise) {
+  // A render its caller stopped ends soon after: the AOV pass takes one sample, and the
+  // filter does not run (or is abandoned between iterations when the stop comes later).
+  const bool stopped = frame.stoppedBy == StopReason::kSignal;
+  const bool filter = settings.denoise && !stopped;
+  if (settings.aovPass || filter) {
     const auto t0 = Clock::now();
-    frame.aovs = source.RenderAovs({std::min(kAovSamples, frame.spp), settings.aovIds});
+    frame.aovs = source.RenderAovs({std::min(stopped ? 1u : kAovSamples, frame.spp), settings.aovIds});
     frame.aovSeconds = Since(t0);
   }
-  if (settings.denoise) {
+  if (filter) {
     const auto t0 = Clock::now();
     const DenoiseInput input = PrepareDenoise(frame.image, frame.aovs);
-    frame.denoised = FinishDenoise(input, settings.denoise(input));
+    if (const auto filtered = settings.denoise(input, settings.stop)) frame.denoised = FinishDenoise(input, *filtered);
     frame.denoiseSeconds = Since(t0);
   }
   return frame;

@@ -43,8 +43,8 @@ struct RenderedFrame {
   double denoiseSeconds = 0.0;
 };
 
-// Runs the filter's iterations on a backend (render/denoise.h).
-using Denoiser = std::function<std::vector<glm::vec4>(const DenoiseInput&)>;
+// Runs the filter's iterations on a backend (render/denoise.h); nothing once stopped.
+using Denoiser = std::function<std::optional<std::vector<glm::vec4>>(const DenoiseInput&, const StopFilter&)>;
 
 struct SessionSettings {
   RenderBudget budget;

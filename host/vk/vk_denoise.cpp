@@ -9,7 +9,7 @@
 
 namespace vkpt::internal::vk {
 
-std::vector<glm::vec4> AtrousGpu(const Context& ctx, const DenoiseInput& input) {
+std::optional<std::vector<glm::vec4>> AtrousGpu(const Context& ctx, const DenoiseInput& input, const StopFilter& stop) {
   const VkDeviceSize bytes = input.color.size() * sizeof(glm::vec4);
   Buffer color[2] = {UploadStorage(ctx, input.color.data(), bytes, "denoiser colour"),
                      StorageBuffer(ctx, bytes, "denoiser colour")};
@@ -29,14 +29,15 @@ std::vector<glm::vec4> AtrousGpu(const Context& ctx, const DenoiseInput& input) 
   const std::unique_ptr<ComputePipeline> pipelines[2] = {pipeline(0), pipeline(1)};
   const Buffer host = ReadbackBuffer(ctx, bytes, "denoiser readback");
   const uint32_t last = shader::kDenoiseIterations % 2;  // the buffer the last iteration wrote
-  ctx.Submit([&](VkCommandBuffer cb) {
-    for (uint32_t it = 0; it < shader::kDenoiseIterations; ++it) {
-      ComputeBarrier(cb);  // the previous iteration's output is this one's input
+  // Each submission ends before the next begins, so an iteration reads the last one's output.
+  for (uint32_t it = 0; it < shader::kDenoiseIterations; ++it) {
+    if (stop && stop()) return std::nullopt;
+    ctx.Submit([&](VkCommandBuffer cb) {
       const uint32_t push[3] = {input.width, input.height, it};
       pipelines[it % 2]->Dispatch(cb, (input.width + 7) / 8, (input.height + 7) / 8, 1, push);
-    }
-    CopyToHost(cb, {{&color[last], &host}});
-  });
+      if (it + 1 == shader::kDenoiseIterations) CopyToHost(cb, {{&color[last], &host}});
+    });
+  }
   const auto* v = static_cast<const glm::vec4*>(host.Mapped());
   return std::vector<glm::vec4>(v, v + input.color.size());
 }

@@ -12,6 +12,8 @@
 namespace vkpt::internal::vk {
 
 // Every iteration; returns the filtered colour (RGB, variance), as AtrousCpu does.
-std::vector<glm::vec4> AtrousGpu(const Context& ctx, const DenoiseInput& input);
+// Each iteration is a submission of its own, so that `stop` is asked between them.
+std::optional<std::vector<glm::vec4>> AtrousGpu(const Context& ctx, const DenoiseInput& input,
+                                                const StopFilter& stop = {});
 
 }  // namespace vkpt::internal::vk

@@ -371,6 +371,14 @@ def test_progress_returning_false_keeps_the_render_so_far(cpu_scene):
     assert np.isfinite(render.image).all() and render.image.max() > 0
 
 
+def test_a_cancelled_denoised_render_is_returned_unfiltered(cpu_scene):
+    render = cpu_scene.render(width=32, height=32, spp=65536, denoise=True, aovs=["albedo"], progress=lambda f: False)
+    assert render.stopped_by == "cancelled" and render.raw is None
+    assert np.isfinite(render.image).all() and render.aovs["albedo"].max() > 0
+    finished = cpu_scene.render(width=32, height=32, spp=4, denoise=True)
+    assert finished.stopped_by == "spp" and finished.raw is not None
+
+
 def test_a_render_on_another_thread_is_cancelled_by_scene_cancel():
     scene = vkpt.Scene(CORNELL, backend="cpu")
     renders = []
