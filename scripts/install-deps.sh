@@ -16,7 +16,8 @@ packages=(
   pybind11-dev python3-dev              # the Python module (import vkpt)
   python3-numpy                         # its arrays
   python3-pytest python3-venv           # its tests, and installing it into a virtual environment
-  python3-setuptools python3-wheel      # pip install build/python
+  python3-setuptools python3-wheel      # its wheel (cmake --build build --target wheel)
+  python3-mypy                          # its type stubs' tests (stubtest, mypy)
   libgtest-dev                          # tests
   colord-data                           # tests: the CIE 1931 matching functions (iridescence, dispersion)
   libembree-dev                         # vkpt-bench compares against Embree

@@ -2,6 +2,7 @@
 // AnimationInfo, SceneStats and BvhInfo: the
 // read-only records of include/vkpt/scene_info.h, their vectors as tuples.
 #include <string>
+#include <tuple>
 
 #include <pybind11/stl.h>
 
@@ -14,8 +15,9 @@ template <class T>
 T Py(const T& value) {
   return value;
 }
-py::tuple Py(const std::array<float, 3>& v) { return py::make_tuple(v[0], v[1], v[2]); }
-py::tuple Py(const std::array<float, 4>& v) { return py::make_tuple(v[0], v[1], v[2], v[3]); }
+// Typed tuples, so that pybind11's signatures (and the stubs made from them) name them.
+std::tuple<float, float, float> Py(const std::array<float, 3>& v) { return {v[0], v[1], v[2]}; }
+std::tuple<float, float, float, float> Py(const std::array<float, 4>& v) { return {v[0], v[1], v[2], v[3]}; }
 
 // "vkpt.Kind(index=i, name='name')"
 template <class Record>

@@ -10,6 +10,10 @@
 See docs/python.md.
 """
 
-from ._vkpt import Camera, Device, Error, Render, Scene, SettingError, __version__, devices
+from ._vkpt import (AnimationInfo, BvhInfo, Camera, CameraInfo, Device, Error, LightInfo, MaterialInfo,
+                    MaterialTextureInfo, MeshInfo, NodeInfo, PrimitiveInfo, Render, Scene, SceneStats, SettingError,
+                    __version__, devices)
 
-__all__ = ["Camera", "Device", "Error", "Render", "Scene", "SettingError", "__version__", "devices"]
+__all__ = ["AnimationInfo", "BvhInfo", "Camera", "CameraInfo", "Device", "Error", "LightInfo", "MaterialInfo",
+           "MaterialTextureInfo", "MeshInfo", "NodeInfo", "PrimitiveInfo", "Render", "Scene", "SceneStats",
+           "SettingError", "__version__", "devices"]
