@@ -1,9 +1,11 @@
 // Frame sequences (app/sequence.h): --frames renders each frame from one load, posed
 // k / --fps seconds into the --animation and turned by k × --orbit; frame k is
 // byte-identical to a render of that frame alone; the files are numbered as --out says;
-// --stats lists the frames; malformed ranges are usage errors.
+// --stats lists the frames; a long range costs nothing per frame; malformed ranges are
+// usage errors.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -24,8 +26,11 @@ TEST(Sequence, FramePathsFollowTheirPattern) {
   EXPECT_EQ(FramePath("frame_#.pfm", 12345), "frame_12345.pfm");       // wider than its run
   EXPECT_EQ(FramePath("v1.2/turn", 3), "v1.2/turn.0003");              // a dot in the folder only
   EXPECT_EQ(FramePath("take#2/shot.png", 3), "take#2/shot.0003.png");  // a '#' in the folder only
-  EXPECT_EQ(FrameNumbers({2, 9, 3}), (std::vector<uint32_t>{2, 5, 8}));
-  EXPECT_EQ(FrameNumbers({4, 4, 1}), (std::vector<uint32_t>{4}));
+  EXPECT_EQ(FrameCount({2, 9, 3}), 3u);
+  EXPECT_EQ(FrameNumber({2, 9, 3}, 2), 8u);
+  EXPECT_EQ(FrameCount({4, 4, 1}), 1u);
+  EXPECT_EQ(FrameCount({0, 4294967295u, 1}), 4294967296u);
+  EXPECT_EQ(FrameNumber({0, 4294967295u, 1}, 4294967295u), 4294967295u);
 }
 
 std::vector<std::string> Render(const std::string& scene, const std::string& out, std::vector<std::string> extra) {
@@ -79,6 +84,24 @@ TEST(Sequence, TurntableFrameIsTheOrbitAlone) {
   ASSERT_TRUE(still.ExitedWith(0)) << still.Describe();
   EXPECT_TRUE(ReadFile(dir + "/still.pfm") == ReadFile(dir + "/turn.0000.pfm")) << "frame 0 differs from no --orbit";
   std::filesystem::remove_all(dir);
+}
+
+// A sequence keeps nothing per frame: a million-frame range begins at once (checking
+// every frame's file beforehand took 8 s), and 2,000 frames peak where 20 do.
+TEST(Sequence, LongSequencesBeginAtOnceAndHoldTheirMemory) {
+  const TempFile model(SlidingTriangle());
+  const test::TempFolder dir("sequence-long");
+  const auto frames = [&](const std::string& range, const ChildSignals& signals = {}) {
+    return RunVkpt(Render(model.path, dir / "f.######.png",
+                          {"--animation", "slide", "--frames", range, "--width", "4", "--height", "4", "--spp", "1"}),
+                   300.0, "", {}, {}, signals);
+  };
+  ProcessResult million = frames("0:999999", {.after = "vkpt: frame 0 (1 of 1000000,", .signals = {SIGINT}});
+  EXPECT_TRUE(million.ExitedWith(130)) << million.Describe();
+  EXPECT_LT(million.sentAt, 4.0) << "the first frame came late";
+  const ProcessResult few = frames("0:19"), many = frames("0:1999");
+  ASSERT_TRUE(few.ExitedWith(0) && many.ExitedWith(0)) << few.Describe() << many.Describe();
+  EXPECT_LT(many.peakRssKiB, few.peakRssKiB + 2048) << "from " << few.peakRssKiB << " KiB";
 }
 
 TEST(Sequence, MalformedRangesAreUsageErrors) {

@@ -7,11 +7,9 @@
 
 namespace vkpt::internal {
 
-std::vector<uint32_t> FrameNumbers(const FrameRange& range) {
-  std::vector<uint32_t> numbers;
-  for (uint64_t k = range.first; k <= range.last; k += range.step) numbers.push_back(uint32_t(k));
-  return numbers;
-}
+uint64_t FrameCount(const FrameRange& range) { return (uint64_t(range.last) - range.first) / range.step + 1; }
+
+uint32_t FrameNumber(const FrameRange& range, uint64_t i) { return uint32_t(range.first + i * range.step); }
 
 std::string FramePath(const std::string& out, uint32_t frame) {
   const size_t slash = out.find_last_of('/');

@@ -11,8 +11,10 @@
 
 namespace vkpt::internal {
 
-// FIRST, FIRST + STEP, … up to LAST.
-std::vector<uint32_t> FrameNumbers(const FrameRange& range);
+// FIRST, FIRST + STEP, … up to LAST: how many, and the i-th (from 0), computed rather
+// than listed, so that a million-frame range costs nothing before its first frame.
+uint64_t FrameCount(const FrameRange& range);
+uint32_t FrameNumber(const FrameRange& range, uint64_t i);
 
 // `out` for frame `frame`: its last run of '#' replaced by the number, zero-padded to the
 // run's length ("turn.###.png" → "turn.007.png"); without one, ".NNNN" before the
