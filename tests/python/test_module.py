@@ -313,6 +313,23 @@ def test_an_edited_parameter_renders_as_the_edited_file(tmp_path):
     assert np.array_equal(after, np.asarray(fresh.render(**SMALL))) and not np.array_equal(after, before)
 
 
+@pytest.mark.parametrize("call, message", [
+    (lambda s: s.render(spp="4"), "Scene.render(): spp takes None or int, not str ('4')"),
+    (lambda s: s.render(sp=4), "Scene.render(): no keyword argument 'sp' (did you mean 'spp'?)"),
+    (lambda s: s.render(background=(1, 2)), "Scene.render(): background takes None or 3 numbers, not tuple"),
+    (lambda s: s.render(aovs="depth"), "Scene.render(): aovs takes a list of str, not str ('depth')"),
+    (lambda s: s.render(0, 2), "Scene.render() takes 1 positional argument(s) (camera), not 2"),
+    (lambda s: s.update([1]), "Scene.update(): changes takes dict, not list ([1])"),
+    (lambda s: vkpt.Scene(3), "Scene(): path takes str or os.PathLike, not int (3)"),
+    (lambda s: vkpt.Camera(fov="x"), "Camera(): fov takes None or float, not str ('x')"),
+    (lambda s: s.render(width=8, height=8, spp=1).save(5), "Render.save(): path takes str or os.PathLike, not int"),
+])
+def test_a_wrong_argument_is_a_one_line_type_error_naming_it(cpu_scene, call, message):
+    with pytest.raises(TypeError) as e:
+        call(cpu_scene)
+    assert str(e.value).startswith(message) and "\n" not in str(e.value), str(e.value)
+
+
 def test_a_moved_node_renders_as_the_file_moved(tmp_path):
     with open(CORNELL) as f:
         gltf = json.load(f)
