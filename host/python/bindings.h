@@ -54,6 +54,8 @@ Camera CameraFrom(const py::object& camera);
 // setting's own doc in Python's terms. `part`: "SceneOptions::", "Camera::" or
 // "RenderOptions::".
 std::string KeywordDocs(const std::string& part);
+// One of them: the doc of keyword `key` of `part`.
+std::string KeywordDoc(const std::string& part, const std::string& key);
 
 // vkpt.Camera: keyword construction, fields read and written as Python values; the matrix
 // as a 4 × 4 NumPy array M with M @ (x, y, z, 1) in world space.

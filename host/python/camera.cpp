@@ -95,15 +95,16 @@ look-at point (or the scene's centre), with a vertical field of view of `fov` de
            }),
            "index"_a = py::none(), py::kw_only(), "matrix"_a = py::none(), "look_from"_a = py::none(),
            "look_at"_a = py::none(), "up"_a = py::none(), "fov"_a = py::none(), "orbit"_a = 0.0)
-      .def_readwrite("index", &Camera::index)
+      .def_readwrite("index", &Camera::index, KeywordDoc("Camera::", "index").c_str())
       .def_property(
           "matrix", [](const Camera& c) { return MatrixArray(c.matrix); },
-          [](Camera& c, const py::object& value) { c.matrix = MatrixFrom(value); })
-      .def_readwrite("look_from", &Camera::lookFrom)
-      .def_readwrite("look_at", &Camera::lookAt)
-      .def_readwrite("up", &Camera::up)
-      .def_readwrite("fov", &Camera::fovDegrees)
-      .def_readwrite("orbit", &Camera::orbitDegrees)
+          [](Camera& c, const py::object& value) { c.matrix = MatrixFrom(value); },
+          "camera to world, 4 x 4 (M @ (x, y, z, 1)): the lens placed by it; None: the file's camera")
+      .def_readwrite("look_from", &Camera::lookFrom, KeywordDoc("Camera::", "look_from").c_str())
+      .def_readwrite("look_at", &Camera::lookAt, KeywordDoc("Camera::", "look_at").c_str())
+      .def_readwrite("up", &Camera::up, KeywordDoc("Camera::", "up").c_str())
+      .def_readwrite("fov", &Camera::fovDegrees, KeywordDoc("Camera::", "fov").c_str())
+      .def_readwrite("orbit", &Camera::orbitDegrees, KeywordDoc("Camera::", "orbit").c_str())
       .def("__repr__", [](const Camera& c) {
         return std::string(py::str("vkpt.Camera(index={}, look_from={}, look_at={}, fov={}, orbit={}{})")
                                .format(py::cast(c.index), py::cast(c.lookFrom), py::cast(c.lookAt),

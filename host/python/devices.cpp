@@ -10,8 +10,8 @@ namespace vkpt::python {
 void BindDevices(py::module_& m) {
   py::class_<Device>(m, "Device", R"(A Vulkan device a Scene can render on: Scene(path, device=...) names it by
 index or by a substring of its name.)")
-      .def_readonly("index", &Device::index)
-      .def_readonly("name", &Device::name)
+      .def_readonly("index", &Device::index, "Scene(path, device=str(index)) names it")
+      .def_readonly("name", &Device::name, "as the driver names it")
       .def_readonly("type", &Device::type,
                     "\"discrete GPU\", \"integrated GPU\", \"virtual GPU\", \"CPU\" or \"other\"")
       .def_property_readonly(

@@ -122,15 +122,28 @@ setting out of its range raises vkpt.SettingError.
 
 }  // namespace
 
+namespace {
+
+// A setting's doc in Python's terms, with its range.
+std::string DocOf(const internal::Setting& s) {
+  std::string doc = internal::InTerms(s.doc, internal::Terms::kCommandLine, internal::Terms::kPython);
+  doc.erase(std::remove(doc.begin(), doc.end(), '`'), doc.end());
+  return doc + (s.range ? " (values: " + internal::RangeText(*s.range) + ")" : "");
+}
+
+}  // namespace
+
 std::string KeywordDocs(const std::string& part) {
   std::string text;
-  for (const internal::Setting& s : internal::Settings()) {
-    if (s.field.rfind(part, 0) != 0) continue;
-    std::string doc = internal::InTerms(s.doc, internal::Terms::kCommandLine, internal::Terms::kPython);
-    doc.erase(std::remove(doc.begin(), doc.end(), '`'), doc.end());
-    text += s.key + ": " + doc + (s.range ? " (values: " + internal::RangeText(*s.range) + ")" : "") + "\n";
-  }
+  for (const internal::Setting& s : internal::Settings())
+    if (s.field.rfind(part, 0) == 0) text += s.key + ": " + DocOf(s) + "\n";
   return text;
+}
+
+std::string KeywordDoc(const std::string& part, const std::string& key) {
+  for (const internal::Setting& s : internal::Settings())
+    if (s.field.rfind(part, 0) == 0 && s.key == key) return DocOf(s);
+  throw std::logic_error("no setting " + part + key);
 }
 
 namespace {
@@ -166,8 +179,12 @@ PYBIND11_MODULE(_vkpt, m) {
   // vkpt.SettingError, a setting out of its range: both a vkpt.Error and a ValueError. The
   // types live as long as the interpreter: their handles are never released.
   static const py::handle error = py::exception<vkpt::Error>(m, "Error", PyExc_RuntimeError).release();
-  py::object setting = py::reinterpret_steal<py::object>(
-      PyErr_NewException("vkpt.SettingError", py::make_tuple(error, py::handle(PyExc_ValueError)).ptr(), nullptr));
+  error.attr("__doc__") = "A failure inside vkpt: its message names the file or setting and the problem.";
+  py::object setting = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(
+      "vkpt.SettingError",
+      "A setting out of the range the command line allows, or at odds with another: both a vkpt.Error and a "
+      "ValueError.",
+      py::make_tuple(error, py::handle(PyExc_ValueError)).ptr(), nullptr));
   if (!setting) throw py::error_already_set();
   m.attr("SettingError") = setting;
   static const py::handle settingError = setting.release();

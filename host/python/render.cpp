@@ -126,22 +126,35 @@ raw: the image before the filter (None without denoise, or when cancelled before
 filter ended: then image is unfiltered); aovs: name -> H x W x C array;
 ids: with an id AOV, what its ids name (a dict), else None; np.asarray(render) is the
 image. The arrays are views of the render's memory.)")
-      .def_property_readonly("image", &PyRender::ImageArray)
-      .def_property_readonly("raw", &PyRender::RawArray)
-      .def_property_readonly("aovs", &PyRender::AovArrays)
-      .def_property_readonly("ids",
-                             [](const PyRender& r) -> py::object {
-                               const std::string& ids = r.Result().ids;
-                               if (ids.empty()) return py::none();
-                               return py::module_::import("json").attr("loads")(ids);
-                             })
+      .def_property_readonly("image", &PyRender::ImageArray,
+                             "linear Rec.709 radiance, float32 H x W x 3 (denoised with denoise=True)")
+      .def_property_readonly("raw", &PyRender::RawArray,
+                             "with denoise=True, the image before the filter; else (or cancelled first) None")
+      .def_property_readonly("aovs", &PyRender::AovArrays, "name -> float32 H x W x C array")
+      .def_property_readonly(
+          "ids",
+          [](const PyRender& r) -> py::object {
+            const std::string& ids = r.Result().ids;
+            if (ids.empty()) return py::none();
+            return py::module_::import("json").attr("loads")(ids);
+          },
+          "with an id AOV, what its ids name (a dict); else None")
       .def_property_readonly("channels", &PyRender::Channels, "channel names of the image, raw and each AOV")
-      .def_property_readonly("spp", [](const PyRender& r) { return r.Result().spp; })
-      .def_property_readonly("samples", [](const PyRender& r) { return r.Result().samples; })
-      .def_property_readonly("stopped_by", [](const PyRender& r) { return r.Result().stoppedBy; })
-      .def_property_readonly("estimated_rel_mse", [](const PyRender& r) { return r.Result().estimatedRelMse; })
-      .def_property_readonly("seconds", [](const PyRender& r) { return r.Result().seconds; })
-      .def_property_readonly("engine", [](const PyRender& r) { return r.Result().engine; })
+      .def_property_readonly(
+          "spp", [](const PyRender& r) { return r.Result().spp; },
+          "samples per pixel (adaptive: the most any pixel took)")
+      .def_property_readonly(
+          "samples", [](const PyRender& r) { return r.Result().samples; }, "every pixel's samples added up")
+      .def_property_readonly(
+          "stopped_by", [](const PyRender& r) { return r.Result().stoppedBy; },
+          "what ended it: \"spp\", \"time\", \"noise_target\", \"converged\" or \"cancelled\"")
+      .def_property_readonly(
+          "estimated_rel_mse", [](const PyRender& r) { return r.Result().estimatedRelMse; },
+          "the image's estimated relative mean squared error")
+      .def_property_readonly(
+          "seconds", [](const PyRender& r) { return r.Result().seconds; }, "rendering, AOV pass and filter")
+      .def_property_readonly(
+          "engine", [](const PyRender& r) { return r.Result().engine; }, "the device, or \"cpu\"")
       .def(
           "save",
           [](const PyRender& r, const std::filesystem::path& path, const std::string& view, float exposure) {

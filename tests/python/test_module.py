@@ -5,6 +5,7 @@ import _thread
 import ctypes
 import gc
 import json
+import re
 import pathlib
 import threading
 import time
@@ -292,6 +293,25 @@ def test_every_record_property_is_documented_and_readable(cpu_scene):
     for name in ("materials", "cameras", "lights", "nodes", "meshes", "animations", "variants", "stats",
                  "camera_count", "device"):
         assert vars(vkpt.Scene)[name].__doc__, f"Scene.{name} has no docstring"
+
+
+def test_every_public_name_has_a_docstring():
+    """Beyond pybind11's signature line: a class's own doc, each property's and each method's
+    (a class's __init__ is documented by the class)."""
+    def documented(text, name):
+        return any(l.strip() and not re.match(rf"^({name})?\(.*\) ->", l) for l in (text or "").splitlines())
+    missing = []
+    for kind in (getattr(vkpt, n) for n in vkpt.__all__):
+        if not isinstance(kind, type):
+            missing += [] if kind is vkpt.__version__ or documented(kind.__doc__, kind.__name__) else [kind.__name__]
+            continue
+        missing += [] if documented(kind.__doc__, "") else [kind.__name__]
+        for name, attr in vars(kind).items():
+            if name.startswith("_") or not (isinstance(attr, property) or callable(attr)):
+                continue
+            if not documented(attr.__doc__, name):
+                missing.append(f"{kind.__name__}.{name}")
+    assert missing == []
 
 
 def test_an_edited_parameter_renders_as_the_edited_file(tmp_path):
