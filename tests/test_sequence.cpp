@@ -99,6 +99,9 @@ TEST(Sequence, LongSequencesBeginAtOnceAndHoldTheirMemory) {
   ProcessResult million = frames("0:999999", {.after = "vkpt: frame 0 (1 of 1000000,", .signals = {SIGINT}});
   EXPECT_TRUE(million.ExitedWith(130)) << million.Describe();
   EXPECT_LT(million.sentAt, 4.0) << "the first frame came late";
+#if defined(VKPT_ADDRESS_SANITIZER)
+  return;  // AddressSanitizer's quarantine holds freed memory: the peak grows with every allocation
+#endif
   const ProcessResult few = frames("0:19"), many = frames("0:1999");
   ASSERT_TRUE(few.ExitedWith(0) && many.ExitedWith(0)) << few.Describe() << many.Describe();
   EXPECT_LT(many.peakRssKiB, few.peakRssKiB + 2048) << "from " << few.peakRssKiB << " KiB";
