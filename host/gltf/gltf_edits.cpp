@@ -55,7 +55,7 @@ void Apply(const LightEdit& edit, tinygltf::Light& light) {
 }  // namespace
 
 std::vector<NodeSummary> GltfAsset::Nodes() const {
-  if (parts_->released) throw std::logic_error("GltfAsset::Nodes after ReleaseSource");
+  Kept("Nodes");
   const GltfSource src{parts_->scene.path, parts_->model};
   std::vector<NodeSummary> nodes;
   for (size_t i = 0; i < src.m.nodes.size(); ++i) {
@@ -77,7 +77,7 @@ std::vector<NodeSummary> GltfAsset::Nodes() const {
 }
 
 std::vector<MeshSummary> GltfAsset::Meshes() const {
-  if (parts_->released) throw std::logic_error("GltfAsset::Meshes after ReleaseSource");
+  Kept("Meshes");
   std::vector<MeshSummary> meshes;
   for (size_t i = 0; i < parts_->meshes.size(); ++i) {
     MeshSummary s{parts_->model.meshes[i].name, {}};
@@ -88,7 +88,7 @@ std::vector<MeshSummary> GltfAsset::Meshes() const {
 }
 
 std::vector<LightSource> GltfAsset::Lights() const {
-  if (parts_->released) throw std::logic_error("GltfAsset::Lights after ReleaseSource");
+  Kept("Lights");
   std::vector<LightSource> lights;
   for (const tinygltf::Light& l : parts_->model.lights)
     lights.push_back({l.color.empty() ? glm::dvec3(1.0) : glm::dvec3(l.color[0], l.color[1], l.color[2]), l.intensity});
@@ -96,7 +96,7 @@ std::vector<LightSource> GltfAsset::Lights() const {
 }
 
 void GltfAsset::Edit(const AssetEdits& edits, double time) {
-  if (parts_->released) throw std::logic_error("GltfAsset::Edit after ReleaseSource");
+  Kept("Edit");
   tinygltf::Model& model = parts_->model;
   const GltfSource src{parts_->scene.path, model};
   std::map<uint32_t, tinygltf::Node> nodesBefore;

@@ -209,8 +209,12 @@ GltfAsset::GltfAsset(const std::string& path, const LoadLimits& limits, const Sc
 
 GltfAsset::~GltfAsset() = default;
 
+void GltfAsset::Kept(const char* what) const {
+  if (parts_->released) throw std::logic_error(std::string("GltfAsset::") + what + " after ReleaseSource");
+}
+
 void GltfAsset::PoseAt(double time) {
-  if (parts_->released) throw std::logic_error("GltfAsset::PoseAt after ReleaseSource");
+  Kept("PoseAt");
   Scene& scene = parts_->scene;
   const GltfSource src{scene.path, parts_->model};
   try {

@@ -97,6 +97,7 @@ class GltfAsset {
   struct Parts;  // the parsed file, its decoded meshes and rest pose (gltf_loader.cpp)
 
  private:
+  void Kept(const char* what) const;  // throws std::logic_error naming `what` after ReleaseSource
   std::unique_ptr<Parts> parts_;
 };
 

@@ -21,10 +21,6 @@ vkpt::ParameterValue ParameterOf(T v) {
   return vkpt::ParameterValue(Public(v));
 }
 inline vkpt::ParameterValue ParameterOf(double v) { return v; }
-inline vkpt::ParameterValue ParameterOf(glm::dvec3 v) { return ParameterOf(glm::vec3(v)); }
-inline vkpt::ParameterValue ParameterOf(glm::dquat q) {
-  return vkpt::Quat{float(q.x), float(q.y), float(q.z), float(q.w)};
-}
 
 // The value as `Want`; SettingError if it is of another kind.
 template <class Want>

@@ -68,10 +68,16 @@ vkpt::LightInfo LightInfoOf(const PunctualLight& l, uint32_t index) {
 
 vkpt::NodeInfo NodeInfoOf(const NodeSummary& n, uint32_t index) {
   const auto optional = [](int i) { return i < 0 ? std::nullopt : std::optional<uint32_t>(uint32_t(i)); };
-  const glm::vec3 t(n.translation), s(n.scale);
-  const glm::quat r(n.rotation);
-  return {index,      n.name,    optional(n.mesh),     optional(n.camera), optional(n.light),
-          n.children, Public(t), {r.x, r.y, r.z, r.w}, Public(s),          n.matrix};
+  return {index,
+          n.name,
+          optional(n.mesh),
+          optional(n.camera),
+          optional(n.light),
+          n.children,
+          Public(n.translation),
+          Public(n.rotation),
+          Public(n.scale),
+          n.matrix};
 }
 
 vkpt::SceneStats StatsOf(const LoadedScene& loaded) {
