@@ -4,8 +4,6 @@
 #include "util/error.h"
 
 namespace vkpt::internal::test {
-namespace {
-
 std::string Base64(const std::string& bytes) {
   static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
@@ -30,8 +28,6 @@ std::string Base64(const std::string& bytes) {
   }
   return out;
 }
-
-}  // namespace
 
 std::string Num(double v) {
   char buf[64];

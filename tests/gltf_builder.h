@@ -32,6 +32,7 @@ std::string Bytes(const std::vector<T>& v) {
 }
 
 std::string Join(const std::vector<std::string>& items);  // comma-separated
+std::string Base64(const std::string& bytes);             // as a data: URI holds them
 
 // Builds a glTF document: one binary buffer (embedded as a base64 data: URI, or left
 // without a uri for a GLB BIN chunk) plus JSON objects the test writes as text.

@@ -1,12 +1,10 @@
 // Scene::Parameters() and Scene::Update(): an edit renders what a fresh load of the file
 // so edited renders, bit for bit, on both backends; a refused edit changes nothing; an
-// update that changes no value builds nothing again.
+// update that changes no value builds nothing again, one of materials and lights alone
+// builds no BVH.
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -14,35 +12,18 @@
 #include "api_test_util.h"
 #include "test_util.h"
 #include "vkpt/scene_access.h"
-
 #include "vkpt/vkpt.h"
 
 namespace vkpt::internal {
 namespace {
 
 using nlohmann::json;
+using test::Builds;
+using test::ExpectEachRefused;
+using test::Open;
+using test::WriteCornell;
 
 const std::string kCornell = test::Cornell();
-
-vkpt::Scene Open(const std::string& path, vkpt::Backend backend, const std::string& environment = "") {
-  vkpt::SceneOptions options;
-  options.backend = backend;
-  options.environment = environment;
-  return vkpt::Scene(path, options);
-}
-
-// The Cornell box edited by `edit`, written to `name` in `folder` beside a copy of its
-// buffer.
-std::string WriteCornell(const test::TempFolder& folder, const std::string& name,
-                         const std::function<void(json&)>& edit) {
-  std::ifstream in(kCornell);
-  json file = json::parse(in);
-  edit(file);
-  if (!std::filesystem::exists(folder / "cornell.bin"))
-    std::filesystem::copy_file(test::SourcePath("scenes/cornell.bin"), folder / "cornell.bin");
-  std::ofstream(folder / name) << file.dump();
-  return folder / name;
-}
 
 // A point light above the boxes (node 9), with `color` and `intensity`.
 void AddPointLight(json& file, const json& color, double intensity) {
@@ -72,8 +53,6 @@ void EditCornell(json& file) {
   AddPointLight(file, {1.0, 0.5, 0.25}, 60000.0);
 }
 
-uint32_t Builds(vkpt::Scene& scene) { return vkpt::SceneAccess::Engine(scene).Counts().builds; }
-
 TEST(ApiParameters, AnEditRendersAsTheEditedFile) {
   const test::TempFolder folder("api-parameters");
   const std::string base = WriteCornell(folder, "base.gltf", [](json& f) { AddPointLight(f, {1, 1, 1}, 30000.0); });
@@ -91,22 +70,42 @@ TEST(ApiParameters, AnEditRendersAsTheEditedFile) {
   }
 }
 
-// Each of `refused` raises SettingError with its message, and leaves the scene's values,
-// its render and its built arrays as they were.
-void ExpectEachRefused(vkpt::Scene& scene, const std::vector<std::pair<vkpt::ParameterMap, std::string>>& refused) {
-  const vkpt::ParameterMap original = scene.Parameters();
-  const vkpt::RenderResult before = scene.Render({}, test::SmallRender(3));
-  for (const auto& [changes, message] : refused) {
-    try {
-      scene.Update(changes);
-      ADD_FAILURE() << "accepted: " << message;
-    } catch (const vkpt::SettingError& e) {
-      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
-    }
+// The Cornell box's materials and lights edited, its triangles left where they are: the
+// white surfaces red and rough, the red wall metallic (a glossy lobe the GPU's kernel had
+// no need of), the green wall glowing (two more lights), the lamp twice as bright and the
+// point light orange.
+void Restyle(json& file) {
+  json& pbr0 = file["materials"][0]["pbrMetallicRoughness"];
+  pbr0["baseColorFactor"] = {0.9, 0.1, 0.1, 1.0};
+  pbr0["roughnessFactor"] = 0.35;
+  file["materials"][1]["pbrMetallicRoughness"]["metallicFactor"] = 0.8;
+  file["materials"][2]["emissiveFactor"] = {1.0, 0.5, 0.25};
+  json& light = file["materials"][3];
+  light["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] =
+      2.0 * light["extensions"]["KHR_materials_emissive_strength"].value("emissiveStrength", 1.0);
+  AddPointLight(file, {1.0, 0.5, 0.25}, 60000.0);
+}
+
+uint32_t Restyles(vkpt::Scene& scene) { return vkpt::SceneAccess::Engine(scene).Counts().restyles; }
+
+// Materials and lights alone change no triangle: the BVH stays, the materials and the
+// light table are made again and re-uploaded, and the image is the edited file's.
+TEST(ApiParameters, MaterialAndLightEditsBuildNoBvh) {
+  const test::TempFolder folder("api-parameters-restyle");
+  const std::string base = WriteCornell(folder, "base.gltf", [](json& f) { AddPointLight(f, {1, 1, 1}, 30000.0); });
+  const std::string edited = WriteCornell(folder, "edited.gltf", Restyle);
+  for (vkpt::Backend backend : {vkpt::Backend::Cpu, vkpt::Backend::Vulkan}) {
+    vkpt::Scene fresh = Open(edited, backend);
+    vkpt::Scene live = Open(base, backend);
+    const uint64_t lightsBefore = (live.Render({}, test::SmallRender(3)), live.Stats().lights);
+    live.Update(fresh.Parameters());
+    const vkpt::RenderResult after = live.Render({}, test::SmallRender(3));
+    EXPECT_EQ(after.image.data, fresh.Render({}, test::SmallRender(3)).image.data) << after.engine;
+    EXPECT_EQ(Builds(live), 1u);
+    EXPECT_EQ(Restyles(live), 1u);
+    EXPECT_EQ(live.Stats().lights, fresh.Stats().lights);
+    EXPECT_EQ(live.Stats().lights, lightsBefore + 2);  // the green wall's two triangles
   }
-  EXPECT_EQ(scene.Parameters(), original);
-  EXPECT_EQ(scene.Render({}, test::SmallRender(3)).image.data, before.image.data);
-  EXPECT_EQ(Builds(scene), 1u);
 }
 
 TEST(ApiParameters, ARefusedEditChangesNothing) {
@@ -174,6 +173,14 @@ TEST(ApiParameters, EnvironmentIntensityRendersAsLoadedWithIt) {
     live.Update({{"environment/intensity", 2.5}});
     EXPECT_EQ(live.Render({}, test::SmallRender(3)).image.data, fresh.Render({}, test::SmallRender(3)).image.data);
     EXPECT_THROW(live.Update({{"environment/intensity", -1.0}}), vkpt::SettingError);
+    // A turn of the map is the scene's for renders that name none, and only a constant.
+    vkpt::RenderOptions turned = test::SmallRender(3);
+    turned.environmentRotation = 90.0f;
+    const vkpt::RenderResult expected = fresh.Render({}, turned);
+    live.Update({{"environment/rotation", 90.0}});
+    EXPECT_EQ(live.Render({}, test::SmallRender(3)).image.data, expected.image.data);
+    EXPECT_EQ(Builds(live), 1u);
+    EXPECT_THROW(live.Update({{"environment/rotation", 4000.0}}), vkpt::SettingError);
   }
 }
 

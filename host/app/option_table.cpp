@@ -106,7 +106,7 @@ std::vector<OptionDef> SceneRows() {
       SettingRow("background", "R,G,B", " (one number: grey)", "1 if the scene has no lights, else 0",
                  BackgroundValue()),
       SettingRow("environment", "FILE", "none", Text(Api(kScenePart, &S::environment), "an .hdr or .exr file")),
-      SettingRow("environment_rotation", "DEGREES", FormatNumber(kRender.environmentRotation),
+      SettingRow("environment_rotation", "DEGREES", "0",
                  Number(Api(kRenderPart, &R::environmentRotation), SettingRange("environment_rotation"))),
       SettingRow("environment_intensity", "X", FormatNumber(vkpt::SceneOptions{}.environmentIntensity),
                  Number(Api(kScenePart, &S::environmentIntensity), SettingRange("environment_intensity"))),

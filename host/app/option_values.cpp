@@ -51,6 +51,7 @@ std::string JsonValue(const std::optional<uint32_t>& v) { return v ? std::to_str
 std::string JsonValue(double v) { return JsonNumber(v); }
 std::string JsonValue(const std::optional<double>& v) { return v ? JsonNumber(*v) : Null(); }
 std::string JsonValue(float v) { return JsonNumber(v); }
+std::string JsonValue(const std::optional<float>& v) { return v ? JsonNumber(*v) : Null(); }
 std::string JsonValue(bool v) { return v ? "true" : "false"; }
 std::string JsonValue(const std::string& v) { return JsonString(v); }
 std::string JsonValue(const std::optional<std::array<float, 3>>& v) {

@@ -59,6 +59,7 @@ std::string JsonValue(const std::optional<uint32_t>& v);
 std::string JsonValue(double v);
 std::string JsonValue(const std::optional<double>& v);
 std::string JsonValue(float v);
+std::string JsonValue(const std::optional<float>& v);
 std::string JsonValue(bool v);
 std::string JsonValue(const std::string& v);
 std::string JsonValue(const std::optional<std::array<float, 3>>& v);

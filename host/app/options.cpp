@@ -40,8 +40,8 @@ void Complete(Options& o) {
   if (o.compare && (!o.api.render.aovs.empty() || o.api.render.denoise))
     throw UsageError("--compare checks the backends against each other; it takes no --aov or --denoise");
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
-  if (o.api.render.time != 0.0 && o.api.scene.animation.empty()) throw UsageError(kTimeWithoutAnimation);
-  if (o.frames && o.api.render.time != 0.0)
+  if (o.api.render.time.value_or(0.0) != 0.0 && o.api.scene.animation.empty()) throw UsageError(kTimeWithoutAnimation);
+  if (o.frames && o.api.render.time.value_or(0.0) != 0.0)
     throw UsageError("--frames gives each frame its time (k / --fps); drop --at");
   if (o.frames && o.compare) throw UsageError("--compare checks one image; drop --frames");
   try {
@@ -54,6 +54,9 @@ void Complete(Options& o) {
     o.out = base.substr(0, base.find_last_of('.')) + ".png";
   }
   if (o.stats == o.out) throw UsageError("--stats and --out name the same file \"" + o.out + "\"");
+  // A command renders what it names: its time and turn are 0 unless it says otherwise.
+  o.api.render.time = o.api.render.time.value_or(0.0);
+  o.api.render.environmentRotation = o.api.render.environmentRotation.value_or(0.0f);
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ void PrepareFrame(Prepared& p, const Options& o, bool report, uint32_t ranks) {
     const PreparedFrame& frame = p.view.prepared;
     PrintLoadReport(p.scene(), CameraOf(p.view));
     if (!o.api.scene.environment.empty())
-      std::printf("  environment: rotated %g° about +Y\n", o.api.render.environmentRotation);
+      std::printf("  environment: rotated %g° about +Y\n", o.api.render.environmentRotation.value_or(0.0f));
     std::printf("  memory: %s counted for the %u × %u image (%s)\n", FormatBytes(frame.memory).c_str(), frame.size.x,
                 frame.size.y, DescribeParts(frame.parts).c_str());
   }

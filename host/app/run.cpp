@@ -107,7 +107,8 @@ void NextFrame(Prepared& p, const Options& f, uint32_t ranks) {
 
 void PrintFrameLine(uint32_t number, size_t i, size_t frames, const Options& f, Prepared& p, double seconds) {
   std::printf("vkpt: frame %u (%zu of %zu, %.6g s): pose %.3f s, BVH and arrays %.3f s, upload %.3f s, render %.3f s\n",
-              number, i + 1, frames, f.api.render.time, p.times().pose, p.times().prepare, p.times().upload, seconds);
+              number, i + 1, frames, f.api.render.time.value_or(0.0), p.times().pose, p.times().prepare,
+              p.times().upload, seconds);
   std::fflush(stdout);
 }
 

@@ -15,7 +15,7 @@ namespace vkpt::internal {
 namespace {
 
 ClientScene ClientSceneOf(const Options& o, const EngineLog& log) {
-  return {o.leafSize, o.splits, o.compare, !o.frames, o.api.render.time, log};
+  return {o.leafSize, o.splits, o.compare, !o.frames, o.api.render.time.value_or(0.0), log};
 }
 
 }  // namespace

@@ -31,6 +31,12 @@ std::unique_ptr<vk::Context> OpenDevice(const SceneSettings& s, const EngineLog&
   }
 }
 
+// The environment map joins the light table, last; then the light sampler is chosen.
+void CompleteLightTable(RenderScene& rs, const SceneSettings& s) {
+  if (rs.environment.width > 0) AddEnvironmentLight(rs, s.envIntensity);
+  ChooseLightSampler(rs, s.lightSampler);
+}
+
 // The BVH and the renderers' arrays, with the environment map. `gpu`: a Vulkan device will
 // render, so the shader's layout of the tree is built, in direction-ordered copies; the
 // CPU's layout only where the CPU renders (no device, or a comparison).
@@ -42,8 +48,7 @@ RenderScene BuildArrays(const Scene& scene, const SceneSettings& s, bool gpu, En
   bvhOptions.directionCopies = gpu;
   RenderScene rs = PrepareRenderScene(scene, bvhOptions, !gpu || s.compare, gpu);
   rs.environment = std::move(env);
-  if (rs.environment.width > 0) AddEnvironmentLight(rs, s.envIntensity);
-  ChooseLightSampler(rs, s.lightSampler);  // after the environment, which joins the table last
+  CompleteLightTable(rs, s);
   return rs;
 }
 
@@ -71,7 +76,7 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
   PhaseTimer phase;
   // Without an animation every pose is the same: the first one's arrays serve every render.
   const bool animated = scene().animation >= 0;
-  const double time = request.picture.time;
+  const double time = request.picture.time.value_or(settings_.choice.time);
   if (animated && posedAt_ != time) {
     asset_->PoseAt(time);
     posedAt_ = time;
@@ -94,26 +99,34 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
     // or a new pose.
     rs_ = BuildArrays(scene(), settings_, ctx_ != nullptr, settings_.once ? std::move(environment_) : environment_);
     builtAt_ = posedAt_;
+    restyle_ = false;
     ++counts_.builds;
+  } else if (restyle_) {
+    const std::vector<uint32_t> lightsBefore = TriangleLights(rs_);
+    RestyleRenderScene(scene(), rs_);
+    CompleteLightTable(rs_, settings_);
+    if (backend_) backend_->Restyle(TriangleLights(rs_) != lightsBefore);
+    restyle_ = false;
+    ++counts_.restyles;
   }
   phase.Lap(times.prepare);
   frame.params = FrameParams(frame.camera, frame.size, request.picture, request.log);
   return frame;
 }
 
-void LoadedScene::SetMaterial(uint32_t index, const Material& material) {
-  asset_->SetMaterial(index, material);
-  builtAt_.reset();
+void LoadedScene::Edit(const AssetEdits& edits, double time) {
+  if (!edits.Empty()) {
+    if (asset_->Edit(edits, time)) builtAt_.reset();
+    else restyle_ = true;
+    posedAt_ = scene().animationTime;
+  }
+  settings_.choice.time = time;
 }
 
-void LoadedScene::Edit(const AssetEdits& edits) {
-  asset_->Edit(edits, posedAt_);
-  builtAt_.reset();
-}
-
-void LoadedScene::SetEnvironmentIntensity(float intensity) {
+void LoadedScene::SetEnvironment(float intensity, float rotation) {
+  if (intensity != settings_.envIntensity) restyle_ = true;
   settings_.envIntensity = intensity;
-  builtAt_.reset();
+  settings_.envRotation = rotation;
 }
 
 const RenderBackend& LoadedScene::Backend() {
@@ -152,7 +165,8 @@ shader::FrameParams LoadedScene::FrameParams(const Camera& cam, glm::uvec2 size,
   params.rrDepth = p.rrDepth;
   params.textureLod = p.textureLod ? 1u : 0u;
   if (!settings_.env.empty()) {
-    SetEnvironmentParams(params, rs_.environment, p.envRotation, settings_.envIntensity);
+    SetEnvironmentParams(params, rs_.environment, p.envRotation.value_or(settings_.envRotation),
+                         settings_.envIntensity);
   } else if (p.background) {
     params.background = *p.background;
   } else if (!HasLightSources(rs_)) {

@@ -1,6 +1,7 @@
 // A glTF file loaded once, with its environment map and the device it renders on, for
 // any number of renders. Each render poses the scene (again only when an animation is
-// chosen and its time changes, or an edit moved a node), builds the BVH and the renderers' arrays (once per pose),
+// chosen and its time changes, or an edit changed the pose), builds the BVH and the
+// renderers' arrays (once per pose; an edit of materials and lights alone remakes theirs),
 // uploads them to the device (once per build) and makes its frame's constants from a
 // camera and a picture's settings.
 #pragma once
@@ -75,13 +76,14 @@ class LoadedScene {
   TriangleIdsOf IdsOf() const;
   std::string IdsJson() const;
 
-  // Edits (vkpt::Scene::Update): the next Prepare builds the arrays again, as a fresh load
-  // of the file so edited would; the pose is kept.
-  void SetMaterial(uint32_t index, const Material& material);
-  void SetEnvironmentIntensity(float intensity);
-  // The file's nodes and lights edited (GltfAsset::Edit) and the scene posed again; throws
-  // Error, leaving the scene as it was, where the file so edited would be refused.
-  void Edit(const AssetEdits& edits);
+  // Edits (vkpt::Scene::Update), which the next Prepare builds as a fresh load of the file
+  // so edited (or so chosen) would: the BVH and every array again where triangles may have
+  // moved, else only the materials and the light table (RestyleRenderScene), re-uploaded.
+  // The file's nodes, lights, materials, variant and animation edited (GltfAsset::Edit),
+  // and the time of renders that name none; throws Error, leaving the scene as it was,
+  // where the file so edited would be refused.
+  void Edit(const AssetEdits& edits, double time);
+  void SetEnvironment(float intensity, float rotation);
   // The file's nodes, meshes and lights (GltfAsset): a scene loaded for one render
   // (SceneSettings::once) keeps none of them once it is built.
   const GltfAsset& Asset() const { return *asset_; }
@@ -91,6 +93,7 @@ class LoadedScene {
   // How often the scene's arrays were built and uploaded to the device.
   struct Counts {
     uint32_t builds = 0, uploads = 0;
+    uint32_t restyles = 0;  // materials and light table made again (and re-uploaded) alone
   };
   Counts Counts() const { return counts_; }
 
@@ -107,6 +110,7 @@ class LoadedScene {
   std::unique_ptr<vk::Context> ctx_;  // null: the CPU renders
   double posedAt_ = 0.0;              // the time the scene is posed at (first settings_.choice.time)
   std::optional<double> builtAt_;     // the pose rs_ holds
+  bool restyle_ = false;              // rs_'s materials or lights are not the scene's
   RenderScene rs_;
   std::unique_ptr<RenderBackend> backend_;  // of rs_, made on first use
   struct Counts counts_;

@@ -17,6 +17,10 @@ std::unique_ptr<FrameRenderer> RenderBackend::BeginFrame(const shader::FramePara
   return gpu_->BeginFrame(params, options);
 }
 
+void RenderBackend::Restyle(bool triangleLights) {
+  if (gpu_) gpu_->Restyle(rs_, triangleLights);
+}
+
 Denoiser RenderBackend::MakeDenoiser() const {
   if (ctx_)
     return [ctx = ctx_](const DenoiseInput& input, const StopFilter& stop) { return vk::AtrousGpu(*ctx, input, stop); };

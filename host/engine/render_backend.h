@@ -22,6 +22,10 @@ class RenderBackend {
   // Vulkan samples per pixel per submission (0: automatic). It must not outlive this.
   std::unique_ptr<FrameRenderer> BeginFrame(const shader::FrameParams& params, uint32_t batch) const;
   Denoiser MakeDenoiser() const;
+  // The scene's materials and light table changed in place (RestyleRenderScene), and its
+  // triangles' light indices where `triangleLights`: the device's copies are uploaded
+  // again; the CPU reads them as they are.
+  void Restyle(bool triangleLights);
   const char* DenoiserName() const { return ctx_ ? "vulkan" : "cpu"; }
 
  private:

@@ -23,9 +23,10 @@ enum class Backend { Auto, Cpu, Vulkan };
 struct SceneSettings {
   std::string path;    // the .gltf or .glb
   LoadLimits load;     // memory, texels, external URIs
-  SceneChoice choice;  // variant and animation (its time is each render's)
+  SceneChoice choice;  // variant and animation, and the time of renders that name none
   std::string env;     // equirectangular environment map (.hdr, .exr); "": none
   float envIntensity = 1.0f;
+  float envRotation = 0.0f;  // of renders that name none: degrees about +Y, counter-clockwise seen from above
   LightSampler lightSampler = LightSampler::kAuto;
   uint32_t leafSize = 8;
   SplitMode splits = SplitMode::kAuto;
@@ -57,8 +58,8 @@ struct PictureSettings {
   // Constant environment radiance; absent: white for a scene without light sources (so any
   // model is visible), black otherwise. Ignored with an environment map.
   std::optional<glm::vec3> background;
-  float envRotation = 0.0f;  // degrees about +Y, counter-clockwise seen from above
-  double time = 0.0;         // seconds into the chosen animation
+  std::optional<float> envRotation;  // degrees about +Y (none: SceneSettings::envRotation)
+  std::optional<double> time;        // seconds into the chosen animation (none: SceneChoice::time)
 };
 
 // Where the engine's messages go; any may be empty. `warning`: something the user should

@@ -105,12 +105,13 @@ int ResolveAnimation(const GltfSource& src, const std::vector<AnimationSummary>&
   return src.Choose(names, wanted, "--animation", "animation", "no animations");
 }
 
-uint64_t AnimationBytes(const GltfSource& src, int animation) {
+uint64_t ChargeAnimation(const GltfSource& src, int animation, MemoryBudget& budget) {
   uint64_t bytes = 0;
   for (const tinygltf::AnimationSampler& s : src.m.animations[animation].samplers)
     for (int accessor : {s.input, s.output})
       if (accessor >= 0 && size_t(accessor) < src.m.accessors.size())
         bytes += src.m.accessors[accessor].count * ComponentCount(src.m.accessors[accessor].type) * 2 * sizeof(double);
+  budget.Charge(bytes, "animations[" + std::to_string(animation) + "] (decoding its keyframes)");
   return bytes;
 }
 

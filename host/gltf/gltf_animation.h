@@ -7,6 +7,7 @@
 
 #include "gltf/gltf_source.h"
 #include "gltf/node_pose.h"
+#include "scene/load_limits.h"
 #include "scene/scene.h"
 
 namespace vkpt::internal {
@@ -19,8 +20,9 @@ std::vector<AnimationSummary> ListAnimations(const GltfSource& src);
 // Throws Error naming the file and listing its animations if there is no such one.
 int ResolveAnimation(const GltfSource& src, const std::vector<AnimationSummary>& animations, const std::string& wanted);
 
-// Memory its keyframes take decoded (for the budget, before they are read).
-uint64_t AnimationBytes(const GltfSource& src, int animation);
+// Charges `budget` for the keyframes of animations[animation] decoded, before they are
+// read; returns the bytes.
+uint64_t ChargeAnimation(const GltfSource& src, int animation, MemoryBudget& budget);
 
 // `poses` with every channel of animations[animation] applied at `time` seconds. Each
 // sampler is checked against its channel: interpolation, output type and count, and a

@@ -1,13 +1,22 @@
 // What a GltfAsset tells of its file's nodes, meshes and lights, and the edits
-// vkpt::Scene::Update makes to them: each written into the parsed file, checked by the
-// rules that check a file as it is loaded, and the scene posed again.
+// vkpt::Scene::Update makes to them and to its materials, variant and animation: each
+// written into the parsed file (or the decoded scene), checked by the rules that check a
+// file as it is loaded, the meshes it decodes differently decoded again, and the scene
+// posed again.
 #define GLM_ENABLE_EXPERIMENTAL
 #include <glm/gtx/matrix_decompose.hpp>
 #include <stdexcept>
 
+#include "gltf/geometry_budget.h"
+#include "gltf/gltf_animation.h"
 #include "gltf/gltf_asset_parts.h"
+#include "gltf/gltf_instancing.h"
 #include "gltf/gltf_lights.h"
 #include "gltf/gltf_source.h"
+#include "gltf/gltf_textures.h"
+#include "gltf/gltf_variants.h"
+#include "util/byte_size.h"
+#include "util/error.h"
 
 namespace vkpt::internal {
 namespace {
@@ -95,31 +104,129 @@ std::vector<LightSource> GltfAsset::Lights() const {
   return lights;
 }
 
-void GltfAsset::Edit(const AssetEdits& edits, double time) {
+namespace {
+
+// What an edit may change of a GltfAsset, as it was: restored where the edit is refused.
+struct Undo {
+  std::map<uint32_t, tinygltf::Node> nodes;
+  std::map<uint32_t, tinygltf::Light> lights;
+  std::vector<NodePose> rest;
+  std::vector<Material> materials;
+  int variant, animation;
+  double posedAt;
+  MeshDecoding decoding;
+  uint64_t geometryBytes, animationBytes, memoryCounted;
+  std::map<size_t, std::vector<DecodedPrimitive>> meshes;  // those decoded again
+
+  explicit Undo(const GltfAsset::Parts& p)
+      : rest(p.rest),
+        materials(p.scene.materials),
+        variant(p.scene.variant),
+        animation(p.scene.animation),
+        posedAt(p.scene.animationTime),
+        decoding(p.decoding),
+        geometryBytes(p.geometryBytes),
+        animationBytes(p.animationBytes),
+        memoryCounted(p.scene.memoryCounted) {}
+
+  void Restore(GltfAsset::Parts& p) {
+    for (auto& [i, node] : nodes) p.model.nodes[i] = std::move(node);
+    for (auto& [i, light] : lights) p.model.lights[i] = std::move(light);
+    p.rest = std::move(rest);
+    p.scene.materials = std::move(materials);
+    p.scene.variant = variant;
+    p.scene.animation = animation;
+    p.decoding = decoding;
+    p.geometryBytes = geometryBytes;
+    p.animationBytes = animationBytes;
+    p.scene.memoryCounted = memoryCounted;
+    for (auto& [i, mesh] : meshes) p.meshes[i] = std::move(mesh);
+    p.scene.generatedTangentPrimitives = GeneratedTangentPrimitives(p.meshes);
+  }
+};
+
+// The memory of the scene counted again for its tangents (p.decoding) and its animation,
+// against its limit; the rest as counted when it loaded.
+void Recount(const GltfSource& src, GltfAsset::Parts& p, bool tangentsChanged) {
+  Scene& scene = p.scene;
+  MemoryBudget budget(scene.memoryLimit, scene.path);
+  budget.Charge(scene.memoryCounted - p.geometryBytes - p.animationBytes, "the file, its images and materials");
+  if (tangentsChanged) {
+    const uint64_t before = budget.Used();
+    ChargeGeometry(src, MeshInstances(src, SceneRoots(src, p.parents)), p.textured, p.decoding.withTangents, budget);
+    p.geometryBytes = budget.Used() - before;
+  } else {
+    budget.Charge(p.geometryBytes, "the meshes");
+  }
+  p.animationBytes = scene.animation >= 0 ? ChargeAnimation(src, scene.animation, budget) : 0;
+  scene.memoryCounted = budget.Used();
+}
+
+// Whether meshes[i] decodes differently now: every mesh when the tangents are wanted or
+// not, one with variant mappings when the variant changed, one whose primitive's material
+// wants tangents from another TEXCOORD set.
+bool DecodesAnew(const GltfAsset::Parts& p, const Undo& was, size_t i) {
+  if (p.decoding.withTangents != was.decoding.withTangents) return true;
+  if (p.scene.variant != was.variant)
+    for (const tinygltf::Primitive& prim : p.model.meshes[i].primitives)
+      if (prim.extensions.count("KHR_materials_variants")) return true;
+  for (const DecodedPrimitive& prim : p.meshes[i])
+    if (TangentUVSet(p.scene.materials[prim.material]) != TangentUVSet(was.materials[prim.material])) return true;
+  return false;
+}
+
+}  // namespace
+
+bool GltfAsset::Edit(const AssetEdits& edits, double time) {
   Kept("Edit");
-  tinygltf::Model& model = parts_->model;
-  const GltfSource src{parts_->scene.path, model};
-  std::map<uint32_t, tinygltf::Node> nodesBefore;
-  std::map<uint32_t, tinygltf::Light> lightsBefore;
-  for (const auto& [i, edit] : edits.nodes) {
-    nodesBefore.emplace(i, model.nodes.at(i));
-    Apply(edit, parts_->rest[i], model.nodes[i]);
-  }
-  for (const auto& [i, edit] : edits.lights) {
-    lightsBefore.emplace(i, model.lights.at(i));
-    Apply(edit, model.lights[i]);
-  }
-  const std::vector<NodePose> restBefore = parts_->rest;
+  Parts& p = *parts_;
+  Scene& scene = p.scene;
+  const GltfSource src{scene.path, p.model};
+  Undo undo(p);
+  bool posing = false;
   try {
-    CheckLights(src);
-    parts_->rest = RestPoses(src);
-    PoseAt(time);
+    for (const auto& [i, edit] : edits.nodes) {
+      undo.nodes.emplace(i, p.model.nodes.at(i));
+      Apply(edit, p.rest[i], p.model.nodes[i]);
+    }
+    for (const auto& [i, edit] : edits.lights) {
+      undo.lights.emplace(i, p.model.lights.at(i));
+      Apply(edit, p.model.lights[i]);
+    }
+    for (const auto& [i, material] : edits.materials) scene.materials.at(i) = material;
+    if (edits.variant) scene.variant = ResolveVariant(src, scene.materialVariants, *edits.variant);
+    if (edits.animation) scene.animation = ResolveAnimation(src, scene.animations, *edits.animation);
+    p.decoding.variant = scene.variant;
+    p.decoding.withTangents = UsesTangents(scene);
+    p.decoding.withUVs = p.textured || p.decoding.withTangents;
+    const bool tangentsChanged = p.decoding.withTangents != undo.decoding.withTangents;
+    const bool animationChanged = scene.animation != undo.animation;
+    if (tangentsChanged || animationChanged) Recount(src, p, tangentsChanged);
+    for (size_t i = 0; i < p.meshes.size(); ++i) {
+      if (!DecodesAnew(p, undo, i)) continue;
+      std::vector<std::string> warnings;  // those of the first decoding again
+      std::vector<DecodedPrimitive> mesh = DecodeMeshOf(src, p, i, warnings);
+      undo.meshes.emplace(i, std::move(p.meshes[i]));
+      p.meshes[i] = std::move(mesh);
+    }
+    scene.generatedTangentPrimitives = GeneratedTangentPrimitives(p.meshes);
+    if (!edits.lights.empty()) CheckLights(src);
+    if (!edits.nodes.empty()) p.rest = RestPoses(src);
+    const bool moved = !edits.nodes.empty() || !undo.meshes.empty() || animationChanged;
+    if (moved || !edits.lights.empty()) {
+      posing = true;
+      PoseAt(time);
+    }
+    return moved;
   } catch (const Error&) {
-    for (auto& [i, node] : nodesBefore) model.nodes[i] = std::move(node);
-    for (auto& [i, light] : lightsBefore) model.lights[i] = std::move(light);
-    parts_->rest = restBefore;
-    PoseAt(time);
+    undo.Restore(p);
+    if (posing) PoseAt(undo.posedAt);
     throw;
+  } catch (const std::bad_alloc&) {
+    undo.Restore(p);
+    if (posing) PoseAt(undo.posedAt);
+    throw Error(scene.path + ": ran out of memory while editing, within --max-memory " +
+                FormatBytes(scene.memoryLimit) + " (the process may have a lower limit, e.g. ulimit -v)");
   }
 }
 

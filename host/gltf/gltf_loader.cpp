@@ -52,15 +52,6 @@ std::string Shorten(std::string s) {
   return s;
 }
 
-// The TEXCOORD set a material's tangents follow: its base's normal texture's, else its
-// coat's, else its anisotropy texture's, else 0 for an anisotropic material; −1: it needs
-// none.
-int TangentUVSet(const Material& mat) {
-  for (TextureSlot s : {TextureSlot::kNormal, TextureSlot::kClearcoatNormal, TextureSlot::kAnisotropy})
-    if (mat.texture(s).Present()) return int(mat.texture(s).texCoord);
-  return mat.anisotropyStrength > 0.0f ? 0 : -1;
-}
-
 // What the file uses that vkpt does not render yet (printed by -v).
 void NoteIgnoredFeatures(const GltfSource& src, Scene& scene) {
   auto& ig = scene.ignoredFeatures;
@@ -107,32 +98,28 @@ void BuildScene(const GltfSource& src, const LoadLimits& limits, const SceneChoi
   CheckTexturesAndMaterials(src);
   const uint32_t defaultMaterial = LoadMaterials(src, scene);
   LoadTextures(src, limits, budget, scene);
-  const bool textured = HasMaterialTextures(scene), tangents = UsesTangents(scene);
+  parts.textured = HasMaterialTextures(scene);
+  const bool tangents = UsesTangents(scene);
   parts.parents = CheckNodeGraph(src);
-  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parts.parents)), textured, tangents, budget);
+  const uint64_t before = budget.Used();
+  ChargeGeometry(src, MeshInstances(src, SceneRoots(src, parts.parents)), parts.textured, tangents, budget);
+  parts.geometryBytes = budget.Used() - before;
   scene.materialVariants = ReadVariants(src);
   scene.variant = ResolveVariant(src, scene.materialVariants, choice.variant);
   // Texture coordinates are decoded where tangents are generated from them, kept where
   // textures read them.
-  const MeshDecoding decoding{defaultMaterial, textured || tangents,          tangents,
-                              scene.variant,   scene.materialVariants.size(), !src.m.skins.empty()};
+  parts.decoding = {defaultMaterial, parts.textured || tangents,    tangents,
+                    scene.variant,   scene.materialVariants.size(), !src.m.skins.empty()};
   parts.meshes.resize(src.m.meshes.size());
-  for (size_t i = 0; i < src.m.meshes.size(); ++i) parts.meshes[i] = DecodeMesh(src, int(i), decoding, scene.warnings);
-  for (std::vector<DecodedPrimitive>& mesh : parts.meshes)
-    for (DecodedPrimitive& prim : mesh) {
-      if (!tangents) break;
-      const int uvSet = TangentUVSet(scene.materials[prim.material]);
-      if (uvSet >= 0 && GenerateMissingTangents(prim, uint32_t(uvSet))) ++scene.generatedTangentPrimitives;
-    }
+  for (size_t i = 0; i < src.m.meshes.size(); ++i) parts.meshes[i] = DecodeMeshOf(src, parts, i, scene.warnings);
+  scene.generatedTangentPrimitives = GeneratedTangentPrimitives(parts.meshes);
   CheckCameras(src);
   CheckLights(src);
   parts.rest = RestPoses(src);
   parts.skins = ReadSkins(src);
   scene.animations = ListAnimations(src);
   scene.animation = ResolveAnimation(src, scene.animations, choice.animation);
-  if (scene.animation >= 0)
-    budget.Charge(AnimationBytes(src, scene.animation),
-                  "animations[" + std::to_string(scene.animation) + "] (decoding its keyframes)");
+  if (scene.animation >= 0) parts.animationBytes = ChargeAnimation(src, scene.animation, budget);
   NoteIgnoredFeatures(src, scene);
 }
 
@@ -179,6 +166,32 @@ tinygltf::Model ParseWithTinyGltf(const std::string& path, const SceneFile& file
 }
 
 }  // namespace
+
+// Its base's normal texture's set, else its coat's, else its anisotropy texture's, else 0
+// for an anisotropic material.
+int TangentUVSet(const Material& mat) {
+  for (TextureSlot s : {TextureSlot::kNormal, TextureSlot::kClearcoatNormal, TextureSlot::kAnisotropy})
+    if (mat.texture(s).Present()) return int(mat.texture(s).texCoord);
+  return mat.anisotropyStrength > 0.0f ? 0 : -1;
+}
+
+std::vector<DecodedPrimitive> DecodeMeshOf(const GltfSource& src, const GltfAsset::Parts& parts, size_t mesh,
+                                           std::vector<std::string>& warnings) {
+  std::vector<DecodedPrimitive> decoded = DecodeMesh(src, int(mesh), parts.decoding, warnings);
+  if (parts.decoding.withTangents)
+    for (DecodedPrimitive& prim : decoded) {
+      const int uvSet = TangentUVSet(parts.scene.materials[prim.material]);
+      if (uvSet >= 0) GenerateMissingTangents(prim, uint32_t(uvSet));
+    }
+  return decoded;
+}
+
+uint32_t GeneratedTangentPrimitives(const std::vector<std::vector<DecodedPrimitive>>& meshes) {
+  uint32_t n = 0;
+  for (const std::vector<DecodedPrimitive>& mesh : meshes)
+    for (const DecodedPrimitive& prim : mesh) n += prim.generatedTangentSet >= 0 ? 1 : 0;
+  return n;
+}
 
 GltfAsset::GltfAsset(const std::string& path, const LoadLimits& limits, const SceneChoice& choice)
     : parts_(std::make_unique<Parts>()) {
@@ -254,8 +267,6 @@ void GltfAsset::ReleaseSource() {
 const Scene& GltfAsset::scene() const { return parts_->scene; }
 
 Scene GltfAsset::TakeScene() { return std::move(parts_->scene); }
-
-void GltfAsset::SetMaterial(uint32_t index, const Material& material) { parts_->scene.materials.at(index) = material; }
 
 Scene LoadGltf(const std::string& path, const LoadLimits& limits, const SceneChoice& choice) {
   GltfAsset asset(path, limits, choice);

@@ -48,7 +48,8 @@ struct LightSource {
   double intensity = 1.0;
 };
 
-// Changes to the file's nodes and lights, by index (vkpt::Scene::Update).
+// Changes to the file's nodes, lights and materials, by index, and to its choice of variant
+// and animation (vkpt::Scene::Update).
 struct NodeEdit {
   std::optional<glm::dvec3> translation, scale;
   std::optional<glm::dquat> rotation;
@@ -60,7 +61,9 @@ struct LightEdit {
 struct AssetEdits {
   std::map<uint32_t, NodeEdit> nodes;
   std::map<uint32_t, LightEdit> lights;
-  bool Empty() const { return nodes.empty() && lights.empty(); }
+  std::map<uint32_t, Material> materials;         // replaced whole
+  std::optional<std::string> variant, animation;  // as SceneChoice spells them
+  bool Empty() const { return nodes.empty() && lights.empty() && materials.empty() && !variant && !animation; }
 };
 
 // A glTF file read, checked and decoded once — materials, textures, meshes, skins and
@@ -81,18 +84,21 @@ class GltfAsset {
   void ReleaseSource();
   const Scene& scene() const;
   Scene TakeScene();  // the asset is spent
-  // Material `index` replaced, for this pose and every later one.
-  void SetMaterial(uint32_t index, const Material& material);
 
   // The file's nodes, meshes and lights (gltf_edits.cpp); not after ReleaseSource.
   std::vector<NodeSummary> Nodes() const;
   std::vector<MeshSummary> Meshes() const;
   std::vector<LightSource> Lights() const;
-  // Applies `edits` as a file so edited would load — a node given a translation, rotation
-  // or scale loses its matrix, its other two taken from the matrix's decomposition — and
-  // poses the scene at `time`. Throws Error where the file so edited would be refused
-  // (then the asset is as it was, posed at `time`). Not after ReleaseSource.
-  void Edit(const AssetEdits& edits, double time);
+  // Applies `edits` as a file so edited (or loaded with that choice) would load — a node
+  // given a translation, rotation or scale loses its matrix, its other two taken from the
+  // matrix's decomposition; the meshes whose decoding a new variant or material changes
+  // are decoded again; the memory is counted again where the tangents or the animation
+  // change — and poses the scene at `time` unless only materials changed and no mesh was
+  // decoded again. Returns whether the scene's triangles may have changed (else only its
+  // materials and lights did). Throws Error where the file so edited would be refused,
+  // an unknown variant or animation, or memory beyond the limit; then the asset is as it
+  // was. Not after ReleaseSource.
+  bool Edit(const AssetEdits& edits, double time);
 
   struct Parts;  // the parsed file, its decoded meshes and rest pose (gltf_loader.cpp)
 

@@ -16,7 +16,7 @@ import sys
 from pathlib import Path
 
 VEC3 = "tuple[float, float, float]"
-PARAMETER = "float | bool | tuple[float, float, float] | tuple[float, float, float, float]"
+PARAMETER = "float | bool | tuple[float, float, float] | tuple[float, float, float, float] | str"
 ARRAY = "numpy.typing.NDArray[numpy.float32]"
 
 # What pybind11 names object, tuple or dict, by "Class.attribute" (a property's type) or

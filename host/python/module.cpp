@@ -58,9 +58,9 @@ std::unique_ptr<PyScene> OpenScene(const std::filesystem::path& path, const std:
 PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint32_t> width,
                     std::optional<uint32_t> height, std::optional<uint32_t> spp, std::optional<double> seconds,
                     std::optional<double> noiseTarget, std::optional<bool> adaptive, uint32_t seed, uint32_t maxDepth,
-                    uint32_t rrDepth, uint32_t chunkSpp, uint32_t batch, double time,
-                    std::optional<std::array<float, 3>> background, float environmentRotation, bool textureLod,
-                    std::vector<std::string> aovs, bool denoise, const py::object& progress) {
+                    uint32_t rrDepth, uint32_t chunkSpp, uint32_t batch, std::optional<double> time,
+                    std::optional<std::array<float, 3>> background, std::optional<float> environmentRotation,
+                    bool textureLod, std::vector<std::string> aovs, bool denoise, const py::object& progress) {
   RenderOptions o;
   o.width = width;
   o.height = height;
@@ -115,7 +115,7 @@ setting out of its range raises vkpt.SettingError.
            "height"_a = py::none(), "spp"_a = py::none(), "seconds"_a = py::none(), "noise_target"_a = py::none(),
            "adaptive"_a = py::none(), "seed"_a = kRender.seed, "max_depth"_a = kRender.maxDepth,
            "rr_depth"_a = kRender.rrDepth, "chunk_spp"_a = kRender.chunkSpp, "batch"_a = kRender.batch,
-           "time"_a = kRender.time, "background"_a = py::none(), "environment_rotation"_a = kRender.environmentRotation,
+           "time"_a = py::none(), "background"_a = py::none(), "environment_rotation"_a = py::none(),
            "texture_lod"_a = kRender.textureLod, "aovs"_a = kRender.aovs, "denoise"_a = kRender.denoise,
            "progress"_a = py::none(), renderDoc.c_str());
 }

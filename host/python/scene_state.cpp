@@ -51,8 +51,10 @@ std::array<float, N> Numbers(const std::string& key, const py::sequence& s) {
   return out;
 }
 
-// A Python number, bool or sequence of 3 or 4 numbers as a parameter's value; TypeError else.
+// A Python number, bool, sequence of 3 or 4 numbers or str as a parameter's value;
+// TypeError else.
 ParameterValue ParameterFrom(const std::string& key, const py::handle& value) {
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
   if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) return value.cast<double>();
   if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value)) {
@@ -60,7 +62,7 @@ ParameterValue ParameterFrom(const std::string& key, const py::handle& value) {
     if (py::len(s) == 3) return Numbers<3>(key, s);
     if (py::len(s) == 4) return Numbers<4>(key, s);
   }
-  throw py::type_error(key + ": a parameter is a number, a bool, or 3 or 4 numbers, not " +
+  throw py::type_error(key + ": a parameter is a number, a bool, 3 or 4 numbers, or a str, not " +
                        std::string(py::str(value.get_type().attr("__name__"))));
 }
 
@@ -125,16 +127,21 @@ A Scene is also a context manager: `with vkpt.Scene(path) as scene:` closes it a
           R"(Ends the scene's render running now, on any thread, at its next pass: that render returns
 what it has (stopped_by "cancelled"). Renders begun later are not affected.)")
       .def("parameters", &ParametersOf,
-           R"(Every editable value of the scene, as a dict from a key to a float, a bool or an
-RGB tuple: "materials/<index>/<field>" for each field of vkpt.MaterialInfo that is a
-factor ("base_color", "roughness", ...), and "environment/intensity" with an
-environment map. Change values and pass the dict (or any part of it) to update().)")
+           R"(Every editable value of the scene, as a dict from a key to a float, a bool, a
+3-tuple (an RGB colour, a vector), a 4-tuple (a quaternion x, y, z, w) or a str:
+"materials/<index>/<field>" for each field of vkpt.MaterialInfo that is a factor
+("base_color", "roughness", ...); "nodes/<index>/translation", ".../rotation",
+".../scale"; "lights/<index>/color", ".../intensity"; "variant" in a file with variants;
+"animation" and "time" in a file with animations; "environment/intensity" and
+"environment/rotation" with an environment map. Change values and pass the dict (or any
+part of it) to update().)")
       .def("update", &UpdateFrom, "changes"_a,
            R"(Applies a dict of parameters() keys to new values. Every value is checked
 first: an unknown key, a value of the wrong kind or out of its range raises
-vkpt.SettingError, and then nothing changes. The next render builds the scene's arrays
-again (the file is not read again) and equals, bit for bit, a render of the file so
-edited.)");
+vkpt.SettingError, and then nothing changes. The next render does what the change needs
+(materials and lights: their arrays alone; nodes, variant, animation: the pose and the
+BVH; the file is not read again) and equals, bit for bit, a render of the file so
+edited, or loaded with that variant, animation and time.)");
 }
 
 // From whichever thread loads or renders. It holds no Python object, so a Scene may

@@ -178,6 +178,11 @@ bool SomeTriangleUses(const RenderScene& scene, bool (*property)(const shader::M
   return false;
 }
 
+bool UsesAlphaTest(const RenderScene& scene) {
+  return SomeTriangleUses(scene,
+                          [](const shader::Material& m) { return (m.flags & shader::kMaterialAlphaTested) != 0u; });
+}
+
 }  // namespace
 
 bool UsesGlossyMaterial(const RenderScene& scene) {
@@ -243,9 +248,26 @@ RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& option
   BuildLightTable(scene, rs);
   rs.shading = TriangleShadings(scene, options.threads);
   rs.vertexColors = PackVertexColors(scene);
-  rs.alphaTested =
-      SomeTriangleUses(rs, [](const shader::Material& m) { return (m.flags & shader::kMaterialAlphaTested) != 0u; });
+  rs.alphaTested = UsesAlphaTest(rs);
   return rs;
+}
+
+void RestyleRenderScene(const Scene& scene, RenderScene& rs) {
+  PackedMaterials packed = PackMaterials(scene);
+  rs.materials = std::move(packed.materials);
+  rs.textureRefs = std::move(packed.textureRefs);
+  rs.lights.clear();
+  rs.lightTree.clear();
+  rs.treeLights = 0;
+  rs.lightTreeDepth = 0;
+  BuildLightTable(scene, rs);
+  rs.alphaTested = UsesAlphaTest(rs);
+}
+
+std::vector<uint32_t> TriangleLights(const RenderScene& rs) {
+  std::vector<uint32_t> lights(rs.triangles.size());
+  for (size_t i = 0; i < rs.triangles.size(); ++i) lights[i] = rs.triangles[i].light;
+  return lights;
 }
 
 shader::FrameParams MakeFrameParams(const RenderScene& scene, const Camera& camera, uint32_t width, uint32_t height) {

@@ -88,6 +88,15 @@ bool HasLightSources(const RenderScene& scene);
 RenderScene PrepareRenderScene(const Scene& scene, const BvhBuildOptions& options = {}, bool forCpu = true,
                                bool forGpu = true);
 
+// rs's materials and light table made again from `scene`, whose materials or punctual
+// lights changed but whose triangles did not, as PrepareRenderScene makes them. The caller
+// adds the environment and chooses the light sampler again, as after PrepareRenderScene.
+void RestyleRenderScene(const Scene& scene, RenderScene& rs);
+
+// Each triangle's index in the light table (shader::kInvalidIndex: it emits nothing), in
+// leaf order.
+std::vector<uint32_t> TriangleLights(const RenderScene& rs);
+
 // The frame constants for a scene, camera and image size; seed, sample range, depths and
 // background are left 0 for the caller, the environment map unturned at intensity 1,
 // mip levels chosen by ray cones.

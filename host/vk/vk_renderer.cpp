@@ -75,28 +75,43 @@ GpuRenderer::GpuRenderer(const Context& ctx, const RenderScene& scene, const Gpu
           "sRGB decode table")),
       envRadiance_(UploadArray<glm::vec4>(ctx, scene.environment.texels, "environment map texels")),
       envDistribution_(UploadArray<float>(ctx, scene.environment.cdf, "environment map CDFs")),
-      hasGlossy_(UsesGlossyMaterial(scene)),
       hasSmoothNormals_(
           std::any_of(scene.shading.begin(), scene.shading.end(),
                       [](const shader::TriangleShading& s) { return (s.flags & shader::kShadingHasNormals) != 0; })),
       hasVertexColors_(!scene.vertexColors.empty()),
-      hasVolumes_(UsesVolumeMaterial(scene)),
-      hasClearcoat_(UsesClearcoat(scene)),
-      hasSheen_(UsesSheen(scene)),
-      hasDiffuseTransmission_(UsesDiffuseTransmission(scene)),
-      hasIridescence_(UsesIridescence(scene)),
-      hasAnisotropy_(UsesAnisotropy(scene)),
-      hasDispersion_(UsesDispersion(scene)),
       hasTextures_(!scene.textureRefs.empty()),
       hasNormalMaps_(!scene.tangents.empty()),
-      hasAlpha_(scene.alphaTested),
-      hasExtensionTextures_(
-          std::any_of(scene.materials.begin(), scene.materials.end(),
-                      [](const shader::Material& m) { return (m.flags & shader::kMaterialExtensionTextured) != 0u; })),
       masksBranches_(ctx.Properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
       nodeCount_(uint32_t(scene.gpuNodes.size() / scene.nodeCopies)),
-      nodeCopies_(scene.nodeCopies) {
+      nodeCopies_(scene.nodeCopies),
+      maxTexelsPerBuffer_(overrides.maxTexelsPerBuffer) {
+  ReadMaterials(scene);
+}
+
+void GpuRenderer::ReadMaterials(const RenderScene& scene) {
+  hasGlossy_ = UsesGlossyMaterial(scene);
+  hasVolumes_ = UsesVolumeMaterial(scene);
+  hasClearcoat_ = UsesClearcoat(scene);
+  hasSheen_ = UsesSheen(scene);
+  hasDiffuseTransmission_ = UsesDiffuseTransmission(scene);
+  hasIridescence_ = UsesIridescence(scene);
+  hasAnisotropy_ = UsesAnisotropy(scene);
+  hasDispersion_ = UsesDispersion(scene);
+  hasAlpha_ = scene.alphaTested;
+  hasExtensionTextures_ = std::any_of(scene.materials.begin(), scene.materials.end(), [](const shader::Material& m) {
+    return (m.flags & shader::kMaterialExtensionTextured) != 0u;
+  });
+  lightTypes_ = 0;
   for (const shader::Light& l : scene.lights) lightTypes_ |= 1u << l.type;
+}
+
+void GpuRenderer::Restyle(const RenderScene& scene, bool triangleLights) {
+  // Each buffer is released as its replacement is assigned: one array at a time is held twice.
+  if (triangleLights)
+    triangles_ = UploadSplitArray<shader::Triangle>(ctx_, scene.triangles, "triangles", maxTexelsPerBuffer_);
+  materials_ = UploadArray<shader::Material>(ctx_, scene.materials, "materials");
+  lights_ = UploadLights(ctx_, scene);
+  ReadMaterials(scene);
 }
 
 std::vector<BufferBinding> GpuRenderer::SceneBindings() const {

@@ -60,6 +60,11 @@ class GpuRenderer {
   // readback), for benchmarks.
   std::vector<shader::HitRecord> Trace(const std::vector<shader::RayQuery>& rays, double* seconds = nullptr);
 
+  // Uploads `scene`'s materials and light table again, and its triangles where
+  // `triangleLights` (their light indices changed), after RestyleRenderScene (the BVH,
+  // shading and textures are as they were). No frame may be begun.
+  void Restyle(const RenderScene& scene, bool triangleLights);
+
  protected:
   GpuRenderer(const Context& ctx, const RenderScene& scene, const GpuRendererOverrides& overrides);
 
@@ -68,6 +73,8 @@ class GpuRenderer {
   // specialization constants of scene_constants.glsl for `frame`.
   std::vector<BufferBinding> SceneBindings() const;
   std::vector<uint32_t> Specialization(const shader::FrameParams& frame) const;
+  // The specialization constants' account of `scene`'s materials and lights.
+  void ReadMaterials(const RenderScene& scene);
 
   const Context& ctx_;
   std::span<const uint32_t> pathTraceSpirv_, traceSpirv_;
@@ -86,25 +93,28 @@ class GpuRenderer {
   TexelBuffer envRadiance_, envDistribution_;
   // What the scene has, for pathtrace.comp's specialization constants 0-18 (the frame
   // tells whether lights are sampled at all and whether there is an environment map).
-  uint32_t lightTypes_ = 0;      // bit 1 << type for each type in the light table
-  bool hasGlossy_;               // some triangle's material is not Lambertian
-  bool hasSmoothNormals_;        // some triangle has vertex normals
-  bool hasVertexColors_;         // some triangle has COLOR_0
-  bool hasVolumes_;              // some triangle's material bounds a volume
-  bool hasClearcoat_;            // some triangle's material has a clear coat
-  bool hasSheen_;                // some triangle's material has a sheen
-  bool hasDiffuseTransmission_;  // some triangle's material transmits diffusely
-  bool hasIridescence_;          // some triangle's material is iridescent
-  bool hasAnisotropy_;           // some triangle's material is anisotropic
-  bool hasDispersion_;           // some triangle's material is dispersive
-  bool hasTextures_;             // some material has a texture
-  bool hasNormalMaps_;           // some material has a normal texture
-  bool hasAlpha_;                // some triangle's material is alpha MASK or BLEND
-  bool hasExtensionTextures_;    // some material has a texture of a material extension
+  // Of its geometry:
+  bool hasSmoothNormals_;  // some triangle has vertex normals
+  bool hasVertexColors_;   // some triangle has COLOR_0
+  bool hasTextures_;       // some material has a texture
+  bool hasNormalMaps_;     // some material has a normal texture
+  // Of its materials and lights (ReadMaterials):
+  uint32_t lightTypes_ = 0;              // bit 1 << type for each type in the light table
+  bool hasGlossy_ = false;               // some triangle's material is not Lambertian
+  bool hasVolumes_ = false;              // some triangle's material bounds a volume
+  bool hasClearcoat_ = false;            // some triangle's material has a clear coat
+  bool hasSheen_ = false;                // some triangle's material has a sheen
+  bool hasDiffuseTransmission_ = false;  // some triangle's material transmits diffusely
+  bool hasIridescence_ = false;          // some triangle's material is iridescent
+  bool hasAnisotropy_ = false;           // some triangle's material is anisotropic
+  bool hasDispersion_ = false;           // some triangle's material is dispersive
+  bool hasAlpha_ = false;                // some triangle's material is alpha MASK or BLEND
+  bool hasExtensionTextures_ = false;    // some material has a texture of a material extension
   // The device runs both sides of every branch, masked (a CPU device such as lavapipe):
   // constant 19, shared/texture.h's VKPT_MASKED_BRANCHES.
   bool masksBranches_;
   uint32_t nodeCount_, nodeCopies_;  // for trace.comp (pathtrace.comp reads FrameParams)
+  uint32_t maxTexelsPerBuffer_;      // GpuRendererOverrides's
 };
 
 }  // namespace vkpt::internal::vk

@@ -7,7 +7,8 @@ const char* KindOf(const vkpt::ParameterValue& v) {
     case 0: return "a number";
     case 1: return "a switch";
     case 2: return "3 numbers";
-    default: return "4 numbers (x, y, z, w)";
+    case 3: return "4 numbers (x, y, z, w)";
+    default: return "a name";
   }
 }
 

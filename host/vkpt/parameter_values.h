@@ -13,7 +13,7 @@
 
 namespace vkpt::internal {
 
-// "a number", "a switch", "3 numbers" or "4 numbers (x, y, z, w)".
+// "a number", "a switch", "3 numbers", "4 numbers (x, y, z, w)" or "a name".
 const char* KindOf(const vkpt::ParameterValue& v);
 
 template <class T>

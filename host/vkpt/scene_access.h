@@ -12,7 +12,9 @@ namespace vkpt {
 
 struct Scene::Impl {
   std::unique_ptr<internal::LoadedScene> loaded;
-  SceneOptions options;  // as opened: each render's settings are checked with them
+  // As opened, with the variant and animation Update chose: each render's settings are
+  // checked with them.
+  SceneOptions options;
 };
 
 struct v1::SceneAccess {
@@ -20,6 +22,7 @@ struct v1::SceneAccess {
     return Scene(std::make_unique<Scene::Impl>(Scene::Impl{std::move(loaded), options}));
   }
   static const SceneOptions& Options(const Scene& scene) { return scene.impl_->options; }
+  static SceneOptions& Options(Scene& scene) { return scene.impl_->options; }
   static internal::LoadedScene& Engine(Scene& scene) { return *scene.impl_->loaded; }
   static const internal::LoadedScene& Engine(const Scene& scene) { return *scene.impl_->loaded; }
 };

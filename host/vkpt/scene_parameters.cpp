@@ -1,6 +1,8 @@
 #include "vkpt/scene_parameters.h"
 
+#include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -13,7 +15,8 @@ namespace vkpt::internal {
 namespace {
 
 const char kMaterials[] = "materials/", kNodes[] = "nodes/", kLights[] = "lights/";
-const char kEnvironmentIntensity[] = "environment/intensity";
+const char kEnvironmentIntensity[] = "environment/intensity", kEnvironmentRotation[] = "environment/rotation";
+const char kVariant[] = "variant", kAnimation[] = "animation", kTime[] = "time";
 
 // One editable field of a material, from VKPT_MATERIAL_FACTORS.
 struct MaterialField {
@@ -87,16 +90,40 @@ std::string KeyShape(const char* group, size_t n, const Field (&fields)[N]) {
   return group + std::string("<0 to ") + std::to_string(n - 1) + ">/<" + names + ">";
 }
 
+// The one-of-a-kind keys the scene has: the choices where the file offers some, the
+// environment's where it has a map.
+std::vector<std::string> SingleKeys(const LoadedScene& loaded) {
+  std::vector<std::string> keys;
+  if (!loaded.scene().materialVariants.empty()) keys.push_back(kVariant);
+  if (!loaded.scene().animations.empty()) keys.insert(keys.end(), {kAnimation, kTime});
+  if (loaded.HasEnvironmentMap()) keys.insert(keys.end(), {kEnvironmentIntensity, kEnvironmentRotation});
+  return keys;
+}
+
 [[noreturn]] void Unknown(const std::string& key, const LoadedScene& loaded) {
   std::vector<std::string> shapes = {KeyShape(kMaterials, loaded.scene().materials.size(), kMaterialFields),
                                      KeyShape(kNodes, loaded.Asset().Nodes().size(), kNodeFields),
                                      KeyShape(kLights, loaded.Asset().Lights().size(), kLightFields)};
-  if (loaded.HasEnvironmentMap()) shapes.push_back(kEnvironmentIntensity);
+  for (const std::string& k : SingleKeys(loaded)) shapes.push_back(k);
   std::string keys;
   for (const std::string& s : shapes)
     if (!s.empty()) keys += (keys.empty() ? "" : "; ") + s;
   const std::string shown = key.size() > 80 ? key.substr(0, 80) + "…" : key;
   throw SettingError("no scene parameter \"" + shown + "\": the keys are " + keys);
+}
+
+// How Parameters() spells the choice of `index` among `names`: its name where that names
+// it, else its decimal index; "" for none (−1).
+std::string Spelling(const std::vector<std::string>& names, int index) {
+  if (index < 0) return "";
+  const auto first = std::find(names.begin(), names.end(), names[index]);
+  return !names[index].empty() && first - names.begin() == index ? names[index] : std::to_string(index);
+}
+
+std::vector<std::string> AnimationNames(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const AnimationSummary& a : scene.animations) names.push_back(a.name);
+  return names;
 }
 
 // A key of Parameters() in `group` as its index and the field's name after it.
@@ -114,17 +141,28 @@ const Field& FieldNamed(const std::string& name, const Field (&fields)[N]) {
 
 // What an update changes, every value checked.
 struct Changes {
-  std::map<uint32_t, Material> materials;  // the materials edited, as they will be
   AssetEdits asset;
-  std::optional<float> environmentIntensity;
+  std::optional<double> time;
+  std::optional<float> environmentIntensity, environmentRotation;
 };
 
 void Add(Changes& c, const LoadedScene& loaded, const std::string& key, const vkpt::ParameterValue& value) {
   if (key == kEnvironmentIntensity) {
     c.environmentIntensity = Checked(Expect<double>(value, key), *SettingOf("environment_intensity").range, key);
+  } else if (key == kEnvironmentRotation) {
+    c.environmentRotation = Checked(Expect<double>(value, key), *SettingOf("environment_rotation").range, key);
+  } else if (key == kVariant) {
+    c.asset.variant = Expect<std::string>(value, key);
+  } else if (key == kAnimation) {
+    c.asset.animation = Expect<std::string>(value, key);
+  } else if (key == kTime) {
+    const double t = Expect<double>(value, key);
+    const Range& range = *SettingOf("time").range;
+    if (!range.Holds(t)) throw SettingError(OutOfRange(key, range, t, FormatNumber(t)));
+    c.time = t;
   } else if (key.rfind(kMaterials, 0) == 0) {
     const auto [i, field] = Split(key, kMaterials);
-    auto [it, added] = c.materials.try_emplace(i, loaded.scene().materials[i]);
+    auto [it, added] = c.asset.materials.try_emplace(i, loaded.scene().materials[i]);
     FieldNamed(field, kMaterialFields).set(it->second, value, key);
   } else if (key.rfind(kNodes, 0) == 0) {
     const auto [i, field] = Split(key, kNodes);
@@ -135,6 +173,19 @@ void Add(Changes& c, const LoadedScene& loaded, const std::string& key, const vk
   }
 }
 
+// The rules between values: each material's ior, and a time only with an animation.
+void CheckTogether(const Changes& c, const LoadedScene& loaded) {
+  for (const auto& [index, material] : c.asset.materials)
+    if (!IorHolds(material.ior))
+      throw SettingError(kMaterials + std::to_string(index) + "/ior is " + FormatNumber(material.ior) +
+                         ": it must be 0 or in [1, 1e6] (KHR_materials_ior)");
+  const bool animated = c.asset.animation ? !c.asset.animation->empty() : loaded.scene().animation >= 0;
+  const double time = c.time.value_or(loaded.Settings().choice.time);
+  if (!animated && time != 0.0)
+    throw SettingError(std::string(kTime) + " is " + FormatNumber(time) + " but no animation is chosen: set \"" +
+                       kAnimation + "\" as well, or time to 0");
+}
+
 }  // namespace
 
 vkpt::ParameterMap ParametersOf(const LoadedScene& loaded) {
@@ -142,8 +193,22 @@ vkpt::ParameterMap ParametersOf(const LoadedScene& loaded) {
   List(p, kMaterials, loaded.scene().materials, kMaterialFields);
   List(p, kNodes, loaded.Asset().Nodes(), kNodeFields);
   List(p, kLights, loaded.Asset().Lights(), kLightFields);
-  if (loaded.HasEnvironmentMap()) p[kEnvironmentIntensity] = double(loaded.Settings().envIntensity);
+  const Scene& scene = loaded.scene();
+  if (!scene.materialVariants.empty()) p[kVariant] = Spelling(scene.materialVariants, scene.variant);
+  if (!scene.animations.empty()) {
+    p[kAnimation] = Spelling(AnimationNames(scene), scene.animation);
+    p[kTime] = loaded.Settings().choice.time;
+  }
+  if (loaded.HasEnvironmentMap()) {
+    p[kEnvironmentIntensity] = double(loaded.Settings().envIntensity);
+    p[kEnvironmentRotation] = double(loaded.Settings().envRotation);
+  }
   return p;
+}
+
+ChosenSpellings ChoicesOf(const LoadedScene& loaded) {
+  const Scene& scene = loaded.scene();
+  return {Spelling(scene.materialVariants, scene.variant), Spelling(AnimationNames(scene), scene.animation)};
 }
 
 void ApplyParameters(LoadedScene& loaded, const vkpt::ParameterMap& changes) {
@@ -156,20 +221,18 @@ void ApplyParameters(LoadedScene& loaded, const vkpt::ParameterMap& changes) {
       throw SettingError(key + " takes " + KindOf(it->second) + ", not " + KindOf(value));
     if (value != it->second) Add(c, loaded, key, value);
   }
-  for (const auto& [index, material] : c.materials)
-    if (!IorHolds(material.ior))
-      throw SettingError(kMaterials + std::to_string(index) + "/ior is " + FormatNumber(material.ior) +
-                         ": it must be 0 or in [1, 1e6] (KHR_materials_ior)");
+  CheckTogether(c, loaded);
   // The file's rules, last: a refused edit leaves the scene as it was.
-  if (!c.asset.Empty()) {
+  if (!c.asset.Empty() || c.time) {
     try {
-      loaded.Edit(c.asset);
+      loaded.Edit(c.asset, c.time.value_or(loaded.Settings().choice.time));
     } catch (const Error& e) {
       throw SettingError(std::string("refused: ") + e.what());
     }
   }
-  for (const auto& [index, material] : c.materials) loaded.SetMaterial(index, material);
-  if (c.environmentIntensity) loaded.SetEnvironmentIntensity(*c.environmentIntensity);
+  if (c.environmentIntensity || c.environmentRotation)
+    loaded.SetEnvironment(c.environmentIntensity.value_or(loaded.Settings().envIntensity),
+                          c.environmentRotation.value_or(loaded.Settings().envRotation));
 }
 
 }  // namespace vkpt::internal
@@ -179,7 +242,13 @@ namespace vkpt {
 ParameterMap Scene::Parameters() const { return internal::ParametersOf(SceneAccess::Engine(*this)); }
 
 void Scene::Update(const ParameterMap& changes) {
-  internal::Translated([&] { internal::ApplyParameters(SceneAccess::Engine(*this), changes); });
+  internal::Translated([&] {
+    internal::ApplyParameters(SceneAccess::Engine(*this), changes);
+    // Each render's settings are checked against the choices made now.
+    const internal::ChosenSpellings chosen = internal::ChoicesOf(SceneAccess::Engine(*this));
+    SceneAccess::Options(*this).variant = chosen.variant;
+    SceneAccess::Options(*this).animation = chosen.animation;
+  });
 }
 
 }  // namespace vkpt

@@ -81,7 +81,7 @@ struct SceneOptions {
   uint64_t maxTexels = 0;          // texels of the scene's images (0: 2^28)
   bool allowExternalUris = false;  // let the file read outside its own folder
   std::string variant;             // KHR_materials_variants variant, by name or index
-  std::string animation;           // an animation, by name or index; RenderOptions::time poses it
+  std::string animation;           // an animation, by name or index; time poses it (RenderOptions)
   std::string environment;         // an equirectangular .hdr or .exr lighting the scene
   float environmentIntensity = 1.0f;
   LightSampler lightSampler = LightSampler::Auto;
@@ -111,12 +111,14 @@ struct RenderOptions {
   std::optional<bool> adaptive;           // converged pixels stop taking samples
   uint32_t seed = 0;
   uint32_t maxDepth = 32, rrDepth = 3;
-  uint32_t chunkSpp = 16;                          // decisions fall between chunks; the image depends on it
-  uint32_t batch = 0;                              // Vulkan samples per pixel per submission (0: automatic)
-  double time = 0.0;                               // seconds into SceneOptions::animation
+  uint32_t chunkSpp = 16;  // decisions fall between chunks; the image depends on it
+  uint32_t batch = 0;      // Vulkan samples per pixel per submission (0: automatic)
+  // Seconds into the scene's animation; none: its "time" parameter (Scene::Parameters).
+  std::optional<double> time;
   std::optional<std::array<float, 3>> background;  // radiance of rays that leave the scene
-  float environmentRotation = 0.0f;                // degrees about +Y
-  bool textureLod = true;                          // ray-cone texture filtering
+  // Degrees about +Y; none: the scene's "environment/rotation" parameter.
+  std::optional<float> environmentRotation;
+  bool textureLod = true;  // ray-cone texture filtering
   // albedo, normal, depth, position, variance, spp, heatmap, object_id, material_id,
   // instance_id; "all"
   std::vector<std::string> aovs;
@@ -162,7 +164,7 @@ class VKPT_API Scene {
   Scene& operator=(Scene&&) noexcept;
 
   // Renders a view. The scene's BVH and device buffers are built once (again only when an
-  // animation's time changes). Throws Error.
+  // animation's time changes, or Update changed what they hold). Throws Error.
   RenderResult Render(const Camera& camera = {}, const RenderOptions& options = {});
 
   uint32_t CameraCount() const;
@@ -185,9 +187,10 @@ class VKPT_API Scene {
   ParameterMap Parameters() const;
   // Applies `changes`, any of Parameters()'s keys: every value is checked first (a
   // SettingError names an unknown key, a value of the wrong kind or out of its range, and
-  // then nothing changes). The next Render builds the scene's arrays again, without
-  // reading or posing the file, and renders what a fresh load of the file so edited would,
-  // bit for bit.
+  // then nothing changes). The next Render builds again what the changes need, without
+  // reading the file — materials and lights alone: their arrays, the BVH kept — and
+  // renders what a fresh load of the file so edited (or with that variant, animation and
+  // time) would, bit for bit.
   void Update(const ParameterMap& changes);
 
  private:

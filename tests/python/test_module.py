@@ -2,6 +2,7 @@
 determinism, the id AOVs and their names, cameras, errors as exceptions, the GIL released
 while rendering, progress, cancellation by Ctrl-C or a callback's exception."""
 import _thread
+import base64
 import ctypes
 import gc
 import json
@@ -372,13 +373,48 @@ def test_a_moved_node_renders_as_the_file_moved(tmp_path):
     assert live.parameters() == fresh.parameters()
 
 
+def test_a_variant_an_animation_and_a_time_render_as_loaded_with_them(tmp_path):
+    with open(CORNELL) as f:
+        gltf = json.load(f)
+    gltf["extensionsUsed"].append("KHR_materials_variants")
+    gltf.setdefault("extensions", {})["KHR_materials_variants"] = {"variants": [{"name": "red"}]}
+    gltf["meshes"][7]["primitives"][0]["extensions"] = {
+        "KHR_materials_variants": {"mappings": [{"material": 1, "variants": [0]}]}}
+    keys = np.array([0, 1, 0, 0, 0, 1, 0, 0.70710677, 0, 0.70710677], dtype="<f4").tobytes()
+    gltf["buffers"].append({"byteLength": len(keys),
+                            "uri": "data:application/octet-stream;base64," + base64.b64encode(keys).decode()})
+    views, accessors = len(gltf["bufferViews"]), len(gltf["accessors"])
+    gltf["bufferViews"] += [{"buffer": 1, "byteLength": 8}, {"buffer": 1, "byteOffset": 8, "byteLength": 32}]
+    gltf["accessors"] += [{"bufferView": views, "componentType": 5126, "count": 2, "type": "SCALAR", "min": [0], "max": [1]},
+                          {"bufferView": views + 1, "componentType": 5126, "count": 2, "type": "VEC4"}]
+    gltf["animations"] = [{"name": "spin", "samplers": [{"input": accessors, "output": accessors + 1}],
+                           "channels": [{"sampler": 0, "target": {"node": 7, "path": "rotation"}}]}]
+    (tmp_path / "cornell.bin").write_bytes((pathlib.Path(CORNELL).parent / "cornell.bin").read_bytes())
+    (tmp_path / "choices.gltf").write_text(json.dumps(gltf))
+    fresh = vkpt.Scene(tmp_path / "choices.gltf", backend="cpu", variant="red", animation="spin")
+    live = vkpt.Scene(tmp_path / "choices.gltf", backend="cpu")
+    live.render(**SMALL)
+    p = live.parameters()
+    assert (p["variant"], p["animation"], p["time"]) == ("", "", 0.0)
+    live.update({"variant": "red", "animation": "spin", "time": 0.5})
+    assert np.array_equal(np.asarray(live.render(**SMALL)), np.asarray(fresh.render(time=0.5, **SMALL)))
+    assert np.array_equal(np.asarray(live.render(time=0.25, **SMALL)), np.asarray(fresh.render(time=0.25, **SMALL)))
+    assert live.parameters()["time"] == 0.5 and live.stats.animation == 0
+    with pytest.raises(vkpt.SettingError, match="no such material variant"):
+        live.update({"variant": "blue"})
+    with pytest.raises(vkpt.SettingError, match="time is 0.5 but no animation is chosen"):
+        live.update({"animation": ""})
+
+
 def test_a_refused_parameter_changes_nothing(cpu_scene):
     original = cpu_scene.parameters()
     with pytest.raises(vkpt.SettingError, match=r"materials/1/roughness must be in \[0, 1\], got -0.5"):
         cpu_scene.update({"materials/0/roughness": 0.5, "materials/1/roughness": -0.5})
     with pytest.raises(vkpt.SettingError, match="no scene parameter \"materials/0/shine\""):
         cpu_scene.update({"materials/0/shine": 1.0})
-    with pytest.raises(TypeError, match="materials/0/base_color: a parameter is a number, a bool, or 3 or 4 numbers"):
+    with pytest.raises(TypeError, match="materials/0/base_color: a parameter is a number, a bool, 3 or 4 numbers, or a str"):
+        cpu_scene.update({"materials/0/base_color": None})
+    with pytest.raises(vkpt.SettingError, match="materials/0/base_color takes 3 numbers, not a name"):
         cpu_scene.update({"materials/0/base_color": "red"})
     with pytest.raises(TypeError, match="materials/0/base_color: 3 numbers, not a str"):
         cpu_scene.update({"materials/0/base_color": ("r", "g", "b")})
