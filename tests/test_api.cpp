@@ -160,6 +160,38 @@ TEST(Api, FailuresAreErrorsNamingTheirCause) {
   EXPECT_EQ(scene.Render(vkpt::Camera{}, test::SmallRender()).image.data.size(), 24u * 16u * 3u);
 }
 
+// A camera's aspect ratio far from 1 asks for a side beyond any image: refused, naming the
+// ratio, unless both sides are given; a side that rounds to nothing is one pixel.
+TEST(Api, AnAspectRatioFarFromOneNeedsBothSides) {
+  struct Case {
+    double ratio;
+    bool tall;          // the width given, the height following
+    const char* shown;  // the message's start
+  };
+  for (const Case& c : {Case{1.19e-7, true, "aspectRatio 1.19e-07 asks for a 24 × 2016806"},
+                        Case{1e-17, true, "aspectRatio 1e-17 asks for a 24 × 24000000"},
+                        Case{1e7, false, "aspectRatio 1e+07 asks for a 160000000 × 16 image, beyond 16384 pixels"}}) {
+    const test::TempFolder folder("api-aspect");
+    const std::string path = test::WriteCornell(
+        folder, "aspect.gltf", [&](nlohmann::json& f) { f["cameras"][0]["perspective"]["aspectRatio"] = c.ratio; });
+    vkpt::Scene scene = test::Open(path, vkpt::Backend::Cpu);
+    vkpt::RenderOptions oneSide = test::SmallRender();
+    (c.tall ? oneSide.height : oneSide.width).reset();
+    try {
+      scene.Render({}, oneSide);
+      ADD_FAILURE() << c.ratio << " rendered";
+    } catch (const vkpt::Error& e) {
+      EXPECT_NE(std::string(e.what()).find(c.shown), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(scene.Render({}, test::SmallRender()).image.height, 16u) << c.ratio;
+    if (c.tall) continue;
+    vkpt::RenderOptions flat = test::SmallRender();
+    flat.height.reset();
+    EXPECT_EQ(scene.Render({}, flat).image.height, 1u);  // 24 / 1e7 rounds to 0
+  }
+}
+
 TEST(Api, DenoisedImageKeepsTheRawOne) {
   vkpt::SceneOptions cpu;
   cpu.backend = vkpt::Backend::Cpu;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "util/error.h"
 
@@ -57,11 +58,19 @@ Camera ChooseCamera(const Scene& scene, const CameraSettings& c, const std::stri
   return cam;
 }
 
-glm::uvec2 ImageSize(const Camera& cam, const PictureSettings& p) {
-  const float aspect = cam.aspectRatio > 0.0f ? cam.aspectRatio : 1.0f;
-  const uint32_t width = p.width.value_or(p.height ? uint32_t(std::lround(*p.height * aspect)) : 512u);
-  const uint32_t height = p.height.value_or(uint32_t(std::lround(width / aspect)));
-  return {std::max(1u, std::min(width, 16384u)), std::max(1u, std::min(height, 16384u))};
+glm::uvec2 ImageSize(const Camera& cam, const PictureSettings& p, const std::string& path) {
+  // In double: the side that follows a ratio far from 1 may be beyond any integer's reach.
+  const double aspect = cam.aspectRatio > 0.0f ? double(cam.aspectRatio) : 1.0;
+  const double width = p.width ? double(*p.width) : p.height ? std::round(*p.height * aspect) : 512.0;
+  const double height = p.height ? double(*p.height) : std::round(width / aspect);
+  if (!(width <= kMaxImageSide && height <= kMaxImageSide)) {
+    char what[160];
+    std::snprintf(what, sizeof what,
+                  "the camera's aspectRatio %g asks for a %.0f × %.0f image, beyond %u pixels a side", aspect, width,
+                  height, kMaxImageSide);
+    throw Error(path + ": " + what + "; give --width and --height");
+  }
+  return {uint32_t(std::max(width, 1.0)), uint32_t(std::max(height, 1.0))};
 }
 
 }  // namespace vkpt::internal

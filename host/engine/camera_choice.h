@@ -17,7 +17,8 @@ namespace vkpt::internal {
 Camera ChooseCamera(const Scene& scene, const CameraSettings& c, const std::string& path);
 
 // What the picture asks for; a missing side follows the camera's aspect ratio (512 wide
-// when neither is given).
-glm::uvec2 ImageSize(const Camera& cam, const PictureSettings& p);
+// when neither is given), at least 1. Throws Error naming `path` where that side would be
+// beyond kMaxImageSide.
+glm::uvec2 ImageSize(const Camera& cam, const PictureSettings& p, const std::string& path);
 
 }  // namespace vkpt::internal

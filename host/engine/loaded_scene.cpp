@@ -86,7 +86,7 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
   PreparedFrame frame;
   frame.cameraIndex = request.camera.index.value_or(0);
   frame.camera = ChooseCamera(scene(), request.camera, settings_.path);
-  frame.size = ImageSize(frame.camera, request.picture);
+  frame.size = ImageSize(frame.camera, request.picture, settings_.path);
   if (request.shape.aovIds) CheckIdsAreExact(IdCountsOf(scene()), settings_.path);
   ChargeFrame(frame, request);
   if (settings_.once) asset_->ReleaseSource();  // no other pose will be asked for

@@ -49,6 +49,9 @@ struct CameraSettings {
   std::optional<double> orbit;  // degrees about the up axis through the look-at point
 };
 
+// The most pixels an image may have on a side, given or following the camera's aspect ratio.
+inline constexpr uint32_t kMaxImageSide = 16384;
+
 // No defaults here: the library sets every field from its public RenderOptions, whose
 // initialisers are the defaults (vkpt/client.cpp).
 struct PictureSettings {

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "engine/settings.h"
+
 namespace vkpt::internal {
 
 std::string FormatNumber(double v) {
@@ -93,7 +95,7 @@ Setting Row(std::string key, std::string flag, std::string field, std::optional<
 }
 
 constexpr double kMaxCount = double(1u << 30);  // spp, chunks, batches
-constexpr double kMaxSide = 16384;              // pixels, each side
+constexpr double kMaxSide = kMaxImageSide;      // pixels, each side
 constexpr Range kTurn{-3600, 3600};             // degrees of a turn: ten full ones either way
 constexpr Range kCoordinate{-1e9, 1e9};         // scene units
 constexpr Range kRadiance{0.0};                 // a radiance or its scale
