@@ -40,7 +40,6 @@ void Complete(Options& o) {
   if (o.compare && (!o.api.render.aovs.empty() || o.api.render.denoise))
     throw UsageError("--compare checks the backends against each other; it takes no --aov or --denoise");
   if (o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
-  if (o.api.render.time.value_or(0.0) != 0.0 && o.api.scene.animation.empty()) throw UsageError(kTimeWithoutAnimation);
   if (o.frames && o.api.render.time.value_or(0.0) != 0.0)
     throw UsageError("--frames gives each frame its time (k / --fps); drop --at");
   if (o.frames && o.compare) throw UsageError("--compare checks one image; drop --frames");

@@ -100,9 +100,7 @@ std::vector<AnimationSummary> ListAnimations(const GltfSource& src) {
 
 int ResolveAnimation(const GltfSource& src, const std::vector<AnimationSummary>& animations,
                      const std::string& wanted) {
-  std::vector<std::string> names;
-  for (const AnimationSummary& a : animations) names.push_back(a.name);
-  return src.Choose(names, wanted, "--animation", "animation", "no animations");
+  return src.Choose(Names(animations), wanted, "--animation", "animation", "no animations");
 }
 
 uint64_t ChargeAnimation(const GltfSource& src, int animation, MemoryBudget& budget) {

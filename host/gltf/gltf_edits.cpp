@@ -184,6 +184,10 @@ bool GltfAsset::Edit(const AssetEdits& edits, double time) {
   const GltfSource src{scene.path, p.model};
   Undo undo(p);
   bool posing = false;
+  const auto restore = [&] {
+    undo.Restore(p);
+    if (posing) PoseAt(undo.posedAt);
+  };
   try {
     for (const auto& [i, edit] : edits.nodes) {
       undo.nodes.emplace(i, p.model.nodes.at(i));
@@ -219,12 +223,10 @@ bool GltfAsset::Edit(const AssetEdits& edits, double time) {
     }
     return moved;
   } catch (const Error&) {
-    undo.Restore(p);
-    if (posing) PoseAt(undo.posedAt);
+    restore();
     throw;
   } catch (const std::bad_alloc&) {
-    undo.Restore(p);
-    if (posing) PoseAt(undo.posedAt);
+    restore();
     throw Error(scene.path + ": ran out of memory while editing, within --max-memory " +
                 FormatBytes(scene.memoryLimit) + " (the process may have a lower limit, e.g. ulimit -v)");
   }

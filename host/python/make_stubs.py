@@ -26,6 +26,8 @@ TYPES = {
     "Camera.matrix": "NDArray[numpy.float32] | None",
     "Scene.render.camera": "int | Camera | None",
     "Scene.render.progress": "Callable[[float], bool | None] | None",
+    "Scene.begin.camera": "int | Camera | None",
+    "Scene.begin.progress": "Callable[[float], bool | None] | None",
     "Scene.parameters.return": f"dict[str, {PARAMETER}]",
     "Scene.update.changes": f"Mapping[str, {PARAMETER} | Sequence[float]]",
     "Scene.__exit__.args": "object",

@@ -55,12 +55,14 @@ std::unique_ptr<PyScene> OpenScene(const std::filesystem::path& path, const std:
   return std::make_unique<PyScene>(Scene(path.string(), o));
 }
 
-PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint32_t> width,
-                    std::optional<uint32_t> height, std::optional<uint32_t> spp, std::optional<double> seconds,
-                    std::optional<double> noiseTarget, std::optional<bool> adaptive, uint32_t seed, uint32_t maxDepth,
-                    uint32_t rrDepth, uint32_t chunkSpp, uint32_t batch, std::optional<double> time,
-                    std::optional<std::array<float, 3>> background, std::optional<float> environmentRotation,
-                    bool textureLod, std::vector<std::string> aovs, bool denoise, const py::object& progress) {
+// Scene.render and Scene.begin: the render keywords as RenderOptions, given to `Run`.
+template <class Result, Result (*Run)(PyScene&, const py::object&, RenderOptions, const py::object&)>
+Result With(PyScene& self, const py::object& camera, std::optional<uint32_t> width, std::optional<uint32_t> height,
+            std::optional<uint32_t> spp, std::optional<double> seconds, std::optional<double> noiseTarget,
+            std::optional<bool> adaptive, uint32_t seed, uint32_t maxDepth, uint32_t rrDepth, uint32_t chunkSpp,
+            uint32_t batch, std::optional<double> time, std::optional<std::array<float, 3>> background,
+            std::optional<float> environmentRotation, bool textureLod, std::vector<std::string> aovs, bool denoise,
+            const py::object& progress) {
   RenderOptions o;
   o.width = width;
   o.height = height;
@@ -79,7 +81,18 @@ PyRender RenderWith(PyScene& self, const py::object& camera, std::optional<uint3
   o.textureLod = textureLod;
   o.aovs = std::move(aovs);
   o.denoise = denoise;
-  return RenderOn(self, camera, std::move(o), progress);
+  return Run(self, camera, std::move(o), progress);
+}
+
+// Defines Scene.`name` with the render keywords, their defaults the library's.
+template <class F, class... Extra>
+void DefWithRenderKeywords(py::class_<PyScene>& scene, const char* name, F f, const char* doc, Extra... extra) {
+  scene.def(name, f, "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(), "height"_a = py::none(),
+            "spp"_a = py::none(), "seconds"_a = py::none(), "noise_target"_a = py::none(), "adaptive"_a = py::none(),
+            "seed"_a = kRender.seed, "max_depth"_a = kRender.maxDepth, "rr_depth"_a = kRender.rrDepth,
+            "chunk_spp"_a = kRender.chunkSpp, "batch"_a = kRender.batch, "time"_a = py::none(),
+            "background"_a = py::none(), "environment_rotation"_a = py::none(), "texture_lod"_a = kRender.textureLod,
+            "aovs"_a = kRender.aovs, "denoise"_a = kRender.denoise, "progress"_a = py::none(), doc, extra...);
 }
 
 // The signatures pybind11 puts above each docstring show the keywords and their defaults;
@@ -101,23 +114,25 @@ position, variance, spp, heatmap, object_id, material_id, instance_id, or "all".
 setting out of its range raises vkpt.SettingError.
 
 )" + KeywordDocs("RenderOptions::");
+  const std::string beginDoc = R"(Begins a render taken in steps and returns a vkpt.ProgressiveRender.
+
+Its keywords are render's: the camera and the image as there; it takes the samples its
+advance() asks for, up to spp (None: 65536), so seconds, noise_target and adaptive raise
+vkpt.SettingError. progress(fraction of spp) is called during each advance, whose Ctrl-C,
+exception, False or Scene.cancel() end that step. It ends the progressive render begun
+before, as render and update do.
+)";
   py::class_<PyScene> scene(m, "Scene", sceneDoc.c_str());
   BindSceneState(scene);
-  scene
-      .def(py::init(&OpenScene), "path"_a, py::kw_only(),
-           "backend"_a = internal::ChoiceName(internal::BackendChoices(), kScene.backend), "device"_a = kScene.device,
-           "validation"_a = kScene.validation, "threads"_a = kScene.threads, "max_memory"_a = kScene.maxMemory,
-           "max_texels"_a = kScene.maxTexels, "allow_external_uris"_a = kScene.allowExternalUris,
-           "variant"_a = kScene.variant, "animation"_a = kScene.animation, "environment"_a = kScene.environment,
-           "environment_intensity"_a = kScene.environmentIntensity,
-           "light_sampler"_a = internal::ChoiceName(internal::LightSamplerChoices(), kScene.lightSampler))
-      .def("render", &RenderWith, "camera"_a = py::none(), py::kw_only(), "width"_a = py::none(),
-           "height"_a = py::none(), "spp"_a = py::none(), "seconds"_a = py::none(), "noise_target"_a = py::none(),
-           "adaptive"_a = py::none(), "seed"_a = kRender.seed, "max_depth"_a = kRender.maxDepth,
-           "rr_depth"_a = kRender.rrDepth, "chunk_spp"_a = kRender.chunkSpp, "batch"_a = kRender.batch,
-           "time"_a = py::none(), "background"_a = py::none(), "environment_rotation"_a = py::none(),
-           "texture_lod"_a = kRender.textureLod, "aovs"_a = kRender.aovs, "denoise"_a = kRender.denoise,
-           "progress"_a = py::none(), renderDoc.c_str());
+  scene.def(py::init(&OpenScene), "path"_a, py::kw_only(),
+            "backend"_a = internal::ChoiceName(internal::BackendChoices(), kScene.backend), "device"_a = kScene.device,
+            "validation"_a = kScene.validation, "threads"_a = kScene.threads, "max_memory"_a = kScene.maxMemory,
+            "max_texels"_a = kScene.maxTexels, "allow_external_uris"_a = kScene.allowExternalUris,
+            "variant"_a = kScene.variant, "animation"_a = kScene.animation, "environment"_a = kScene.environment,
+            "environment_intensity"_a = kScene.environmentIntensity,
+            "light_sampler"_a = internal::ChoiceName(internal::LightSamplerChoices(), kScene.lightSampler));
+  DefWithRenderKeywords(scene, "render", &With<PyRender, &RenderOn>, renderDoc.c_str());
+  DefWithRenderKeywords(scene, "begin", &With<PyProgressive, &BeginOn>, beginDoc.c_str(), py::keep_alive<0, 1>());
 }
 
 }  // namespace
@@ -202,6 +217,7 @@ PYBIND11_MODULE(_vkpt, m) {
   BindSettings(m);
   BindCamera(m);
   BindRender(m);
+  BindProgressive(m);
   BindSceneInfo(m);
   BindScene(m);
   BindDevices(m);

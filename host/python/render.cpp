@@ -16,64 +16,13 @@ namespace vkpt::python {
 
 using namespace pybind11::literals;
 
-namespace {
-
-// One render's callbacks into Python, from the rendering thread: each takes the GIL (the
-// progress hook is set only when there is a callback to call). The first exception
-// (KeyboardInterrupt from Ctrl-C, or one the progress callback raised) cancels the render
-// and is raised once it has returned; progress returning False, or Scene.cancel(), cancels
-// it and the render so far is returned.
-class Callbacks {
- public:
-  Callbacks(py::object progress, const std::atomic<bool>& cancelled)
-      : progress_(std::move(progress)), cancelled_(cancelled) {}
-
-  void Progress(double fraction) {
-    py::gil_scoped_acquire gil;
-    if (error_ || stopped_) return;
-    try {
-      stopped_ = progress_(fraction).ptr() == Py_False;
-    } catch (py::error_already_set& e) {
-      error_.emplace(std::move(e));
-    }
-  }
-
-  bool Cancel() {
-    if (cancelled_) return true;
-    py::gil_scoped_acquire gil;
-    if (!error_ && PyErr_CheckSignals() != 0) error_.emplace();  // takes the pending exception
-    return error_.has_value() || stopped_;
-  }
-
-  void RaiseAny() {
-    if (error_) {
-      py::error_already_set e = std::move(*error_);
-      error_.reset();
-      throw e;
-    }
-  }
-
- private:
-  py::object progress_;
-  const std::atomic<bool>& cancelled_;
-  std::optional<py::error_already_set> error_;
-  bool stopped_ = false;  // progress returned False
-};
-
-}  // namespace
-
 PyRender RenderOn(PyScene& self, const py::object& camera, RenderOptions options, const py::object& progress) {
   const Camera view = CameraFrom(camera);
-  auto callbacks = std::make_shared<Callbacks>(progress, self.cancelled);
-  if (!progress.is_none()) options.progress = [callbacks](double f) { callbacks->Progress(f); };
-  options.cancel = [callbacks] { return callbacks->Cancel(); };
-  auto result = std::make_shared<RenderResult>();
-  {
-    py::gil_scoped_release released;
-    std::lock_guard<std::mutex> lock(self.rendering);
+  const std::shared_ptr<Callbacks> callbacks = Callbacks::Hook(self, progress, options);
+  auto result = std::make_shared<RenderResult>(Serialised(self, [&] {
     self.cancelled = false;
-    *result = self.Get().Render(view, options);
-  }
+    return self.Get().Render(view, options);
+  }));
   callbacks->RaiseAny();
   return PyRender(std::move(result));
 }

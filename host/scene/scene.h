@@ -121,6 +121,13 @@ struct AnimationSummary {
   double duration = 0.0;
 };
 
+// The animations' names, in the file's order.
+inline std::vector<std::string> Names(const std::vector<AnimationSummary>& animations) {
+  std::vector<std::string> names;
+  for (const AnimationSummary& a : animations) names.push_back(a.name);
+  return names;
+}
+
 struct Scene {
   std::string path;
   std::vector<SceneTriangle> triangles;

@@ -122,9 +122,7 @@ class FrameLoop {
     r.spp = done_;
     r.engine = source_.Engine();
     r.seconds = Since(start_);
-    r.image = ResolveFilm(r.sums);
-    r.estimatedRelMse = EstimatedRelMse(r.sums);
-    r.samples = TotalSamples(r.sums);
+    ResolveSums(r);
     r.activePixels = active_.empty() ? r.sums.pixels.size() : activePixels_;
     r.checkpoints = checkpoints_;
     r.checkpointFailures = checkpointFailures_;
@@ -154,8 +152,19 @@ class FrameLoop {
 
 }  // namespace
 
+void ResolveSums(RenderedFrame& frame) {
+  frame.image = ResolveFilm(frame.sums);
+  frame.estimatedRelMse = EstimatedRelMse(frame.sums);
+  frame.samples = TotalSamples(frame.sums);
+}
+
 RenderedFrame RenderSession(SampleSource& source, const SessionSettings& settings, const SessionHooks& hooks) {
   RenderedFrame frame = FrameLoop(source, settings, hooks).Run();
+  FinishFrame(source, settings, frame);
+  return frame;
+}
+
+void FinishFrame(SampleSource& source, const SessionSettings& settings, RenderedFrame& frame) {
   // A render its caller stopped ends soon after: the AOV pass takes one sample, and the
   // filter does not run (or is abandoned between iterations when the stop comes later).
   const bool stopped = frame.stoppedBy == StopReason::kSignal;
@@ -171,7 +180,6 @@ RenderedFrame RenderSession(SampleSource& source, const SessionSettings& setting
     if (const auto filtered = settings.denoise(input, settings.stop)) frame.denoised = FinishDenoise(input, *filtered);
     frame.denoiseSeconds = Since(t0);
   }
-  return frame;
 }
 
 }  // namespace vkpt::internal

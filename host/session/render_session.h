@@ -65,6 +65,13 @@ struct SessionHooks {
 
 RenderedFrame RenderSession(SampleSource& source, const SessionSettings& settings, const SessionHooks& hooks = {});
 
+// A frame's image, estimated relMSE and sample count, from its sums.
+void ResolveSums(RenderedFrame& frame);
+
+// After a frame's samples: the AOV pass and the filter as `settings` ask (RenderSession's
+// last steps, for a frame whose samples were taken another way: a progressive view).
+void FinishFrame(SampleSource& source, const SessionSettings& settings, RenderedFrame& frame);
+
 // The samples of the AOV pass: the first kAovSamples of the render's (fewer if it took fewer).
 constexpr uint32_t kAovSamples = 16;
 

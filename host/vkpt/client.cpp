@@ -108,6 +108,7 @@ uint32_t ValidationMessagesOf(const vkpt::Scene& scene) {
 BegunView BeginView(vkpt::Scene& scene, const vkpt::Camera& camera, const vkpt::RenderOptions& options,
                     const ClientView& client) {
   CheckSettings({vkpt::SceneAccess::Options(scene), camera, options});
+  vkpt::SceneAccess::EndProgressive(scene);  // its device frame released before the next is made
   LoadedScene& loaded = EngineOf(scene);
   BegunView view;
   view.aovs = AovsFromNames(options.aovs);
@@ -116,9 +117,8 @@ BegunView BeginView(vkpt::Scene& scene, const vkpt::Camera& camera, const vkpt::
   return view;
 }
 
-RenderedView FinishView(vkpt::Scene& scene, BegunView& view, SampleSource& source, const vkpt::RenderOptions& options,
-                        const ClientView& client) {
-  LoadedScene& loaded = EngineOf(scene);
+SessionSettings SessionOf(LoadedScene& loaded, const BegunView& view, const vkpt::RenderOptions& options,
+                          const ClientView& client) {
   SessionSettings settings;
   settings.budget = ToBudget(options, client);
   settings.checkpointPath = client.checkpointPath;
@@ -127,14 +127,24 @@ RenderedView FinishView(vkpt::Scene& scene, BegunView& view, SampleSource& sourc
   settings.aovIds = WantsIds(view.aovs);
   settings.stop = options.cancel;
   if (options.denoise) settings.denoise = loaded.Backend().MakeDenoiser();
-  const SessionHooks hooks{options.progress, client.report, client.warning};
+  return settings;
+}
+
+RenderedView Resolved(LoadedScene& loaded, const BegunView& view, RenderedFrame frame) {
   RenderedView rendered;
-  rendered.frame = RenderSession(source, settings, hooks);
+  rendered.frame = std::move(frame);
   const RenderedFrame& f = rendered.frame;
   rendered.aovs = ResolveAovs(view.aovs, f.aovs, f.sums, f.image, loaded.IdsOf());
   if (WantsIds(view.aovs)) rendered.ids = loaded.IdsJson();
   rendered.denoiser = loaded.Backend().DenoiserName();
   return rendered;
+}
+
+RenderedView FinishView(vkpt::Scene& scene, BegunView& view, SampleSource& source, const vkpt::RenderOptions& options,
+                        const ClientView& client) {
+  LoadedScene& loaded = EngineOf(scene);
+  const SessionHooks hooks{options.progress, client.report, client.warning};
+  return Resolved(loaded, view, RenderSession(source, SessionOf(loaded, view, options, client), hooks));
 }
 
 vkpt::CameraInfo CameraOf(const BegunView& view) {

@@ -27,6 +27,11 @@ uint32_t ValidationMessagesOf(const vkpt::Scene& scene);
 
 BegunView BeginView(vkpt::Scene& scene, const vkpt::Camera& camera, const vkpt::RenderOptions& options,
                     const ClientView& client);
+// The session settings of a begun view's render: its budget, AOV pass, filter and stop.
+SessionSettings SessionOf(LoadedScene& loaded, const BegunView& view, const vkpt::RenderOptions& options,
+                          const ClientView& client);
+// A begun view's frame, its samples taken, with its AOV layers and the names of its ids.
+RenderedView Resolved(LoadedScene& loaded, const BegunView& view, RenderedFrame frame);
 // Renders a begun view from `source` (its frame's local passes, or an MPI job's dealt
 // chunks), then its AOV pass and filter as the options ask.
 RenderedView FinishView(vkpt::Scene& scene, BegunView& view, SampleSource& source, const vkpt::RenderOptions& options,

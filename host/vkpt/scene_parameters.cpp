@@ -120,12 +120,6 @@ std::string Spelling(const std::vector<std::string>& names, int index) {
   return !names[index].empty() && first - names.begin() == index ? names[index] : std::to_string(index);
 }
 
-std::vector<std::string> AnimationNames(const Scene& scene) {
-  std::vector<std::string> names;
-  for (const AnimationSummary& a : scene.animations) names.push_back(a.name);
-  return names;
-}
-
 // A key of Parameters() in `group` as its index and the field's name after it.
 std::pair<uint32_t, std::string> Split(const std::string& key, const char* group) {
   const size_t start = std::char_traits<char>::length(group), slash = key.find('/', start);
@@ -181,7 +175,7 @@ void CheckTogether(const Changes& c, const LoadedScene& loaded) {
                          ": it must be 0 or in [1, 1e6] (KHR_materials_ior)");
   const bool animated = c.asset.animation ? !c.asset.animation->empty() : loaded.scene().animation >= 0;
   const double time = c.time.value_or(loaded.Settings().choice.time);
-  if (!animated && time != 0.0)
+  if (TimeWithoutAnimation(time, animated))
     throw SettingError(std::string(kTime) + " is " + FormatNumber(time) + " but no animation is chosen: set \"" +
                        kAnimation + "\" as well, or time to 0");
 }
@@ -196,7 +190,7 @@ vkpt::ParameterMap ParametersOf(const LoadedScene& loaded) {
   const Scene& scene = loaded.scene();
   if (!scene.materialVariants.empty()) p[kVariant] = Spelling(scene.materialVariants, scene.variant);
   if (!scene.animations.empty()) {
-    p[kAnimation] = Spelling(AnimationNames(scene), scene.animation);
+    p[kAnimation] = Spelling(Names(scene.animations), scene.animation);
     p[kTime] = loaded.Settings().choice.time;
   }
   if (loaded.HasEnvironmentMap()) {
@@ -208,7 +202,7 @@ vkpt::ParameterMap ParametersOf(const LoadedScene& loaded) {
 
 ChosenSpellings ChoicesOf(const LoadedScene& loaded) {
   const Scene& scene = loaded.scene();
-  return {Spelling(scene.materialVariants, scene.variant), Spelling(AnimationNames(scene), scene.animation)};
+  return {Spelling(scene.materialVariants, scene.variant), Spelling(Names(scene.animations), scene.animation)};
 }
 
 void ApplyParameters(LoadedScene& loaded, const vkpt::ParameterMap& changes) {
@@ -244,6 +238,7 @@ ParameterMap Scene::Parameters() const { return internal::ParametersOf(SceneAcce
 void Scene::Update(const ParameterMap& changes) {
   internal::Translated([&] {
     internal::ApplyParameters(SceneAccess::Engine(*this), changes);
+    SceneAccess::EndProgressive(*this);
     // Each render's settings are checked against the choices made now.
     const internal::ChosenSpellings chosen = internal::ChoicesOf(SceneAccess::Engine(*this));
     SceneAccess::Options(*this).variant = chosen.variant;

@@ -213,7 +213,8 @@ void CheckSettings(const ApiSettings& s) {
     for (double v : setting.numbers(s))
       if (setting.range && !setting.range->Holds(v))
         throw SettingError(OutOfRange(setting.flag, *setting.range, v, FormatNumber(v)));
-  if (s.render.time.value_or(0.0) != 0.0 && s.scene.animation.empty()) throw SettingError(kTimeWithoutAnimation);
+  if (TimeWithoutAnimation(s.render.time.value_or(0.0), !s.scene.animation.empty()))
+    throw SettingError(kTimeWithoutAnimation);
   if (!s.scene.environment.empty() && s.render.background) throw SettingError(kEnvironmentAndBackground);
   if (s.scene.environment.empty() &&
       (s.render.environmentRotation.value_or(0.0f) != 0.0f || s.scene.environmentIntensity != 1.0f))

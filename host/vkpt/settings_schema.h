@@ -89,6 +89,9 @@ class SettingError : public Error {
   using Error::Error;
 };
 
+// A time is a pose in the chosen animation: without one, only 0 means anything.
+inline bool TimeWithoutAnimation(double time, bool animated) { return time != 0.0 && !animated; }
+
 // Settings at odds with each other, in the command line's terms.
 inline constexpr const char* kTimeWithoutAnimation = "--at needs --animation: it is a time in that animation";
 inline constexpr const char* kEnvironmentAndBackground = "--env and --background both set the environment; give one";

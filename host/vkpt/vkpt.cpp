@@ -11,17 +11,11 @@
 #include "session/local_passes.h"
 #include "vkpt/caller_log.h"
 #include "vkpt/client.h"
+#include "vkpt/public_result.h"
 #include "vkpt/scene_access.h"
 
 namespace vkpt::internal {
 namespace {
-
-vkpt::Image ToImage(const std::vector<glm::vec3>& pixels, uint32_t width, uint32_t height) {
-  vkpt::Image image{width, height, 3, {"R", "G", "B"}, {}};
-  image.data.reserve(pixels.size() * 3);
-  for (const glm::vec3& p : pixels) image.data.insert(image.data.end(), {p.r, p.g, p.b});
-  return image;
-}
 
 // The internal image of a public one's RGB values (no variance: files do not hold it).
 Image ToInternal(const vkpt::Image& image) {
@@ -52,23 +46,7 @@ vkpt::RenderResult RenderView(vkpt::Scene& scene, const vkpt::Camera& camera, co
     RenderedView rendered = FinishView(scene, view, source, options, client);
     if (const uint32_t validation = ValidationMessagesOf(scene) - validationBefore; validation && log)
       log(vkpt::LogLevel::Warning, std::to_string(validation) + " Vulkan validation message(s) in this render");
-    const RenderedFrame& frame = rendered.frame;
-    vkpt::RenderResult result;
-    const uint32_t w = view.prepared.size.x, h = view.prepared.size.y;
-    result.image = ToImage(frame.denoised ? frame.denoised->pixels : frame.image.pixels, w, h);
-    if (frame.denoised) result.raw = ToImage(frame.image.pixels, w, h);
-    for (AovLayer& layer : rendered.aovs) {
-      const uint32_t channels = uint32_t(layer.suffixes.size());
-      result.aovs[AovName(layer.aov)] = {w, h, channels, std::move(layer.suffixes), std::move(layer.values)};
-    }
-    result.ids = std::move(rendered.ids);
-    result.spp = frame.spp;
-    result.samples = frame.samples;
-    result.stoppedBy = frame.stoppedBy == StopReason::kSignal ? "cancelled" : StopReasonName(frame.stoppedBy);
-    result.estimatedRelMse = frame.estimatedRelMse;
-    result.seconds = frame.seconds + frame.aovSeconds + frame.denoiseSeconds;
-    result.engine = frame.engine;
-    return result;
+    return PublicResult(view, rendered);
   });
 }
 

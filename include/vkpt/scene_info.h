@@ -156,7 +156,7 @@ struct SceneStats {
   uint32_t generatedTangentPrimitives = 0;  // normal-mapped primitives given MikkTSpace tangents
   Vec3 boundsMin{}, boundsMax{};
   uint64_t memoryCounted = 0, memoryLimit = 0;  // bytes
-  std::optional<uint32_t> variant, animation;   // as chosen (SceneOptions)
+  std::optional<uint32_t> variant, animation;   // as chosen (SceneOptions or Update)
   double animationTime = 0.0;                   // the pose last built
   std::vector<std::string> warnings;
   std::vector<std::string> ignoredFeatures;  // what the file uses that vkpt does not render

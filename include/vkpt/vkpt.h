@@ -155,6 +155,39 @@ struct RenderResult {
 
 struct SceneAccess;  // the command line's door to a Scene (inside vkpt, not installed)
 
+// A render taken in steps, for a window or a preview (Scene::Begin): samples are added
+// when asked, and the render so far can be read at any point. After n samples its Result
+// is bit-identical to Render's at spp n with the same camera and options. It takes the
+// samples it is asked for, up to RenderOptions::spp (none: 65536): a time, a noise target
+// and adaptive sampling are Render's. It ends when its Scene begins another, renders,
+// updates or is destroyed; its calls then throw Error.
+class VKPT_API ProgressiveRender {
+ public:
+  ~ProgressiveRender();
+  ProgressiveRender(ProgressiveRender&&) noexcept;
+  ProgressiveRender& operator=(ProgressiveRender&&) noexcept;
+
+  // Adds up to `spp` samples per pixel — fewer at the spp bound, or when the options'
+  // cancel says to stop (asked between passes) — and returns the samples per pixel taken
+  // so far. The options' progress receives the fraction of the spp bound reached.
+  uint32_t Advance(uint32_t spp = 1);
+  uint32_t Spp() const;     // samples per pixel so far
+  uint32_t MaxSpp() const;  // its bound
+  // The render so far, with the AOVs and the filter the options ask for, made now (the
+  // AOV pass takes up to 16 samples a pixel). stoppedBy: "spp" at the bound, "cancelled"
+  // when the last Advance was cancelled, else "". seconds: Advance's, the AOVs' and the
+  // filter's so far.
+  RenderResult Result();
+  CameraInfo Camera() const;  // the camera it renders from
+
+  struct Impl;  // the library's
+
+ private:
+  friend class Scene;
+  explicit ProgressiveRender(std::weak_ptr<Impl> impl);
+  std::weak_ptr<Impl> impl_;
+};
+
 class VKPT_API Scene {
  public:
   // Loads and checks the file and the environment, and opens the device. Throws Error.
@@ -166,6 +199,9 @@ class VKPT_API Scene {
   // Renders a view. The scene's BVH and device buffers are built once (again only when an
   // animation's time changes, or Update changed what they hold). Throws Error.
   RenderResult Render(const Camera& camera = {}, const RenderOptions& options = {});
+  // Begins a render taken in steps (ProgressiveRender), ending the one begun before.
+  // Throws Error, or SettingError for options it does not take.
+  ProgressiveRender Begin(const Camera& camera = {}, const RenderOptions& options = {});
 
   uint32_t CameraCount() const;
   std::string Device() const;  // "cpu", or the Vulkan device's name

@@ -11,16 +11,16 @@ See docs/python.md.
 """
 
 from ._vkpt import (AnimationInfo, BvhInfo, Camera, CameraInfo, Device, Error, LightInfo, MaterialInfo,
-                    MaterialTextureInfo, MeshInfo, NodeInfo, PrimitiveInfo, Render, Scene, SceneStats, SettingError,
-                    __version__, devices)
+                    MaterialTextureInfo, MeshInfo, NodeInfo, PrimitiveInfo, ProgressiveRender, Render, Scene,
+                    SceneStats, SettingError, __version__, devices)
 
 __all__ = ["AnimationInfo", "BvhInfo", "Camera", "CameraInfo", "Device", "Error", "LightInfo", "MaterialInfo",
-           "MaterialTextureInfo", "MeshInfo", "NodeInfo", "PrimitiveInfo", "Render", "Scene", "SceneStats",
-           "SettingError", "__version__", "devices"]
+           "MaterialTextureInfo", "MeshInfo", "NodeInfo", "PrimitiveInfo", "ProgressiveRender", "Render", "Scene",
+           "SceneStats", "SettingError", "__version__", "devices"]
 
 from ._arguments import shorten_type_errors as _shorten_type_errors
 
-for _cls, _methods in ((Scene, ("__init__", "render", "update")), (Camera, ("__init__",)), (Render, ("save",))):
+for _cls, _methods in ((Scene, ("__init__", "render", "begin", "update")), (Camera, ("__init__",)), (Render, ("save",))):
     for _method in _methods:
         _shorten_type_errors(_cls, _method)
 del _cls, _methods, _method, _shorten_type_errors
