@@ -217,8 +217,8 @@ PYBIND11_MODULE(_vkpt, m) {
   BindSettings(m);
   BindCamera(m);
   BindRender(m);
-  BindProgressive(m);
   BindSceneInfo(m);
+  BindProgressive(m);  // after the records and before the Scene: their names in its signatures
   BindScene(m);
   BindDevices(m);
 }

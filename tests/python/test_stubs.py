@@ -88,8 +88,10 @@ def test_every_signature_is_pybind11s():
                                   ("*, width", "width")])
 def test_a_stub_that_differs_from_the_module_is_caught(edit):
     text = (PACKAGE / "vkpt" / "_vkpt.pyi").read_text()
-    assert edit[0] in text
-    assert [key for key, _, _ in mismatches(text.replace(edit[0], edit[1], 1))] == [("Scene", "render")]
+    render = next(line for line in text.splitlines() if line.lstrip().startswith("def render("))
+    assert edit[0] in render
+    mutated = text.replace(render, render.replace(edit[0], edit[1], 1))
+    assert [key for key, _, _ in mismatches(mutated)] == [("Scene", "render")]
 
 
 def test_a_missing_name_is_caught(tmp_path):
