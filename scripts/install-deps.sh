@@ -20,6 +20,8 @@ packages=(
   python3-mypy                          # its type stubs' tests (stubtest, mypy)
   libgtest-dev                          # tests
   colord-data                           # tests: the CIE 1931 matching functions (iridescence, dispersion)
+  libglfw3-dev libimgui-dev             # the viewer's window (vkpt --interactive) and its overlay
+  xvfb xdotool x11-utils imagemagick    # tests: the viewer on a virtual X server, input sent, pixels read
   libembree-dev                         # vkpt-bench compares against Embree
   libopenmpi-dev openmpi-bin            # optional: mpirun -n N vkpt shares a frame (tests use it)
   clang-format                          # scripts/check-format.sh

@@ -741,3 +741,26 @@ TEST_F(GpuTest, PbrSpheresUnderBackgroundAndBothEnvironmentsAgree) {
 
 }  // namespace
 }  // namespace vkpt::internal
+
+namespace vkpt::internal {
+namespace {
+
+// The validation layer's reports are counted (vk::ValidationCounter): without that, every
+// ValidatedGpuTest, and the viewer's window tests, would pass blind.
+TEST(VulkanValidation, AnInvalidCallIsCounted) {
+  vk::ContextOptions o;
+  o.validation = true;
+  vk::Context ctx(o);
+  const uint32_t before = ctx.ValidationMessages();
+  VkBufferCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  info.size = 0;  // VUID-VkBufferCreateInfo-size-00912: it must be greater than 0
+  info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  vkCreateBuffer(ctx.Device(), &info, nullptr, &buffer);
+  if (buffer != VK_NULL_HANDLE) vkDestroyBuffer(ctx.Device(), buffer, nullptr);
+  EXPECT_GT(ctx.ValidationMessages(), before);
+}
+
+}  // namespace
+}  // namespace vkpt::internal

@@ -47,6 +47,9 @@ int MainOfProcess(int argc, char** argv) {
   }
   try {
     return Run(o);
+  } catch (const UsageError& e) {
+    PrintError("usage error", e.what());
+    return 2;
   } catch (const Error& e) {
     PrintError("error", e.what());
   } catch (const std::bad_alloc&) {

@@ -78,6 +78,10 @@ std::vector<OptionDef> DeviceRows() {
       SettingRow("batch", "N", "about 2^20 paths per submission",
                  Number(Api(kRenderPart, &R::batch), SettingRange("batch"))),
       SettingRow("threads", "N", "all cores", Number(Api(kScenePart, &S::threads), SettingRange("threads"))),
+      Row({"--interactive"}, "",
+          "open a window showing the render as it accumulates; move the camera with the mouse and keys, P saves "
+          "(docs/viewer.md)",
+          "", NoStats(Flag(Own(&O::interactive)))),
       Row({"--compare"}, "", "render on the CPU and on Vulkan with the same seed and report how they agree", "",
           Flag(Own(&O::compare))),
       Row({"--diff"}, "A B", "compare two `.pfm` images without rendering; heat map to `--out` if given", "",

@@ -10,6 +10,7 @@ namespace {
 
 // The options table (app/option_table.cpp) between these two.
 constexpr const char* kHelpHead = R"(usage: vkpt --scene FILE [options]
+       vkpt --scene FILE --interactive [options]
        vkpt --diff A.pfm B.pfm [--out heatmap.png]
        vkpt --list-devices
 
@@ -30,8 +31,19 @@ Exit status: 0 success, 1 error (bad scene, I/O, device), 2 usage error,
 130/143 stopped by SIGINT/SIGTERM (the image of the samples taken was written).
 )";
 
+// --interactive: one view, accumulating in a window on a display.
+void CheckInteractive(const Options& o) {
+  const vkpt::RenderOptions& r = o.api.render;
+  if (o.frames || o.compare || r.seconds || r.noiseTarget || r.adaptive || o.checkpoint > 0.0 || !r.aovs.empty() ||
+      r.denoise)
+    throw UsageError(
+        "--interactive shows one view in a window as it accumulates; it takes no --frames, --compare, --time, "
+        "--noise-target, --adaptive, --checkpoint, --aov or --denoise");
+}
+
 // The checks between options, and what follows from them (the --spp bound, --out's name).
 void Complete(Options& o) {
+  if (o.interactive) CheckInteractive(o);
   if (o.compare && o.api.scene.backend != vkpt::Backend::Auto)
     throw UsageError("--compare uses both backends; drop --backend");
   if (o.compare && (o.api.render.seconds || o.api.render.noiseTarget || o.Budget().adaptive))
@@ -84,6 +96,7 @@ Options ParseOptions(int argc, const char* const* argv) {
       values.push_back(argv[++i]);
     }
     def->how.set(o, GivenOption{arg, values});
+    o.given.emplace_back(def->LongName(), values);
   }
   if (const char* env = std::getenv("VKPT_VALIDATION"); env && std::string(env) == "1") o.api.scene.validation = true;
   if (o.help || o.version || o.listDevices) return o;

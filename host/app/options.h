@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bvh/bvh.h"
@@ -31,6 +32,7 @@ struct Options {
   ApiSettings api;
   double checkpoint = 0.0;  // --checkpoint: seconds between rewrites of --out (0: none)
   bool listDevices = false;
+  bool interactive = false;       // --interactive: a window shows the render as it accumulates
   bool compare = false;           // render on both backends and compare
   std::vector<std::string> diff;  // --diff A.pfm B.pfm: compare two existing images
   float exposure = 0.0f;          // --exposure: stops, PNG only
@@ -46,6 +48,9 @@ struct Options {
   bool verbose = false;
   bool help = false;
   bool version = false;
+  // Each option as given, in order: its long name and its values (the viewer's P prints
+  // the batch command that renders its view from them).
+  std::vector<std::pair<std::string, std::vector<std::string>>> given;
 
   // The render's budget, as the library derives it (spp bound included).
   RenderBudget Budget() const {

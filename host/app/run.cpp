@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "app/interactive.h"
 #include "app/prepare.h"
 #include "app/render_frame.h"
 #include "app/report.h"
@@ -89,8 +90,9 @@ int ParseOnEveryRank(Cluster& cluster, int argc, char** argv, Options& o) {
   try {
     o = ParseOptions(argc, argv);
     if (o.compare) throw UsageError("--compare renders in one process; run it without mpirun");
-    if (!o.diff.empty() || o.listDevices || o.help || o.version)
-      throw UsageError("--diff, --list-devices, --help and --version run in one process; run them without mpirun");
+    if (!o.diff.empty() || o.listDevices || o.interactive || o.help || o.version)
+      throw UsageError(
+          "--diff, --list-devices, --interactive, --help and --version run in one process; run them without mpirun");
   } catch (const UsageError& e) {
     status = 2;
     message = e.what();
@@ -251,6 +253,7 @@ int RunFrames(const Options& o, FrameWay& way) {
 int Run(const Options& o) {
   if (o.listDevices) return ListDevices();
   if (!o.diff.empty()) return Diff(o);
+  if (o.interactive) return RunInteractive(o);
   LocalFrames local;
   return RunFrames(o, local);
 }

@@ -86,21 +86,6 @@ VkPhysicalDevice PickDevice(VkInstance instance, const std::string& want) {
   return devices[ChooseDevice(infos, want)];
 }
 
-// The logical device, with one queue of `queueFamily`.
-VkDevice CreateDevice(VkPhysicalDevice physical, uint32_t queueFamily) {
-  float priority = 1.0f;
-  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-  queueInfo.queueFamilyIndex = queueFamily;
-  queueInfo.queueCount = 1;
-  queueInfo.pQueuePriorities = &priority;
-  VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-  deviceInfo.queueCreateInfoCount = 1;
-  deviceInfo.pQueueCreateInfos = &queueInfo;
-  VkDevice device = VK_NULL_HANDLE;
-  VKPT_VK_CHECK(vkCreateDevice(physical, &deviceInfo, nullptr, &device));
-  return device;
-}
-
 // The pool of the one-shot command buffers (Submit), each reset as it is freed.
 VkCommandPool CreateCommandPool(VkDevice device, uint32_t queueFamily) {
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -142,20 +127,10 @@ std::vector<DeviceInfo> ListDevices() {
   return out;
 }
 
-VKAPI_ATTR VkBool32 VKAPI_CALL Context::OnMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                  VkDebugUtilsMessageTypeFlagsEXT,
-                                                  const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-  auto* self = static_cast<Context*>(user);
-  const char* level = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
-  std::fprintf(stderr, "vkpt: validation %s: %s\n", level, data->pMessage);
-  self->validationMessages_.fetch_add(1);
-  return VK_FALSE;
-}
-
 Context::Context(const ContextOptions& options) {
   try {
     const bool debugUtils = CheckDebugUtils(options.validation);
-    const VkDebugUtilsMessengerCreateInfoEXT messengerInfo = MessengerInfo(&Context::OnMessage, this);
+    const VkDebugUtilsMessengerCreateInfoEXT messengerInfo = validation_.Info();
     instance_ = CreateInstance(options.validation, debugUtils, &messengerInfo);
     if (options.validation) messenger_ = CreateMessenger(instance_, messengerInfo);
     if (debugUtils)

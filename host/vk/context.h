@@ -5,13 +5,13 @@
 
 #include <vulkan/vulkan.h>
 
-#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "vk/instance.h"
 #include "vk/pipeline_cache.h"
 
 namespace vkpt::internal::vk {
@@ -51,7 +51,7 @@ class Context {
   PipelineCache& Pipelines() const { return *pipelines_; }
 
   // Validation messages (warnings + errors) reported so far; 0 without validation.
-  uint32_t ValidationMessages() const { return validationMessages_.load(); }
+  uint32_t ValidationMessages() const { return validation_.Count(); }
 
   // Names an object for validation messages and debuggers (no-op without debug utils).
   void Name(VkObjectType type, uint64_t handle, const char* name) const;
@@ -68,9 +68,6 @@ class Context {
   void Destroy();
   VkCommandBuffer BeginOneShot() const;
   void EndOneShot(VkCommandBuffer cb) const;
-  static VKAPI_ATTR VkBool32 VKAPI_CALL OnMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                  VkDebugUtilsMessageTypeFlagsEXT types,
-                                                  const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
@@ -82,7 +79,7 @@ class Context {
   VkPhysicalDeviceProperties props_{};
   VkPhysicalDeviceMemoryProperties memProps_{};
   PFN_vkSetDebugUtilsObjectNameEXT setName_ = nullptr;
-  std::atomic<uint32_t> validationMessages_{0};
+  ValidationCounter validation_{"vkpt: validation"};
   std::unique_ptr<PipelineCache> pipelines_;
 };
 
