@@ -107,8 +107,8 @@ std::vector<OptionDef> CameraRows() {
 // The scene as rendered and its limits.
 std::vector<OptionDef> SceneRows() {
   return {
-      SettingRow("background", "R,G,B", " (one number: grey)", "1 if the scene has no lights, else 0",
-                 BackgroundValue()),
+      SettingRow("background", "R,G,B", " (one number: grey)",
+                 "the studio environment if the scene has no lights, else 0", BackgroundValue()),
       SettingRow("environment", "FILE", "none", Text(Api(kScenePart, &S::environment), "an .hdr or .exr file")),
       SettingRow("environment_rotation", "DEGREES", "0",
                  Number(Api(kRenderPart, &R::environmentRotation), SettingRange("environment_rotation"))),

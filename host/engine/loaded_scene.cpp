@@ -5,6 +5,7 @@
 #include "engine/camera_choice.h"
 #include "engine/environment_load.h"
 #include "render/light_table.h"
+#include "render/studio_environment.h"
 #include "scene/load_limits.h"
 #include "scene/scene_ids.h"
 #include "shared/sampling.h"
@@ -40,14 +41,15 @@ void CompleteLightTable(RenderScene& rs, const SceneSettings& s) {
 // The BVH and the renderers' arrays, with the environment map. `gpu`: a Vulkan device will
 // render, so the shader's layout of the tree is built, in direction-ordered copies; the
 // CPU's layout only where the CPU renders (no device, or a comparison).
-RenderScene BuildArrays(const Scene& scene, const SceneSettings& s, bool gpu, EnvironmentMap env) {
+// With `studio`, a scene without light sources is lit by the studio environment.
+RenderScene BuildArrays(const Scene& scene, const SceneSettings& s, bool gpu, EnvironmentMap env, bool studio) {
   BvhBuildOptions bvhOptions;
   bvhOptions.maxLeafSize = s.leafSize;
   bvhOptions.splits = s.splits;
   bvhOptions.threads = s.threads;
   bvhOptions.directionCopies = gpu;
   RenderScene rs = PrepareRenderScene(scene, bvhOptions, !gpu || s.compare, gpu);
-  rs.environment = std::move(env);
+  rs.environment = studio && !HasLightSources(rs) ? StudioEnvironment() : std::move(env);
   CompleteLightTable(rs, s);
   return rs;
 }
@@ -91,19 +93,31 @@ PreparedFrame LoadedScene::Prepare(const FrameRequest& request) {
   ChargeFrame(frame, request);
   if (settings_.once) asset_->ReleaseSource();  // no other pose will be asked for
   phase.Restart();
-  if (!builtAt_ || *builtAt_ != posedAt_) {
+  // Without a map or a background, a scene without light sources is lit by the studio:
+  // the arrays are built again where that choice changes (a background given to one
+  // render and not to the next, or an edit that makes the first light or removes the last).
+  const bool studio = settings_.env.empty() && !request.picture.background;
+  bool build = !builtAt_ || *builtAt_ != posedAt_ || (studio != studioAllowed_ && !HasLightSources(rs_));
+  std::vector<uint32_t> lightsBefore;
+  if (!build && restyle_) {
+    lightsBefore = TriangleLights(rs_);
+    RestyleRenderScene(scene(), rs_);
+    build = (studio && !HasLightSources(rs_)) != studioLit_;
+  }
+  if (build) {
     backend_.reset();  // the last pose's device buffers and arrays go before the next's are made
     rs_ = RenderScene{};
     builtAt_.reset();
     // One render hands the map over; any other keeps it for the renders after a failure
     // or a new pose.
-    rs_ = BuildArrays(scene(), settings_, ctx_ != nullptr, settings_.once ? std::move(environment_) : environment_);
+    rs_ = BuildArrays(scene(), settings_, ctx_ != nullptr, settings_.once ? std::move(environment_) : environment_,
+                      studio);
+    studioAllowed_ = studio;
+    studioLit_ = studio && !HasLightSources(rs_);
     builtAt_ = posedAt_;
     restyle_ = false;
     ++counts_.builds;
   } else if (restyle_) {
-    const std::vector<uint32_t> lightsBefore = TriangleLights(rs_);
-    RestyleRenderScene(scene(), rs_);
     CompleteLightTable(rs_, settings_);
     if (backend_) backend_->Restyle(TriangleLights(rs_) != lightsBefore);
     restyle_ = false;
@@ -153,8 +167,9 @@ std::unique_ptr<FrameRenderer> LoadedScene::BeginFrame(const shader::FrameParams
   return frame;
 }
 
-// A scene without light sources (HasLightSources) is lit by a white environment unless a
-// map or a background says otherwise, and a black one is warned about.
+// A scene without light sources (HasLightSources) is lit by the studio environment
+// (render/studio_environment.h) unless a map or a background says otherwise, and a black
+// background is warned about.
 shader::FrameParams LoadedScene::FrameParams(const Camera& cam, glm::uvec2 size, const PictureSettings& p,
                                              const EngineLog& log) const {
   shader::FrameParams params = MakeFrameParams(rs_, cam, size.x, size.y);
@@ -169,10 +184,10 @@ shader::FrameParams LoadedScene::FrameParams(const Camera& cam, glm::uvec2 size,
                          settings_.envIntensity);
   } else if (p.background) {
     params.background = *p.background;
-  } else if (!HasLightSources(rs_)) {
-    params.background = glm::vec3(1.0f);
-    log.Info(std::string("  no lights") + (rs_.lights.empty() ? "" : " but emissive textures") +
-             ": lit by a white environment (see --background)");
+  } else if (studioLit_) {
+    SetEnvironmentParams(params, rs_.environment, 0.0f, 1.0f);
+    log.Info(std::string("  no lights") + (rs_.lights.size() == 1 ? "" : " but emissive textures") +
+             ": lit by the studio environment (--background 1: a uniform white one)");
   }
   if (rs_.lights.empty() && settings_.env.empty() && shader::MaxComponent(params.background) <= 0.0f)
     log.Warn(settings_.path + ": no lights and a black background; the image will be black");

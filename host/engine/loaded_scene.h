@@ -111,6 +111,8 @@ class LoadedScene {
   double posedAt_ = 0.0;              // the time the scene is posed at (first settings_.choice.time)
   std::optional<double> builtAt_;     // the pose rs_ holds
   bool restyle_ = false;              // rs_'s materials or lights are not the scene's
+  bool studioAllowed_ = false;        // rs_ was built for a render without a map or a background
+  bool studioLit_ = false;            // … and carries the studio environment (render/studio_environment.h)
   RenderScene rs_;
   std::unique_ptr<RenderBackend> backend_;  // of rs_, made on first use
   struct Counts counts_;

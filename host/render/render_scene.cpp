@@ -219,6 +219,7 @@ bool UsesDispersion(const RenderScene& scene) {
 
 bool HasLightSources(const RenderScene& scene) {
   for (const shader::Light& l : scene.lights) {
+    if (l.type == shader::kLightEnvironment) continue;
     if (l.type != shader::kLightTriangle && l.type != shader::kLightTwoSidedTriangle) return true;
     const uint32_t m = scene.triangles[l.triangle].material;
     if (scene.textureRefs.empty() ||

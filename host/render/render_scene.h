@@ -79,7 +79,7 @@ bool UsesDispersion(const RenderScene& scene);
 // Whether the scene has lights meant to light it: punctual lights, or emissive triangles
 // whose emission is not painted by an emissive texture (a texture paints screens, dials
 // and glowing trim: DamagedHelmet's 15,452 triangles all "emit" that way, yet show
-// nothing without a light).
+// nothing without a light). The environment's entry is none: it lights from outside.
 bool HasLightSources(const RenderScene& scene);
 
 // `forCpu`: lay the tree out for the CPU tracer (wideLayout); `forGpu`: for the shader

@@ -115,7 +115,9 @@ struct RenderOptions {
   uint32_t batch = 0;      // Vulkan samples per pixel per submission (0: automatic)
   // Seconds into the scene's animation; none: its "time" parameter (Scene::Parameters).
   std::optional<double> time;
-  std::optional<std::array<float, 3>> background;  // radiance of rays that leave the scene
+  // Radiance of rays that leave the scene; none: the studio environment for a scene with
+  // no lights (docs/options.md, --background), else black.
+  std::optional<std::array<float, 3>> background;
   // Degrees about +Y; none: the scene's "environment/rotation" parameter.
   std::optional<float> environmentRotation;
   bool textureLod = true;  // ray-cone texture filtering
