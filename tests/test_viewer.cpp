@@ -31,23 +31,40 @@ std::vector<std::string> ViewerArgs() {
           "--backend",
           "cpu",
           "--width",
-          "64",
+          "160",
           "--height",
-          "48",
+          "120",
           "--spp",
           "8",
           "--seed",
           "3"};
 }
 
-// The largest difference of any channel between the screen and `rgba`, or 256 when the
-// sizes differ.
-int LargestDifference(const std::vector<uint8_t>& rgb, const std::vector<uint8_t>& rgba) {
+// The overlay's title bar, collapsed, stays above this row.
+constexpr size_t kBelowOverlay = 32;
+
+// The largest difference of any channel between the screen and `rgba` from row `first`
+// down, or 256 when the sizes differ.
+int LargestDifference(const std::vector<uint8_t>& rgb, const std::vector<uint8_t>& rgba, size_t width = 160,
+                      size_t first = kBelowOverlay) {
   if (rgb.size() / 3 != rgba.size() / 4 || rgb.empty()) return 256;
   int largest = 0;
-  for (size_t i = 0; i < rgb.size() / 3; ++i)
+  for (size_t i = first * width; i < rgb.size() / 3; ++i)
     for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(int(rgb[i * 3 + c]) - int(rgba[i * 4 + c])));
   return largest;
+}
+
+// Pixels of the top-left 140 × 90 that differ between two screens by more than 16.
+size_t ChangedInPanelArea(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  size_t changed = 0;
+  for (size_t y = 0; y < 90; ++y)
+    for (size_t x = 0; x < 140; ++x)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(int(a[(y * 160 + x) * 3 + c]) - int(b[(y * 160 + x) * 3 + c])) > 16) {
+          ++changed;
+          break;
+        }
+  return changed;
 }
 
 // Polls the window's pixels until `done` says so, for at most `seconds`; the last read.
@@ -73,7 +90,7 @@ TEST(Viewer, ShowsTheBatchPictureMovesSavesAndQuits) {
   vkpt::SceneOptions cpu;
   cpu.backend = vkpt::Backend::Cpu;
   vkpt::RenderOptions render;
-  render.width = 64, render.height = 48, render.spp = 8, render.seed = 3;
+  render.width = 160, render.height = 120, render.spp = 8, render.seed = 3;
   const vkpt::RenderResult batch = vkpt::Scene(test::SourcePath("scenes/cornell.gltf"), cpu).Render({}, render);
   const std::vector<uint8_t> expected = DisplayPixels(batch.image, {View::kNeutral, 0.0f});
 
@@ -83,8 +100,21 @@ TEST(Viewer, ShowsTheBatchPictureMovesSavesAndQuits) {
       WaitForPicture(x, 60.0, [&](const std::vector<uint8_t>& rgb) { return LargestDifference(rgb, expected) <= 1; });
   EXPECT_LE(LargestDifference(rested, expected), 1) << "the window never showed the batch render's picture";
 
+  // The overlay sits collapsed in the top-left corner; a click on its arrow opens it.
+  EXPECT_GT(ChangedInPanelArea(rested, std::vector<uint8_t>(rested.size(), 0)), 0u);
+  std::vector<uint8_t> batchRgb;
+  for (size_t i = 0; i < expected.size(); i += 4)
+    batchRgb.insert(batchRgb.end(), {expected[i], expected[i + 1], expected[i + 2]});
+  const size_t collapsed = ChangedInPanelArea(rested, batchRgb);
+  EXPECT_GT(collapsed, 100u) << "no overlay's title bar over the picture";
+  EXPECT_TRUE(x.MouseClick(kTitle, 16, 17));
+  const std::vector<uint8_t> opened = WaitForPicture(
+      x, 10.0, [&](const std::vector<uint8_t>& rgb) { return ChangedInPanelArea(rgb, batchRgb) > 3 * collapsed; });
+  EXPECT_GT(ChangedInPanelArea(opened, batchRgb), 3 * collapsed) << "the overlay did not open";
+  EXPECT_TRUE(x.MouseClick(kTitle, 16, 17));  // and closed again
+
   // A drag turns the view: the picture leaves the batch render's.
-  EXPECT_TRUE(x.MouseDrag(kTitle, 20, 24, 44, 30));
+  EXPECT_TRUE(x.MouseDrag(kTitle, 60, 70, 100, 80));
   const std::vector<uint8_t> turned =
       WaitForPicture(x, 30.0, [&](const std::vector<uint8_t>& rgb) { return LargestDifference(rgb, expected) > 64; });
   EXPECT_GT(LargestDifference(turned, expected), 64) << "a drag did not move the camera";
@@ -141,22 +171,41 @@ TEST(Viewer, RefusesWhatOnlyABatchRenderDoes) {
   }
 }
 
+// What the viewer shows of `o` before anything is changed.
+ViewedFrame Unchanged(const Options& o, uint32_t spp) {
+  ViewedFrame f{std::nullopt, spp, 64, 48, {}};
+  f.settings.display = o.Display();
+  f.settings.maxDepth = o.api.render.maxDepth;
+  f.settings.denoise = o.api.render.denoise;
+  return f;
+}
+
 TEST(Viewer, TheBatchCommandReplacesTheViewAndKeepsTheRest) {
   std::vector<const char*> argv = {"vkpt",   "--scene", "my scene.gltf", "--interactive", "--fov",
                                    "30",     "--view",  "agx",           "--width",       "64",
                                    "--seed", "9",       "--out",         "it's.png"};
   const Options o = ParseOptions(int(argv.size()), argv.data());
-  vkpt::Camera moved;
-  moved.lookFrom = std::array<float, 3>{0.1f, 2.0f, -3.5f};
-  moved.lookAt = std::array<float, 3>{0.0f, 0.0f, 0.0f};
-  moved.up = std::array<float, 3>{0.0f, 1.0f, 0.0f};
-  moved.fovDegrees = 0.1 + 0.2;
-  EXPECT_EQ(BatchCommand(o, moved, 24, 64, 48),
+  ViewedFrame moved = Unchanged(o, 24);
+  moved.camera = vkpt::Camera{};
+  moved.camera->lookFrom = std::array<float, 3>{0.1f, 2.0f, -3.5f};
+  moved.camera->lookAt = std::array<float, 3>{0.0f, 0.0f, 0.0f};
+  moved.camera->up = std::array<float, 3>{0.0f, 1.0f, 0.0f};
+  moved.camera->fovDegrees = 0.1 + 0.2;
+  EXPECT_EQ(BatchCommand(o, moved),
             "vkpt --scene 'my scene.gltf' --view agx --seed 9 --out 'it'\\''s.png' --width 64 --height 48 --spp 24 "
             "--look-from 0.100000001,2,-3.5 --look-at 0,0,0 --up 0,1,0 --fov 0.30000000000000004");
-  EXPECT_EQ(BatchCommand(o, std::nullopt, 5, 64, 48),
+  EXPECT_EQ(BatchCommand(o, Unchanged(o, 5)),
             "vkpt --scene 'my scene.gltf' --fov 30 --view agx --seed 9 --out 'it'\\''s.png' --width 64 --height 48 "
             "--spp 5");
+  // What the overlay changed replaces what was given, or joins it.
+  ViewedFrame changed = Unchanged(o, 5);
+  changed.settings.display = {View::kNeutral, 1.5f};
+  changed.settings.maxDepth = 4;
+  changed.settings.denoise = true;
+  changed.settings.aov = "depth";
+  EXPECT_EQ(BatchCommand(o, changed),
+            "vkpt --scene 'my scene.gltf' --fov 30 --seed 9 --out 'it'\\''s.png' --width 64 --height 48 --spp 5 "
+            "--view neutral --exposure 1.5 --max-depth 4 --denoise --aov depth");
 }
 
 }  // namespace

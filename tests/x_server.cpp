@@ -206,4 +206,11 @@ bool XServer::MouseDrag(const std::string& title, int x0, int y0, int x1, int y1
   return Xdotool(args);
 }
 
+bool XServer::MouseClick(const std::string& title, int x, int y) const {
+  const std::optional<WindowGeometry> g = FindWindow(title);
+  if (!g) return false;
+  return Xdotool({"mousemove", "--window", std::to_string(g->id), std::to_string(x), std::to_string(y), "sleep", "0.3",
+                  "click", "1"});
+}
+
 }  // namespace vkpt::internal::test

@@ -68,6 +68,9 @@ class XServer {
   // A drag with button 1 from (x0, y0) to (x1, y1), in the window's coordinates, through
   // `steps` intermediate pointer moves.
   bool MouseDrag(const std::string& title, int x0, int y0, int x1, int y1, int steps = 4) const;
+  // A click of button 1 at (x, y) in the window's coordinates, the pointer resting there
+  // first so that the window has seen it arrive.
+  bool MouseClick(const std::string& title, int x, int y) const;
 
  private:
   bool Start(uint32_t width, uint32_t height);

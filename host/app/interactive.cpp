@@ -8,7 +8,6 @@
 #include "util/graceful_stop.h"
 #include "vkpt/settings_schema.h"
 #ifdef VKPT_WITH_VIEWER
-#include "viewer/viewer.h"
 #include "window/presenter.h"
 #endif
 
@@ -41,25 +40,58 @@ std::string Exact(const std::array<float, 3>& p) { return Exact(p[0]) + "," + Ex
 
 }  // namespace
 
-std::string BatchCommand(const Options& o, const std::optional<vkpt::Camera>& camera, uint32_t spp, uint32_t width,
-                         uint32_t height) {
+std::string BatchCommand(const Options& o, const ViewedFrame& frame) {
   const auto flag = [](const char* key) { return SettingOf(key).flag; };
-  std::set<std::string> replaced = {"--interactive", "--stats", flag("width"), flag("height"), flag("spp")};
-  if (camera)
-    for (const char* key : {"index", "look_from", "look_at", "up", "fov", "orbit"}) replaced.insert(flag(key));
+  // Each setting as the frame has it, where it differs from the options': the flag and
+  // its values (none: the option left out).
+  std::vector<std::pair<std::string, std::vector<std::string>>> set = {{flag("width"), {std::to_string(frame.width)}},
+                                                                       {flag("height"), {std::to_string(frame.height)}},
+                                                                       {flag("spp"), {std::to_string(frame.spp)}}};
+  std::set<std::string> dropped = {"--interactive", "--stats"};
+  const auto change = [&](const std::string& name, bool differs, std::vector<std::string> values) {
+    if (!differs) return;
+    dropped.insert(name);
+    if (!values.empty() || name == flag("denoise")) set.emplace_back(name, std::move(values));
+  };
+  const PanelSettings& p = frame.settings;
+  const vkpt::RenderOptions& r = o.api.render;
+  change("--view", p.display.view != o.view, {ViewName(p.display.view)});
+  change("--exposure", p.display.exposure != o.exposure, {Exact(p.display.exposure)});
+  change(flag("max_depth"), p.maxDepth != r.maxDepth, {std::to_string(p.maxDepth)});
+  if (p.denoise != r.denoise) {
+    dropped.insert(flag("denoise"));
+    if (p.denoise) set.emplace_back(flag("denoise"), std::vector<std::string>{});
+  }
+  change(flag("aovs"), !p.aov.empty(), {p.aov});
+  if (p.environmentRotation)
+    change(flag("environment_rotation"), float(*p.environmentRotation) != r.environmentRotation.value_or(0.0f),
+           {Exact(float(*p.environmentRotation))});
+  if (p.environmentIntensity)
+    change(flag("environment_intensity"), float(*p.environmentIntensity) != o.api.scene.environmentIntensity,
+           {Exact(float(*p.environmentIntensity))});
+  change(flag("variant"), p.variant != o.api.scene.variant,
+         p.variant.empty() ? std::vector<std::string>{} : std::vector<std::string>{p.variant});
+  change(flag("animation"), p.animation != o.api.scene.animation,
+         p.animation.empty() ? std::vector<std::string>{} : std::vector<std::string>{p.animation});
+  change(flag("time"), p.time != r.time.value_or(0.0),
+         p.time == 0.0 ? std::vector<std::string>{} : std::vector<std::string>{Exact(p.time)});
+  if (const std::optional<vkpt::Camera>& c = frame.camera) {
+    for (const char* key : {"index", "look_from", "look_at", "up", "fov", "orbit"}) dropped.insert(flag(key));
+    if (c->index) set.emplace_back(flag("index"), std::vector<std::string>{std::to_string(*c->index)});
+    if (c->lookFrom) set.emplace_back(flag("look_from"), std::vector<std::string>{Exact(*c->lookFrom)});
+    if (c->lookAt) set.emplace_back(flag("look_at"), std::vector<std::string>{Exact(*c->lookAt)});
+    if (c->up) set.emplace_back(flag("up"), std::vector<std::string>{Exact(*c->up)});
+    if (c->fovDegrees) set.emplace_back(flag("fov"), std::vector<std::string>{Exact(*c->fovDegrees)});
+  }
   std::vector<std::string> words = {"vkpt"};
-  for (const auto& [name, values] : o.given) {
-    if (replaced.count(name)) continue;
+  const auto add = [&](const std::string& name, const std::vector<std::string>& values) {
     words.push_back(name);
     words.insert(words.end(), values.begin(), values.end());
-  }
-  words.insert(words.end(), {flag("width"), std::to_string(width), flag("height"), std::to_string(height), flag("spp"),
-                             std::to_string(spp)});
-  if (camera && camera->index) words.insert(words.end(), {flag("index"), std::to_string(*camera->index)});
-  if (camera && camera->lookFrom) words.insert(words.end(), {flag("look_from"), Exact(*camera->lookFrom)});
-  if (camera && camera->lookAt) words.insert(words.end(), {flag("look_at"), Exact(*camera->lookAt)});
-  if (camera && camera->up) words.insert(words.end(), {flag("up"), Exact(*camera->up)});
-  if (camera && camera->fovDegrees) words.insert(words.end(), {flag("fov"), Exact(*camera->fovDegrees)});
+  };
+  for (const auto& [name, values] : o.given)
+    if (!dropped.count(name) && name != flag("width") && name != flag("height") && name != flag("spp"))
+      add(name, values);
+  for (const auto& [name, values] : set) add(name, values);
   std::string line;
   for (const std::string& w : words) {
     if (!line.empty()) line += ' ';
@@ -82,9 +114,7 @@ int RunInteractive(const Options& o) {
   s.render = o.api.render;
   s.display = o.Display();
   s.savePath = o.out;
-  s.batchCommand = [&o](const std::optional<vkpt::Camera>& camera, uint32_t spp, uint32_t width, uint32_t height) {
-    return BatchCommand(o, camera, spp, width, height);
-  };
+  s.batchCommand = [&o](const ViewedFrame& frame) { return BatchCommand(o, frame); };
   const GracefulStop stop;  // Ctrl-C closes the window between frames
   s.stop = [] { return GracefulStop::Arrived(); };
   s.say = [](const std::string& line) {
