@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
-# The viewer's frame rate as a user meets it: `vkpt --interactive` in a virtual X server
-# (Xvfb), the camera dragged in circles for SECONDS with xdotool (XTEST), then left at
+# The viewer's frame rate as a user meets it: `vkpt --interactive` on SCENE in a virtual X
+# server (Xvfb), the camera dragged in circles for SECONDS with xdotool (XTEST), then left at
 # rest for REST seconds, then Escape. vkpt's closing summary gives the frames a second
 # while the camera moved (a quarter-size, 1-spp render each, shown in the window) and at
-# rest (full size, accumulating). One run per backend; the figures are in bench/README.md,
-# "Viewer".
+# rest (full size, accumulating), and the time from launch to the first picture. One run
+# per backend; the figures are in bench/README.md, "Viewer".
 # Usage (after `cmake -B build && cmake --build build`; needs xvfb and xdotool):
-#   bash bench/viewer.sh [SIZE [SECONDS [REST]]]       defaults: 512 10 5
+#   bash bench/viewer.sh [SCENE [SIZE [SECONDS [REST]]]]   defaults: scenes/cornell.gltf 512 10 5
 # VKPT_BUILD names another build folder (default build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-size=${1:-512} seconds=${2:-10} rest=${3:-5} build=${VKPT_BUILD:-build}
+scene=${1:-scenes/cornell.gltf} size=${2:-512} seconds=${3:-10} rest=${4:-5} build=${VKPT_BUILD:-build}
+title="vkpt: $(basename "$scene")"
 for tool in Xvfb xdotool xwininfo; do
   command -v "$tool" > /dev/null || { echo "bench/viewer.sh: $tool is missing (apt-get install xvfb xdotool x11-utils)" >&2; exit 1; }
 done
@@ -27,10 +28,10 @@ rss() { awk '/^VmRSS/ {printf "%.0f MiB", $2 / 1024}' "/proc/$1/status"; }
 
 for backend in vulkan cpu; do
   out=$(mktemp)
-  "$build/vkpt" --scene scenes/cornell.gltf --interactive --backend "$backend" --width "$size" --height "$size" \
+  "$build/vkpt" --scene "$scene" --interactive --backend "$backend" --width "$size" --height "$size" \
     > "$out" 2>&1 &
   vkpt=$!
-  for _ in $(seq 300); do xwininfo -name "vkpt: cornell.gltf" > /dev/null 2>&1 && break || sleep 0.2; done
+  for _ in $(seq 300); do xwininfo -name "$title" > /dev/null 2>&1 && break || sleep 0.2; done
   sleep 2  # the first full-size frames
   before=$(rss "$vkpt")
   centre=$((size / 2)) radius=$((size / 4)) end=$((SECONDS + seconds)) step=0
@@ -49,7 +50,7 @@ for backend in vulkan cpu; do
   rested=$(rss "$vkpt")
   xdotool mousemove "$centre" "$centre" key Escape
   wait "$vkpt"
-  echo "$backend, $size x $size: $(grep 'viewer closed' "$out")"
+  echo "$(basename "$scene"), $backend, $size x $size: $(grep 'viewer closed' "$out")"
   echo "  resident memory: $before before the drag, $moved after it ($step moves), $rested at rest"
   rm -f "$out"
 done

@@ -46,7 +46,8 @@ struct FrameCount {
 class Viewer {
  public:
   explicit Viewer(const ViewerSettings& s)
-      : s_(s),
+      : opened_(Clock::now()),
+        s_(s),
         scene_(s.scene, s.sceneOptions),
         box_(BoxOf(scene_.Stats())),
         base_(s.camera),
@@ -77,6 +78,7 @@ class Viewer {
       const bool fresh = Refine();
       if (!pixels_.empty()) presenter_->Show(pixels_, shownSize_.x, shownSize_.y);
       if (fresh) (preview_ ? moving_ : resting_).Add(Since(t0));
+      if (fresh && firstPicture_ == 0.0) firstPicture_ = Since(opened_);
     }
     Summary();
     return 0;
@@ -209,10 +211,11 @@ class Viewer {
   void Summary() const {
     char line[256];
     std::snprintf(line, sizeof line,
-                  "vkpt: viewer closed after %.1f s: %u pictures while the camera moved (%.1f a second, %u x %u), "
-                  "%u at rest (%.1f a second); the last view at %u spp",
-                  Since(opened_), moving_.frames, moving_.Rate(), std::max(size_.x / kPreviewDivisor, 1u),
-                  std::max(size_.y / kPreviewDivisor, 1u), resting_.frames, resting_.Rate(), render_->Spp());
+                  "vkpt: viewer closed after %.1f s (the first picture after %.2f s): %u pictures while the camera "
+                  "moved (%.1f a second, %u x %u), %u at rest (%.1f a second); the last view at %u spp",
+                  Since(opened_), firstPicture_, moving_.frames, moving_.Rate(),
+                  std::max(size_.x / kPreviewDivisor, 1u), std::max(size_.y / kPreviewDivisor, 1u), resting_.frames,
+                  resting_.Rate(), render_->Spp());
     say(line);
   }
 
@@ -233,6 +236,7 @@ class Viewer {
     if (s_.batchCommand) say(s_.batchCommand(frame));
   }
 
+  const Clock::time_point opened_;  // before the scene loads
   const ViewerSettings& s_;
   vkpt::Scene scene_;
   const SceneBox box_;
@@ -252,7 +256,7 @@ class Viewer {
   std::unique_ptr<InputRecorder> input_;
   std::vector<uint8_t> pixels_;
   glm::uvec2 shownSize_{0};
-  const Clock::time_point opened_ = Clock::now();
+  double firstPicture_ = 0.0;  // seconds from opened_ to the first picture shown
   FrameCount moving_, resting_;
 };
 
